@@ -1,2 +1,39 @@
-// Placeholder entry point; the command line is built in src/app.
-int main() { return 0; }
+// The epviz command line. Every user error ends here as one line on stderr and
+// exit code 2; numerical failures are reported by the commands (exit code 3).
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <functional>
+#include <map>
+
+#include "app/cases_command.hpp"
+#include "app/simulate_command.hpp"
+#include "app/usage_error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"epviz: the heavy rigid body about a fixed point (Euler-Poisson), simulated and rendered offscreen"};
+  app.require_subcommand(1);
+  std::map<std::string, std::function<int()>> commands;
+  commands["simulate"] = epviz::app::add_simulate_command(app);
+  commands["cases"] = epviz::app::add_cases_command(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "epviz: error: %s (see epviz --help)\n", e.what());
+    return 2;
+  }
+  try {
+    for (auto* sub : app.get_subcommands()) return commands.at(sub->get_name())();
+  } catch (const epviz::app::UsageError& e) {
+    std::fprintf(stderr, "epviz: error: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "epviz: error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

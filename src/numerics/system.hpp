@@ -42,6 +42,7 @@ struct Stats {
   long rejected_steps = 0;  // adaptive methods only
   long rhs_evals = 0;       // right-hand side evaluations
   long solver_iterations = 0;  // implicit methods: total fixed-point/Newton iterations
+  long flow_evals = 0;         // splitting methods: exact sub-flow evaluations
 };
 
 template <class Sys>

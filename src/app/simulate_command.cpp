@@ -1,0 +1,168 @@
+#include "app/simulate_command.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "app/cli_values.hpp"
+#include "app/output_files.hpp"
+#include "app/simulation_fields.hpp"
+#include "app/simulation_output.hpp"
+#include "app/usage_error.hpp"
+#include "physics/cases.hpp"
+
+namespace epviz::app {
+namespace {
+
+struct RawOptions {
+  std::string job, case_name, inertia, com, weight, omega, gamma, formulation, method, tol, step,
+      t_end, samples, csv, report_json;
+  bool allow_nonphysical = false, normalize_gamma = false, no_chart_switch = false;
+};
+
+SimulationFields fields_from_cli(const RawOptions& o) {
+  SimulationFields f;
+  auto vec = [](Given<std::array<double, 3>>& g, const std::string& v, const char* opt) {
+    if (!v.empty()) g.set(parse_vec3(opt, v), opt);
+  };
+  auto num = [](Given<double>& g, const std::string& v, const char* opt, bool positive) {
+    if (v.empty()) return;
+    const double x = parse_number(opt, v);
+    if (positive && !(x > 0.0))
+      throw UsageError(std::string(opt) + ": expected a positive number, got '" + v + "'");
+    g.set(x, opt);
+  };
+  if (!o.case_name.empty()) f.case_name.set(o.case_name, "--case");
+  vec(f.inertia, o.inertia, "--inertia");
+  vec(f.com, o.com, "--com");
+  vec(f.omega, o.omega, "--omega");
+  vec(f.gamma, o.gamma, "--gamma");
+  num(f.weight, o.weight, "--weight", false);
+  num(f.tol, o.tol, "--tol", true);
+  num(f.step, o.step, "--step", true);
+  num(f.t_end, o.t_end, "--t-end", true);
+  if (!o.samples.empty())
+    f.samples.set(parse_integer("--samples", o.samples, 1, 100'000'000), "--samples");
+  if (!o.formulation.empty()) f.formulation.set(o.formulation, "--formulation");
+  if (!o.method.empty()) f.method.set(o.method, "--method");
+  if (o.allow_nonphysical) f.allow_nonphysical.set(true, "--allow-nonphysical");
+  if (o.normalize_gamma) f.normalize_gamma.set(true, "--normalize-gamma");
+  if (o.no_chart_switch) f.chart_switch.set(false, "--no-chart-switch");
+  return f;
+}
+
+SimulationFields fields_from_job(const std::string& path) {
+  try {
+    auto json = io::read_json_file(path);
+    io::ObjectReader reader(json, path);
+    auto f = read_simulation_fields(reader);
+    reader.finish();
+    return f;
+  } catch (const io::JobError& e) {
+    throw UsageError(e.what());
+  }
+}
+
+void check_output_path(const std::string& option, const std::string& path) {
+  if (path.empty()) return;
+  const auto dir = std::filesystem::absolute(path).parent_path();
+  if (!std::filesystem::is_directory(dir))
+    throw UsageError(option + ": directory '" + dir.string() + "' does not exist");
+}
+
+std::string fmt(double x, const char* f = "%.3g") {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, f, x);
+  return buf;
+}
+
+void print_summary(const sim::RunSpec& spec, const sim::RunResult& r, const sim::Drifts& d) {
+  std::string accuracy = sim::is_adaptive(spec.method) ? "tol " + fmt(spec.tol)
+                                                      : "step " + fmt(r.effective_step);
+  std::printf("%-20s %-8s %-9s %-12s steps %8ld  rhs %9ld  rejected %5ld  cpu %8.4f s\n",
+              physics::case_name(spec.case_id).c_str(), std::string(sim::name(spec.formulation)).c_str(),
+              std::string(sim::name(spec.method)).c_str(), accuracy.c_str(), r.stats.steps,
+              r.stats.rhs_evals, r.stats.rejected_steps, r.cpu_seconds);
+  std::printf("%-20s max relative drift  |gamma|^2 %-9s  C0 %-9s  C1 %-9s  extra %s\n", "",
+              fmt(d.gamma_norm2).c_str(), fmt(d.area).c_str(), fmt(d.energy).c_str(),
+              d.extra ? fmt(*d.extra).c_str() : "-");
+  if (r.failure) std::printf("%-20s FAILED: %s\n", "", r.failure->message().c_str());
+}
+
+int run_simulate(const RawOptions& raw) {
+  SimulationFields fields;
+  if (!raw.job.empty()) fields = fields_from_job(raw.job);
+  fields.overlay(fields_from_cli(raw));
+  check_output_path("--csv", raw.csv);
+  check_output_path("--report-json", raw.report_json);
+
+  std::vector<SimulationFields> runs;
+  if (fields.case_name && *fields.case_name == "all") {
+    if (!raw.csv.empty())
+      throw UsageError("--csv: writes one run's samples; it cannot be combined with --case all");
+    for (const auto& p : physics::case_presets()) {
+      SimulationFields one = fields;
+      one.case_name.set(p.name, fields.case_name.origin);
+      runs.push_back(one);
+    }
+  } else {
+    runs.push_back(fields);
+  }
+
+  // Resolve every run before integrating any: bad input leaves nothing behind.
+  std::vector<sim::RunSpec> specs;
+  for (const auto& f : runs) specs.push_back(resolve(f));
+
+  nlohmann::json reports = nlohmann::json::array();
+  int failures = 0;
+  std::string csv;
+  for (const auto& spec : specs) {
+    const auto result = sim::simulate(spec);
+    const sim::InvariantMonitor monitor(spec.body, spec.case_id, spec.initial);
+    const auto drift = monitor.max_relative_drift(result.samples);
+    print_summary(spec, result, drift);
+    reports.push_back(run_report(spec, result, drift));
+    if (!raw.csv.empty()) csv = samples_csv(spec, result);
+    if (result.failure) {
+      ++failures;
+      std::fprintf(stderr, "epviz: %s\n", result.failure->message().c_str());
+    }
+  }
+  if (!raw.csv.empty()) write_output_file(raw.csv, csv);
+  if (!raw.report_json.empty())
+    write_output_file(raw.report_json,
+                      (specs.size() == 1 ? reports[0] : reports).dump(2) + "\n");
+  return failures ? 3 : 0;
+}
+
+}  // namespace
+
+std::function<int()> add_simulate_command(CLI::App& app) {
+  auto raw = std::make_shared<RawOptions>();
+  auto* cmd = app.add_subcommand("simulate", "Integrate one body (or every preset) and write samples");
+  cmd->add_option("--job", raw->job, "JSON job file with the same fields (options given here override it)");
+  cmd->add_option("--case", raw->case_name,
+                  "euler|lagrange|kovalevskaya|goryachev-chaplygin|hess|generic, or all");
+  cmd->add_option("--inertia", raw->inertia, "principal moments I1,I2,I3");
+  cmd->add_option("--com", raw->com, "centre of mass a0,b0,c0 in body axes");
+  cmd->add_option("--weight", raw->weight, "weight P = m g");
+  cmd->add_option("--omega", raw->omega, "initial angular velocity W1,W2,W3 (body axes)");
+  cmd->add_option("--gamma", raw->gamma, "initial unit vertical G1,G2,G3 (body axes)");
+  cmd->add_option("--formulation", raw->formulation, "direct|riccati|spinor (default direct)");
+  cmd->add_option("--method", raw->method,
+                  "rk4|dopri5|dop853|midpoint|gauss4|gauss6|splitting (default dop853)");
+  cmd->add_option("--tol", raw->tol, "relative and absolute tolerance of adaptive methods (default 1e-10)");
+  cmd->add_option("--step", raw->step, "largest step of fixed-step methods (default 0.01)");
+  cmd->add_option("--t-end", raw->t_end, "final time (default 20)");
+  cmd->add_option("--samples", raw->samples, "N: write N+1 equally spaced samples (default 200)");
+  cmd->add_option("--csv", raw->csv, "write the samples to this CSV file");
+  cmd->add_option("--report-json", raw->report_json, "write the run report to this JSON file");
+  cmd->add_flag("--allow-nonphysical", raw->allow_nonphysical,
+                "accept moments that break the triangle inequalities");
+  cmd->add_flag("--normalize-gamma", raw->normalize_gamma, "rescale a non-unit initial gamma");
+  cmd->add_flag("--no-chart-switch", raw->no_chart_switch,
+                "riccati: keep the north chart even near the south pole (to show the pole)");
+  return [raw] { return run_simulate(*raw); };
+}
+
+}  // namespace epviz::app

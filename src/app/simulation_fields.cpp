@@ -1,0 +1,173 @@
+#include "app/simulation_fields.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "app/usage_error.hpp"
+#include "physics/cases.hpp"
+
+namespace epviz::app {
+namespace {
+
+template <class T>
+void take(Given<T>& mine, const Given<T>& theirs) {
+  if (theirs) mine = theirs;
+}
+
+Eigen::Vector3d to_vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
+
+std::string join_names(const auto& items) {
+  std::string s;
+  for (const auto& i : items) s += (s.empty() ? "" : ", ") + std::string(sim::name(i));
+  return s;
+}
+
+std::string case_names() {
+  std::string s;
+  for (const auto& p : physics::case_presets()) s += (s.empty() ? "" : ", ") + p.name;
+  return s;
+}
+
+// Where a physics field name ("inertia") was given, for messages.
+std::string origin_of(const SimulationFields& f, const std::string& field) {
+  if (field == "inertia" && f.inertia) return f.inertia.origin;
+  if (field == "com" && f.com) return f.com.origin;
+  if (field == "weight" && f.weight) return f.weight.origin;
+  if (field == "omega" && f.omega) return f.omega.origin;
+  if (field == "gamma" && f.gamma) return f.gamma.origin;
+  if (f.case_name) return f.case_name.origin;
+  return "--" + field;
+}
+
+}  // namespace
+
+void SimulationFields::overlay(const SimulationFields& o) {
+  take(case_name, o.case_name);
+  take(inertia, o.inertia);
+  take(com, o.com);
+  take(omega, o.omega);
+  take(gamma, o.gamma);
+  take(weight, o.weight);
+  take(tol, o.tol);
+  take(step, o.step);
+  take(t_end, o.t_end);
+  take(samples, o.samples);
+  take(formulation, o.formulation);
+  take(method, o.method);
+  take(allow_nonphysical, o.allow_nonphysical);
+  take(normalize_gamma, o.normalize_gamma);
+  take(chart_switch, o.chart_switch);
+}
+
+SimulationFields read_simulation_fields(io::ObjectReader& r) {
+  SimulationFields f;
+  auto str = [&](Given<std::string>& g, const char* key) {
+    if (auto v = r.string(key)) g.set(*v, r.where(key));
+  };
+  auto num = [&](Given<double>& g, const char* key, bool positive) {
+    if (auto v = positive ? r.positive_number(key) : r.number(key)) g.set(*v, r.where(key));
+  };
+  auto vec = [&](Given<std::array<double, 3>>& g, const char* key) {
+    if (auto v = r.vec3(key)) g.set(*v, r.where(key));
+  };
+  auto flag = [&](Given<bool>& g, const char* key) {
+    if (auto v = r.boolean(key)) g.set(*v, r.where(key));
+  };
+  str(f.case_name, "case");
+  vec(f.inertia, "inertia");
+  vec(f.com, "com");
+  vec(f.omega, "omega");
+  vec(f.gamma, "gamma");
+  num(f.weight, "weight", false);
+  num(f.tol, "tol", true);
+  num(f.step, "step", true);
+  num(f.t_end, "t_end", true);
+  if (auto v = r.integer("samples", 1, 100'000'000)) f.samples.set(*v, r.where("samples"));
+  str(f.formulation, "formulation");
+  str(f.method, "method");
+  flag(f.allow_nonphysical, "allow_nonphysical");
+  flag(f.normalize_gamma, "normalize_gamma");
+  flag(f.chart_switch, "chart_switch");
+  return f;
+}
+
+sim::RunSpec resolve(const SimulationFields& f) {
+  sim::RunSpec spec;
+
+  // The case: its preset is the starting point for every field not given.
+  physics::Case c = physics::Case::generic;
+  if (f.case_name) {
+    auto found = physics::case_from_name(*f.case_name);
+    if (!found)
+      throw UsageError(f.case_name.origin + ": unknown case '" + *f.case_name +
+                       "' (allowed: " + case_names() + ")");
+    c = *found;
+  }
+  const auto& p = physics::preset(c);
+  spec.case_id = f.case_name ? c : physics::Case::custom;
+  spec.body = p.body;
+  spec.initial = p.initial;
+  if (f.inertia) spec.body.inertia = to_vec(*f.inertia);
+  if (f.com) spec.body.com = to_vec(*f.com);
+  if (f.weight) spec.body.weight = *f.weight;
+  if (f.omega) spec.initial.omega = to_vec(*f.omega);
+  if (f.gamma) spec.initial.gamma = to_vec(*f.gamma);
+
+  if (f.formulation) {
+    auto v = sim::formulation_from_name(*f.formulation);
+    if (!v)
+      throw UsageError(f.formulation.origin + ": unknown formulation '" + *f.formulation +
+                       "' (allowed: " + join_names(sim::all_formulations()) + ")");
+    spec.formulation = *v;
+  }
+  if (f.method) {
+    auto v = sim::method_from_name(*f.method);
+    if (!v)
+      throw UsageError(f.method.origin + ": unknown method '" + *f.method +
+                       "' (allowed: " + join_names(sim::all_methods()) + ")");
+    spec.method = *v;
+  }
+  if (auto why = sim::incompatibility(spec.method, spec.formulation))
+    throw UsageError((f.method ? f.method.origin : f.formulation.origin) + ": " + *why);
+
+  const std::string m(sim::name(spec.method));
+  if (sim::is_adaptive(spec.method)) {
+    if (f.step)
+      throw UsageError(f.step.origin + ": method " + m +
+                       " is adaptive and takes a tolerance (--tol), not a step");
+    if (f.tol) spec.tol = *f.tol;
+    if (!(spec.tol >= 1e-15 && spec.tol <= 1e-1))
+      throw UsageError(f.tol.origin + ": tolerance must be between 1e-15 and 0.1, got " +
+                       std::to_string(spec.tol));
+  } else {
+    if (f.tol)
+      throw UsageError(f.tol.origin + ": method " + m +
+                       " has a fixed step and takes --step, not a tolerance "
+                       "(adaptive methods: dopri5, dop853)");
+    if (f.step) spec.step = *f.step;
+  }
+  if (f.chart_switch) {
+    if (spec.formulation != sim::Formulation::riccati)
+      throw UsageError(f.chart_switch.origin +
+                       ": chart switching applies only to formulation riccati");
+    spec.chart_switch = *f.chart_switch;
+  }
+  if (f.t_end) spec.t_end = *f.t_end;
+  if (f.samples) spec.samples = int(*f.samples);
+  if (!sim::is_adaptive(spec.method) && spec.t_end / spec.step > 1e9)
+    throw UsageError(f.step.origin + ": t_end / step exceeds 1e9 steps");
+
+  try {
+    physics::validate_body(spec.body, f.allow_nonphysical && *f.allow_nonphysical);
+    spec.initial =
+        physics::validate_initial_state(spec.initial, f.normalize_gamma && *f.normalize_gamma);
+  } catch (const physics::InvalidInput& e) {
+    throw UsageError(origin_of(f, e.field()) + ": " + e.what());
+  }
+  if (auto broken = physics::broken_condition(spec.case_id, spec.body, spec.initial))
+    throw UsageError(f.case_name.origin + ": " + *broken +
+                     " (for a nearby non-integrable body give no case, or case generic)");
+  return spec;
+}
+
+}  // namespace epviz::app

@@ -1,0 +1,59 @@
+#pragma once
+// Typed, strict reading of JSON job files: every error names the file, the key
+// path and what is allowed, and keys nobody asked for are errors (a typo must
+// not pass silently).
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace epviz::io {
+
+class JobError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Parses a whole file; a syntax error names the file, line and column.
+nlohmann::json read_json_file(const std::filesystem::path& path);
+
+// Reads the members of one JSON object. Call finish() after the last get to
+// reject unknown keys.
+class ObjectReader {
+ public:
+  // `path` is the key path of this object ("" for the root); `file` is for messages.
+  ObjectReader(const nlohmann::json& object, std::string file, std::string path = "");
+
+  bool has(const std::string& key) const;
+  std::optional<double> number(const std::string& key);
+  std::optional<double> positive_number(const std::string& key);
+  std::optional<long> integer(const std::string& key, long min_value, long max_value);
+  std::optional<bool> boolean(const std::string& key);
+  std::optional<std::string> string(const std::string& key);
+  // A string from a closed set of values.
+  std::optional<std::string> choice(const std::string& key, const std::vector<std::string>& allowed);
+  std::optional<std::array<double, 3>> vec3(const std::string& key);
+  std::optional<ObjectReader> object(const std::string& key);
+
+  // Throws JobError naming the first key that was never read.
+  void finish() const;
+
+  // "file: key 'a.b'" for messages about a value after it was read.
+  std::string where(const std::string& key) const;
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const;
+
+ private:
+  const nlohmann::json* get(const std::string& key);
+
+  const nlohmann::json* object_;
+  std::string file_;
+  std::string path_;
+  std::set<std::string> read_;
+};
+
+}  // namespace epviz::io

@@ -1,0 +1,55 @@
+#pragma once
+// What every stepper shares: the start-of-step hook (regularize), the
+// end-of-step checks (non-finite state, the system's own check()) and the
+// throwing of IntegrationError. The throwing helpers live out of line
+// (stepper_common.cpp) so that the hot paths only carry a predictable branch.
+#include <string>
+#include <type_traits>
+#include <utility>
+
+#include "numerics/failure.hpp"
+#include "numerics/system.hpp"
+
+namespace epviz::numerics {
+
+namespace detail {
+
+// Throws IntegrationError(Failure{t, method, reason, suggestion}).
+[[noreturn]] void throw_failure(double t, const char* method, std::string reason,
+                                std::string suggestion);
+
+// The failure for a non-finite state (NaN or Inf) found at time t.
+[[noreturn]] void throw_non_finite(double t, const char* method, const char* hint);
+
+// The failure for an issue reported by the system's check().
+[[noreturn]] void throw_issue(double t, const char* method, const Issue& issue);
+
+// End of an accepted step: the state must be finite and the system's check()
+// must not object. `hint` completes the non-finite suggestion.
+template <class Sys>
+inline void check_accepted(const Sys& sys, const typename Sys::State& x, double t,
+                           const char* method, const char* hint) {
+  if (!x.allFinite()) [[unlikely]]
+    throw_non_finite(t, method, hint);
+  if constexpr (requires { sys.check(x); }) {
+    if (auto issue = sys.check(x)) [[unlikely]]
+      throw_issue(t, method, *issue);
+  }
+}
+
+// Hint for fixed-step methods that met a non-finite state.
+inline constexpr const char* fixed_step_hint =
+    "reduce --step, or the solution may blow up here; an adaptive method (dop853) finds "
+    "where";
+
+}  // namespace detail
+
+// A system that can be split into exactly solvable sub-flows (Strang splitting).
+template <class Sys>
+concept SplittableSystem = requires(const Sys& s, int i, double h, typename Sys::State& x) {
+  { Sys::dim } -> std::convertible_to<int>;
+  { Sys::n_flows } -> std::convertible_to<int>;
+  s.flow(i, h, x);
+};
+
+}  // namespace epviz::numerics

@@ -1,0 +1,40 @@
+#pragma once
+// Runs one model with one stepper to a list of output times.
+#include <Eigen/Geometry>
+#include <optional>
+#include <vector>
+
+#include "numerics/failure.hpp"
+#include "numerics/system.hpp"
+#include "sim/run_spec.hpp"
+
+namespace epviz::sim {
+
+struct Sample {
+  double t = 0.0;
+  Eigen::Vector3d omega = Eigen::Vector3d::Zero();
+  Eigen::Vector3d gamma = Eigen::Vector3d::UnitZ();
+  // Body-to-space rotation; only the spinor formulation integrates it.
+  std::optional<Eigen::Quaterniond> attitude;
+};
+
+struct RunResult {
+  std::vector<Sample> samples;  // up to the failure, if any
+  numerics::Stats stats;
+  double cpu_seconds = 0.0;     // integration only: no I/O, no invariant bookkeeping
+  double effective_step = 0.0;  // fixed-step methods: the step actually used
+  long chart_switches = 0;      // Riccati formulation only
+  std::optional<numerics::Failure> failure;
+};
+
+// Output times: samples + 1 equally spaced instants from 0 to t_end.
+std::vector<double> output_times(double t_end, int samples);
+
+// Integrates spec and samples the state at output_times(spec.t_end, spec.samples).
+// Adaptive methods sample by dense output, so output times never force steps;
+// fixed-step methods shorten spec.step so that it divides the sample spacing.
+// Numerical failure is not thrown: it ends the run and is returned in `failure`.
+// Throws std::invalid_argument for a spec that cannot run (incompatible method).
+RunResult simulate(const RunSpec& spec);
+
+}  // namespace epviz::sim
