@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "app/cli_values.hpp"
-#include "app/output_files.hpp"
+#include "io/atomic_file.hpp"
 #include "app/simulation_fields.hpp"
 #include "app/simulation_output.hpp"
 #include "app/usage_error.hpp"
@@ -128,9 +128,9 @@ int run_simulate(const RawOptions& raw) {
       std::fprintf(stderr, "epviz: %s\n", result.failure->message().c_str());
     }
   }
-  if (!raw.csv.empty()) write_output_file(raw.csv, csv);
+  if (!raw.csv.empty()) io::write_file_atomically(raw.csv, csv);
   if (!raw.report_json.empty())
-    write_output_file(raw.report_json,
+    io::write_file_atomically(raw.report_json,
                       (specs.size() == 1 ? reports[0] : reports).dump(2) + "\n");
   return failures ? 3 : 0;
 }
