@@ -14,7 +14,14 @@ inline std::string num(double v) {
 }
 
 inline std::string vec(const Eigen::Vector3d& v) {
-  return "(" + num(v.x()) + ", " + num(v.y()) + ", " + num(v.z()) + ")";
+  std::string s(1, '(');  // appended piecewise (GCC 12 warns on "literal" + string&&)
+  s += num(v.x());
+  s += ", ";
+  s += num(v.y());
+  s += ", ";
+  s += num(v.z());
+  s += ')';
+  return s;
 }
 
 }  // namespace epviz::physics::detail
