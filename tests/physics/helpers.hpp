@@ -1,6 +1,7 @@
 #pragma once
 // Test-only helpers: a classical RK4 written independently of src/, and random states.
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <random>
 
 namespace epviz::physics::test {
