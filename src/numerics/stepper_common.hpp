@@ -24,17 +24,24 @@ namespace detail {
 // The failure for an issue reported by the system's check().
 [[noreturn]] void throw_issue(double t, const char* method, const Issue& issue);
 
+// The system's check() (when it has one) must not object to x at time t.
+template <class Sys>
+inline void check_issue(const Sys& sys, const typename Sys::State& x, double t,
+                        const char* method) {
+  if constexpr (requires { sys.check(x); }) {
+    if (auto issue = sys.check(x)) [[unlikely]]
+      throw_issue(t, method, *issue);
+  }
+}
+
 // End of an accepted step: the state must be finite and the system's check()
-// must not object. `hint` completes the non-finite suggestion.
+// must not object. `hint` is the suggestion for a non-finite state.
 template <class Sys>
 inline void check_accepted(const Sys& sys, const typename Sys::State& x, double t,
                            const char* method, const char* hint) {
   if (!x.allFinite()) [[unlikely]]
     throw_non_finite(t, method, hint);
-  if constexpr (requires { sys.check(x); }) {
-    if (auto issue = sys.check(x)) [[unlikely]]
-      throw_issue(t, method, *issue);
-  }
+  check_issue(sys, x, t, method);
 }
 
 // Hint for fixed-step methods that met a non-finite state.

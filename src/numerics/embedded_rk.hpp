@@ -1,0 +1,387 @@
+#pragma once
+// Adaptive explicit Runge–Kutta methods with an embedded error estimate,
+// step-size control (standard or PI), FSAL and dense output:
+//
+//   Dopri5<Sys>   Dormand–Prince 5(4), dense output of order 4
+//   Dop853<Sys>   Hairer's DOP853, order 8, 5th/3rd-order error estimators
+//                 combined as in DOP853, dense output of order 7
+//
+// Usage:
+//   Dop853<Sys> s(sys, opts);
+//   s.init(t0, x0);
+//   while (s.t() < t_out) s.step();      // one accepted step each
+//   x = s.dense(t_out);                   // valid on [s.t_prev(), s.t()]
+//
+// The error norm is Hairer's: the RMS over components of
+// err_i / (atol + rtol max(|x_i|, |x_new_i|)); a step is accepted when it is <= 1.
+// Only forward integration (h > 0) is supported: integrate the time-reversed
+// system to go backwards.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+
+#include "numerics/rk_tableaus.hpp"
+#include "numerics/stepper_common.hpp"
+
+namespace epviz::numerics {
+
+struct AdaptiveOptions {
+  double rtol = 1e-8, atol = 1e-8;
+  double h_init = 0;  // 0: automatic initial step (Hairer's hinit)
+  double h_max = std::numeric_limits<double>::infinity();
+  long max_steps = 100'000'000;  // step attempts (accepted + rejected) since init()
+  int max_consecutive_rejects = 60;
+  // Step-size control: h_new = h * clamp(safety * err^-(1/q - 0.75 beta) * err_old^beta,
+  // fac_min, fac_max). A negative value selects the method's default
+  // (dopri5: fac_min 0.2, fac_max 10, beta 0.04; dop853: 1/3, 6, 0).
+  double safety = 0.9;
+  double fac_min = -1;
+  double fac_max = -1;
+  double beta = -1;
+};
+
+namespace detail {
+
+template <std::size_t Begin, class F, std::size_t... J>
+inline void static_for_impl(F&& f, std::index_sequence<J...>) {
+  (f(std::integral_constant<std::size_t, Begin + J>{}), ...);
+}
+
+// Calls f(std::integral_constant<std::size_t, j>) for j = Begin .. End-1.
+template <std::size_t Begin, std::size_t End, class F>
+inline void static_for(F&& f) {
+  if constexpr (End > Begin)
+    static_for_impl<Begin>(std::forward<F>(f), std::make_index_sequence<End - Begin>{});
+}
+
+template <std::size_t N>
+constexpr std::size_t first_nonzero(const std::array<double, N>& w, std::size_t n) {
+  for (std::size_t j = 0; j < n; ++j)
+    if (w[j] != 0.0) return j;
+  return n;
+}
+
+}  // namespace detail
+
+template <OdeSystem Sys, class Tableau>
+class EmbeddedRk {
+ public:
+  using System = Sys;
+  using State = typename Sys::State;
+  static constexpr const char* name = Tableau::name;
+  static constexpr int order = Tableau::order;
+  static constexpr int dense_order = Tableau::dense_order;
+
+  explicit EmbeddedRk(Sys sys, AdaptiveOptions opts = {}) : sys_(std::move(sys)), opts_(opts) {
+    fac_min_ = opts_.fac_min < 0 ? Tableau::default_fac_min : opts_.fac_min;
+    fac_max_ = opts_.fac_max < 0 ? Tableau::default_fac_max : opts_.fac_max;
+    beta_ = opts_.beta < 0 ? Tableau::default_beta : opts_.beta;
+    expo_ = Tableau::error_exponent - 0.75 * beta_;
+    if (!(opts_.rtol >= 0 && opts_.atol >= 0 && opts_.rtol + opts_.atol > 0))
+      throw std::invalid_argument(std::string(name) + ": tolerances must be >= 0, not both 0");
+    if (!(opts_.h_max > 0)) throw std::invalid_argument(std::string(name) + ": h_max must be > 0");
+    if (!(opts_.safety > 0 && opts_.safety <= 1 && fac_min_ > 0 && fac_min_ < 1 && fac_max_ > 1))
+      throw std::invalid_argument(std::string(name) + ": invalid step-size control factors");
+  }
+
+  // Starts an integration at (t0, x0); resets the statistics.
+  void init(double t0, const State& x0) {
+    t_ = t_prev_ = t0;
+    x_ = x_prev_ = x0;
+    h_ = opts_.h_init > 0 ? std::min(opts_.h_init, opts_.h_max) : 0.0;
+    h_last_ = 0;
+    err_old_ = 1e-4;
+    attempts_ = 0;
+    consecutive_rejects_ = 0;
+    fsal_pending_ = false;
+    last_rejected_ = false;
+    dense_ = DenseState::none;
+    stats_ = Stats{};
+    initialized_ = true;
+  }
+
+  // Takes one accepted step (retrying with smaller steps as needed). Throws
+  // IntegrationError when it cannot.
+  void step();
+
+  double t() const { return t_; }
+  double t_prev() const { return t_prev_; }
+  double h_last() const { return h_last_; }  // size of the last accepted step
+  double h_next() const { return h_; }       // size the next step will try
+  const State& state() const { return x_; }
+
+  // The continuous extension of the last accepted step, valid for t in
+  // [t_prev(), t()] (outside it the polynomial is extrapolated). Must be called
+  // before the next step(); the first call after a step evaluates the extra
+  // stages the interpolant needs (DOP853: 3 right-hand sides).
+  State dense(double t) const;
+
+  // One step of size h without error control (for convergence-order studies).
+  // Shares the work arrays with the adaptive integration: do not interleave.
+  void step(State& x, double t, double h);
+
+  Sys& system() { return sys_; }
+  const Sys& system() const { return sys_; }
+  const Stats& stats() const { return stats_; }
+  const AdaptiveOptions& options() const { return opts_; }
+
+ private:
+  static constexpr int S = Tableau::stages;
+  static constexpr int N = Tableau::total;
+  using Row = typename Tableau::Row;
+  using Stages = std::array<State, N>;
+  enum class DenseState { none, lazy, ready };
+
+  static constexpr bool error_needs_fsal = Tableau::e[S] != 0.0 || Tableau::e2[S] != 0.0;
+  static constexpr std::size_t error_terms = error_needs_fsal ? S + 1 : S;
+
+  // acc = sum_{j < n} w[j] k[j], zero weights skipped at compile time.
+  template <const Row& W, std::size_t Nterms>
+  static inline void weighted_sum(State& acc, const Stages& k) {
+    constexpr std::size_t first = detail::first_nonzero(W, Nterms);
+    static_assert(first < Nterms, "weights must not all vanish");
+    acc.noalias() = W[first] * k[first];
+    detail::static_for<first + 1, Nterms>([&](auto j) {
+      constexpr double w = W[j];
+      if constexpr (w != 0.0) acc.noalias() += w * k[j];
+    });
+  }
+
+  // Stage I from base point (t0, x0) with step h: k[I] = f(t0 + c_I h, x0 + h sum a_Ij k_j).
+  template <std::size_t I>
+  inline void stage(double t0, const State& x0, double h, Stages& k, State& acc, State& tmp) const {
+    weighted_sum<Tableau::a[I], I>(acc, k);
+    tmp.noalias() = x0 + h * acc;
+    sys_.rhs(t0 + Tableau::c[I] * h, tmp, k[I]);
+  }
+
+  // Stages 1 .. S-1 and x_new (into xnew_) from (t, x) with k_[0] set.
+  inline void stages_and_solution(double t, const State& x, double h) {
+    detail::static_for<1, S>([&](auto i) { stage<i>(t, x, h, k_, acc_, tmp_); });
+    weighted_sum<Tableau::b, S>(acc_, k_);
+    xnew_.noalias() = x + h * acc_;
+  }
+
+  inline double error_norm(double h) {
+    using Arr = Eigen::Array<double, Sys::dim, 1>;
+    const Arr sk = opts_.atol + opts_.rtol * x_.array().abs().max(xnew_.array().abs());
+    constexpr double n = double(Sys::dim);
+    if constexpr (Tableau::two_estimators) {
+      weighted_sum<Tableau::e, error_terms>(acc_, k_);
+      const double e3 = (acc_.array() / sk).square().sum();
+      weighted_sum<Tableau::e2, error_terms>(acc_, k_);
+      const double e5 = (acc_.array() / sk).square().sum();
+      double deno = e5 + 0.01 * e3;
+      if (deno <= 0.0) deno = 1.0;
+      return std::abs(h) * e5 / std::sqrt(n * deno);
+    } else {
+      weighted_sum<Tableau::e, error_terms>(acc_, k_);
+      return std::abs(h) * std::sqrt((acc_.array() / sk).square().sum() / n);
+    }
+  }
+
+  double initial_step();
+  void prepare_dense() const;
+  [[noreturn]] void fail(std::string reason, std::string suggestion) const {
+    detail::throw_failure(t_, name, std::move(reason), std::move(suggestion));
+  }
+  static std::string fmt(const char* f, double v) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, f, v);
+    return buf;
+  }
+
+  Sys sys_;
+  AdaptiveOptions opts_;
+  double fac_min_, fac_max_, beta_, expo_;
+
+  double t_ = 0, t_prev_ = 0, h_ = 0, h_last_ = 0, err_old_ = 1e-4;
+  long attempts_ = 0;
+  int consecutive_rejects_ = 0;
+  bool fsal_pending_ = false;  // k_[S] holds f(t_, x_)
+  bool last_rejected_ = false;
+  bool initialized_ = false;
+  State x_, x_prev_, xnew_, acc_, tmp_;
+  // Stages of the last step. Mutable: dense() fills in the extra stages lazily.
+  mutable Stages k_;
+  mutable std::array<State, 4 + Tableau::dense_rows> cont_;
+  mutable DenseState dense_ = DenseState::none;
+  mutable Stats stats_;
+};
+
+template <OdeSystem Sys, class Tableau>
+double EmbeddedRk<Sys, Tableau>::initial_step() {
+  // Hairer, Nørsett & Wanner, Solving ODEs I, II.4 (subroutine HINIT).
+  using Arr = Eigen::Array<double, Sys::dim, 1>;
+  const Arr sk = opts_.atol + opts_.rtol * x_.array().abs();
+  const double dnf = (k_[0].array() / sk).square().sum();
+  const double dny = (x_.array() / sk).square().sum();
+  double h = (dnf <= 1e-10 || dny <= 1e-10) ? 1e-6 : 0.01 * std::sqrt(dny / dnf);
+  h = std::min(h, opts_.h_max);
+  tmp_.noalias() = x_ + h * k_[0];
+  sys_.rhs(t_ + h, tmp_, k_[1]);
+  ++stats_.rhs_evals;
+  const double der2 = std::sqrt(((k_[1] - k_[0]).array() / sk).square().sum()) / h;
+  const double der12 = std::max(std::abs(der2), std::sqrt(dnf));
+  if (!std::isfinite(der12)) return h * 1e-2;
+  const double h1 = der12 <= 1e-15 ? std::max(1e-6, h * 1e-3)
+                                   : std::pow(0.01 / der12, 1.0 / double(Tableau::order));
+  return std::min({100.0 * h, h1, opts_.h_max});
+}
+
+template <OdeSystem Sys, class Tableau>
+void EmbeddedRk<Sys, Tableau>::step() {
+  if (!initialized_) [[unlikely]]
+    throw std::logic_error(std::string(name) + ": step() before init()");
+  // The stages of the previous step are about to be overwritten.
+  if (dense_ == DenseState::lazy) dense_ = DenseState::none;
+
+  if (detail::regularize(sys_, x_)) fsal_pending_ = false;
+  if (fsal_pending_) {
+    k_[0] = k_[S];
+  } else {
+    sys_.rhs(t_, x_, k_[0]);
+    ++stats_.rhs_evals;
+    if (!k_[0].allFinite() || !x_.allFinite()) [[unlikely]]
+      fail("non-finite state or derivative (NaN or Inf)",
+           "the solution may blow up here; loosen --tol or check the initial state");
+  }
+  fsal_pending_ = false;
+  if (h_ <= 0.0) h_ = initial_step();
+
+  int nonfinite_trials = 0;
+  for (;;) {
+    double h = std::min(h_, opts_.h_max);
+    if (attempts_ >= opts_.max_steps) [[unlikely]]
+      fail("more than " + std::to_string(opts_.max_steps) + " steps (max_steps)",
+           "loosen --tol or shorten the interval; the problem may be stiff here, try an "
+           "implicit method (gauss4)");
+    if (!(h >= 16.0 * std::numeric_limits<double>::epsilon() * std::abs(t_)) || h <= 0.0)
+      [[unlikely]]
+      fail(fmt("step size underflow (h = %.3g)", h),
+           "loosen --tol, or the solution may blow up here; for Riccati use chart switching or "
+           "the spinor formulation");
+    ++attempts_;
+
+    stages_and_solution(t_, x_, h);
+    if constexpr (error_needs_fsal) {
+      sys_.rhs(t_ + h, xnew_, k_[S]);
+      stats_.rhs_evals += S;
+    } else {
+      stats_.rhs_evals += S - 1;
+    }
+    const double err = error_norm(h);
+    const bool finite = std::isfinite(err) && xnew_.allFinite();
+
+    if (finite && err <= 1.0) [[likely]] {
+      double fac = opts_.safety * std::pow(err, -expo_);
+      if (beta_ != 0.0) fac *= std::pow(err_old_, beta_);
+      fac = std::clamp(fac, fac_min_, fac_max_);  // err == 0 gives +inf: clamped
+      if (last_rejected_) fac = std::min(fac, 1.0);
+      err_old_ = std::max(err, 1e-4);
+
+      if constexpr (!error_needs_fsal) {
+        sys_.rhs(t_ + h, xnew_, k_[S]);
+        ++stats_.rhs_evals;
+      }
+      detail::check_issue(sys_, xnew_, t_ + h, name);
+      t_prev_ = t_;
+      x_prev_ = x_;
+      t_ += h;
+      x_ = xnew_;
+      h_last_ = h;
+      h_ = h * fac;
+      fsal_pending_ = true;
+      last_rejected_ = false;
+      consecutive_rejects_ = 0;
+      dense_ = DenseState::lazy;
+      ++stats_.steps;
+      return;
+    }
+
+    // Rejected.
+    ++stats_.rejected_steps;
+    last_rejected_ = true;
+    double fac = fac_min_;
+    if (finite) {
+      fac = std::max(fac_min_, opts_.safety * std::pow(err, -expo_));
+    } else {
+      ++nonfinite_trials;
+    }
+    h_ = h * fac;
+    if (++consecutive_rejects_ > opts_.max_consecutive_rejects) [[unlikely]] {
+      if (nonfinite_trials > 0)
+        fail(fmt("non-finite trial states (NaN or Inf) even with h = %.3g", h),
+             "the solution may blow up here; loosen --tol, or for Riccati use chart switching "
+             "or the spinor formulation");
+      fail(std::to_string(consecutive_rejects_) +
+               fmt(" consecutive rejected steps (h = %.3g)", h),
+           "loosen --tol, or the solution may blow up here; for Riccati use chart switching or "
+           "the spinor formulation");
+    }
+  }
+}
+
+template <OdeSystem Sys, class Tableau>
+void EmbeddedRk<Sys, Tableau>::prepare_dense() const {
+  const double h = h_last_;
+  State acc, tmp;
+  detail::static_for<S + 1, N>([&](auto i) {
+    weighted_sum<Tableau::a[i], i>(acc, k_);
+    tmp.noalias() = x_prev_ + h * acc;
+    sys_.rhs(t_prev_ + Tableau::c[i] * h, tmp, k_[i]);
+  });
+  stats_.rhs_evals += N - S - 1;
+  cont_[0] = x_prev_;
+  cont_[1] = x_ - x_prev_;
+  cont_[2] = h * k_[0] - cont_[1];
+  cont_[3] = cont_[1] - h * k_[S] - cont_[2];
+  detail::static_for<0, Tableau::dense_rows>([&](auto r) {
+    weighted_sum<Tableau::d[r], N>(acc, k_);
+    cont_[4 + r] = h * acc;
+  });
+  dense_ = DenseState::ready;
+}
+
+template <OdeSystem Sys, class Tableau>
+auto EmbeddedRk<Sys, Tableau>::dense(double t) const -> State {
+  if (dense_ == DenseState::none) {
+    if (t == t_) return x_;
+    throw std::logic_error(std::string(name) +
+                           ": dense output requested with no step to interpolate (call it "
+                           "after step() and before the next one)");
+  }
+  if (dense_ == DenseState::lazy) prepare_dense();
+  const double s = (t - t_prev_) / h_last_;
+  const double s1 = 1.0 - s;
+  constexpr int M = 4 + Tableau::dense_rows;
+  State r = cont_[M - 1];
+  for (int j = M - 2; j >= 0; --j) r = cont_[j] + ((j % 2 == 0) ? s : s1) * r;
+  return r;
+}
+
+template <OdeSystem Sys, class Tableau>
+void EmbeddedRk<Sys, Tableau>::step(State& x, double t, double h) {
+  fsal_pending_ = false;
+  dense_ = DenseState::none;
+  detail::regularize(sys_, x);
+  sys_.rhs(t, x, k_[0]);
+  stages_and_solution(t, x, h);
+  stats_.rhs_evals += S;
+  detail::check_accepted(sys_, xnew_, t + h, name, detail::fixed_step_hint);
+  x = xnew_;
+  ++stats_.steps;
+}
+
+template <OdeSystem Sys>
+using Dopri5 = EmbeddedRk<Sys, Dopri5Tableau>;
+template <OdeSystem Sys>
+using Dop853 = EmbeddedRk<Sys, Dop853Tableau>;
+
+}  // namespace epviz::numerics
