@@ -136,6 +136,12 @@ class EmbeddedRk {
   static constexpr int N = Tableau::total;
   using Row = typename Tableau::Row;
   using Stages = std::array<State, N>;
+  template <std::size_t M>
+  static std::array<State, M> filled() {
+    std::array<State, M> a;
+    a.fill(State::Zero());
+    return a;
+  }
   enum class DenseState { none, lazy, ready };
 
   static constexpr bool error_needs_fsal = Tableau::e[S] != 0.0 || Tableau::e2[S] != 0.0;
@@ -207,10 +213,11 @@ class EmbeddedRk {
   bool fsal_pending_ = false;  // k_[S] holds f(t_, x_)
   bool last_rejected_ = false;
   bool initialized_ = false;
-  State x_, x_prev_, xnew_, acc_, tmp_;
+  State x_ = State::Zero(), x_prev_ = State::Zero(), xnew_ = State::Zero();
+  State acc_ = State::Zero(), tmp_ = State::Zero();
   // Stages of the last step. Mutable: dense() fills in the extra stages lazily.
-  mutable Stages k_;
-  mutable std::array<State, 4 + Tableau::dense_rows> cont_;
+  mutable Stages k_ = filled<N>();
+  mutable std::array<State, 4 + Tableau::dense_rows> cont_ = filled<4 + Tableau::dense_rows>();
   mutable DenseState dense_ = DenseState::none;
   mutable Stats stats_;
 };

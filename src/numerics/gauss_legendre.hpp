@@ -125,8 +125,13 @@ class GaussLegendre {
   ImplicitOptions opts_;
   Stats stats_;
   int last_iterations_ = 0;
-  std::array<State, Stages> z_, f_, znew_;
-  State tmp_, comp_, x_out_;
+  static std::array<State, Stages> zeros() {
+    std::array<State, Stages> a;
+    a.fill(State::Zero());
+    return a;
+  }
+  std::array<State, Stages> z_ = zeros(), f_ = zeros(), znew_ = zeros();
+  State tmp_ = State::Zero(), comp_ = State::Zero(), x_out_ = State::Zero();
   bool have_prev_ = false;  // z_, comp_, x_out_ describe the previous step
   double t_end_ = 0, h_prev_ = 0;
   double w_ratio_ = std::numeric_limits<double>::quiet_NaN();

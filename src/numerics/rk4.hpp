@@ -42,7 +42,8 @@ class Rk4 {
  private:
   Sys sys_;
   Stats stats_;
-  State k1_, k2_, k3_, k4_, tmp_;
+  State k1_ = State::Zero(), k2_ = State::Zero(), k3_ = State::Zero(), k4_ = State::Zero();
+  State tmp_ = State::Zero();
 };
 
 }  // namespace epviz::numerics

@@ -51,7 +51,7 @@ class StrangSplitting {
  private:
   Sys sys_;
   Stats stats_;
-  State tmp_;
+  State tmp_ = State::Zero();
 };
 
 }  // namespace epviz::numerics

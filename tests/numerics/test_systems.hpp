@@ -56,6 +56,14 @@ struct TimeDependentRiccati {
   static State exact(double t) { return State(1.0 / (1.0 + t * t)); }
 };
 
+// Non-autonomous linear y' = 3 cos(3t) y, y(0) = 1 -> y = exp(sin 3t).
+struct ExpSin {
+  static constexpr int dim = 1;
+  using State = Vec<1>;
+  void rhs(double t, const State& x, State& dx) const { dx[0] = 3.0 * std::cos(3.0 * t) * x[0]; }
+  static State exact(double t) { return State(std::exp(std::sin(3.0 * t))); }
+};
+
 // Kepler problem (mu = 1), semi-major axis 1, eccentricity e, starting at
 // periapsis. State (q1, q2, p1, p2). Split into drift (q += h p) and kick.
 struct Kepler {
