@@ -1,7 +1,6 @@
 #include "physics/body.hpp"
 
 #include <cmath>
-#include <cstdio>
 
 #include "physics/format.hpp"
 
@@ -14,12 +13,7 @@ namespace {
 
 bool finite(const Vector3d& v) { return v.allFinite(); }
 
-// 12 significant digits: enough to show how far from 1 a norm is.
-std::string short_num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.12g", v);
-  return buf;
-}
+
 
 }  // namespace
 
@@ -61,7 +55,7 @@ InitialState validate_initial_state(const InitialState& s, bool normalize) {
     return out;
   }
   throw InvalidInput("gamma", "gamma must be a unit vector (| |gamma| - 1 | <= 1e-9); got |gamma| = " +
-                                  short_num(n) + "; pass --normalize-gamma to rescale it");
+                                  detail::approx(n) + "; pass --normalize-gamma to rescale it");
 }
 
 }  // namespace epviz::physics

@@ -1,6 +1,6 @@
 #pragma once
-// Number formatting for messages a user reads: the shortest text that reads
-// back as the same double ("1.5", "0.1", "1e-20").
+// Number formatting for messages a user reads: num() echoes a number the user
+// gave as the shortest text that reads back as the same double ("1.5", "0.1").
 #include <Eigen/Core>
 #include <charconv>
 #include <string>
@@ -10,6 +10,13 @@ namespace epviz::physics::detail {
 inline std::string num(double v) {
   char buf[64];
   const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+// A computed value, to 12 significant digits ("0.3", not "0.29999999999999993").
+inline std::string approx(double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, 12);
   return std::string(buf, r.ptr);
 }
 
