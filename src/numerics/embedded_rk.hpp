@@ -37,8 +37,9 @@ struct AdaptiveOptions {
   double h_max = std::numeric_limits<double>::infinity();
   long max_steps = 100'000'000;  // step attempts (accepted + rejected) since init()
   int max_consecutive_rejects = 60;
-  // Step-size control: h_new = h * clamp(safety * err^-(1/q - 0.75 beta) * err_old^beta,
-  // fac_min, fac_max). A negative value selects the method's default
+  // Step-size control: h_new = h * clamp(safety * err^-(1/q - k beta) * err_old^beta,
+  // fac_min, fac_max), q = 5, k = 0.75 for dopri5 and q = 8, k = 0.2 for dop853
+  // (as in Hairer's codes). A negative value selects the method's default
   // (dopri5: fac_min 0.2, fac_max 10, beta 0.04; dop853: 1/3, 6, 0).
   double safety = 0.9;
   double fac_min = -1;
@@ -82,7 +83,7 @@ class EmbeddedRk {
     fac_min_ = opts_.fac_min < 0 ? Tableau::default_fac_min : opts_.fac_min;
     fac_max_ = opts_.fac_max < 0 ? Tableau::default_fac_max : opts_.fac_max;
     beta_ = opts_.beta < 0 ? Tableau::default_beta : opts_.beta;
-    expo_ = Tableau::error_exponent - 0.75 * beta_;
+    expo_ = Tableau::error_exponent - Tableau::beta_coupling * beta_;
     if (!(opts_.rtol >= 0 && opts_.atol >= 0 && opts_.rtol + opts_.atol > 0))
       throw std::invalid_argument(std::string(name) + ": tolerances must be >= 0, not both 0");
     if (!(opts_.h_max > 0)) throw std::invalid_argument(std::string(name) + ": h_max must be > 0");

@@ -31,6 +31,7 @@ struct Dopri5Tableau {
   static constexpr bool two_estimators = false;
   static constexpr double error_exponent = 1.0 / 5.0;  // 1 / (estimator order + 1)
   static constexpr double default_beta = 0.04;         // PI control (Hairer's dopri5)
+  static constexpr double beta_coupling = 0.75;        // exponent 1/5 - 0.75 beta
   static constexpr double default_fac_min = 0.2;
   static constexpr double default_fac_max = 10.0;
   static constexpr int dense_rows = 1;
@@ -89,6 +90,7 @@ struct Dop853Tableau {
   static constexpr bool two_estimators = true;
   static constexpr double error_exponent = 1.0 / 8.0;
   static constexpr double default_beta = 0.0;  // Hairer's dop853 default: no PI term
+  static constexpr double beta_coupling = 0.2;  // exponent 1/8 - 0.2 beta (as in DOP853)
   static constexpr double default_fac_min = 1.0 / 3.0;
   static constexpr double default_fac_max = 6.0;
   static constexpr int dense_rows = 4;
