@@ -1,0 +1,328 @@
+// Failure detection: every stepper throws IntegrationError with a usable
+// Failure instead of returning a state it cannot trust; regularize() and
+// check() hooks are honoured.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "numerics/embedded_rk.hpp"
+#include "numerics/gauss_legendre.hpp"
+#include "numerics/rk4.hpp"
+#include "numerics/splitting.hpp"
+#include "test_systems.hpp"
+
+namespace epviz::numerics {
+namespace {
+
+using testing::BlowUp;
+using testing::ExpBlowUp;
+using testing::Linear1;
+
+bool contains(const std::string& s, const std::string& what) { return s.find(what) != std::string::npos; }
+
+// Runs f, which must throw IntegrationError; returns its Failure.
+template <class F>
+Failure failure_of(F&& f) {
+  try {
+    f();
+  } catch (const IntegrationError& e) {
+    EXPECT_EQ(std::string(e.what()), e.failure().message());
+    return e.failure();
+  }
+  ADD_FAILURE() << "no IntegrationError thrown";
+  return {};
+}
+
+template <template <class> class Method>
+void expect_blow_up_detected(const char* name) {
+  AdaptiveOptions o;
+  o.rtol = o.atol = 1e-8;
+  Method<BlowUp> s({}, o);
+  s.init(0.0, Vec<1>(1.0));
+  const Failure f = failure_of([&] {
+    while (s.t() < 2.0) s.step();
+  });
+  EXPECT_EQ(f.method, name);
+  // The numerical solution has its own pole, within the accumulated error of 1.
+  EXPECT_NEAR(f.t, 1.0, 1e-6);
+  EXPECT_FALSE(f.reason.empty());
+  EXPECT_FALSE(f.suggestion.empty());
+  // The last accepted state is still the (huge but finite) solution.
+  EXPECT_TRUE(s.state().allFinite());
+  EXPECT_GT(s.state()[0], 1e8);
+  EXPECT_LE(s.t(), f.t);
+}
+
+TEST(Failure, AdaptiveMethodsStopAtABlowUp) {
+  expect_blow_up_detected<Dop853>("dop853");
+  expect_blow_up_detected<Dopri5>("dopri5");
+}
+
+TEST(Failure, StepSizeUnderflowIsNamed) {
+  AdaptiveOptions o;
+  o.rtol = o.atol = 1e-8;
+  Dop853<BlowUp> s({}, o);
+  s.init(0.0, Vec<1>(1.0));
+  const Failure f = failure_of([&] {
+    while (s.t() < 2.0) s.step();
+  });
+  EXPECT_TRUE(contains(f.reason, "underflow")) << f.reason;
+  EXPECT_TRUE(contains(f.suggestion, "tol")) << f.suggestion;
+  EXPECT_TRUE(contains(f.message(), "dop853 failed at t = ")) << f.message();
+}
+
+TEST(Failure, Rk4HugeStepOnABlowUpIsNonFinite) {
+  Rk4<ExpBlowUp> s({});
+  Vec<1> x(1.0);
+  const Failure f = failure_of([&] { s.step(x, 0.0, 100.0); });
+  EXPECT_EQ(f.method, "rk4");
+  EXPECT_TRUE(contains(f.reason, "non-finite")) << f.reason;
+  EXPECT_FALSE(f.suggestion.empty());
+  EXPECT_EQ(f.t, 100.0);
+  EXPECT_EQ(x[0], 1.0);  // the state is left as it was
+}
+
+TEST(Failure, FixedStepDop853NonFinite) {
+  Dop853<ExpBlowUp> s({});
+  Vec<1> x(1.0);
+  const Failure f = failure_of([&] { s.step(x, 0.0, 100.0); });
+  EXPECT_EQ(f.method, "dop853");
+  EXPECT_TRUE(contains(f.reason, "non-finite")) << f.reason;
+}
+
+template <template <class> class Method>
+void expect_no_convergence(const char* name) {
+  Method<Linear1> s(Linear1{-1000.0});
+  Vec<1> x(1.0);
+  const Failure f = failure_of([&] { s.step(x, 0.0, 0.1); });
+  EXPECT_EQ(f.method, name);
+  EXPECT_TRUE(contains(f.reason, "did not converge")) << f.reason;
+  EXPECT_TRUE(contains(f.suggestion, "--step")) << f.suggestion;
+  EXPECT_EQ(x[0], 1.0);
+  // With a small enough step the same stepper works (h lambda = -0.1).
+  s.step(x, 0.0, 1e-4);
+  EXPECT_NEAR(x[0], std::exp(-0.1), 1e-4);
+}
+
+TEST(Failure, GaussTooLargeStepOnStiffProblemDoesNotConverge) {
+  expect_no_convergence<ImplicitMidpoint>("midpoint");
+  expect_no_convergence<Gauss4>("gauss4");
+  expect_no_convergence<Gauss6>("gauss6");
+}
+
+TEST(Failure, GaussIterationLimitIsAnOption) {
+  // Converging, but slowly (h |lambda| a = 0.45): 3 iterations are not enough.
+  ImplicitMidpoint<Linear1> s(Linear1{-9.0}, ImplicitOptions{3});
+  Vec<1> x(1.0);
+  const Failure f = failure_of([&] { s.step(x, 0.0, 0.1); });
+  EXPECT_TRUE(contains(f.reason, "did not converge in 3 iterations")) << f.reason;
+  EXPECT_EQ(s.stats().solver_iterations, 3);
+  ImplicitMidpoint<Linear1> ok(Linear1{-9.0});
+  ok.step(x, 0.0, 0.1);
+  EXPECT_NEAR(x[0], (1 - 0.45) / (1 + 0.45), 1e-15);  // the midpoint rule's own value
+}
+
+// y' = 1, with an issue reported beyond y = 1.55 (think: Riccati pole).
+struct Checked {
+  static constexpr int dim = 1;
+  static constexpr int n_flows = 1;
+  using State = Vec<1>;
+  void rhs(double, const State&, State& dx) const { dx[0] = 1.0; }
+  void flow(int, double h, State& x) const { x[0] += h; }
+  std::optional<Issue> check(const State& x) const {
+    if (x[0] > 1.55) return Issue{"near the pole", "switch charts"};
+    return std::nullopt;
+  }
+};
+
+template <class Stepper>
+void expect_issue_reported_fixed(Stepper s) {
+  Vec<1> x(0.0);
+  double t = 0;
+  const Failure f = failure_of([&] {
+    for (int i = 0; i < 100; ++i, t += 0.1) s.step(x, t, 0.1);
+  });
+  EXPECT_EQ(f.method, Stepper::name);
+  EXPECT_EQ(f.reason, "near the pole");
+  EXPECT_EQ(f.suggestion, "switch charts");
+  EXPECT_NEAR(f.t, 1.6, 1e-12);
+  EXPECT_NEAR(x[0], 1.5, 1e-12);  // the last trusted state
+}
+
+TEST(Failure, SystemCheckIssueIsReported) {
+  expect_issue_reported_fixed(Rk4<Checked>({}));
+  expect_issue_reported_fixed(ImplicitMidpoint<Checked>({}));
+  expect_issue_reported_fixed(Gauss4<Checked>({}));
+  expect_issue_reported_fixed(Gauss6<Checked>({}));
+  expect_issue_reported_fixed(StrangSplitting<Checked>({}));
+  expect_issue_reported_fixed(Dopri5<Checked>({}));  // fixed-step mode
+
+  AdaptiveOptions o;
+  o.h_max = 0.1;
+  Dop853<Checked> s({}, o);
+  s.init(0.0, Vec<1>(0.0));
+  const Failure f = failure_of([&] {
+    while (s.t() < 10) s.step();
+  });
+  EXPECT_EQ(f.method, "dop853");
+  EXPECT_EQ(f.reason, "near the pole");
+  EXPECT_EQ(f.suggestion, "switch charts");
+  EXPECT_GT(f.t, 1.5);
+  EXPECT_LE(s.state()[0], 1.55);
+  EXPECT_GT(s.state()[0], 1.4);
+}
+
+// Non-finite everywhere but at the start: every trial step fails.
+struct NanAfterStart {
+  static constexpr int dim = 1;
+  using State = Vec<1>;
+  void rhs(double t, const State&, State& dx) const {
+    dx[0] = t == 0.0 ? 1.0 : std::numeric_limits<double>::quiet_NaN();
+  }
+};
+
+TEST(Failure, TooManyConsecutiveRejections) {
+  AdaptiveOptions o;
+  o.max_consecutive_rejects = 5;
+  Dopri5<NanAfterStart> s({}, o);
+  s.init(0.0, Vec<1>(0.0));
+  const Failure f = failure_of([&] { s.step(); });
+  EXPECT_EQ(f.method, "dopri5");
+  EXPECT_TRUE(contains(f.reason, "non-finite")) << f.reason;
+  EXPECT_EQ(s.stats().rejected_steps, 6);
+  EXPECT_EQ(s.stats().steps, 0);
+  EXPECT_EQ(f.t, 0.0);
+}
+
+// Smooth, but the error test always fails: y' = 1e6 y (atol tiny) with h_min-free control.
+TEST(Failure, TooManyConsecutiveRejectionsFinite) {
+  AdaptiveOptions o;
+  o.max_consecutive_rejects = 2;
+  o.h_init = 10.0;  // far too large: err >> 1 three times in a row
+  Dop853<Linear1> s(Linear1{1.0}, o);
+  s.init(0.0, Vec<1>(1.0));
+  const Failure f = failure_of([&] { s.step(); });
+  EXPECT_TRUE(contains(f.reason, "consecutive rejected steps")) << f.reason;
+  EXPECT_EQ(s.stats().rejected_steps, 3);
+}
+
+TEST(Failure, MaxStepsExceeded) {
+  AdaptiveOptions o;
+  o.max_steps = 10;
+  o.h_max = 0.01;
+  Dopri5<Linear1> s(Linear1{-1.0}, o);
+  s.init(0.0, Vec<1>(1.0));
+  const Failure f = failure_of([&] {
+    while (s.t() < 1.0) s.step();
+  });
+  EXPECT_TRUE(contains(f.reason, "max_steps")) << f.reason;
+  EXPECT_EQ(s.stats().steps, 10);
+  EXPECT_NEAR(f.t, 0.1, 1e-12);
+}
+
+TEST(Failure, NonFiniteInitialState) {
+  Dop853<Linear1> s(Linear1{-1.0});
+  s.init(0.0, Vec<1>(std::numeric_limits<double>::infinity()));
+  const Failure f = failure_of([&] { s.step(); });
+  EXPECT_TRUE(contains(f.reason, "non-finite")) << f.reason;
+}
+
+// Splitting with a sub-flow that overflows.
+struct Overflowing {
+  static constexpr int dim = 1;
+  static constexpr int n_flows = 2;
+  using State = Vec<1>;
+  void flow(int i, double h, State& x) const { x[0] = i == 0 ? x[0] * std::exp(1000 * h) : x[0]; }
+};
+
+TEST(Failure, SplittingNonFinite) {
+  StrangSplitting<Overflowing> s({});
+  Vec<1> x(1.0);
+  const Failure f = failure_of([&] { s.step(x, 0.0, 1.0); });
+  EXPECT_EQ(f.method, "splitting");
+  EXPECT_TRUE(contains(f.reason, "non-finite")) << f.reason;
+}
+
+// ---- regularize(): called at the start of every step; a remap drops FSAL.
+
+// y' = y, kept in [1, 2) by halving: the system remembers how often it halved,
+// so the true solution is y * 2^halvings = exp(t). A stepper that kept the
+// derivative cached from before a remap would use one twice too large.
+struct Halving {
+  static constexpr int dim = 1;
+  static constexpr int n_flows = 1;
+  using State = Vec<1>;
+  mutable long rhs_calls = 0;
+  long regularize_calls = 0;
+  int halvings = 0;
+  void rhs(double, const State& x, State& dx) const {
+    ++rhs_calls;
+    dx[0] = x[0];
+  }
+  void flow(int, double h, State& x) const { x[0] *= std::exp(h); }
+  bool regularize(State& x) {
+    ++regularize_calls;
+    if (x[0] < 2.0) return false;
+    x[0] *= 0.5;
+    ++halvings;
+    return true;
+  }
+  double unscaled(const State& x) const { return std::ldexp(x[0], halvings); }
+};
+
+template <template <class> class Method>
+void expect_fsal_dropped_on_remap() {
+  AdaptiveOptions o;
+  o.rtol = o.atol = 1e-11;
+  Method<Halving> s({}, o);
+  s.init(0.0, Vec<1>(1.0));
+  long calls = 0;
+  while (s.t() < 5.0) {
+    s.step();
+    ++calls;
+  }
+  const Halving& sys = s.system();
+  EXPECT_EQ(sys.regularize_calls, calls);
+  EXPECT_EQ(sys.halvings, 7);  // exp(5) = 148.4 = 1.16 * 2^7
+  // The dense output of the last step is in the chart of that step.
+  EXPECT_NEAR(sys.unscaled(s.dense(5.0)) / std::exp(5.0), 1.0, 1e-9);
+  // Each remap costs one extra evaluation of f(t, x) (FSAL dropped).
+  const Stats& st = s.stats();
+  const long per_attempt = std::string(Method<Halving>::name) == "dop853" ? 11 : 6;
+  const long fsal_on_accept = std::string(Method<Halving>::name) == "dop853" ? st.steps : 0;
+  const long dense_extra = std::string(Method<Halving>::name) == "dop853" ? 3 : 0;
+  EXPECT_EQ(st.rhs_evals,
+            2 + per_attempt * (st.steps + st.rejected_steps) + fsal_on_accept + sys.halvings + dense_extra);
+  EXPECT_EQ(st.rhs_evals, sys.rhs_calls);
+}
+
+TEST(Regularize, RemapDropsFsalDerivative) {
+  expect_fsal_dropped_on_remap<Dop853>();
+  expect_fsal_dropped_on_remap<Dopri5>();
+}
+
+template <class Stepper>
+void expect_fixed_step_regularized(Stepper s, double tol) {
+  Vec<1> x(1.0);
+  const int n = 500;
+  const double h = 5.0 / n;
+  for (int i = 0; i < n; ++i) s.step(x, i * h, h);
+  EXPECT_EQ(s.system().regularize_calls, n);
+  EXPECT_EQ(s.system().halvings, 7);
+  EXPECT_NEAR(s.system().unscaled(x) / std::exp(5.0), 1.0, tol) << Stepper::name;
+}
+
+TEST(Regularize, FixedStepMethodsCallItEveryStep) {
+  expect_fixed_step_regularized(Rk4<Halving>({}), 1e-9);
+  expect_fixed_step_regularized(ImplicitMidpoint<Halving>({}), 1e-4);
+  expect_fixed_step_regularized(Gauss4<Halving>({}), 1e-10);
+  expect_fixed_step_regularized(Gauss6<Halving>({}), 1e-12);
+  expect_fixed_step_regularized(StrangSplitting<Halving>({}), 1e-12);
+  expect_fixed_step_regularized(Dop853<Halving>({}), 1e-12);
+}
+
+}  // namespace
+}  // namespace epviz::numerics
