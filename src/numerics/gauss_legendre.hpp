@@ -16,8 +16,11 @@
 // Starting guess: when the step continues the previous one (same state object
 // value, t = previous t + h), the previous collocation polynomial is
 // extrapolated; otherwise the explicit Euler guess Z_i = c_i h f(t, x).
-// The iteration stops when the increment falls below 4 eps |Z| or stops
-// decreasing at round-off level. The fixed-point iteration converges only for
+// The iteration stops when the increment vanishes or stops decreasing at
+// round-off level. (Stopping earlier, e.g. once it falls below a few ulps of
+// Z, leaves an iteration error that is systematic from step to step and makes
+// quadratic invariants drift by ~1e-12 over 1e5 steps; at the round-off floor
+// the remaining error is random.) The fixed-point iteration converges only for
 // h L small (L a Lipschitz constant): for stiff problems it reports failure.
 #include <algorithm>
 #include <array>
@@ -181,16 +184,17 @@ void GaussLegendre<Sys, Stages>::step(State& x, double t, double h) {
     }
     z_ = znew_;
     if (!std::isfinite(d) || !std::isfinite(zmax)) break;
-    if (d <= 4 * eps * zmax) {  // includes d == 0
+    if (d == 0.0) {
       converged = true;
       break;
     }
     if (d >= d_old) {
-      if (d <= 1024 * eps * std::max(xmax, zmax)) {  // stopped decreasing at round-off
+      // Stopped decreasing: converged if at round-off level, else diverging.
+      if (d <= 1024 * eps * std::max(xmax, zmax)) {
         converged = true;
         break;
       }
-      if (++growing >= 8) break;  // diverging
+      if (++growing >= 8) break;
     } else {
       growing = 0;
     }
