@@ -14,6 +14,8 @@ in VertexData {
 } v_in[];
 
 out vec4 g_colour;
+out float g_across_px;       // signed distance from the centre line, pixels
+flat out float g_half_width; // pixels
 
 const float min_w = 1e-5;
 
@@ -30,9 +32,16 @@ vec2 miter(vec2 d_in, vec2 d_out, vec2 normal) {
     return m / max(dot(m, normal), 0.5);
 }
 
-void emit(vec4 clip, vec2 offset_px, vec4 colour) {
-    gl_Position = clip + vec4(offset_px / (0.5 * u_viewport_size) * clip.w, 0.0, 0.0);
+// The quad reaches one pixel beyond the line on each side; line.frag fades
+// the edge over that pixel (anti-aliasing that works without multisampling).
+const float feather = 1.0;
+
+void emit(vec4 clip, vec2 miter_px, float half_width, float side, vec4 colour) {
+    float reach = half_width + feather;
+    gl_Position = clip + vec4(side * miter_px * reach / (0.5 * u_viewport_size) * clip.w, 0.0, 0.0);
     g_colour = colour;
+    g_across_px = side * reach;
+    g_half_width = half_width;
     EmitVertex();
 }
 
@@ -66,9 +75,11 @@ void main() {
     if (w1 < 1.0) { colour1.a *= w1; w1 = 1.0; }
     if (w2 < 1.0) { colour2.a *= w2; w2 = 1.0; }
 
-    emit(c1, m1 * 0.5 * w1, colour1);
-    emit(c1, -m1 * 0.5 * w1, colour1);
-    emit(c2, m2 * 0.5 * w2, colour2);
-    emit(c2, -m2 * 0.5 * w2, colour2);
+    // The flat half width is the provoking (last) vertex's; widths rarely differ
+    // along a segment, and when they do the edge fade stays within a pixel.
+    emit(c1, m1, 0.5 * w1, 1.0, colour1);
+    emit(c1, m1, 0.5 * w1, -1.0, colour1);
+    emit(c2, m2, 0.5 * w2, 1.0, colour2);
+    emit(c2, m2, 0.5 * w2, -1.0, colour2);
     EndPrimitive();
 }

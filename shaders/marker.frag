@@ -6,6 +6,8 @@ flat in vec4 g_fill;
 flat in vec4 g_outline;
 flat in vec2 g_size;
 
+uniform float u_min_alpha;  // fragments fainter than this are dropped (see Renderer::draw_3d)
+
 out vec4 frag_colour;
 
 void main() {
@@ -15,6 +17,6 @@ void main() {
     vec4 colour = mix(g_outline, g_fill, inner);
     colour.a *= outer;
     // Fully transparent corners must not write depth.
-    if (colour.a < 0.004) discard;
+    if (colour.a < u_min_alpha) discard;
     frag_colour = colour;
 }

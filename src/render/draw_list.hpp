@@ -21,6 +21,9 @@ struct Material {
     float specular = 0.35f;                    // strength of the key light's highlight
     float shininess = 48.0f;                   // Blinn exponent
     float rim = 0.0f;                          // extra opacity at grazing angles (glass-like silhouettes)
+    // Translucent only: also draw the inside of the far half (a second pass;
+    // switch off to halve the cost of a large translucent sphere).
+    bool back_faces = true;
 };
 
 struct LineVertex {

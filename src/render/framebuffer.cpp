@@ -61,10 +61,10 @@ void OffscreenFramebuffer::create() {
     glGenRenderbuffers(1, &draw_depth_);
     glBindRenderbuffer(GL_RENDERBUFFER, draw_depth_);
     if (samples_ > 1)
-        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_DEPTH24_STENCIL8, width_, height_);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_DEPTH_COMPONENT24, width_, height_);
     else
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width_, height_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, draw_depth_);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width_, height_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, draw_depth_);
     check_complete(samples_ > 1 ? "multisampled" : "single-sample");
     glBindFramebuffer(GL_FRAMEBUFFER, resolve_fbo_);
     check_complete("resolve");

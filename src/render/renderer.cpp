@@ -151,7 +151,7 @@ void Renderer::draw_meshes(const DrawList& list, const Camera& camera, const Lig
         mesh_program_.set("u_specular", item.material.specular);
         mesh_program_.set("u_shininess", item.material.shininess);
         mesh_program_.set("u_rim", item.material.rim);
-        if (translucent) {
+        if (translucent && item.material.back_faces) {
             // A convex shell drawn inside first, then outside, blends in the right order.
             glCullFace(GL_FRONT);
             item.mesh->draw();
@@ -225,6 +225,7 @@ void Renderer::draw_lines(const DrawList& list, const glm::mat4& view_projection
     line_program_.use();
     line_program_.set("u_view_projection", view_projection);
     line_program_.set("u_viewport_size", viewport_size);
+    line_program_.set("u_min_alpha", min_alpha_);
     glBindVertexArray(lines_.vao);
     glBindBuffer(GL_ARRAY_BUFFER, lines_.vertices);
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(scratch_vertices_.size() * sizeof(float)),
@@ -249,6 +250,7 @@ void Renderer::draw_markers(const DrawList& list, const glm::mat4& view_projecti
     marker_program_.use();
     marker_program_.set("u_view_projection", view_projection);
     marker_program_.set("u_viewport_size", viewport_size);
+    marker_program_.set("u_min_alpha", min_alpha_);
     glBindVertexArray(markers_.vao);
     glBindBuffer(GL_ARRAY_BUFFER, markers_.vertices);
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(scratch_vertices_.size() * sizeof(float)),
@@ -272,8 +274,23 @@ void Renderer::draw_3d(const DrawList& list, const Camera& camera, const Viewpor
 
     draw_meshes(list, camera, lighting, false);
     draw_triangles(list, view_projection);
+    // Lines and markers test depth against the opaque meshes but do not write
+    // it while they draw: lines lying on one surface (a trail crossing a grid)
+    // would otherwise hide each other at random where their depths tie.
+    glDepthMask(GL_FALSE);
     draw_lines(list, view_projection, size);
     draw_markers(list, view_projection, size);
+    // Then their depth alone, so that a translucent shell drawn next tints what
+    // lies behind it but not the lines and markers in front of it. Faint lines
+    // (alpha < 0.5, such as a grid on the shell) leave no depth: they read as
+    // part of the surface and take its tint, instead of cutting dark gaps in it.
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glDepthMask(GL_TRUE);
+    min_alpha_ = 0.5f;
+    draw_lines(list, view_projection, size);
+    draw_markers(list, view_projection, size);
+    min_alpha_ = 0.01f;
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     draw_meshes(list, camera, lighting, true);
 
     glDisable(GL_DEPTH_TEST);

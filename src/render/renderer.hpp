@@ -63,9 +63,10 @@ public:
     void clear_viewport(const Viewport& viewport, const glm::vec4& colour);
 
     // Draws a 3D list seen by `camera` into `viewport` with depth testing:
-    // opaque meshes, fills, lines and markers first, then translucent meshes
-    // far to near with depth writes off (each drawn back faces first), so a
-    // translucent sphere over a trail reads correctly. Labels are projected
+    // opaque meshes, fills, lines and markers first (lines and markers write
+    // depth only after all of them are drawn), then translucent meshes far to
+    // near with depth writes off (each drawn back faces first), so a
+    // translucent sphere over a trail tints only the part behind it. Labels are projected
     // now and drawn by the overlay.
     void draw_3d(const DrawList& list, const Camera& camera, const Viewport& viewport,
                  const Lighting& lighting = {});
@@ -108,6 +109,7 @@ private:
     std::vector<TextLabel> labels_;
     std::vector<glm::vec2> label_pixels_;
     bool overlay_drawn_ = false;
+    float min_alpha_ = 0.01f;  // line and marker fragments below this alpha are discarded
     // Scratch space reused from frame to frame.
     std::vector<float> scratch_vertices_;
     std::vector<std::uint32_t> scratch_indices_;
