@@ -175,22 +175,32 @@ class EmbeddedRk {
     xnew_.noalias() = x + h * acc_;
   }
 
+  // Needs acc_ = sum_j b_j k_j (as left by stages_and_solution).
   inline double error_norm(double h) {
     using Arr = Eigen::Array<double, Sys::dim, 1>;
-    const Arr sk = opts_.atol + opts_.rtol * x_.array().abs().max(xnew_.array().abs());
+    const Arr inv_sk =
+        (opts_.atol + opts_.rtol * x_.array().abs().max(xnew_.array().abs())).inverse();
     constexpr double n = double(Sys::dim);
     if constexpr (Tableau::two_estimators) {
-      weighted_sum<Tableau::e, error_terms>(acc_, k_);
-      const double e3 = (acc_.array() / sk).square().sum();
-      weighted_sum<Tableau::e2, error_terms>(acc_, k_);
-      const double e5 = (acc_.array() / sk).square().sum();
+      // 3rd-order estimator as b-sum minus the (sparse) embedded weights bhh.
+      State ebh;
+      weighted_sum<Tableau::bhh, S>(ebh, k_);
+      const double e3 = ((acc_ - ebh).array() * inv_sk).square().sum();
+      weighted_sum<Tableau::e2, error_terms>(ebh, k_);
+      const double e5 = (ebh.array() * inv_sk).square().sum();
       double deno = e5 + 0.01 * e3;
       if (deno <= 0.0) deno = 1.0;
       return std::abs(h) * e5 / std::sqrt(n * deno);
     } else {
       weighted_sum<Tableau::e, error_terms>(acc_, k_);
-      return std::abs(h) * std::sqrt((acc_.array() / sk).square().sum() / n);
+      return std::abs(h) * std::sqrt((acc_.array() * inv_sk).square().sum() / n);
     }
+  }
+
+  // err^-expo_, with a fast path for DOP853's default exponent 1/8.
+  inline double err_power(double err) const {
+    if (expo_ == 0.125) return 1.0 / std::sqrt(std::sqrt(std::sqrt(err)));
+    return std::pow(err, -expo_);
   }
 
   double initial_step();
@@ -288,7 +298,7 @@ void EmbeddedRk<Sys, Tableau>::step() {
     const bool finite = std::isfinite(err) && xnew_.allFinite();
 
     if (finite && err <= 1.0) [[likely]] {
-      double fac = opts_.safety * std::pow(err, -expo_);
+      double fac = opts_.safety * err_power(err);
       if (beta_ != 0.0) fac *= std::pow(err_old_, beta_);
       fac = std::clamp(fac, fac_min_, fac_max_);  // err == 0 gives +inf: clamped
       if (last_rejected_) fac = std::min(fac, 1.0);
@@ -318,7 +328,7 @@ void EmbeddedRk<Sys, Tableau>::step() {
     last_rejected_ = true;
     double fac = fac_min_;
     if (finite) {
-      fac = std::max(fac_min_, opts_.safety * std::pow(err, -expo_));
+      fac = std::max(fac_min_, opts_.safety * err_power(err));
     } else {
       ++nonfinite_trials;
     }

@@ -218,12 +218,18 @@ struct Dop853Tableau {
 
   static constexpr Row b = a[12];
 
-  // 3rd-order estimator: b - bhh (bhh nonzero at stages 1, 9, 12).
+  // Weights of the embedded 3rd-order formula (nonzero at stages 1, 9, 12).
+  static constexpr Row bhh = [] {
+    Row r{};
+    r[0] = 0.244094488188976377952755905512e+00;
+    r[8] = 0.733846688281611857341361741547e+00;
+    r[11] = 0.220588235294117647058823529412e-01;
+    return r;
+  }();
+  // 3rd-order estimator: b - bhh (computed from the b-sum and bhh).
   static constexpr Row e = [] {
     Row r = b;
-    r[0] -= 0.244094488188976377952755905512e+00;
-    r[8] -= 0.733846688281611857341361741547e+00;
-    r[11] -= 0.220588235294117647058823529412e-01;
+    for (int i = 0; i < total; ++i) r[i] -= bhh[i];
     return r;
   }();
 

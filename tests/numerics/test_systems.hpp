@@ -116,11 +116,12 @@ struct HeavyTop {
   using State = Vec<6>;
   double I1 = 1.0, I2 = 1.5, I3 = 2.2;  // satisfies the triangle inequalities
   double P = 1.0, a0 = 0.3, b0 = -0.2, c0 = 0.5;
+  double i1 = 1.0 / I1, i2 = 1.0 / I2, i3 = 1.0 / I3;  // inverses (keep in sync)
   void rhs(double, const State& x, State& dx) const {
     const double w1 = x[0], w2 = x[1], w3 = x[2], g1 = x[3], g2 = x[4], g3 = x[5];
-    dx[0] = ((I2 - I3) * w2 * w3 + P * (g2 * c0 - g3 * b0)) / I1;
-    dx[1] = ((I3 - I1) * w3 * w1 + P * (g3 * a0 - g1 * c0)) / I2;
-    dx[2] = ((I1 - I2) * w1 * w2 + P * (g1 * b0 - g2 * a0)) / I3;
+    dx[0] = ((I2 - I3) * w2 * w3 + P * (g2 * c0 - g3 * b0)) * i1;
+    dx[1] = ((I3 - I1) * w3 * w1 + P * (g3 * a0 - g1 * c0)) * i2;
+    dx[2] = ((I1 - I2) * w1 * w2 + P * (g1 * b0 - g2 * a0)) * i3;
     dx[3] = w3 * g2 - w2 * g3;
     dx[4] = w1 * g3 - w3 * g1;
     dx[5] = w2 * g1 - w1 * g2;
