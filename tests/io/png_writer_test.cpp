@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -193,6 +194,14 @@ TEST(DISABLED_Timing, PngEncode1280x720) {
             }
             p[3] = 255;
         }
+    // EPVIZ_PNG_TIMING_IMAGE=frame.png (1280x720) times a real rendered frame instead.
+    if (const char* real = std::getenv("EPVIZ_PNG_TIMING_IMAGE")) {
+        int w = 0, h = 0;
+        auto pixels = read_png(real, w, h);
+        ASSERT_EQ(w, width);
+        ASSERT_EQ(h, height);
+        rgba = std::move(pixels);
+    }
     for (int filter : {-1, 0, 1, 2, 4})
         for (int level : {1, 2, 4, 6, 8}) {
             const auto start = std::chrono::steady_clock::now();
