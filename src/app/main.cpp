@@ -12,6 +12,9 @@
 int main(int argc, char** argv) {
   CLI::App app{"epviz: the heavy rigid body about a fixed point (Euler-Poisson), simulated and rendered offscreen"};
   app.require_subcommand(1);
+  // An option given twice takes its last value, so a command line can override
+  // what a wrapper script put before it.
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   std::map<std::string, std::function<int()>> commands;
   commands["simulate"] = epviz::app::add_simulate_command(app);
   commands["cases"] = epviz::app::add_cases_command(app);

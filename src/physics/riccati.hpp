@@ -51,13 +51,15 @@ class RiccatiSystem {
     }
   }
 
-  // Picks the chart by |eta| <= 1 (north) and sets it. The chart is part of the
+  // Picks the chart by |eta| <= 1 (north) and sets it; without chart switching
+  // always the north chart, the paper's (a, b) (a start at the south pole
+  // itself is then a pole, reported by check()). The chart is part of the
   // integration state; it is mutable so that pack() works on a const system.
   State pack(const InitialState& s) const {
     State x;
     x.head<3>() = s.omega;
     const Vector3d& g = s.gamma;
-    if (g.z() >= 0.0) {  // |eta| <= 1: eta = -(g1 + i g2) / (1 + g3)
+    if (g.z() >= 0.0 || !chart_switch_) {  // |eta| <= 1: eta = -(g1 + i g2) / (1 + g3)
       chart_ = Chart::north;
       x[3] = -g.x() / (1.0 + g.z());
       x[4] = -g.y() / (1.0 + g.z());

@@ -13,7 +13,7 @@ struct BadInput {
   std::string name;
   std::string args;       // after "simulate"; {dir} is replaced by the temp dir
   std::string must_name;  // the message must contain this
-  std::string job;        // optional job file content, written to {dir}/job.json
+  std::string job = "";   // optional job file content, written to {dir}/job.json
 };
 
 void PrintTo(const BadInput& b, std::ostream* os) { *os << b.name; }
@@ -30,10 +30,12 @@ TEST_P(SimulateRejects, WithOneLineExitTwoAndNoFiles) {
   test::TempDir dir;
   if (!bad.job.empty()) std::ofstream(dir / "job.json") << bad.job;
   const auto before = dir.file_count();
-  const auto r = test::run_epviz(
-      "simulate " + expand(bad.args, dir.path().string()) + " --csv " + (dir / "out.csv").string() +
-          " --report-json " + (dir / "report.json").string() + " --t-end 1",
-      dir);
+  // The bad part comes last, so that options repeated there win (and a missing
+  // value is really missing).
+  const auto r = test::run_epviz("simulate --t-end 1 --csv " + (dir / "out.csv").string() +
+                                     " --report-json " + (dir / "report.json").string() + " " +
+                                     expand(bad.args, dir.path().string()),
+                                 dir);
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find(bad.must_name), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;

@@ -9,20 +9,24 @@
 namespace epviz {
 namespace {
 
-constexpr double kPassTime = 3.0;
+constexpr double kPassTime = 2.0;
 
 // Distance from the south pole at the passage. At 5e-4 the north chart still
 // copes (|eta| ~ 4e3, with tiny steps); at 1e-7 (|eta| ~ 2e7) it cannot.
 sim::RunSpec pole_spec(sim::Formulation f, double distance = 5e-4) {
   auto spec = test::preset_spec(physics::Case::generic, sim::Method::dop853, f, 6.0, 600);
   spec.case_id = physics::Case::custom;
-  spec.initial = sim::pole_passage_initial_state(spec.body, {0.7, -0.4, 1.1}, kPassTime, distance);
+  spec.initial = sim::pole_passage_initial_state(spec.body, {0.3, 1.2, -0.4}, kPassTime, distance);
   spec.tol = 1e-12;
   return spec;
 }
 
 TEST(PolePassage, TrajectoryReallyPassesNearTheSouthPole) {
-  const auto r = sim::simulate(pole_spec(sim::Formulation::direct));
+  const auto spec = pole_spec(sim::Formulation::direct);
+  // It starts in the northern hemisphere, so the Riccati run starts in the
+  // north chart and has to switch.
+  EXPECT_GT(spec.initial.gamma.z(), 0.3);
+  const auto r = sim::simulate(spec);
   ASSERT_FALSE(r.failure);
   double closest = 2.0;
   for (const auto& s : r.samples) closest = std::min(closest, (s.gamma + Eigen::Vector3d::UnitZ()).norm());
@@ -44,7 +48,7 @@ TEST_P(PolePassageAt, ThreeFormulationsAgree) {
   ASSERT_EQ(spinor.samples.size(), 601u);
   EXPECT_LT(test::max_gamma_difference(direct, riccati), 1e-9);
   EXPECT_LT(test::max_gamma_difference(direct, spinor), 1e-9);
-  EXPECT_GE(riccati.chart_switches, 2);  // into the south chart and back out
+  EXPECT_GE(riccati.chart_switches, 1);  // from the north chart into the south one
 }
 
 INSTANTIATE_TEST_SUITE_P(Distances, PolePassageAt, ::testing::Values(5e-4, 1e-7));
