@@ -260,7 +260,11 @@ void EmbeddedRk<Sys, Tableau>::step() {
   // The stages of the previous step are about to be overwritten.
   if (dense_ == DenseState::lazy) dense_ = DenseState::none;
 
-  if (detail::regularize(sys_, x_)) fsal_pending_ = false;
+  if (detail::regularize(sys_, x_)) {
+    // Remapped: the cached derivative and the last interpolant are in the old chart.
+    fsal_pending_ = false;
+    dense_ = DenseState::none;
+  }
   if (fsal_pending_) {
     k_[0] = k_[S];
   } else {
