@@ -1,0 +1,106 @@
+#pragma once
+// What one frame shows, as plain values: the scene module fills it from the
+// simulation, the painter (src/paint) draws it. No GL here, and the painter
+// needs no physics to read it.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace epviz::scene {
+
+using Rgba = std::array<float, 4>;  // linear 0..1, straight alpha
+
+enum class View {
+  body,   // body axes fixed on screen; gamma (the vertical seen from the body) moves
+  space,  // the vertical fixed (z up); the body turns, precesses and nutates
+};
+
+struct Layers {
+  bool body = true;     // the body, its principal axes, fixed point and centre of mass
+  bool sphere = true;   // translucent unit sphere with the trail
+  bool riccati = true;  // the (a, b) plane panel
+  bool overlay = true;  // ImGui text: case, parameters, time, method, drifts
+};
+
+struct CameraSettings {
+  double azimuth_deg = 35.0;    // about the z axis, from +x towards +y
+  double elevation_deg = 22.0;  // above the xy plane
+  double distance = 3.4;        // in units of the sphere radius
+};
+
+struct Colours {
+  Rgba background{0.06f, 0.07f, 0.09f, 1.0f};
+  Rgba body{0.80f, 0.62f, 0.36f, 1.0f};
+  Rgba sphere{0.55f, 0.70f, 0.95f, 0.16f};
+  Rgba marker{1.0f, 0.35f, 0.25f, 1.0f};  // the current point on sphere and plane
+};
+
+// A point of a trail; `age` in [0, 1]: 0 is now, 1 the oldest point kept.
+// Trails are coloured by age on one time colour map, shared by sphere and plane.
+struct TrailPoint {
+  Eigen::Vector3f p;
+  float age;
+};
+
+struct PlanePoint {
+  Eigen::Vector2f ab;
+  float age;
+  bool break_before = false;  // do not join to the previous point (the path went through infinity)
+};
+
+// Where the (a, b) path leaves or re-enters the panel's range, or passes
+// through infinity (gamma near the south pole, a chart switch in the Riccati
+// formulation): shown as marks, never clipped silently.
+struct PlaneMark {
+  enum class Kind { leaves_panel, enters_panel, through_infinity };
+  Eigen::Vector2f ab;  // on the panel's border for leaves/enters
+  Kind kind;
+  float age;
+};
+
+// The body drawn as the uniform box with the same principal moments.
+struct BodyShape {
+  Eigen::Vector3f half_extents;  // along body axes 1, 2, 3, scaled to fit the sphere
+  Eigen::Vector3f centre_of_mass;  // body axes, same scale; zero when r = 0
+};
+
+struct OverlayText {
+  std::string title;                 // e.g. "Kovalevskaya top"
+  std::vector<std::string> lines;    // parameters, time, method and tolerance
+  // Running relative drift of each invariant: (name, value) e.g. ("C1", 3e-13).
+  std::vector<std::pair<std::string, double>> drifts;
+};
+
+struct Frame {
+  int index = 0;
+  double t = 0.0;
+  View view = View::body;
+  Layers layers;
+  CameraSettings camera;
+  Colours colours;
+
+  // Body -> screen-world rotation of the body. Body view: identity. Space view:
+  // the attitude (world z is the vertical).
+  Eigen::Quaternionf body_rotation = Eigen::Quaternionf::Identity();
+  BodyShape body;
+
+  // Sphere layer. Body view: gamma in body axes. Space view: body axis 3 in
+  // space (the apex trace). `current` is the newest point.
+  std::vector<TrailPoint> trail;
+  Eigen::Vector3f current = Eigen::Vector3f::UnitZ();
+  std::string trail_label;  // "gamma (body axes)" or "body axis 3 (space)"
+
+  // Riccati plane: stereographic (a, b) of gamma; the panel shows
+  // [-plane_extent, plane_extent]^2 with the unit circle (the equator).
+  float plane_extent = 2.5f;
+  std::vector<PlanePoint> plane_path;
+  std::vector<PlaneMark> plane_marks;
+  std::optional<Eigen::Vector2f> plane_current;  // empty when gamma is at the south pole or off the panel
+
+  OverlayText overlay;
+};
+
+}  // namespace epviz::scene
