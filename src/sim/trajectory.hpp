@@ -1,0 +1,38 @@
+#pragma once
+// A simulation that runs ahead one output time at a time, so that a renderer
+// can consume it frame by frame with flat memory, and a batch run is just a
+// loop over it.
+#include <memory>
+
+#include "numerics/system.hpp"
+#include "sim/run_spec.hpp"
+#include "sim/simulate.hpp"
+
+namespace epviz::sim {
+
+class Trajectory {
+ public:
+  virtual ~Trajectory() = default;
+
+  // The state at t = 0.
+  virtual Sample initial() const = 0;
+  // Advances to the next output time t_k = k * spacing (k = 1, 2, ...) and
+  // returns its sample. Adaptive methods sample by dense output; fixed-step
+  // methods take steps that divide the spacing. Throws numerics::IntegrationError.
+  virtual Sample next() = 0;
+
+  virtual numerics::Stats stats() const = 0;
+  virtual long chart_switches() const = 0;
+  virtual double effective_step() const = 0;  // 0 for adaptive methods
+  double spacing() const { return spacing_; }
+
+  // Output spacing spec.t_end / spec.samples. Throws std::invalid_argument for
+  // a spec that cannot run.
+  static std::unique_ptr<Trajectory> start(const RunSpec& spec);
+
+ protected:
+  explicit Trajectory(double spacing) : spacing_(spacing) {}
+  double spacing_;
+};
+
+}  // namespace epviz::sim
