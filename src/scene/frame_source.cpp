@@ -1,0 +1,141 @@
+#include "scene/frame_source.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "physics/stereographic.hpp"
+#include "scene/body_shape.hpp"
+#include "scene/plane_path.hpp"
+
+namespace epviz::scene {
+namespace {
+
+std::string fmt3(const Eigen::Vector3d& v) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "(%.4g, %.4g, %.4g)", v[0], v[1], v[2]);
+  return buf;
+}
+
+}  // namespace
+
+std::string case_title(physics::Case c) {
+  switch (c) {
+    case physics::Case::euler: return "Euler top (torque-free)";
+    case physics::Case::lagrange: return "Lagrange top";
+    case physics::Case::kovalevskaya: return "Kovalevskaya top";
+    case physics::Case::goryachev_chaplygin: return "Goryachev-Chaplygin top";
+    case physics::Case::hess: return "Hess top";
+    case physics::Case::generic: return "Generic heavy top (chaotic)";
+    case physics::Case::custom: break;
+  }
+  return "Heavy top";
+}
+
+std::string extra_integral_symbol(physics::Case c) {
+  switch (c) {
+    case physics::Case::euler: return "|L|^2";
+    case physics::Case::lagrange: return "Omega3";
+    case physics::Case::kovalevskaya: return "K";
+    case physics::Case::goryachev_chaplygin: return "G";
+    case physics::Case::hess: return "H";
+    default: return "";
+  }
+}
+
+FrameSource::FrameSource(const ScenePlan& plan, const SceneSettings& settings)
+    : plan_(plan),
+      settings_(settings),
+      trajectory_(sim::Trajectory::start(plan.run)),
+      monitor_(plan.run.body, plan.run.case_id, plan.run.initial),
+      history_(sphere_pixels_per_unit(settings), plane_pixels_per_unit(settings)),
+      shape_(body_shape(plan.run.body)) {
+  if (plan.run.case_id != physics::Case::custom && plan.run.case_id != physics::Case::generic)
+    max_drift_.extra = 0.0;
+  take(trajectory_->initial());
+}
+
+void FrameSource::take(const sim::Sample& s) {
+  latest_ = s;
+  const auto d = monitor_.relative_drift(monitor_.at(s));
+  auto keep = [](double& w, double v) { if (!(v <= w)) w = v; };
+  keep(max_drift_.gamma_norm2, d.gamma_norm2);
+  keep(max_drift_.area, d.area);
+  keep(max_drift_.energy, d.energy);
+  if (d.extra && max_drift_.extra) keep(*max_drift_.extra, *d.extra);
+
+  HistoryPoint p;
+  p.t = s.t;
+  const Eigen::Vector3d on_sphere =
+      settings_.view == View::space && s.attitude ? Eigen::Vector3d(*s.attitude * Eigen::Vector3d::UnitZ())
+                                                  : s.gamma;
+  p.sphere = on_sphere.cast<float>();
+  if (auto ab = physics::stereographic(s.gamma)) p.plane = ab->cast<float>();
+  p.gamma3 = float(s.gamma.z());
+  history_.offer(p);
+}
+
+Frame FrameSource::frame(int index) {
+  const long target = long(index) * plan_.samples_per_frame;
+  while (sample_index_ < target) {
+    take(trajectory_->next());
+    ++sample_index_;
+  }
+  const double window = settings_.trail_length > 0.0 ? settings_.trail_length : plan_.run.t_end;
+  history_.forget_before(latest_.t - window);
+  return compose(index);
+}
+
+Frame FrameSource::compose(int index) const {
+  Frame f;
+  f.index = index;
+  f.t = latest_.t;
+  f.view = settings_.view;
+  f.layers = settings_.layers;
+  f.camera = settings_.camera;
+  f.colours = settings_.colours;
+  f.body = shape_;
+  f.plane_extent = settings_.plane_extent;
+
+  const double window = settings_.trail_length > 0.0 ? settings_.trail_length : plan_.run.t_end;
+  auto age = [&](double t) { return float(std::clamp((latest_.t - t) / window, 0.0, 1.0)); };
+
+  if (settings_.view == View::space && latest_.attitude) {
+    f.body_rotation = latest_.attitude->cast<float>();
+    f.current = (*latest_.attitude * Eigen::Vector3d::UnitZ()).cast<float>();
+    f.trail_label = "body axis 3 (space frame)";
+  } else {
+    f.current = latest_.gamma.cast<float>();
+    f.trail_label = "gamma (body frame)";
+  }
+  const auto& pts = history_.points();
+  f.trail.reserve(pts.size() + 1);
+  for (const auto& p : pts) f.trail.push_back({p.sphere, age(p.t)});
+  f.trail.push_back({f.current, 0.0f});
+
+  auto path = build_plane_path(pts, f.plane_extent, age);
+  f.plane_path = std::move(path.points);
+  f.plane_marks = std::move(path.marks);
+  if (auto ab = physics::stereographic(latest_.gamma)) {
+    const Eigen::Vector2f now = ab->cast<float>();
+    f.plane_path.push_back({now, 0.0f, false});
+    if (inside_panel(now, f.plane_extent)) f.plane_current = now;
+  }
+
+  const auto& run = plan_.run;
+  f.overlay.title = settings_.title.empty() ? case_title(run.case_id) : settings_.title;
+  char line[160];
+  std::snprintf(line, sizeof line, "I = %s   r = %s   P = %.4g", fmt3(run.body.inertia).c_str(),
+                fmt3(run.body.com).c_str(), run.body.weight);
+  f.overlay.lines.emplace_back(line);
+  std::snprintf(line, sizeof line, "t = %8.3f / %g", latest_.t, run.t_end);
+  f.overlay.lines.emplace_back(line);
+  f.overlay.lines.push_back(std::string(sim::name(run.method)) + ", " + plan_.accuracy_note + ", " +
+                            std::string(sim::name(run.formulation)) + " formulation");
+  f.overlay.drifts = {{"|gamma|^2", max_drift_.gamma_norm2},
+                      {"C0 (area)", max_drift_.area},
+                      {"C1 (energy)", max_drift_.energy}};
+  if (max_drift_.extra) f.overlay.drifts.emplace_back(extra_integral_symbol(run.case_id), *max_drift_.extra);
+  return f;
+}
+
+}  // namespace epviz::scene

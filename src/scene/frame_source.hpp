@@ -1,0 +1,47 @@
+#pragma once
+// Runs the simulation ahead of the renderer and hands out one scene::Frame per
+// frame time, with bounded memory (the trail keeps only what the screen shows).
+#include <memory>
+
+#include "scene/frame.hpp"
+#include "scene/plan.hpp"
+#include "scene/trail.hpp"
+#include "sim/drift.hpp"
+#include "sim/trajectory.hpp"
+
+namespace epviz::scene {
+
+class FrameSource {
+ public:
+  FrameSource(const ScenePlan& plan, const SceneSettings& settings);
+
+  int frame_count() const { return plan_.frames; }
+  // Frame `index`; indices must not decrease (skipped frames are still
+  // integrated through). Throws numerics::IntegrationError on a numerical failure.
+  Frame frame(int index);
+
+  const sim::Trajectory& trajectory() const { return *trajectory_; }
+  const sim::Drifts& max_drift() const { return max_drift_; }
+  const ScenePlan& plan() const { return plan_; }
+
+ private:
+  void take(const sim::Sample& s);
+  Frame compose(int index) const;
+
+  ScenePlan plan_;
+  SceneSettings settings_;
+  std::unique_ptr<sim::Trajectory> trajectory_;
+  sim::InvariantMonitor monitor_;
+  sim::Drifts max_drift_;
+  TrailHistory history_;
+  sim::Sample latest_;
+  long sample_index_ = 0;
+  BodyShape shape_;
+};
+
+// "Kovalevskaya top", "Heavy top" for a custom body, ...
+std::string case_title(physics::Case c);
+// The name of the case's fourth integral on the overlay ("K", "G", ...).
+std::string extra_integral_symbol(physics::Case c);
+
+}  // namespace epviz::scene

@@ -1,0 +1,42 @@
+#pragma once
+// From a job to what must be simulated: the formulation the view needs, the
+// tolerance the resolution needs, and the output times of frames and trails.
+#include <stdexcept>
+#include <string>
+
+#include "scene/settings.hpp"
+#include "sim/run_spec.hpp"
+
+namespace epviz::scene {
+
+class PlanError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+struct ScenePlan {
+  sim::RunSpec run;          // samples = (frames - 1) * substeps_per_frame (at least 1 frame interval)
+  int frames = 1;
+  int samples_per_frame = 8; // trail samples between two frames
+  std::string accuracy_note; // how the tolerance or step was chosen, for the report and overlay
+  double frame_time(int frame) const;  // simulation time shown by a frame
+};
+
+// Pixels per unit of gamma on the sphere and of (a, b) on the Riccati plane at
+// this resolution and layout (an estimate shared with the painter's layout).
+double sphere_pixels_per_unit(const SceneSettings& s);
+double plane_pixels_per_unit(const SceneSettings& s);
+
+// The relative/absolute tolerance that keeps the drawn error well below a pixel
+// at this resolution over the run: tol = 0.02 px / (pixels per unit of gamma,
+// with the plane's magnification at its edge) / (1 + t_end / 10) for the
+// growth of the global error, clamped to [1e-13, 1e-4]. The factor 0.02 is
+// calibrated so that the measured error of every integrable preset stays
+// under 0.1 px (tests/scene/plan_test.cpp checks < 0.5 px against tol 1e-13).
+double tolerance_for_resolution(const SceneSettings& s, double t_end);
+
+// Throws PlanError when the job asks for something the view cannot show (the
+// space view needs the attitude, i.e. the spinor formulation).
+ScenePlan plan_scene(sim::RunSpec run, const SceneSettings& s);
+
+}  // namespace epviz::scene
