@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -307,13 +308,21 @@ TEST_F(VideoTest, DISABLED_Throughput) {
         VideoOptions options;
         if (!preset.empty()) options.x264_preset = preset;
         const fs::path target = dir_ / ("throughput" + std::string(video_format_extension(format)));
+        auto child_cpu = [] {
+            rusage usage{};
+            ::getrusage(RUSAGE_CHILDREN, &usage);
+            return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec +
+                   1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+        };
+        const double cpu0 = child_cpu();
         const auto t0 = std::chrono::steady_clock::now();
         VideoWriter writer(target, format, width, height, 60, options);
         for (int f = 0; f < frames; ++f) writer.write_frame(precomputed[static_cast<std::size_t>(f) % 30].data());
         writer.finish();
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        std::printf("%-5s %-10s %4d frames 1280x720: %6.1f frames/s, %8.0f kB\n",
-                    std::string(video_format_name(format)).c_str(), preset.c_str(), frames, frames / seconds,
+        const double cpu_ms = 1000.0 * (child_cpu() - cpu0) / frames;
+        std::printf("%-5s %-10s %4d frames 1280x720: %6.1f frames/s, ffmpeg %5.2f CPU ms/frame, %8.0f kB\n",
+                    std::string(video_format_name(format)).c_str(), preset.c_str(), frames, frames / seconds, cpu_ms,
                     static_cast<double>(fs::file_size(target)) / 1000.0);
         fs::remove(target);
     }
