@@ -59,8 +59,12 @@ void SimulationFields::overlay(const SimulationFields& o) {
   take(chart_switch, o.chart_switch);
 }
 
-SimulationFields read_simulation_fields(io::ObjectReader& r) {
+SimulationFields read_simulation_fields(io::ObjectReader& r, bool* auto_tol) {
   SimulationFields f;
+  if (auto_tol) {
+    *auto_tol = r.peek_string("tol") == std::optional<std::string>("auto");
+    if (*auto_tol) r.mark_read("tol");
+  }
   auto str = [&](Given<std::string>& g, const char* key) {
     if (auto v = r.string(key)) g.set(*v, r.where(key));
   };
@@ -79,7 +83,7 @@ SimulationFields read_simulation_fields(io::ObjectReader& r) {
   vec(f.omega, "omega");
   vec(f.gamma, "gamma");
   num(f.weight, "weight", false);
-  num(f.tol, "tol", true);
+  if (!(auto_tol && *auto_tol)) num(f.tol, "tol", true);
   num(f.step, "step", true);
   num(f.t_end, "t_end", true);
   if (auto v = r.integer("samples", 1, 100'000'000)) f.samples.set(*v, r.where("samples"));

@@ -34,8 +34,9 @@ struct SimulationFields {
 };
 
 // Reads the simulation keys of a job object (the same names as the CLI options,
-// with '_' for '-'); unknown keys are left for the caller's finish().
-SimulationFields read_simulation_fields(io::ObjectReader& reader);
+// with '_' for '-'); unknown keys are left for the caller's finish(). With
+// `auto_tol` (render jobs), "tol": "auto" is accepted and reported there.
+SimulationFields read_simulation_fields(io::ObjectReader& reader, bool* auto_tol = nullptr);
 
 // Checks the fields against each other and against physics and fills in the
 // defaults: a case preset's body and state for fields not given (the generic

@@ -40,6 +40,12 @@ void ObjectReader::fail(const std::string& key, const std::string& what) const {
 
 bool ObjectReader::has(const std::string& key) const { return object_->contains(key); }
 
+std::optional<std::string> ObjectReader::peek_string(const std::string& key) const {
+  auto it = object_->find(key);
+  if (it == object_->end() || !it->is_string()) return std::nullopt;
+  return it->get<std::string>();
+}
+
 const nlohmann::json* ObjectReader::get(const std::string& key) {
   read_.insert(key);
   auto it = object_->find(key);

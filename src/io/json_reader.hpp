@@ -30,6 +30,12 @@ class ObjectReader {
   ObjectReader(const nlohmann::json& object, std::string file, std::string path = "");
 
   bool has(const std::string& key) const;
+  // The string at `key` without marking it read (nullopt if absent or not a string).
+  std::optional<std::string> peek_string(const std::string& key) const;
+  // Marks a key as handled by the caller.
+  void mark_read(const std::string& key) { read_.insert(key); }
+  // The raw value (nullptr if absent), marked read.
+  const nlohmann::json* raw(const std::string& key) { return get(key); }
   std::optional<double> number(const std::string& key);
   std::optional<double> positive_number(const std::string& key);
   std::optional<long> integer(const std::string& key, long min_value, long max_value);

@@ -11,7 +11,7 @@
 
 namespace epviz::scene {
 
-using Rgba = std::array<float, 4>;  // linear 0..1, straight alpha
+using Rgba = std::array<float, 4>;  // sRGB 0..1 as in "#rrggbb", straight alpha
 
 enum class View {
   body,   // body axes fixed on screen; gamma (the vertical seen from the body) moves

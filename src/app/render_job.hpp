@@ -1,0 +1,52 @@
+#pragma once
+// Render jobs (render_jobs/*.json): what to simulate, what to draw and where
+// to write it. Every error names the file, the key path and what is allowed.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/simulation_fields.hpp"
+#include "scene/settings.hpp"
+
+namespace epviz::app {
+
+enum class OutputFormat { png, mp4, webm, gif };
+
+struct OutputSettings {
+  std::filesystem::path dir = "out";
+  OutputFormat format = OutputFormat::png;
+  std::string name;  // video file stem, or PNG frame prefix ("frame" -> frame_0042.png)
+};
+
+struct RenderJob {
+  std::filesystem::path file;
+  SimulationFields simulation;
+  scene::SceneSettings scene;
+  OutputSettings output;
+};
+
+// A gallery: several jobs, one still of each tiled into a comparison figure,
+// and optionally a video of each.
+struct GalleryJob {
+  std::filesystem::path file;
+  std::vector<RenderJob> jobs;
+  int tile_width = 640, tile_height = 360, columns = 3;
+  double at = 0.6;  // which frame to tile, as a fraction of each run
+  std::optional<OutputFormat> videos;  // a video per job in this format (none: stills only)
+  std::filesystem::path dir = "out/gallery";
+};
+
+// Either a single job or a gallery (a top-level "jobs" key). Relative job
+// paths inside a gallery are relative to the gallery file; relative output
+// directories are relative to the current directory.
+struct LoadedJob {
+  std::optional<RenderJob> single;
+  std::optional<GalleryJob> gallery;
+};
+LoadedJob load_render_job(const std::filesystem::path& path);
+
+std::string_view output_format_name(OutputFormat f);
+std::optional<OutputFormat> output_format_from_name(std::string_view s);
+
+}  // namespace epviz::app
