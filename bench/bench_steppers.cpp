@@ -44,6 +44,8 @@ void fixed_step(benchmark::State& state) {
     benchmark::DoNotOptimize(x);
   }
   state.counters["rhs/step"] = double(stepper.stats().rhs_evals) / double(stepper.stats().steps);
+  state.counters["per_t"] =
+      benchmark::Counter(t, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 template <class Stepper>
@@ -57,7 +59,14 @@ void adaptive_step(benchmark::State& state) {
     stepper.step();
     benchmark::DoNotOptimize(stepper.state());
   }
-  state.counters["rhs/step"] = double(stepper.stats().rhs_evals) / double(stepper.stats().steps);
+  const numerics::Stats& st = stepper.stats();
+  state.counters["rhs/step"] = double(st.rhs_evals) / double(st.steps);
+  state.counters["rej/step"] = double(st.rejected_steps) / double(st.steps);
+  state.counters["h"] = stepper.t() / double(st.steps);  // mean accepted step
+  // Cost per unit of simulated time (shown as time per 1 time unit): what a
+  // cheaper step that needs more steps would not improve.
+  state.counters["per_t"] =
+      benchmark::Counter(stepper.t(), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 using physics::DirectSystem;

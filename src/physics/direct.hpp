@@ -11,7 +11,7 @@ namespace epviz::physics {
 
 // The Euler equations (1.1): Omega' = I^-1 ((I Omega) x Omega + gamma x (P r)).
 // Shared by every formulation; `inv_inertia` = 1/I_i, `pr` = P r.
-inline Vector3d euler_omega_dot(const Vector3d& inertia, const Vector3d& inv_inertia,
+[[gnu::always_inline]] inline Vector3d euler_omega_dot(const Vector3d& inertia, const Vector3d& inv_inertia,
                                 const Vector3d& pr, const Vector3d& w, const Vector3d& g) {
   return Vector3d(((inertia.y() - inertia.z()) * w.y() * w.z() + g.y() * pr.z() - g.z() * pr.y()) *
                       inv_inertia.x(),
@@ -34,7 +34,7 @@ class DirectSystem {
         pr_(body.weight * body.com) {}
 
   // x = (Omega, gamma); dxdt = (Omega', gamma x Omega).
-  void rhs(double /*t*/, const State& x, State& dxdt) const {
+  [[gnu::always_inline]] void rhs(double /*t*/, const State& x, State& dxdt) const {
     const Vector3d w = x.head<3>();
     const Vector3d g = x.tail<3>();
     dxdt.head<3>() = euler_omega_dot(inertia_, inv_inertia_, pr_, w, g);

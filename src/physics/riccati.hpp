@@ -36,7 +36,7 @@ class RiccatiSystem {
         chart_switch_(chart_switch) {}
 
   // x = (Omega, a, b) in the current chart.
-  void rhs(double /*t*/, const State& x, State& dxdt) const {
+  [[gnu::always_inline]] void rhs(double /*t*/, const State& x, State& dxdt) const {
     const Vector3d w = x.head<3>();
     const double a = x[3], b = x[4];
     const double d = a * a - b * b, ab = a * b;
@@ -74,9 +74,9 @@ class RiccatiSystem {
   Vector3d omega(const State& x) const { return x.head<3>(); }
 
   // Unit vertical of the state in the current chart.
-  Vector3d gamma(const State& x) const { return gamma_in(chart_, x[3], x[4]); }
+  [[gnu::always_inline]] Vector3d gamma(const State& x) const { return gamma_in(chart_, x[3], x[4]); }
 
-  static Vector3d gamma_in(Chart chart, double a, double b) {
+  [[gnu::always_inline]] static Vector3d gamma_in(Chart chart, double a, double b) {
     if (chart == Chart::north) return from_stereographic(a, b);
     const double r2 = a * a + b * b;
     const double inv = 1.0 / (1.0 + r2);

@@ -34,7 +34,7 @@ class SpinorSystem {
         pr_(body.weight * body.com) {}
 
   // x = (Omega, Re p, Im p, Re q, Im q).
-  void rhs(double /*t*/, const State& x, State& dxdt) const {
+  [[gnu::always_inline]] void rhs(double /*t*/, const State& x, State& dxdt) const {
     const Vector3d w = x.head<3>();
     const double pr = x[3], pi = x[4], qr = x[5], qi = x[6];
     dxdt.head<3>() = euler_omega_dot(inertia_, inv_inertia_, pr_, w, gamma(x));
@@ -64,7 +64,7 @@ class SpinorSystem {
   Vector3d omega(const State& x) const { return x.head<3>(); }
 
   // The Hopf map (sigma = 1).
-  static Vector3d gamma(const State& x) {
+  [[gnu::always_inline]] static Vector3d gamma(const State& x) {
     const double pr = x[3], pi = x[4], qr = x[5], qi = x[6];
     const double pp = pr * pr + pi * pi, qq = qr * qr + qi * qi;
     const double inv = 1.0 / (pp + qq);
