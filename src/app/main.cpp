@@ -7,6 +7,9 @@
 
 #include "app/cases_command.hpp"
 #include "app/simulate_command.hpp"
+#ifdef EPVIZ_HAVE_RENDER
+#include "app/render_command.hpp"
+#endif
 #include "app/usage_error.hpp"
 
 int main(int argc, char** argv) {
@@ -18,6 +21,9 @@ int main(int argc, char** argv) {
   std::map<std::string, std::function<int()>> commands;
   commands["simulate"] = epviz::app::add_simulate_command(app);
   commands["cases"] = epviz::app::add_cases_command(app);
+#ifdef EPVIZ_HAVE_RENDER
+  commands["render"] = epviz::app::add_render_command(app);
+#endif
 
   try {
     app.parse(argc, argv);

@@ -129,8 +129,8 @@ Frame FrameSource::compose(int index) const {
   f.overlay.lines.emplace_back(line);
   std::snprintf(line, sizeof line, "t = %8.3f / %g", latest_.t, run.t_end);
   f.overlay.lines.emplace_back(line);
-  f.overlay.lines.push_back(std::string(sim::name(run.method)) + ", " + plan_.accuracy_note + ", " +
-                            std::string(sim::name(run.formulation)) + " formulation");
+  f.overlay.lines.push_back(std::string(sim::name(run.method)) + ", " + plan_.accuracy_note);
+  f.overlay.lines.push_back(std::string(sim::name(run.formulation)) + " formulation");
   f.overlay.drifts = {{"|gamma|^2", max_drift_.gamma_norm2},
                       {"C0 (area)", max_drift_.area},
                       {"C1 (energy)", max_drift_.energy}};

@@ -1,0 +1,287 @@
+#include "app/render_command.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "app/cli_values.hpp"
+#include "app/render_job.hpp"
+#include "app/usage_error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/frame_names.hpp"
+#include "io/frame_range.hpp"
+#include "io/image_tiling.hpp"
+#include "io/png_writer.hpp"
+#include "io/progress.hpp"
+#include "io/video_writer.hpp"
+#include "paint/frame_painter.hpp"
+#include "render/gl_context.hpp"
+#include "scene/frame_source.hpp"
+
+namespace epviz::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RenderOptions {
+  std::string job, out, frames, width, height, format, gl, report_json;
+  bool resume = false, quiet = false, progress = false;
+};
+
+// What one job needs before any pixel is drawn: everything checked.
+struct PreparedJob {
+  RenderJob job;
+  scene::ScenePlan plan;
+  io::FrameRange range;
+};
+
+PreparedJob prepare(RenderJob job, const RenderOptions& o) {
+  if (!o.width.empty()) job.scene.width = int(parse_integer("--width", o.width, 16, 8192));
+  if (!o.height.empty()) job.scene.height = int(parse_integer("--height", o.height, 16, 8192));
+  if (!o.format.empty()) {
+    auto f = output_format_from_name(o.format);
+    if (!f) throw UsageError("--format: unknown format '" + o.format + "' (allowed: png, mp4, webm, gif)");
+    job.output.format = *f;
+  }
+  if (!o.out.empty()) job.output.dir = o.out;
+  if (job.output.format != OutputFormat::png && (job.scene.width % 2 || job.scene.height % 2))
+    throw UsageError(job.file.string() + ": video needs an even width and height, got " +
+                     std::to_string(job.scene.width) + "x" + std::to_string(job.scene.height));
+  if (job.output.format != OutputFormat::png && !io::ffmpeg_available())
+    throw UsageError("--format " + std::string(output_format_name(job.output.format)) +
+                     ": ffmpeg not found on PATH; install the Debian package ffmpeg (scripts/setup.sh does)");
+  if (o.resume && job.output.format != OutputFormat::png)
+    throw UsageError("--resume: applies to PNG sequences only (a video is written whole)");
+
+  PreparedJob p;
+  const sim::RunSpec run = resolve(job.simulation);
+  try {
+    p.plan = scene::plan_scene(run, job.scene);
+  } catch (const scene::PlanError& e) {
+    throw UsageError(job.file.string() + ": " + e.what());
+  }
+  try {
+    p.range = o.frames.empty() ? io::all_frames(p.plan.frames) : io::parse_frame_range(o.frames, p.plan.frames);
+  } catch (const io::FrameRangeError& e) {
+    throw UsageError(e.what());
+  }
+  p.job = std::move(job);
+  return p;
+}
+
+std::string gl_backend(const RenderOptions& o) {
+  return o.gl.empty() ? render::gl_backend_from_environment() : o.gl;
+}
+
+std::unique_ptr<render::GlContext> open_context(const RenderOptions& o, int w, int h) {
+  try {
+    return render::make_gl_context(gl_backend(o), w, h);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string(o.gl.empty() ? "EPVIZ_GL" : "--gl") + ": " + e.what());
+  }
+}
+
+io::ProgressMode progress_mode(const RenderOptions& o) {
+  return o.quiet ? io::ProgressMode::off : o.progress ? io::ProgressMode::on : io::ProgressMode::automatic;
+}
+
+struct RenderStats {
+  int frames_drawn = 0, frames_skipped = 0;
+  double seconds = 0.0;
+  std::optional<numerics::Failure> failure;
+  std::optional<render::RgbaImage> kept;  // the last frame drawn (for galleries)
+};
+
+// Renders the prepared job's frame range to its output. Frames before the
+// range are integrated through but not drawn.
+RenderStats render_frames(const PreparedJob& p, paint::FramePainter& painter, const RenderOptions& o,
+                          bool write_output = true) {
+  RenderStats stats;
+  const auto& job = p.job;
+  const auto& s = job.scene;
+  fs::create_directories(job.output.dir);
+  scene::FrameSource source(p.plan, s);
+
+  std::unique_ptr<io::AsyncPngWriter> pngs;
+  std::unique_ptr<io::VideoWriter> video;
+  if (write_output && job.output.format == OutputFormat::png) {
+    pngs = std::make_unique<io::AsyncPngWriter>();
+  } else if (write_output) {
+    const auto fmt = *io::parse_video_format(output_format_name(job.output.format));
+    video = std::make_unique<io::VideoWriter>(
+        job.output.dir / (job.output.name + std::string(io::video_format_extension(fmt))), fmt, s.width, s.height,
+        s.fps);
+  }
+  io::ProgressOptions po;
+  po.mode = progress_mode(o);
+  po.label = job.file.stem().string();
+  io::ProgressLine progress(p.range.count(), po);
+
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    for (int i = p.range.first; i <= p.range.last; ++i) {
+      const fs::path png_path =
+          job.output.dir / io::frame_file_name(i, p.plan.frames, job.output.name + "_", ".png");
+      if (pngs && o.resume && io::png_frame_complete(png_path)) {
+        ++stats.frames_skipped;
+        progress.advance();
+        continue;
+      }
+      const scene::Frame frame = source.frame(i);
+      const render::RgbaImage& image = painter.paint(frame);
+      if (pngs) pngs->submit(png_path, image.width, image.height, image.pixels);
+      if (video) video->write_frame(image.pixels.data());
+      if (!write_output) stats.kept = image;
+      ++stats.frames_drawn;
+      progress.advance();
+    }
+  } catch (const numerics::IntegrationError& e) {
+    stats.failure = e.failure();
+  }
+  progress.finish();
+  if (pngs) pngs->close();
+  if (video && !stats.failure) video->finish();  // a failed video is not kept (its destructor removes it)
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return stats;
+}
+
+nlohmann::json job_report(const PreparedJob& p, const RenderStats& st) {
+  const auto& run = p.plan.run;
+  nlohmann::json j;
+  j["job"] = p.job.file.string();
+  j["case"] = physics::case_name(run.case_id);
+  j["formulation"] = std::string(sim::name(run.formulation));
+  j["method"] = std::string(sim::name(run.method));
+  j["accuracy"] = p.plan.accuracy_note;
+  if (sim::is_adaptive(run.method)) j["tol"] = run.tol;
+  j["frames"] = p.plan.frames;
+  j["frames_drawn"] = st.frames_drawn;
+  j["frames_skipped"] = st.frames_skipped;
+  j["seconds"] = st.seconds;
+  j["output"] = (p.job.output.dir).string();
+  j["failure"] = st.failure ? nlohmann::json(st.failure->message()) : nlohmann::json(nullptr);
+  return j;
+}
+
+void print_job_line(const PreparedJob& p, const RenderStats& st) {
+  std::printf("%s: %d frames %dx%d in %.2f s (%.1f frames/s), %s %s, %s -> %s\n", p.job.file.string().c_str(),
+              st.frames_drawn, p.job.scene.width, p.job.scene.height, st.seconds,
+              st.seconds > 0 ? st.frames_drawn / st.seconds : 0.0, std::string(sim::name(p.plan.run.method)).c_str(),
+              p.plan.accuracy_note.c_str(), std::string(sim::name(p.plan.run.formulation)).c_str(),
+              p.job.output.dir.string().c_str());
+}
+
+int report_failure(const std::optional<numerics::Failure>& f) {
+  if (!f) return 0;
+  std::fprintf(stderr, "epviz: numerical failure: %s\n", f->message().c_str());
+  return 3;
+}
+
+int render_single(RenderJob job, const RenderOptions& o) {
+  const auto p = prepare(std::move(job), o);
+  auto context = open_context(o, p.job.scene.width, p.job.scene.height);
+  paint::FramePainter painter(*context, p.job.scene.width, p.job.scene.height);
+  const auto st = render_frames(p, painter, o);
+  print_job_line(p, st);
+  if (!o.report_json.empty()) io::write_file_atomically(o.report_json, job_report(p, st).dump(2) + "\n");
+  return report_failure(st.failure);
+}
+
+int render_gallery(GalleryJob g, const RenderOptions& o) {
+  if (!o.frames.empty()) throw UsageError("--frames: a gallery renders whole jobs; give --frames to a single job");
+  if (!o.out.empty()) g.dir = o.out;
+  if (!o.format.empty()) {
+    auto f = output_format_from_name(o.format);
+    if (!f) throw UsageError("--format: unknown format '" + o.format + "' (allowed: png, mp4, webm, gif)");
+    g.videos = *f == OutputFormat::png ? std::nullopt : f;
+  }
+  // Check every job before rendering any.
+  std::vector<PreparedJob> stills, videos;
+  RenderOptions job_opts = o;
+  job_opts.out.clear();
+  job_opts.format.clear();
+  for (auto job : g.jobs) {
+    job.scene.width = g.tile_width;
+    job.scene.height = g.tile_height;
+    job.output.dir = g.dir;
+    auto still = job;
+    still.output.format = OutputFormat::png;
+    auto ps = prepare(still, job_opts);
+    const int at = int(std::lround(g.at * (ps.plan.frames - 1)));
+    ps.range = {at, at};
+    stills.push_back(std::move(ps));
+    if (g.videos) {
+      job.output.format = *g.videos;
+      job.output.name = job.file.stem().string();
+      videos.push_back(prepare(job, job_opts));
+    }
+  }
+  fs::create_directories(g.dir);
+  auto context = open_context(o, g.tile_width, g.tile_height);
+  paint::FramePainter painter(*context, g.tile_width, g.tile_height);
+
+  nlohmann::json reports = nlohmann::json::array();
+  int failures = 0;
+  std::vector<render::RgbaImage> tiles;
+  for (const auto& p : stills) {
+    auto st = render_frames(p, painter, o, /*write_output=*/false);
+    failures += report_failure(st.failure) != 0;
+    tiles.push_back(st.kept ? std::move(*st.kept) : render::RgbaImage{g.tile_width, g.tile_height,
+                                                                         std::vector<std::uint8_t>(std::size_t(g.tile_width) * g.tile_height * 4, 0)});
+  }
+  std::vector<std::span<const std::uint8_t>> spans;
+  for (const auto& t : tiles) spans.emplace_back(t.pixels);
+  io::TilingOptions tiling;
+  tiling.cols = g.columns;
+  tiling.gap = 4;
+  tiling.margin = 4;
+  tiling.background = {16, 18, 22, 255};
+  const auto figure = io::tile_images(spans, g.tile_width, g.tile_height, tiling);
+  const fs::path figure_path = g.dir / "gallery.png";
+  io::write_png_rgba(figure_path, figure.width, figure.height, figure.pixels);
+  std::printf("%s: %zu cases tiled into %s (%dx%d)\n", g.file.string().c_str(), tiles.size(),
+              figure_path.string().c_str(), figure.width, figure.height);
+
+  for (const auto& p : videos) {
+    const auto st = render_frames(p, painter, o);
+    print_job_line(p, st);
+    reports.push_back(job_report(p, st));
+    failures += report_failure(st.failure) != 0;
+  }
+  if (!o.report_json.empty()) io::write_file_atomically(o.report_json, reports.dump(2) + "\n");
+  return failures ? 3 : 0;
+}
+
+int run_render(const RenderOptions& o) {
+  if (!o.report_json.empty()) {
+    const auto dir = fs::absolute(o.report_json).parent_path();
+    if (!fs::is_directory(dir)) throw UsageError("--report-json: directory '" + dir.string() + "' does not exist");
+  }
+  auto loaded = load_render_job(o.job);
+  if (loaded.gallery) return render_gallery(std::move(*loaded.gallery), o);
+  return render_single(std::move(*loaded.single), o);
+}
+
+}  // namespace
+
+std::function<int()> add_render_command(CLI::App& app) {
+  auto o = std::make_shared<RenderOptions>();
+  auto* cmd = app.add_subcommand("render", "Render a job (render_jobs/*.json) to PNG frames, a video, or a gallery");
+  cmd->add_option("job", o->job, "render job file (JSON)")->required();
+  cmd->add_option("--out", o->out, "output directory (overrides the job's output.dir)");
+  cmd->add_option("--frames", o->frames, "frame range A:B (inclusive), A:, :B or N");
+  cmd->add_option("--width", o->width, "frame width in pixels");
+  cmd->add_option("--height", o->height, "frame height in pixels");
+  cmd->add_option("--format", o->format, "png|mp4|webm|gif");
+  cmd->add_option("--gl", o->gl, "offscreen GL backend (default: $EPVIZ_GL or osmesa)");
+  cmd->add_option("--report-json", o->report_json, "write what was rendered (tolerance chosen, timings) as JSON");
+  cmd->add_flag("--resume", o->resume, "PNG: skip frames already written completely");
+  cmd->add_flag("--quiet", o->quiet, "no progress line");
+  cmd->add_flag("--progress", o->progress, "progress line even when stderr is not a terminal");
+  return [o] { return run_render(*o); };
+}
+
+}  // namespace epviz::app

@@ -1,0 +1,294 @@
+#include "paint/frame_painter.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include "render/colour_map.hpp"
+#include "render/mesh_data.hpp"
+
+namespace epviz::paint {
+namespace {
+
+using render::DrawList;
+using render::TextAnchor;
+
+glm::vec4 to_glm(const scene::Rgba& c) { return {c[0], c[1], c[2], c[3]}; }
+glm::vec3 to_glm(const Eigen::Vector3f& v) { return {v.x(), v.y(), v.z()}; }
+glm::quat to_glm(const Eigen::Quaternionf& q) { return {q.w(), q.x(), q.y(), q.z()}; }
+
+// Perceived brightness, to pick text colours that read on the background.
+bool is_light(const scene::Rgba& c) { return 0.299f * c[0] + 0.587f * c[1] + 0.114f * c[2] > 0.55f; }
+
+const render::ColourMap& time_map() {
+  static const render::ColourMap map = render::ColourMap::time();
+  return map;
+}
+// Newest points bright and opaque, old ones darker and fading out.
+glm::vec4 age_colour(float age) { return time_map()(1.0f - age, 0.25f + 0.75f * (1.0f - age)); }
+
+constexpr float kFovDegrees = 30.0f;
+
+}  // namespace
+
+// The overlay's font size and the height its nine lines take.
+float overlay_font_px(int height) { return std::clamp(float(height) / 42.0f, 13.0f, 28.0f); }
+int overlay_height(int height) { return int(std::ceil(overlay_font_px(height) * 1.32f * 9.0f + 16.0f)); }
+
+Layout layout_for(const scene::Layers& layers, int width, int height) {
+  Layout l;
+  const bool three_d = layers.body || layers.sphere;
+  if (three_d && layers.riccati) {
+    const int w3 = width * 3 / 5;
+    l.view_3d = render::Viewport{0, 0, w3, height};
+    l.panel_column = render::Viewport{w3, 0, width - w3, height};
+  } else if (three_d) {
+    l.view_3d = render::Viewport{0, 0, width, height};
+  } else if (layers.riccati) {
+    l.panel_column = render::Viewport{0, 0, width, height};
+  }
+  if (l.panel_column) {
+    const auto& c = *l.panel_column;
+    // The overlay sits at the top of the panel's column when there is one, so
+    // it never covers the sphere; the plot goes below it, with room for the
+    // title above and the tick labels and legend below.
+    const int overlay = l.view_3d ? overlay_height(height) : 0;
+    const int margin_top = overlay + std::max(22, height / 14), margin_bottom = std::max(26, height / 9);
+    const int margin_left = std::max(30, c.width / 8), margin_right = std::max(10, c.width / 20);
+    const int side = std::max(16, std::min(c.width - margin_left - margin_right, c.height - margin_top - margin_bottom));
+    const int x = c.x + margin_left + (c.width - margin_left - margin_right - side) / 2;
+    const int y = c.y + margin_top + (c.height - margin_top - margin_bottom - side) / 2;
+    l.plot_area = render::Viewport{x, y, side, side};
+  }
+  return l;
+}
+
+render::Camera camera_for(const scene::Frame& f, const render::Viewport& view) {
+  // The unit sphere (and its pole labels) fits the narrower side of the view at
+  // the frame's distance; a distance of 3.4 radii frames it with a small margin.
+  const float aspect = view.aspect();
+  const float half = std::tan(glm::radians(kFovDegrees) / 2.0f) * std::min(1.0f, aspect);
+  const float distance = float(f.camera.distance) * (1.22f / half) / 3.4f;
+  return render::Camera::orbit(glm::vec3(0.0f), distance, float(f.camera.azimuth_deg),
+                               float(f.camera.elevation_deg), kFovDegrees, aspect);
+}
+
+FramePainter::FramePainter(render::GlContext& context, int width, int height, PainterOptions options)
+    : context_(context), options_(options) {
+  context_.make_current();
+  render::RendererOptions ro;
+  ro.width = width;
+  ro.height = height;
+  ro.msaa_samples = options.msaa_samples;
+  ro.overlay = true;
+  ro.overlay_options.builtin_font = options.builtin_font;
+  ro.overlay_options.font_size_px = overlay_font_px(height);
+  renderer_ = std::make_unique<render::Renderer>(context_, ro);
+  glass_ = render::GpuMesh(render::make_uv_sphere(1.0f, 72, 36));
+  arrow_ = render::GpuMesh(render::make_arrow(1.0f, 0.018f, 0.045f, 0.12f, 20));
+  marker_sphere_ = render::GpuMesh(render::make_uv_sphere(1.0f, 20, 10));
+  grid_ = render::make_lat_long_grid(1.0f, 5, 12, 120);
+}
+
+FramePainter::~FramePainter() = default;
+
+void FramePainter::resize(int width, int height) {
+  context_.make_current();
+  renderer_->resize(width, height);
+}
+int FramePainter::width() const { return renderer_->width(); }
+int FramePainter::height() const { return renderer_->height(); }
+
+void FramePainter::draw_body(DrawList& list, const scene::Frame& f, float px) {
+  if (!box_ || !box_half_extents_.isApprox(f.body.half_extents)) {
+    box_.emplace(render::make_box(to_glm(f.body.half_extents)));
+    box_half_extents_ = f.body.half_extents;
+  }
+  const glm::mat4 rot = glm::mat4_cast(to_glm(f.body_rotation));
+  const glm::vec3 com = to_glm(f.body.centre_of_mass);
+  list.add_mesh(*box_, rot * glm::translate(glm::mat4(1.0f), com), {to_glm(f.colours.body), 0.35f, 40.0f, 0.0f});
+
+  // Box edges, slightly darker than the faces, so the orientation reads even
+  // where two faces are lit alike.
+  const glm::vec3 h = to_glm(f.body.half_extents);
+  const glm::vec4 edge{f.colours.body[0] * 0.45f, f.colours.body[1] * 0.45f, f.colours.body[2] * 0.45f, 1.0f};
+  auto corner = [&](int i) {
+    const glm::vec3 c(i & 1 ? h.x : -h.x, i & 2 ? h.y : -h.y, i & 4 ? h.z : -h.z);
+    return glm::vec3(rot * glm::vec4(com + c * 1.002f, 1.0f));
+  };
+  for (int i = 0; i < 8; ++i)
+    for (int bit : {1, 2, 4})
+      if (!(i & bit)) list.add_line(corner(i), corner(i | bit), edge, 1.0f * px);
+
+  // Principal axes from the fixed point, muted red/green/blue for print.
+  const glm::vec4 axis_colours[] = {{0.86f, 0.33f, 0.30f, 1}, {0.36f, 0.74f, 0.40f, 1}, {0.36f, 0.54f, 0.92f, 1}};
+  const char* names[] = {"e1", "e2", "e3"};
+  const float length = std::max(0.95f, glm::length(com) + 0.25f);
+  const glm::vec4 label_colour = is_light(f.colours.background) ? glm::vec4(0.2f, 0.2f, 0.25f, 1) : glm::vec4(0.85f, 0.87f, 0.92f, 1);
+  for (int i = 0; i < 3; ++i) {
+    glm::vec3 axis(0.0f);
+    axis[i] = 1.0f;
+    const glm::mat4 model = rot * render::rotation_from_z_to(axis) * glm::scale(glm::mat4(1.0f), glm::vec3(length));
+    list.add_mesh(arrow_, model, {axis_colours[i], 0.3f, 32.0f, 0.0f});
+    list.add_text({glm::vec3(rot * glm::vec4(axis * (length + 0.08f), 1.0f)), names[i], label_colour, TextAnchor::centre});
+  }
+  // The fixed point, and the centre of mass where it is not the fixed point.
+  list.add_marker({glm::vec3(0.0f), {0.08f, 0.08f, 0.1f, 1}, {0.95f, 0.95f, 0.95f, 1}, 4.0f * px, 1.2f * px});
+  if (glm::length(com) > 1e-4f) {
+    const glm::vec3 c = glm::vec3(rot * glm::vec4(com, 1.0f));
+    list.add_marker({c, {0.98f, 0.85f, 0.25f, 1}, {0.1f, 0.1f, 0.1f, 1}, 4.0f * px, 1.2f * px});
+  }
+}
+
+void FramePainter::draw_sphere(DrawList& list, const scene::Frame& f, float px) const {
+  const bool light = is_light(f.colours.background);
+  list.add_mesh(glass_, glm::mat4(1.0f), {to_glm(f.colours.sphere), 0.5f, 60.0f, 1.4f, false});
+  const glm::vec4 grid = light ? glm::vec4(0.25f, 0.3f, 0.4f, 0.22f) : glm::vec4(0.75f, 0.82f, 0.95f, 0.16f);
+  for (const auto& line : grid_) list.add_polyline(line, grid, 1.0f * px);
+
+  std::vector<render::LineVertex> trail;
+  trail.reserve(f.trail.size());
+  for (const auto& p : f.trail) trail.push_back({to_glm(p.p), age_colour(p.age)});
+  if (trail.size() >= 2) list.add_polyline(trail, 2.2f * px);
+  list.add_marker({to_glm(f.current), to_glm(f.colours.marker), {1, 1, 1, 1}, 5.0f * px, 1.3f * px});
+
+  const glm::vec4 text = light ? glm::vec4(0.15f, 0.15f, 0.2f, 1) : glm::vec4(0.92f, 0.94f, 1.0f, 1);
+  list.add_text({{0, 0, 1.1f}, "N", text, TextAnchor::bottom});
+  list.add_text({{0, 0, -1.1f}, "S", text, TextAnchor::top});
+}
+
+void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& column, const render::Viewport& area,
+                              float px) {
+  const double e = f.plane_extent;
+  const render::Panel2D plot(area, {-e, e, -e, e}, true);
+  render::PanelStyle style;
+  const bool light = is_light(f.colours.background);
+  if (light) {
+    style.background = {0.97f, 0.97f, 0.98f, 1};
+    style.frame = {0.5f, 0.5f, 0.55f, 1};
+    style.grid = {0, 0, 0, 0.08f};
+    style.axis = {0.3f, 0.3f, 0.35f, 0.8f};
+    style.text = {0.15f, 0.15f, 0.2f, 1};
+  }
+  style.tick_length = 4.0f * px;
+  style.frame_width = style.axis_width = 1.0f * px;
+  style.min_tick_spacing_px = 34.0f * px;
+  DrawList flat;
+  plot.draw_axes(flat, style);
+  plot.draw_circle(flat, {0.0, 0.0}, 1.0, {style.text.r, style.text.g, style.text.b, 0.85f}, 1.3f * px);
+  plot.draw_text(flat, {0.70710678, -0.70710678}, {{}, "equator", style.text, TextAnchor::top_left, {3 * px, 2 * px}});
+
+  // The path, in runs that do not join across a pass through infinity.
+  std::vector<glm::dvec2> run;
+  std::vector<glm::vec4> colours;
+  auto flush = [&] {
+    if (run.size() >= 2) plot.draw_polyline(flat, run, colours, 1.8f * px);
+    run.clear();
+    colours.clear();
+  };
+  for (const auto& p : f.plane_path) {
+    if (p.break_before) flush();
+    run.emplace_back(p.ab.x(), p.ab.y());
+    colours.push_back(age_colour(p.age));
+  }
+  flush();
+
+  bool any_infinity = false, any_exit = false;
+  for (const auto& m : f.plane_marks) {
+    const glm::dvec2 at(m.ab.x(), m.ab.y());
+    const glm::vec4 c = age_colour(m.age);
+    switch (m.kind) {
+      case scene::PlaneMark::Kind::leaves_panel:  // hollow: the path goes on outside
+        plot.draw_marker(flat, at, {{}, {0, 0, 0, 0}, {c.r, c.g, c.b, 1}, 4.0f * px, 1.5f * px});
+        any_exit = true;
+        break;
+      case scene::PlaneMark::Kind::enters_panel:  // filled: the path comes back
+        plot.draw_marker(flat, at, {{}, {c.r, c.g, c.b, 1}, {c.r, c.g, c.b, 1}, 3.0f * px, 0.0f});
+        any_exit = true;
+        break;
+      case scene::PlaneMark::Kind::through_infinity:
+        plot.draw_marker(flat, at, {{}, {0, 0, 0, 0}, {0.95f, 0.3f, 0.3f, 1}, 6.0f * px, 2.0f * px});
+        plot.draw_text(flat, at, {{}, "inf", {0.95f, 0.35f, 0.35f, 1}, TextAnchor::centre, {0.0f, -11.0f * px}});
+        any_infinity = true;
+        break;
+    }
+  }
+  if (f.plane_current)
+    plot.draw_marker(flat, {f.plane_current->x(), f.plane_current->y()},
+                     {{}, to_glm(f.colours.marker), {1, 1, 1, 1}, 4.5f * px, 1.2f * px});
+
+  plot.draw_text(flat, {0.0, e}, {{}, "Riccati plane (a, b)", style.text, TextAnchor::bottom, {0, -6 * px}});
+  plot.draw_text(flat, {e, 0.0}, {{}, "a", style.text, TextAnchor::left, {5 * px, 0}});
+  plot.draw_text(flat, {0.0, e}, {{}, "b", style.text, TextAnchor::top_left, {4 * px, 2 * px}});
+  // A legend for the marks that appear, under the plot.
+  std::string legend;
+  if (any_exit) legend += "o leaves / * enters the panel";
+  if (any_infinity) legend += std::string(legend.empty() ? "" : "   ") + "inf: through the south pole";
+  if (!legend.empty())
+    flat.add_text({{float(column.x + column.width / 2), float(column.y + column.height - 4 * px), 0}, legend,
+                   style.text, TextAnchor::bottom});
+  renderer_->draw_2d(flat);
+}
+
+void FramePainter::draw_overlay(const scene::Frame& f, const Layout& layout, float px) {
+  const render::Viewport where = layout.panel_column ? *layout.panel_column
+                                 : layout.view_3d    ? *layout.view_3d
+                                                     : render::Viewport{0, 0, width(), height()};
+  const bool light = is_light(f.colours.background);
+  renderer_->draw_overlay([&] {
+    ImGui::SetNextWindowPos(ImVec2(float(where.x) + 6 * px, float(where.y) + 6 * px), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(light ? 0.85f : 0.7f);
+    ImGui::Begin("overlay", nullptr,
+                 ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoInputs);
+    ImGui::TextColored(ImVec4(1.0f, 0.82f, 0.45f, 1.0f), "%s", f.overlay.title.c_str());
+    for (const auto& line : f.overlay.lines) ImGui::TextUnformatted(line.c_str());
+    if (!f.overlay.drifts.empty()) {
+      ImGui::Separator();
+      ImGui::TextDisabled("max rel. drift");
+      for (const auto& [name, value] : f.overlay.drifts) {
+        // Green near round-off, amber at picture-level accuracy, red when the
+        // drift would show in the picture.
+        const ImVec4 c = !(value < 1e-2) ? ImVec4(1.0f, 0.45f, 0.4f, 1) : value < 1e-8 ? ImVec4(0.5f, 0.85f, 0.55f, 1)
+                                                                                       : ImVec4(0.95f, 0.8f, 0.4f, 1);
+        ImGui::Text("%-12s", name.c_str());
+        ImGui::SameLine();
+        ImGui::TextColored(c, "%9.1e", value);
+      }
+    }
+    ImGui::End();
+  });
+}
+
+const render::RgbaImage& FramePainter::paint(const scene::Frame& f) {
+  context_.make_current();
+  const int w = renderer_->width(), h = renderer_->height();
+  const float px = std::max(1.0f, float(h) / 360.0f);  // line widths and marks scale with the picture
+  const Layout layout = layout_for(f.layers, w, h);
+
+  renderer_->begin_frame(to_glm(f.colours.background));
+  if (layout.view_3d) {
+    DrawList scene3d;
+    if (f.layers.body) draw_body(scene3d, f, px);
+    if (f.layers.sphere) draw_sphere(scene3d, f, px);
+    renderer_->draw_3d(scene3d, camera_for(f, *layout.view_3d), *layout.view_3d);
+    if (f.layers.sphere && !f.trail_label.empty()) {
+      DrawList caption;
+      const glm::vec4 text = is_light(f.colours.background) ? glm::vec4(0.3f, 0.3f, 0.35f, 1) : glm::vec4(0.65f, 0.68f, 0.75f, 1);
+      caption.add_text({{float(layout.view_3d->x) + 8 * px, float(layout.view_3d->y + layout.view_3d->height) - 6 * px, 0},
+                        "trail: " + f.trail_label, text, TextAnchor::bottom_left});
+      renderer_->draw_2d(caption);
+    }
+  }
+  if (layout.panel_column && f.layers.riccati) draw_plane(f, *layout.panel_column, *layout.plot_area, px);
+  if (f.layers.overlay) draw_overlay(f, layout, px);
+  renderer_->finish_frame(image_);
+  return image_;
+}
+
+}  // namespace epviz::paint

@@ -1,0 +1,65 @@
+#pragma once
+// Draws a scene::Frame with the render toolkit: the body, the sphere with its
+// trail, the Riccati (a, b) plane and the ImGui overlay, each a layer the frame
+// switches on or off. The painter reads plain values; it knows no physics.
+#include <memory>
+#include <optional>
+
+#include "render/gl_context.hpp"
+#include "render/gpu_mesh.hpp"
+#include "render/image.hpp"
+#include "render/panel_2d.hpp"
+#include "render/renderer.hpp"
+#include "scene/frame.hpp"
+
+namespace epviz::paint {
+
+struct PainterOptions {
+  // Multisampling smooths mesh edges; lines and markers are anti-aliased by
+  // their shaders either way. 0 trades the box's edges for speed.
+  int msaa_samples = 4;
+  // ImGui's built-in font instead of a system TTF (snapshot tests use it so
+  // that pictures do not depend on the fonts a machine has).
+  bool builtin_font = false;
+};
+
+// Where each part of a frame goes in the image (shared by painter and tests).
+struct Layout {
+  std::optional<render::Viewport> view_3d;
+  std::optional<render::Viewport> panel_column;
+  std::optional<render::Viewport> plot_area;  // the panel's square plot inside its column
+};
+Layout layout_for(const scene::Layers& layers, int width, int height);
+// The camera the painter uses for the 3D view of `frame`.
+render::Camera camera_for(const scene::Frame& frame, const render::Viewport& view);
+
+class FramePainter {
+ public:
+  // `context` must outlive the painter; it is made current here.
+  FramePainter(render::GlContext& context, int width, int height, PainterOptions options = {});
+  ~FramePainter();
+
+  void resize(int width, int height);
+  int width() const;
+  int height() const;
+
+  // The frame's picture; valid until the next call.
+  const render::RgbaImage& paint(const scene::Frame& frame);
+
+ private:
+  void draw_body(render::DrawList& list, const scene::Frame& f, float px);
+  void draw_sphere(render::DrawList& list, const scene::Frame& f, float px) const;
+  void draw_plane(const scene::Frame& f, const render::Viewport& column, const render::Viewport& area, float px);
+  void draw_overlay(const scene::Frame& f, const Layout& layout, float px);
+
+  render::GlContext& context_;
+  PainterOptions options_;
+  std::unique_ptr<render::Renderer> renderer_;
+  render::GpuMesh glass_, arrow_, marker_sphere_;
+  std::optional<render::GpuMesh> box_;
+  Eigen::Vector3f box_half_extents_ = Eigen::Vector3f::Zero();
+  std::vector<std::vector<glm::vec3>> grid_;
+  render::RgbaImage image_;
+};
+
+}  // namespace epviz::paint

@@ -1,0 +1,156 @@
+// `epviz render`: job errors, PNG sequences, resume, video and galleries,
+// through the real binary.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+
+namespace epviz {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A small, fast job: 160x120, 6 frames.
+nlohmann::json small_job(const fs::path& out) {
+  return {{"simulation", {{"case", "lagrange"}, {"t_end", 2.0}}},
+          {"width", 160}, {"height", 120}, {"fps", 3}, {"duration", 2},
+          {"output", {{"dir", out.string()}, {"format", "png"}}}};
+}
+
+fs::path write_job(const test::TempDir& dir, const nlohmann::json& j, const std::string& name = "job.json") {
+  std::ofstream(dir / name) << j.dump(2);
+  return dir / name;
+}
+
+struct BadJob {
+  std::string name;
+  std::function<void(nlohmann::json&)> edit;
+  std::string extra_args;
+  std::string must_name;
+};
+void PrintTo(const BadJob& b, std::ostream* os) { *os << b.name; }
+
+class RenderRejects : public ::testing::TestWithParam<BadJob> {};
+
+TEST_P(RenderRejects, WithOneLineExitTwoAndNoOutput) {
+  const auto& bad = GetParam();
+  test::TempDir dir;
+  auto j = small_job(dir / "frames");
+  bad.edit(j);
+  const auto job = write_job(dir, j);
+  const auto r = test::run_epviz("render " + job.string() + " " + bad.extra_args, dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find(bad.must_name), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "frames")) << "output written despite the error";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    JobErrors, RenderRejects,
+    ::testing::Values(
+        BadJob{"unknown_key", [](auto& j) { j["colour"] = "red"; }, "", "job.json: key 'colour': unknown key"},
+        BadJob{"unknown_nested_key", [](auto& j) { j["layers"] = {{"bodies", true}}; }, "",
+               "key 'layers.bodies': unknown key"},
+        BadJob{"bad_view", [](auto& j) { j["view"] = "top"; }, "", "key 'view': 'top' is not one of: body, space"},
+        BadJob{"bad_colour", [](auto& j) { j["colours"] = {{"body", "orange"}}; }, "", "key 'colours.body': expected a colour"},
+        BadJob{"missing_simulation", [](auto& j) { j.erase("simulation"); }, "", "key 'simulation': missing"},
+        BadJob{"bad_case", [](auto& j) { j["simulation"]["case"] = "top"; }, "", "key 'simulation.case': unknown case"},
+        BadJob{"bad_tol", [](auto& j) { j["simulation"]["tol"] = "fine"; }, "", "key 'simulation.tol': expected a number"},
+        BadJob{"space_needs_spinor", [](auto& j) { j["view"] = "space"; j["simulation"]["formulation"] = "direct"; }, "",
+               "needs its attitude"},
+        BadJob{"odd_video_size", [](auto& j) { j["output"]["format"] = "mp4"; j["width"] = 161; }, "", "even width and height"},
+        BadJob{"bad_format_option", [](auto&) {}, "--format avi", "--format: unknown format 'avi'"},
+        BadJob{"frames_out_of_range", [](auto&) {}, "--frames 3:99", "--frames"},
+        BadJob{"unknown_gl", [](auto&) {}, "--gl vulkan", "unknown GL backend 'vulkan'"},
+        BadJob{"resume_video", [](auto& j) { j["output"]["format"] = "mp4"; }, "--resume", "--resume: applies to PNG"},
+        BadJob{"all_layers_off", [](auto& j) {
+                 j["layers"] = {{"body", false}, {"sphere", false}, {"riccati", false}, {"overlay", false}}; }, "",
+               "nothing to draw"}),
+    [](const auto& info) { return info.param.name; });
+
+TEST(Render, MissingJobFileIsNamed) {
+  test::TempDir dir;
+  const auto r = test::run_epviz("render " + (dir / "none.json").string(), dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("none.json: cannot open"), std::string::npos) << r.err;
+}
+
+TEST(Render, PngSequenceWithZeroPaddedNamesAndResume) {
+  test::TempDir dir;
+  const auto job = write_job(dir, small_job(dir / "frames"));
+  const auto report = dir / "report.json";
+  auto r = test::run_epviz("render " + job.string() + " --report-json " + report.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (int i = 0; i < 6; ++i) {
+    const auto f = dir / "frames" / ("frame_000" + std::to_string(i) + ".png");
+    EXPECT_TRUE(fs::exists(f)) << f;
+    EXPECT_GT(fs::file_size(f), 1000u) << f;
+  }
+  EXPECT_FALSE(fs::exists(dir / "frames" / "frame_0006.png"));
+  auto rep = nlohmann::json::parse(test::slurp(report));
+  EXPECT_EQ(rep["frames_drawn"], 6);
+  EXPECT_NE(rep["accuracy"].get<std::string>().find("auto"), std::string::npos);
+
+  // Remove one frame and damage another: --resume redraws exactly those two.
+  fs::remove(dir / "frames" / "frame_0002.png");
+  std::ofstream(dir / "frames" / "frame_0004.png", std::ios::trunc) << "not a png";
+  r = test::run_epviz("render " + job.string() + " --resume --report-json " + report.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  rep = nlohmann::json::parse(test::slurp(report));
+  EXPECT_EQ(rep["frames_drawn"], 2);
+  EXPECT_EQ(rep["frames_skipped"], 4);
+  EXPECT_GT(fs::file_size(dir / "frames" / "frame_0004.png"), 1000u);
+}
+
+TEST(Render, FrameRangeDrawsOnlyThoseFrames) {
+  test::TempDir dir;
+  const auto job = write_job(dir, small_job(dir / "frames"));
+  const auto r = test::run_epviz("render " + job.string() + " --frames 2:3", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "frames" / "frame_0001.png"));
+  EXPECT_TRUE(fs::exists(dir / "frames" / "frame_0002.png"));
+  EXPECT_TRUE(fs::exists(dir / "frames" / "frame_0003.png"));
+  EXPECT_FALSE(fs::exists(dir / "frames" / "frame_0004.png"));
+}
+
+TEST(Render, Mp4IsPlayableWithTheExpectedFramesAndSize) {
+  test::TempDir dir;
+  auto j = small_job(dir / "video");
+  j["output"]["format"] = "mp4";
+  j["output"]["name"] = "clip";
+  const auto job = write_job(dir, j);
+  const auto r = test::run_epviz("render " + job.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto mp4 = dir / "video" / "clip.mp4";
+  ASSERT_TRUE(fs::exists(mp4));
+  const std::string probe = "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+                            "stream=nb_read_frames,width,height -of json " + mp4.string() + " > " +
+                            (dir / "probe.json").string();
+  ASSERT_EQ(std::system(probe.c_str()), 0);
+  const auto p = nlohmann::json::parse(test::slurp(dir / "probe.json"));
+  EXPECT_EQ(p["streams"][0]["nb_read_frames"], "6");
+  EXPECT_EQ(p["streams"][0]["width"], 160);
+  EXPECT_EQ(p["streams"][0]["height"], 120);
+}
+
+TEST(Render, GalleryTilesOneStillPerJob) {
+  test::TempDir dir;
+  write_job(dir, small_job(dir / "unused"), "a.json");
+  auto b = small_job(dir / "unused");
+  b["simulation"]["case"] = "kovalevskaya";
+  write_job(dir, b, "b.json");
+  const nlohmann::json gallery = {{"jobs", {"a.json", "b.json"}},
+                                  {"tile", {{"width", 160}, {"height", 120}, {"columns", 2}}},
+                                  {"videos", "none"},
+                                  {"dir", (dir / "gallery").string()}};
+  const auto g = write_job(dir, gallery, "gallery.json");
+  const auto r = test::run_epviz("render " + g.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "gallery" / "gallery.png"));
+  EXPECT_FALSE(fs::exists(dir / "unused"));
+}
+
+}  // namespace
+}  // namespace epviz
