@@ -36,11 +36,24 @@ constexpr float kFovDegrees = 30.0f;
 
 }  // namespace
 
-// The overlay's font size and the height its nine lines take.
-float overlay_font_px(int height) { return std::clamp(float(height) / 42.0f, 13.0f, 28.0f); }
-int overlay_height(int height) { return int(std::ceil(overlay_font_px(height) * 1.32f * 9.0f + 16.0f)); }
+namespace {
 
-Layout layout_for(const scene::Layers& layers, int width, int height) {
+float overlay_font_px(int height) { return std::clamp(float(height) / 42.0f, 13.0f, 28.0f); }
+
+// Height of the overlay window: title, shown lines, and the drift table.
+int overlay_height(const scene::OverlayText& o, int height) {
+  const int rows = 1 + overlay_lines_shown(o, height) + (o.drifts.empty() ? 0 : 1 + int(o.drifts.size()));
+  return int(std::ceil(overlay_font_px(height) * 1.36f * float(rows) + 18.0f));
+}
+
+}  // namespace
+
+int overlay_lines_shown(const scene::OverlayText& o, int height) {
+  // Below 480 rows (gallery tiles) only the time and the method.
+  return std::min(int(o.lines.size()), height < 480 ? 2 : int(o.lines.size()));
+}
+
+Layout layout_for(const scene::Layers& layers, const scene::OverlayText& overlay, int width, int height) {
   Layout l;
   const bool three_d = layers.body || layers.sphere;
   if (three_d && layers.riccati) {
@@ -57,8 +70,8 @@ Layout layout_for(const scene::Layers& layers, int width, int height) {
     // The overlay sits at the top of the panel's column when there is one, so
     // it never covers the sphere; the plot goes below it, with room for the
     // title above and the tick labels and legend below.
-    const int overlay = l.view_3d ? overlay_height(height) : 0;
-    const int margin_top = overlay + std::max(22, height / 14), margin_bottom = std::max(26, height / 9);
+    const int overlay_px = l.view_3d && layers.overlay ? overlay_height(overlay, height) : 0;
+    const int margin_top = overlay_px + std::max(22, height / 14), margin_bottom = std::max(26, height / 9);
     const int margin_left = std::max(30, c.width / 8), margin_right = std::max(10, c.width / 20);
     const int side = std::max(16, std::min(c.width - margin_left - margin_right, c.height - margin_top - margin_bottom));
     const int x = c.x + margin_left + (c.width - margin_left - margin_right - side) / 2;
@@ -227,7 +240,7 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
   plot.draw_text(flat, {0.0, e}, {{}, "b", style.text, TextAnchor::top_left, {4 * px, 2 * px}});
   // A legend for the marks that appear, under the plot.
   std::string legend;
-  if (any_exit) legend += "o leaves / * enters the panel";
+  if (any_exit) legend += "hollow: leaves, dot: re-enters";
   if (any_infinity) legend += std::string(legend.empty() ? "" : "   ") + "inf: through the south pole";
   if (!legend.empty())
     flat.add_text({{float(column.x + column.width / 2), float(column.y + column.height - 4 * px), 0}, legend,
@@ -241,13 +254,29 @@ void FramePainter::draw_overlay(const scene::Frame& f, const Layout& layout, flo
                                                      : render::Viewport{0, 0, width(), height()};
   const bool light = is_light(f.colours.background);
   renderer_->draw_overlay([&] {
-    ImGui::SetNextWindowPos(ImVec2(float(where.x) + 6 * px, float(where.y) + 6 * px), ImGuiCond_Always);
+    // The window's size is computed from this frame's text: ImGui's auto-fit
+    // would use the previous frame's, which belongs to another job in a gallery.
+    const int shown = overlay_lines_shown(f.overlay, height());
+    const ImGuiStyle& st = ImGui::GetStyle();
+    float text_w = ImGui::CalcTextSize(f.overlay.title.c_str()).x;
+    for (int i = 0; i < shown; ++i)
+      text_w = std::max(text_w, ImGui::CalcTextSize(f.overlay.lines[std::size_t(i)].c_str()).x);
+    if (!f.overlay.drifts.empty())  // "%-12s" name, then "%9.1e" value
+      text_w = std::max(text_w, ImGui::CalcTextSize("xxxxxxxxxxxx  -0.0e+00 ").x);
+    const int rows = 1 + shown + (f.overlay.drifts.empty() ? 0 : 1 + int(f.overlay.drifts.size()));
+    const float h = 2 * st.WindowPadding.y + float(rows) * ImGui::GetTextLineHeightWithSpacing() +
+                    (f.overlay.drifts.empty() ? 0.0f : st.ItemSpacing.y + 1.0f);
+    ImGui::SetNextWindowSize(ImVec2(text_w + 2 * st.WindowPadding.x, h), ImGuiCond_Always);
+    // Anchored at the top right of its area, so that a long title grows to the
+    // left instead of being cut at the image's edge.
+    ImGui::SetNextWindowPos(ImVec2(float(where.x + where.width) - 6 * px, float(where.y) + 6 * px), ImGuiCond_Always,
+                            ImVec2(1.0f, 0.0f));
     ImGui::SetNextWindowBgAlpha(light ? 0.85f : 0.7f);
     ImGui::Begin("overlay", nullptr,
-                 ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
-                     ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoInputs);
+                 ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoScrollbar);
     ImGui::TextColored(ImVec4(1.0f, 0.82f, 0.45f, 1.0f), "%s", f.overlay.title.c_str());
-    for (const auto& line : f.overlay.lines) ImGui::TextUnformatted(line.c_str());
+    for (int i = 0; i < shown; ++i) ImGui::TextUnformatted(f.overlay.lines[std::size_t(i)].c_str());
     if (!f.overlay.drifts.empty()) {
       ImGui::Separator();
       ImGui::TextDisabled("max rel. drift");
@@ -269,7 +298,7 @@ const render::RgbaImage& FramePainter::paint(const scene::Frame& f) {
   context_.make_current();
   const int w = renderer_->width(), h = renderer_->height();
   const float px = std::max(1.0f, float(h) / 360.0f);  // line widths and marks scale with the picture
-  const Layout layout = layout_for(f.layers, w, h);
+  const Layout layout = layout_for(f.layers, f.overlay, w, h);
 
   renderer_->begin_frame(to_glm(f.colours.background));
   if (layout.view_3d) {

@@ -29,7 +29,11 @@ struct Layout {
   std::optional<render::Viewport> panel_column;
   std::optional<render::Viewport> plot_area;  // the panel's square plot inside its column
 };
-Layout layout_for(const scene::Layers& layers, int width, int height);
+// `overlay` is the frame's overlay text, which takes the top of the panel's
+// column when there is one (so that it never covers the sphere).
+Layout layout_for(const scene::Layers& layers, const scene::OverlayText& overlay, int width, int height);
+// How many of the overlay's lines fit a picture of this height.
+int overlay_lines_shown(const scene::OverlayText& overlay, int height);
 // The camera the painter uses for the 3D view of `frame`.
 render::Camera camera_for(const scene::Frame& frame, const render::Viewport& view);
 

@@ -69,7 +69,9 @@ struct BodyShape {
 
 struct OverlayText {
   std::string title;                 // e.g. "Kovalevskaya top"
-  std::vector<std::string> lines;    // parameters, time, method and tolerance
+  // Time, method and tolerance, formulation, parameters: most important first,
+  // so that a small picture can show only the first few.
+  std::vector<std::string> lines;
   // Running relative drift of each invariant: (name, value) e.g. ("C1", 3e-13).
   std::vector<std::pair<std::string, double>> drifts;
 };

@@ -123,14 +123,16 @@ Frame FrameSource::compose(int index) const {
 
   const auto& run = plan_.run;
   f.overlay.title = settings_.title.empty() ? case_title(run.case_id) : settings_.title;
+  // Most important first: a small picture shows only the first lines.
   char line[160];
-  std::snprintf(line, sizeof line, "I = %s   r = %s   P = %.4g", fmt3(run.body.inertia).c_str(),
-                fmt3(run.body.com).c_str(), run.body.weight);
-  f.overlay.lines.emplace_back(line);
-  std::snprintf(line, sizeof line, "t = %8.3f / %g", latest_.t, run.t_end);
+  std::snprintf(line, sizeof line, "t = %.3f / %g", latest_.t, run.t_end);
   f.overlay.lines.emplace_back(line);
   f.overlay.lines.push_back(std::string(sim::name(run.method)) + ", " + plan_.accuracy_note);
   f.overlay.lines.push_back(std::string(sim::name(run.formulation)) + " formulation");
+  std::snprintf(line, sizeof line, "I = %s", fmt3(run.body.inertia).c_str());
+  f.overlay.lines.emplace_back(line);
+  std::snprintf(line, sizeof line, "r = %s   P = %.4g", fmt3(run.body.com).c_str(), run.body.weight);
+  f.overlay.lines.emplace_back(line);
   f.overlay.drifts = {{"|gamma|^2", max_drift_.gamma_norm2},
                       {"C0 (area)", max_drift_.area},
                       {"C1 (energy)", max_drift_.energy}};

@@ -55,7 +55,7 @@ ScenePlan plan_scene(sim::RunSpec run, const SceneSettings& s) {
   if (sim::is_adaptive(run.method)) {
     if (s.auto_tolerance) {
       run.tol = tolerance_for_resolution(s, run.t_end);
-      std::snprintf(note, sizeof note, "tol %.2g (auto for %dx%d)", run.tol, s.width, s.height);
+      std::snprintf(note, sizeof note, "tol %.2g (auto)", run.tol);
     } else {
       std::snprintf(note, sizeof note, "tol %.2g", run.tol);
     }
