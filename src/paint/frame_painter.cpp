@@ -67,13 +67,19 @@ Layout layout_for(const scene::Layers& layers, const scene::OverlayText& overlay
   }
   if (l.panel_column) {
     const auto& c = *l.panel_column;
-    // The overlay sits at the top of the panel's column when there is one, so
-    // it never covers the sphere; the plot goes below it, with room for the
-    // title above and the tick labels and legend below.
-    const int overlay_px = l.view_3d && layers.overlay ? overlay_height(overlay, height) : 0;
-    const int margin_top = overlay_px + std::max(22, height / 14), margin_bottom = std::max(26, height / 9);
+    // Room for the title above and the tick labels and legend below.
+    const int margin_bottom = std::max(26, height / 9), margin_top_base = std::max(22, height / 14);
     const int margin_left = std::max(30, c.width / 8), margin_right = std::max(10, c.width / 20);
-    const int side = std::max(16, std::min(c.width - margin_left - margin_right, c.height - margin_top - margin_bottom));
+    auto side_for = [&](int margin_top) {
+      return std::min(c.width - margin_left - margin_right, c.height - margin_top - margin_bottom);
+    };
+    // The overlay takes the top of the panel's column when the plot keeps at
+    // least 45 % of the height there, so that it does not cover the sphere;
+    // otherwise (small pictures) it floats over the 3D view's corner.
+    const int overlay_px = l.view_3d && layers.overlay ? overlay_height(overlay, height) : 0;
+    l.overlay_in_column = overlay_px > 0 && side_for(margin_top_base + overlay_px) >= height * 45 / 100;
+    const int margin_top = margin_top_base + (l.overlay_in_column ? overlay_px : 0);
+    const int side = std::max(16, side_for(margin_top));
     const int x = c.x + margin_left + (c.width - margin_left - margin_right - side) / 2;
     const int y = c.y + margin_top + (c.height - margin_top - margin_bottom - side) / 2;
     l.plot_area = render::Viewport{x, y, side, side};
@@ -235,23 +241,25 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
     plot.draw_marker(flat, {f.plane_current->x(), f.plane_current->y()},
                      {{}, to_glm(f.colours.marker), {1, 1, 1, 1}, 4.5f * px, 1.2f * px});
 
-  plot.draw_text(flat, {0.0, e}, {{}, "Riccati plane (a, b)", style.text, TextAnchor::bottom, {0, -6 * px}});
+  plot.draw_text(flat, {0.0, e}, {{}, area.width >= 200 ? "Riccati plane (a, b)" : "(a, b) plane", style.text,
+                                   TextAnchor::bottom, {0, -6 * px}});
   plot.draw_text(flat, {e, 0.0}, {{}, "a", style.text, TextAnchor::left, {5 * px, 0}});
   plot.draw_text(flat, {0.0, e}, {{}, "b", style.text, TextAnchor::top_left, {4 * px, 2 * px}});
   // A legend for the marks that appear, under the plot.
   std::string legend;
   if (any_exit) legend += "hollow: leaves, dot: re-enters";
   if (any_infinity) legend += std::string(legend.empty() ? "" : "   ") + "inf: through the south pole";
-  if (!legend.empty())
+  if (!legend.empty() && column.width >= 360)
     flat.add_text({{float(column.x + column.width / 2), float(column.y + column.height - 4 * px), 0}, legend,
                    style.text, TextAnchor::bottom});
   renderer_->draw_2d(flat);
 }
 
 void FramePainter::draw_overlay(const scene::Frame& f, const Layout& layout, float px) {
-  const render::Viewport where = layout.panel_column ? *layout.panel_column
-                                 : layout.view_3d    ? *layout.view_3d
-                                                     : render::Viewport{0, 0, width(), height()};
+  const render::Viewport where = layout.overlay_in_column ? *layout.panel_column
+                                 : layout.view_3d         ? *layout.view_3d
+                                 : layout.panel_column    ? *layout.panel_column
+                                                          : render::Viewport{0, 0, width(), height()};
   const bool light = is_light(f.colours.background);
   renderer_->draw_overlay([&] {
     // The window's size is computed from this frame's text: ImGui's auto-fit
@@ -267,11 +275,16 @@ void FramePainter::draw_overlay(const scene::Frame& f, const Layout& layout, flo
     const float h = 2 * st.WindowPadding.y + float(rows) * ImGui::GetTextLineHeightWithSpacing() +
                     (f.overlay.drifts.empty() ? 0.0f : st.ItemSpacing.y + 1.0f);
     ImGui::SetNextWindowSize(ImVec2(text_w + 2 * st.WindowPadding.x, h), ImGuiCond_Always);
-    // Anchored at the top right of its area, so that a long title grows to the
-    // left instead of being cut at the image's edge.
-    ImGui::SetNextWindowPos(ImVec2(float(where.x + where.width) - 6 * px, float(where.y) + 6 * px), ImGuiCond_Always,
-                            ImVec2(1.0f, 0.0f));
-    ImGui::SetNextWindowBgAlpha(light ? 0.85f : 0.7f);
+    // In the panel's column: anchored at its top right, so that a long title
+    // grows to the left instead of being cut at the image's edge. Over the 3D
+    // view: at its top left corner, away from the panel.
+    if (layout.overlay_in_column)
+      ImGui::SetNextWindowPos(ImVec2(float(where.x + where.width) - 6 * px, float(where.y) + 6 * px),
+                              ImGuiCond_Always, ImVec2(1.0f, 0.0f));
+    else
+      ImGui::SetNextWindowPos(ImVec2(float(where.x) + 6 * px, float(where.y) + 6 * px), ImGuiCond_Always);
+    // More see-through where it floats over the 3D view (small pictures).
+    ImGui::SetNextWindowBgAlpha(layout.overlay_in_column || !layout.view_3d ? (light ? 0.85f : 0.7f) : 0.55f);
     ImGui::Begin("overlay", nullptr,
                  ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoScrollbar);

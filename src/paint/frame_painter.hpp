@@ -28,6 +28,7 @@ struct Layout {
   std::optional<render::Viewport> view_3d;
   std::optional<render::Viewport> panel_column;
   std::optional<render::Viewport> plot_area;  // the panel's square plot inside its column
+  bool overlay_in_column = false;  // the overlay sits above the plot (else over the 3D view)
 };
 // `overlay` is the frame's overlay text, which takes the top of the panel's
 // column when there is one (so that it never covers the sphere).

@@ -110,7 +110,8 @@ void ImGuiOverlay::warm_up(int width, int height, const std::function<void()>& b
 }
 
 void ImGuiOverlay::add_labels(std::span<const PlacedLabel> labels) {
-    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    // Behind every window: a label of the scene must not print over the overlay's text.
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
     ImFont* font = ImGui::GetFont();
     const float size = ImGui::GetFontSize();
     for (const auto& placed : labels) {

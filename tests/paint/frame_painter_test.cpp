@@ -1,0 +1,160 @@
+// The painter: every layer alone and together, both views, each classical case
+// through the real pipeline (scene::FrameSource), compared with reviewed goldens
+// in tests/snapshots/ (paint_*.png), plus pixel checks that can fail.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "paint/frame_painter.hpp"
+#include "physics/cases.hpp"
+#include "render/render_test_support.hpp"
+#include "render/snapshot.hpp"
+#include "scene/frame_source.hpp"
+
+namespace epviz {
+namespace {
+
+namespace et = epviz::testing;
+constexpr int W = 320, H = 240;
+
+paint::FramePainter& painter() {
+  static paint::FramePainter p(et::shared_gl_context(), W, H, {.msaa_samples = 4, .builtin_font = true});
+  return p;
+}
+
+// A frame of the given case at 60 % of a short run, as `epviz render` builds it.
+scene::Frame case_frame(physics::Case c, scene::View view = scene::View::body, scene::Layers layers = {}) {
+  const auto& p = physics::preset(c);
+  sim::RunSpec run;
+  run.case_id = c;
+  run.body = p.body;
+  run.initial = p.initial;
+  run.t_end = 12.0;
+  scene::SceneSettings s;
+  s.width = W;
+  s.height = H;
+  s.fps = 10;
+  s.duration = 3;
+  s.view = view;
+  s.layers = layers;
+  scene::FrameSource source(scene::plan_scene(run, s), s);
+  return source.frame(18);
+}
+
+glm::vec4 px(const render::RgbaImage& img, glm::vec2 at) { return et::pixel_colour(img, int(at.x), int(at.y)); }
+glm::vec4 background_of(const scene::Frame& f) {
+  return {f.colours.background[0], f.colours.background[1], f.colours.background[2], 1};
+}
+
+scene::Layers only(bool body, bool sphere, bool riccati, bool overlay) { return {body, sphere, riccati, overlay}; }
+
+struct Named {
+  std::string name;
+  physics::Case c;
+  scene::View view;
+  scene::Layers layers;
+};
+void PrintTo(const Named& n, std::ostream* os) { *os << n.name; }
+
+class PainterSnapshot : public ::testing::TestWithParam<Named> {};
+
+TEST_P(PainterSnapshot, MatchesTheReviewedGolden) {
+  const auto& n = GetParam();
+  const auto& img = painter().paint(case_frame(n.c, n.view, n.layers));
+  ASSERT_EQ(img.width, W);
+  ASSERT_EQ(img.height, H);
+  EXPECT_TRUE(et::matches_snapshot("paint_" + n.name, img.width, img.height, img.pixels));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    CasesAndLayers, PainterSnapshot,
+    ::testing::Values(Named{"euler", physics::Case::euler, scene::View::space, {}},
+                      Named{"lagrange", physics::Case::lagrange, scene::View::space, {}},
+                      Named{"kovalevskaya", physics::Case::kovalevskaya, scene::View::body, {}},
+                      Named{"goryachev_chaplygin", physics::Case::goryachev_chaplygin, scene::View::body, {}},
+                      Named{"hess", physics::Case::hess, scene::View::body, {}},
+                      Named{"generic", physics::Case::generic, scene::View::body, {}},
+                      Named{"layer_body", physics::Case::kovalevskaya, scene::View::body, only(true, false, false, false)},
+                      Named{"layer_sphere", physics::Case::kovalevskaya, scene::View::body, only(false, true, false, false)},
+                      Named{"layer_riccati", physics::Case::kovalevskaya, scene::View::body, only(false, false, true, false)},
+                      Named{"layer_overlay", physics::Case::kovalevskaya, scene::View::body, only(false, false, false, true)}),
+    [](const auto& info) { return info.param.name; });
+
+TEST(Painter, SphereLayerDrawsTheCurrentPointWithTheMarkerColour) {
+  const auto f = case_frame(physics::Case::kovalevskaya, scene::View::body, only(false, true, false, false));
+  const auto& img = painter().paint(f);
+  const auto layout = paint::layout_for(f.layers, f.overlay, W, H);
+  ASSERT_TRUE(layout.view_3d);
+  const auto at = render::project_to_pixel(paint::camera_for(f, *layout.view_3d), *layout.view_3d,
+                                           {f.current.x(), f.current.y(), f.current.z()});
+  ASSERT_TRUE(at);
+  const glm::vec4 marker{f.colours.marker[0], f.colours.marker[1], f.colours.marker[2], 1};
+  EXPECT_LT(et::max_channel_difference(px(img, *at), marker), 0.12f);
+}
+
+TEST(Painter, BodyLayerShowsTheBoxAtItsCentreOfMass) {
+  const auto f = case_frame(physics::Case::lagrange, scene::View::body, only(true, false, false, false));
+  const auto& img = painter().paint(f);
+  const auto layout = paint::layout_for(f.layers, f.overlay, W, H);
+  const Eigen::Vector3f c = f.body.centre_of_mass;
+  const auto at = render::project_to_pixel(paint::camera_for(f, *layout.view_3d), *layout.view_3d, {c.x(), c.y(), c.z() + 0.05f});
+  ASSERT_TRUE(at);
+  const glm::vec4 p = px(img, *at);
+  // The body's warm colour, lit: red clearly above blue, and not background.
+  EXPECT_GT(p.r, p.b + 0.15f);
+  EXPECT_GT(et::max_channel_difference(p, background_of(f)), 0.2f);
+}
+
+TEST(Painter, SwitchedOffLayersLeaveBackground) {
+  const auto f = case_frame(physics::Case::kovalevskaya, scene::View::body, only(false, false, true, false));
+  const auto& img = painter().paint(f);
+  // Only the panel: the left and right borders and corners are background.
+  for (glm::vec2 at : {glm::vec2(2, 2), glm::vec2(W - 3, H - 3), glm::vec2(2, H / 2)})
+    EXPECT_LT(et::max_channel_difference(px(img, at), background_of(f)), 0.02f) << at.x << "," << at.y;
+}
+
+TEST(Painter, RiccatiPanelShowsTheUnitCircle) {
+  const auto f = case_frame(physics::Case::kovalevskaya, scene::View::body, only(false, false, true, false));
+  const auto& img = painter().paint(f);
+  const auto layout = paint::layout_for(f.layers, f.overlay, W, H);
+  ASSERT_TRUE(layout.plot_area);
+  const render::Panel2D plot(*layout.plot_area, {-f.plane_extent, f.plane_extent, -f.plane_extent, f.plane_extent}, true);
+  int bright = 0;
+  for (int k = 0; k < 16; ++k) {
+    const double a = 2 * M_PI * (k + 0.5) / 16;
+    bright += et::luminance(px(img, plot.to_pixel({std::cos(a), std::sin(a)}))) > 0.35f;
+  }
+  EXPECT_GE(bright, 12);
+}
+
+TEST(Painter, PassThroughInfinityIsMarked) {
+  auto f = case_frame(physics::Case::kovalevskaya, scene::View::body, only(false, false, true, false));
+  f.plane_marks.push_back({Eigen::Vector2f(f.plane_extent, 0.0f), scene::PlaneMark::Kind::through_infinity, 0.2f});
+  const auto& img = painter().paint(f);
+  const auto layout = paint::layout_for(f.layers, f.overlay, W, H);
+  const render::Panel2D plot(*layout.plot_area, {-f.plane_extent, f.plane_extent, -f.plane_extent, f.plane_extent}, true);
+  const glm::vec2 at = plot.to_pixel({f.plane_extent, 0.0});
+  int red = 0;
+  for (int dx = -7; dx <= 7; ++dx)
+    for (int dy = -7; dy <= 7; ++dy) {
+      const glm::vec4 p = px(img, at + glm::vec2(dx, dy));
+      red += p.r > 0.6f && p.g < 0.45f && p.b < 0.45f;
+    }
+  EXPECT_GT(red, 6);
+}
+
+TEST(Painter, OverlayAloneDrawsTextAndNothingElse) {
+  const auto f = case_frame(physics::Case::kovalevskaya, scene::View::body, only(false, false, false, true));
+  const auto& img = painter().paint(f);
+  int text = 0, elsewhere = 0;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const bool bright = et::luminance(et::pixel_colour(img, x, y)) > 0.5f;
+      (y < 3 * H / 4 && x < 2 * W / 3 ? text : elsewhere) += bright;
+    }
+  EXPECT_GT(text, 100);
+  EXPECT_EQ(elsewhere, 0);
+}
+
+}  // namespace
+}  // namespace epviz
