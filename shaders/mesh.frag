@@ -33,8 +33,12 @@ void main() {
     vec3 ambient = mix(u_ground_colour, u_sky_colour, 0.5 + 0.5 * n.y);
     vec3 diffuse = u_key_colour * max(dot(n, u_key_direction), 0.0)
                  + u_fill_colour * max(dot(n, u_fill_direction), 0.0);
-    vec3 half_vector = normalize(u_key_direction + to_eye);
-    float highlight = pow(max(dot(n, half_vector), 0.0), u_shininess) * step(0.0, dot(n, u_key_direction));
+    // A material without a highlight (large translucent shells) skips the pow().
+    float highlight = 0.0;
+    if (u_specular > 0.0) {
+        vec3 half_vector = normalize(u_key_direction + to_eye);
+        highlight = pow(max(dot(n, half_vector), 0.0), u_shininess) * step(0.0, dot(n, u_key_direction));
+    }
     vec3 colour = base * (ambient + diffuse) + u_specular * highlight * u_key_colour;
 
     float facing = abs(dot(n, to_eye));

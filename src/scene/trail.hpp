@@ -3,6 +3,7 @@
 // them apart, and only over the trail's time window, so memory is bounded by
 // the picture, not by the number of frames.
 #include <deque>
+#include <vector>
 #include <optional>
 
 #include <Eigen/Core>
@@ -18,12 +19,15 @@ struct HistoryPoint {
 
 class TrailHistory {
  public:
-  // A point is kept when it is at least `min_px` pixels from the last kept one
-  // on the sphere or on the plane.
-  TrailHistory(double sphere_px_per_unit, double plane_px_per_unit, double min_px = 1.0);
+  // The kept points, joined by straight lines, pass within `tolerance_px` of
+  // every offered point on the sphere and on the plane; no two kept points are
+  // more than `max_gap_px` apart (so that the time colouring stays smooth).
+  TrailHistory(double sphere_px_per_unit, double plane_px_per_unit, double tolerance_px = 0.3,
+               double max_gap_px = 16.0);
 
-  // Offers the newest point; returns true if it was kept.
-  bool offer(const HistoryPoint& p);
+  // Offers the newest point. It is held back until the next offer shows
+  // whether the line can skip it; the caller draws the newest point itself.
+  void offer(const HistoryPoint& p);
   // Drops points older than t_oldest (keeping one before it, so the trail
   // starts exactly at the window's edge rather than a gap after it).
   void forget_before(double t_oldest);
@@ -31,8 +35,16 @@ class TrailHistory {
   const std::deque<HistoryPoint>& points() const { return points_; }
 
  private:
-  double sphere_px_, plane_px_, min_px_;
+  // How far (pixels) `mid` lies from the straight line from `from` to `to`.
+  double deviation_px(const HistoryPoint& from, const HistoryPoint& mid, const HistoryPoint& to) const;
+  double span_px(const HistoryPoint& a, const HistoryPoint& b) const;
+
+  double sphere_px_, plane_px_, tolerance_px_, max_gap_px_;
   std::deque<HistoryPoint> points_;
+  std::optional<HistoryPoint> held_;  // the newest point, not yet decided
+  // Every point offered since the last kept one, for the deviation test: a
+  // line that skips several points must pass near all of them.
+  std::vector<HistoryPoint> skipped_;
 };
 
 }  // namespace epviz::scene
