@@ -8,7 +8,7 @@ packages=(
   libeigen3-dev libboost-dev
   libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libosmesa6-dev libglm-dev libimgui-dev libstb-dev
+  libosmesa6-dev libglm-dev libimgui-dev libstb-dev zlib1g-dev
   ffmpeg
 )
 

@@ -76,9 +76,11 @@ std::string gl_backend(const RenderOptions& o) {
   return o.gl.empty() ? render::gl_backend_from_environment() : o.gl;
 }
 
-std::unique_ptr<render::GlContext> open_context(const RenderOptions& o, int w, int h) {
+// Frames are drawn into the renderer's own framebuffer; the context's own
+// surface is never read, so it stays tiny.
+std::unique_ptr<render::GlContext> open_context(const RenderOptions& o) {
   try {
-    return render::make_gl_context(gl_backend(o), w, h);
+    return render::make_gl_context(gl_backend(o), 16, 16);
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string(o.gl.empty() ? "EPVIZ_GL" : "--gl") + ": " + e.what());
   }
@@ -182,7 +184,7 @@ int report_failure(const std::optional<numerics::Failure>& f) {
 
 int render_single(RenderJob job, const RenderOptions& o) {
   const auto p = prepare(std::move(job), o);
-  auto context = open_context(o, p.job.scene.width, p.job.scene.height);
+  auto context = open_context(o);
   paint::FramePainter painter(*context, p.job.scene.width, p.job.scene.height);
   const auto st = render_frames(p, painter, o);
   print_job_line(p, st);
@@ -220,7 +222,7 @@ int render_gallery(GalleryJob g, const RenderOptions& o) {
     }
   }
   fs::create_directories(g.dir);
-  auto context = open_context(o, g.tile_width, g.tile_height);
+  auto context = open_context(o);
   paint::FramePainter painter(*context, g.tile_width, g.tile_height);
 
   nlohmann::json reports = nlohmann::json::array();

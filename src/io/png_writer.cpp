@@ -1,6 +1,6 @@
 #include "io/png_writer.hpp"
 
-#include <stb/stb_image_write.h>
+#include "io/stb_png_zlib.hpp"
 
 #include <shared_mutex>
 #include <stdexcept>
@@ -54,16 +54,15 @@ std::vector<std::uint8_t> encode_png_rgba(int width, int height, std::span<const
     for (;;) {
         {
             std::shared_lock lock(mutex);
-            if (stbi_write_png_compression_level == options.compression_level &&
-                stbi_write_force_png_filter == options.filter) {
-                ok = stbi_write_png_to_func(append_to_vector, &bytes, width, height, 4, rgba.data(),
-                                            width * 4);
+            if (detail::png_compression_level() == options.compression_level &&
+                detail::png_force_filter() == options.filter) {
+                ok = detail::png_to_func(append_to_vector, &bytes, width, height, rgba.data(), width * 4);
                 break;
             }
         }
         std::unique_lock exclusive(mutex);
-        stbi_write_png_compression_level = options.compression_level;
-        stbi_write_force_png_filter = options.filter;
+        detail::png_compression_level() = options.compression_level;
+        detail::png_force_filter() = options.filter;
     }
     if (ok == 0) throw std::runtime_error("PNG encoding failed (out of memory?)");
     return bytes;
