@@ -74,10 +74,10 @@ Layout layout_for(const scene::Layers& layers, const scene::OverlayText& overlay
       return std::min(c.width - margin_left - margin_right, c.height - margin_top - margin_bottom);
     };
     // The overlay takes the top of the panel's column when the plot keeps at
-    // least 40 % of the height there, so that it does not cover the sphere;
+    // least 35 % of the height there, so that it does not cover the sphere;
     // otherwise (small pictures) it floats over the 3D view's corner.
     const int overlay_px = l.view_3d && layers.overlay ? overlay_height(overlay, height) : 0;
-    l.overlay_in_column = overlay_px > 0 && side_for(margin_top_base + overlay_px) >= height * 40 / 100;
+    l.overlay_in_column = overlay_px > 0 && side_for(margin_top_base + overlay_px) >= height * 35 / 100;
     const int margin_top = margin_top_base + (l.overlay_in_column ? overlay_px : 0);
     const int side = std::max(16, side_for(margin_top));
     const int x = c.x + margin_left + (c.width - margin_left - margin_right - side) / 2;
