@@ -135,6 +135,22 @@ TEST(Render, Mp4IsPlayableWithTheExpectedFramesAndSize) {
   EXPECT_EQ(p["streams"][0]["height"], 120);
 }
 
+TEST(Render, NumericalFailureStopsWithTimeAndMethodAndKeepsNoVideo) {
+  // A steady rotation carries gamma exactly through the south pole; the north
+  // Riccati chart alone cannot follow it.
+  test::TempDir dir;
+  auto j = small_job(dir / "video");
+  j["simulation"] = {{"case", "euler"}, {"omega", {1, 0, 0}}, {"gamma", {0, 0.6, 0.8}}, {"formulation", "riccati"},
+                     {"chart_switch", false}, {"t_end", 6.0}};
+  j["output"]["format"] = "mp4";
+  j["output"]["name"] = "clip";
+  const auto r = test::run_epviz("render " + write_job(dir, j).string(), dir);
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("dop853 failed at t = "), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "video" / "clip.mp4"));
+  for (const auto& e : fs::directory_iterator(dir / "video")) ADD_FAILURE() << "left behind: " << e.path();
+}
+
 TEST(Render, GalleryTilesOneStillPerJob) {
   test::TempDir dir;
   write_job(dir, small_job(dir / "unused"), "a.json");
