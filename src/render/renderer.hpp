@@ -19,7 +19,7 @@
 #include "render/draw_list.hpp"
 #include "render/framebuffer.hpp"
 #include "render/gl_context.hpp"
-#include "render/imgui_overlay.hpp"
+#include "render/gui_overlay.hpp"
 #include "render/shader_program.hpp"
 
 namespace epviz::render {

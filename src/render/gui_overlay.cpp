@@ -1,4 +1,4 @@
-#include "render/imgui_overlay.hpp"
+#include "render/gui_overlay.hpp"
 
 #include <imgui.h>
 
