@@ -15,12 +15,6 @@ double cpu_now() {
 
 }  // namespace
 
-std::vector<double> output_times(double t_end, int samples) {
-  std::vector<double> t(std::size_t(samples) + 1);
-  for (int k = 0; k <= samples; ++k) t[std::size_t(k)] = t_end * double(k) / double(samples);
-  return t;
-}
-
 RunResult simulate(const RunSpec& spec) {
   RunResult r;
   r.samples.reserve(std::size_t(spec.samples) + 1);

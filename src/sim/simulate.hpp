@@ -27,10 +27,8 @@ struct RunResult {
   std::optional<numerics::Failure> failure;
 };
 
-// Output times: samples + 1 equally spaced instants from 0 to t_end.
-std::vector<double> output_times(double t_end, int samples);
-
-// Integrates spec and samples the state at output_times(spec.t_end, spec.samples).
+// Integrates spec and samples the state at spec.samples + 1 equally spaced
+// instants from 0 to spec.t_end (a loop over sim::Trajectory).
 // Adaptive methods sample by dense output, so output times never force steps;
 // fixed-step methods shorten spec.step so that it divides the sample spacing.
 // Numerical failure is not thrown: it ends the run and is returned in `failure`.
