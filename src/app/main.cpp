@@ -5,6 +5,7 @@
 #include <functional>
 #include <map>
 
+#include "app/bench_command.hpp"
 #include "app/cases_command.hpp"
 #include "app/simulate_command.hpp"
 #ifdef EPVIZ_HAVE_RENDER
@@ -21,6 +22,7 @@ int main(int argc, char** argv) {
   std::map<std::string, std::function<int()>> commands;
   commands["simulate"] = epviz::app::add_simulate_command(app);
   commands["cases"] = epviz::app::add_cases_command(app);
+  commands["bench"] = epviz::app::add_bench_command(app);
 #ifdef EPVIZ_HAVE_RENDER
   commands["render"] = epviz::app::add_render_command(app);
 #endif

@@ -1,0 +1,120 @@
+// `epviz bench`: bad options exit 2 before any work; a --quick run writes a
+// JSON file whose rows are complete and finite where they should be.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "cli_runner.hpp"
+
+namespace epviz {
+namespace {
+
+using test::run_epviz;
+using test::TempDir;
+
+TEST(BenchCommand, BadOptionsAreUsageErrors) {
+  TempDir dir;
+  auto r = run_epviz("bench --quick --cases euler,nope", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--cases"), std::string::npos) << r.err;
+  r = run_epviz("bench --quick --json " + (dir / "missing/b.json").string(), dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--json"), std::string::npos) << r.err;
+  std::ofstream(dir / "file") << "x";
+  r = run_epviz("bench --quick --out " + (dir / "file").string(), dir);
+  EXPECT_EQ(r.exit_code, 2);
+  r = run_epviz("bench --bogus", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(dir.file_count(), 1u);  // only "file": nothing written
+}
+
+bool is_number(const nlohmann::json& j) { return j.is_number() && std::isfinite(j.get<double>()); }
+
+TEST(BenchCommand, QuickRunWritesCompleteRows) {
+  TempDir dir;
+  const auto json_path = dir / "bench.json";
+  const auto out = dir / "charts";
+  const auto r = run_epviz("bench --quick --json " + json_path.string() + " --out " + out.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("work-precision: kovalevskaya"), std::string::npos);
+  EXPECT_NE(r.out.find("stability 2"), std::string::npos);
+  ASSERT_TRUE(std::filesystem::exists(out / "bench.json"));
+  EXPECT_EQ(test::slurp(out / "bench.json"), test::slurp(json_path));
+  const auto doc = nlohmann::json::parse(test::slurp(json_path));
+
+  const auto& meta = doc.at("metadata");
+  EXPECT_GE(meta.at("machine").at("nproc").get<int>(), 1);
+  EXPECT_FALSE(meta.at("machine").at("compiler").get<std::string>().empty());
+  // Per case, the references agree to well below the smallest resolved error (checked on each reference row).
+  EXPECT_LT(meta.at("reference").at("max_self_check").get<double>(), 1e-11);
+
+  const std::vector<std::string> run_fields{"impl", "case", "formulation", "method", "accuracy", "tol", "step",
+                                            "t_end", "steps", "rhs_evals", "flow_evals", "cpu_ms", "repeats",
+                                            "status", "failure_t", "failure_reason"};
+  const std::map<std::string, std::vector<std::string>> extra{
+      {"work_precision", {"error"}},
+      {"drift", {"drift_gamma_norm2", "drift_C0", "drift_C1", "drift_extra", "budget_evals_per_time"}},
+      {"stability_pole", {"variant", "error", "chart_switches", "failure_method"}},
+      {"stability_separatrix", {"flip_time", "reference_flip_time", "flip_time_error"}},
+      {"stability_sleeping_top", {"reached", "gamma_error"}},
+      {"stability_chaos", {"separated", "separation_time", "threshold"}}};
+  std::map<std::string, int> count;
+  std::set<std::string> cases, methods;
+  for (const auto& row : doc.at("rows")) {
+    const std::string study = row.at("study");
+    ++count[study];
+    if (study == "reference") {
+      for (const char* k : {"case", "method", "check_method", "step", "self_check", "smallest_error", "t_end"})
+        ASSERT_TRUE(row.contains(k)) << k;
+      EXPECT_TRUE(is_number(row["self_check"]));
+      EXPECT_LT(row["self_check"].get<double>() * 10.0, row["smallest_error"].get<double>()) << row["case"];
+      continue;
+    }
+    if (study == "stability_max_step") {
+      for (const char* k : {"case", "method", "max_step", "max_step_over_period", "failing_step", "failure_reason"})
+        ASSERT_TRUE(row.contains(k)) << k;
+      EXPECT_TRUE(is_number(row["max_step"])) << row.dump();
+      continue;
+    }
+    ASSERT_TRUE(extra.count(study)) << "unexpected study " << study;
+    for (const auto& k : run_fields) ASSERT_TRUE(row.contains(k)) << study << " lacks " << k;
+    for (const auto& k : extra.at(study)) ASSERT_TRUE(row.contains(k)) << study << " lacks " << k;
+    for (const char* k : {"t_end", "steps", "rhs_evals", "flow_evals", "cpu_ms", "repeats"})
+      EXPECT_TRUE(is_number(row[k])) << study << " " << k << ": " << row.dump();
+    const bool adaptive = row["accuracy"] == "tol";
+    EXPECT_TRUE(is_number(row[adaptive ? "tol" : "step"])) << row.dump();
+    const bool ok = row["status"] == "ok";
+    EXPECT_EQ(ok, row["failure_t"].is_null()) << row.dump();
+    if (study == "work_precision") {
+      cases.insert(row["case"]);
+      methods.insert(row["method"]);
+      // A run may fail (e.g. an implicit solver at the largest step): then it
+      // says when and why, and has no error.
+      if (ok) {
+        EXPECT_TRUE(is_number(row["error"])) << row.dump();
+      } else {
+        EXPECT_TRUE(is_number(row["failure_t"])) << row.dump();
+        EXPECT_FALSE(row["failure_reason"].get<std::string>().empty()) << row.dump();
+      }
+      EXPECT_TRUE(row.contains("error_resolved")) << row.dump();
+    }
+    if (study == "drift") {
+      for (const char* k : {"drift_gamma_norm2", "drift_C0", "drift_C1", "drift_extra"})
+        EXPECT_TRUE(is_number(row[k])) << row.dump();
+      EXPECT_GE(row["t_end"].get<double>(), 1e3);
+    }
+    if (study == "stability_pole" && ok) {
+      EXPECT_TRUE(is_number(row["error"])) << row.dump();
+    }
+  }
+  EXPECT_EQ(cases.size(), 6u);
+  EXPECT_GE(methods.size(), 7u);
+  EXPECT_EQ(count["reference"], 6);
+  for (const char* s : {"work_precision", "drift", "stability_max_step", "stability_pole", "stability_separatrix",
+                        "stability_sleeping_top", "stability_chaos"})
+    EXPECT_GT(count[s], 0) << s;
+}
+
+}  // namespace
+}  // namespace epviz
