@@ -17,6 +17,7 @@ uniform vec3 u_fill_direction;
 uniform vec3 u_fill_colour;
 uniform vec3 u_sky_colour;      // ambient from above (view-space +y)
 uniform vec3 u_ground_colour;   // ambient from below
+uniform int u_lit;              // 0: the colour unlit, only the rim term
 
 out vec4 frag_colour;
 
@@ -25,6 +26,11 @@ vec3 linear_to_srgb(vec3 c) { return sqrt(clamp(c, 0.0, 1.0)); }
 
 void main() {
     vec3 n = normalize(v_normal_view);
+    if (u_lit == 0) {
+        float grazing = 1.0 - abs(dot(n, normalize(-v_position_view)));
+        frag_colour = vec4(u_colour.rgb, clamp(u_colour.a * (1.0 + u_rim * grazing * grazing), 0.0, 1.0));
+        return;
+    }
     // Back faces (seen through a translucent shell) are lit as the side we see.
     if (!gl_FrontFacing) n = -n;
     vec3 to_eye = normalize(-v_position_view);

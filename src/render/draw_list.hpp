@@ -24,6 +24,9 @@ struct Material {
     // Translucent only: also draw the inside of the far half (a second pass;
     // switch off to halve the cost of a large translucent sphere).
     bool back_faces = true;
+    // Unlit: the colour as it is, with only the rim term (cheap on llvmpipe,
+    // where per-pixel lighting of a large translucent shell dominates a frame).
+    bool lit = true;
 };
 
 struct LineVertex {

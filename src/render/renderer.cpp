@@ -151,6 +151,7 @@ void Renderer::draw_meshes(const DrawList& list, const Camera& camera, const Lig
         mesh_program_.set("u_specular", item.material.specular);
         mesh_program_.set("u_shininess", item.material.shininess);
         mesh_program_.set("u_rim", item.material.rim);
+        mesh_program_.set("u_lit", item.material.lit ? 1 : 0);
         if (translucent && item.material.back_faces) {
             // A convex shell drawn inside first, then outside, blends in the right order.
             glCullFace(GL_FRONT);
