@@ -4,12 +4,17 @@
 //   build/bench/epviz_bench --benchmark_filter=direct
 #include <benchmark/benchmark.h>
 
+#include <chrono>
+#include <cmath>
+
+#include "numerics/composition.hpp"
 #include "numerics/embedded_rk.hpp"
 #include "numerics/gauss_legendre.hpp"
 #include "numerics/rk4.hpp"
 #include "numerics/splitting.hpp"
 #include "physics/cases.hpp"
 #include "physics/direct.hpp"
+#include "physics/free_rigid_body_flow.hpp"
 #include "physics/riccati.hpp"
 #include "physics/spinor.hpp"
 
@@ -89,6 +94,8 @@ EPVIZ_FIXED(ImplicitMidpoint, DirectSystem, "direct/midpoint")
 EPVIZ_FIXED(Gauss4, DirectSystem, "direct/gauss4")
 EPVIZ_FIXED(Gauss6, DirectSystem, "direct/gauss6")
 EPVIZ_FIXED(StrangSplitting, DirectSystem, "direct/splitting")
+EPVIZ_FIXED(Composition2, physics::ExactSplitSystem, "direct/exact-split2")
+EPVIZ_FIXED(Composition4, physics::ExactSplitSystem, "direct/exact-split4")
 
 EPVIZ_FIXED(Rk4, RiccatiSystem, "riccati/rk4")
 EPVIZ_ADAPTIVE(Dopri5, RiccatiSystem, "riccati/dopri5")
@@ -103,5 +110,86 @@ EPVIZ_ADAPTIVE(Dop853, SpinorSystem, "spinor/dop853")
 EPVIZ_FIXED(ImplicitMidpoint, SpinorSystem, "spinor/midpoint")
 EPVIZ_FIXED(Gauss4, SpinorSystem, "spinor/gauss4")
 EPVIZ_FIXED(Gauss6, SpinorSystem, "spinor/gauss6")
+
+// One exact free rigid body flow: the Kovalevskaya body (I1 = I2: the
+// closed-form precession) and the generic body (distinct moments: Jacobi
+// elliptic functions and the elliptic integrals of the first and third kinds).
+template <physics::Case C>
+void free_flow(benchmark::State& state) {
+  const auto& p = physics::preset(C);
+  const physics::FreeRigidBodyFlow f(p.body.inertia);
+  Eigen::Vector3d w = p.initial.omega, g = p.initial.gamma;
+  for (auto _ : state) {
+    f.advance(0.01, w, g);
+    benchmark::DoNotOptimize(w);
+    benchmark::DoNotOptimize(g);
+  }
+}
+BENCHMARK(free_flow<physics::Case::kovalevskaya>)->Name("flow/free-rigid-body/kovalevskaya");
+BENCHMARK(free_flow<physics::Case::generic>)->Name("flow/free-rigid-body/generic");
+
+// Work-precision at equal final-time error on the Kovalevskaya top (t = 10):
+// the fewest steps (geometric sweep) with which the axis-by-axis splitting and
+// exact-split4 reach the error given as the argument's exponent, then the
+// wall-clock time of both runs. Counters: steps of each and
+// ratio = time(splitting) / time(exact-split4) (> 1: exact-split4 is cheaper).
+using Vec6 = Eigen::Matrix<double, 6, 1>;
+constexpr double kWpT = 10.0;
+
+template <class Stepper>
+Vec6 run_steps(Stepper s, long n) {
+  auto x = s.system().pack(bench_case().initial);
+  const double h = kWpT / double(n);
+  for (long i = 0; i < n; ++i) s.step(x, double(i) * h, h);
+  return x;
+}
+
+const Vec6& wp_reference() {
+  static const Vec6 ref = [] {
+    numerics::AdaptiveOptions o;
+    o.rtol = o.atol = 1e-14;
+    numerics::Dop853<DirectSystem> s(DirectSystem(bench_case().body), o);
+    s.init(0.0, s.system().pack(bench_case().initial));
+    while (s.t() < kWpT) s.step();
+    return Vec6(s.dense(kWpT));
+  }();
+  return ref;
+}
+
+template <class Make>
+long steps_for(Make make, double target) {
+  for (long n = 16; n <= (1L << 24); n = long(std::ceil(double(n) * 1.1)))
+    if ((run_steps(make(), n) - wp_reference()).norm() <= target) return n;
+  return -1;
+}
+
+void work_precision_ratio(benchmark::State& state) {
+  const double target = std::pow(10.0, -double(state.range(0)));
+  const auto& body = bench_case().body;
+  auto axis = [&] { return numerics::StrangSplitting<DirectSystem>(DirectSystem(body)); };
+  auto exact = [&] { return numerics::Composition4<physics::ExactSplitSystem>(physics::ExactSplitSystem(body)); };
+  const long ns = steps_for(axis, target), n4 = steps_for(exact, target);
+  if (ns < 0 || n4 < 0) {
+    state.SkipWithError("target error not reached");
+    return;
+  }
+  double t_axis = 0.0, t_exact = 0.0;
+  using clock = std::chrono::steady_clock;
+  for (auto _ : state) {
+    const auto t0 = clock::now();
+    benchmark::DoNotOptimize(run_steps(axis(), ns));
+    const auto t1 = clock::now();
+    benchmark::DoNotOptimize(run_steps(exact(), n4));
+    const auto t2 = clock::now();
+    t_axis += std::chrono::duration<double>(t1 - t0).count();
+    t_exact += std::chrono::duration<double>(t2 - t1).count();
+    state.SetIterationTime(std::chrono::duration<double>(t2 - t1).count());
+  }
+  state.counters["steps_splitting"] = double(ns);
+  state.counters["steps_exact4"] = double(n4);
+  state.counters["ratio"] = t_axis / t_exact;
+}
+BENCHMARK(work_precision_ratio)->Name("wp/kovalevskaya/splitting-vs-exact-split4")
+    ->Arg(6)->Arg(8)->Arg(10)->UseManualTime()->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -12,7 +12,7 @@ constexpr std::array<std::pair<Formulation, std::string_view>, 3> kFormulations{
     {Formulation::spinor, "spinor"},
 }};
 
-constexpr std::array<std::pair<Method, std::string_view>, 7> kMethods{{
+constexpr std::array<std::pair<Method, std::string_view>, 9> kMethods{{
     {Method::rk4, "rk4"},
     {Method::dopri5, "dopri5"},
     {Method::dop853, "dop853"},
@@ -20,6 +20,8 @@ constexpr std::array<std::pair<Method, std::string_view>, 7> kMethods{{
     {Method::gauss4, "gauss4"},
     {Method::gauss6, "gauss6"},
     {Method::splitting, "splitting"},
+    {Method::exact_split2, "exact-split2"},
+    {Method::exact_split4, "exact-split4"},
 }};
 
 template <class Table, class Key>
@@ -53,7 +55,8 @@ const std::vector<Formulation>& all_formulations() {
 const std::vector<Method>& all_methods() {
   static const std::vector<Method> all{Method::rk4,    Method::dopri5, Method::dop853,
                                        Method::midpoint, Method::gauss4, Method::gauss6,
-                                       Method::splitting};
+                                       Method::splitting, Method::exact_split2,
+                                       Method::exact_split4};
   return all;
 }
 
@@ -63,6 +66,10 @@ std::optional<std::string> incompatibility(Method m, Formulation f) {
   if (m == Method::splitting && f != Formulation::direct)
     return "method splitting needs formulation direct (its sub-flows are exact rotations of "
            "(I Omega, gamma)); got formulation " + std::string(name(f));
+  if ((m == Method::exact_split2 || m == Method::exact_split4) && f != Formulation::direct)
+    return "method " + std::string(name(m)) +
+           " needs formulation direct (its sub-flows are the gravity kick and the exact free "
+           "rigid body flow of (Omega, gamma)); got formulation " + std::string(name(f));
   return std::nullopt;
 }
 

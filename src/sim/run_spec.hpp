@@ -12,7 +12,7 @@
 namespace epviz::sim {
 
 enum class Formulation { direct, riccati, spinor };
-enum class Method { rk4, dopri5, dop853, midpoint, gauss4, gauss6, splitting };
+enum class Method { rk4, dopri5, dop853, midpoint, gauss4, gauss6, splitting, exact_split2, exact_split4 };
 
 std::string_view name(Formulation f);
 std::string_view name(Method m);
@@ -22,8 +22,8 @@ const std::vector<Formulation>& all_formulations();
 const std::vector<Method>& all_methods();
 
 bool is_adaptive(Method m);  // dopri5, dop853: use tol; the others use a fixed step
-// Why `m` cannot integrate formulation `f`, or nullopt (splitting needs the
-// direct formulation's exact sub-flows).
+// Why `m` cannot integrate formulation `f`, or nullopt (splitting, exact-split2
+// and exact-split4 need the direct formulation's exact sub-flows).
 std::optional<std::string> incompatibility(Method m, Formulation f);
 
 struct RunSpec {

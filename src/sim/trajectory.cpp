@@ -3,11 +3,13 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "numerics/composition.hpp"
 #include "numerics/embedded_rk.hpp"
 #include "numerics/gauss_legendre.hpp"
 #include "numerics/rk4.hpp"
 #include "numerics/splitting.hpp"
 #include "physics/direct.hpp"
+#include "physics/free_rigid_body_flow.hpp"
 #include "physics/riccati.hpp"
 #include "physics/spinor.hpp"
 
@@ -110,6 +112,19 @@ std::unique_ptr<Trajectory> start_with(Sys sys, const RunSpec& spec) {
     case Method::gauss6: return fixed(numerics::Gauss6<Sys>(sys), spec);
     case Method::splitting:
       if constexpr (requires { Sys::n_flows; }) return fixed(numerics::StrangSplitting<Sys>(sys), spec);
+      break;
+    // Kick + exact free rigid body flow: the direct formulation's state, split differently.
+    case Method::exact_split2:
+      if constexpr (std::is_same_v<Sys, physics::DirectSystem>)
+        return fixed(numerics::Composition2<physics::ExactSplitSystem>(
+                         physics::ExactSplitSystem(spec.body), "exact-split2"),
+                     spec);
+      break;
+    case Method::exact_split4:
+      if constexpr (std::is_same_v<Sys, physics::DirectSystem>)
+        return fixed(numerics::Composition4<physics::ExactSplitSystem>(
+                         physics::ExactSplitSystem(spec.body), "exact-split4"),
+                     spec);
       break;
   }
   throw std::invalid_argument(*incompatibility(spec.method, spec.formulation));
