@@ -1,0 +1,448 @@
+#include "paint/chart_painter.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "render/draw_list.hpp"
+#include "render/renderer.hpp"
+
+namespace epviz::paint {
+namespace {
+
+using render::DrawList;
+using render::TextAnchor;
+using render::TextLabel;
+using render::Viewport;
+
+const glm::vec4 kPaper{1.0f, 1.0f, 1.0f, 1.0f};
+const glm::vec4 kInk{0.10f, 0.10f, 0.12f, 1.0f};
+const glm::vec4 kFrame{0.20f, 0.20f, 0.22f, 1.0f};
+const glm::vec4 kGrid{0.0f, 0.0f, 0.0f, 0.10f};
+const glm::vec4 kGridMinor{0.0f, 0.0f, 0.0f, 0.045f};
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+float estimate_width(const std::string& s, float font_px) { return float(s.size()) * font_px * 0.58f; }
+
+// A value on an axis in plotted units (log10 on a log axis); NaN when it cannot be shown.
+double axis_value(double v, bool log_axis) {
+  if (!std::isfinite(v)) return kNaN;
+  if (log_axis) return v > 0.0 ? std::log10(v) : kNaN;
+  return v;
+}
+
+struct Span {
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -std::numeric_limits<double>::infinity();
+  void add(double v) {
+    if (std::isfinite(v)) {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+  }
+  bool empty() const { return !(lo <= hi); }
+};
+
+// Whole decades on a log axis, a padded range with nice ends on a linear one.
+void finish_span(Span& s, bool log_axis) {
+  if (s.empty()) {
+    s.lo = log_axis ? -1.0 : 0.0;
+    s.hi = log_axis ? 1.0 : 1.0;
+    return;
+  }
+  if (log_axis) {
+    s.lo = std::floor(s.lo + 1e-9);
+    s.hi = std::ceil(s.hi - 1e-9);
+    if (s.hi <= s.lo) s.hi = s.lo + 1.0;
+    return;
+  }
+  if (s.hi - s.lo < 1e-300) {
+    const double pad = std::max(std::abs(s.lo) * 0.1, 1.0);
+    s.lo -= pad;
+    s.hi += pad;
+  }
+  const double pad = 0.04 * (s.hi - s.lo);
+  s.lo -= pad;
+  s.hi += pad;
+}
+
+struct Tick {
+  double at;          // plotted units
+  std::string label;  // empty for minor ticks
+  bool major;
+};
+
+std::vector<Tick> axis_ticks(double lo, double hi, bool log_axis, int max_labels) {
+  std::vector<Tick> ticks;
+  if (log_axis) {
+    const int first = int(std::ceil(lo - 1e-9)), last = int(std::floor(hi + 1e-9));
+    const int decades = last - first;
+    const int step = std::max(1, int(std::ceil(double(decades) / double(std::max(1, max_labels - 1)))));
+    for (int e = first; e <= last; ++e) {
+      const bool labelled = (e - first) % step == 0;
+      ticks.push_back({double(e), labelled ? decade_label(e) : std::string(), true});
+      if (step == 1 && decades <= 8 && e < last)
+        for (int m = 2; m <= 9; ++m) ticks.push_back({double(e) + std::log10(double(m)), {}, false});
+    }
+    return ticks;
+  }
+  const auto values = render::nice_ticks(lo, hi, max_labels);
+  const double spacing = values.size() > 1 ? values[1] - values[0] : (hi - lo);
+  for (double v : values) ticks.push_back({v, render::format_tick(v, spacing), true});
+  return ticks;
+}
+
+TextLabel label(glm::vec2 at, std::string text, TextAnchor anchor, glm::vec4 colour = kInk) {
+  TextLabel l;
+  l.position = glm::vec3(at, 0.0f);
+  l.text = std::move(text);
+  l.colour = colour;
+  l.anchor = anchor;
+  return l;
+}
+
+void add_shape(DrawList& list, glm::vec2 c, MarkerShape shape, float r, const glm::vec4& fill) {
+  const glm::vec4 outline{fill.r * 0.55f, fill.g * 0.55f, fill.b * 0.55f, 1.0f};
+  if (shape == MarkerShape::circle) {
+    render::Marker m;
+    m.position = glm::vec3(c, 0.0f);
+    m.fill = fill;
+    m.outline = outline;
+    m.radius_px = r;
+    m.outline_px = 1.0f;
+    list.add_marker(m);
+    return;
+  }
+  std::vector<glm::vec2> poly;
+  switch (shape) {
+    case MarkerShape::square: {
+      const float h = r * 0.85f;
+      poly = {{c.x - h, c.y - h}, {c.x + h, c.y - h}, {c.x + h, c.y + h}, {c.x - h, c.y + h}};
+      break;
+    }
+    case MarkerShape::triangle_up:
+      poly = {{c.x, c.y - r * 1.15f}, {c.x + r, c.y + r * 0.75f}, {c.x - r, c.y + r * 0.75f}};
+      break;
+    case MarkerShape::triangle_down:
+      poly = {{c.x, c.y + r * 1.15f}, {c.x - r, c.y - r * 0.75f}, {c.x + r, c.y - r * 0.75f}};
+      break;
+    default:  // diamond
+      poly = {{c.x, c.y - r * 1.2f}, {c.x + r, c.y}, {c.x, c.y + r * 1.2f}, {c.x - r, c.y}};
+      break;
+  }
+  std::vector<render::ColouredVertex> tris;
+  for (std::size_t i = 1; i + 1 < poly.size(); ++i)
+    for (const glm::vec2& p : {poly[0], poly[i], poly[i + 1]}) tris.push_back({glm::vec3(p, 0.0f), fill});
+  list.add_triangles(tris);
+  std::vector<glm::vec3> ring;
+  for (const auto& p : poly) ring.emplace_back(p, 0.0f);
+  list.add_polyline(ring, outline, 1.0f, true);
+}
+
+render::RendererOptions renderer_options(const ChartOptions& options) {
+  render::RendererOptions ro;
+  ro.width = options.width;
+  ro.height = options.height;
+  ro.msaa_samples = options.msaa_samples;
+  ro.overlay = true;
+  ro.overlay_options.builtin_font = options.builtin_font;
+  ro.overlay_options.font_size_px = chart_font_px(options);
+  ro.overlay_options.light_style = true;
+  return ro;
+}
+
+// Counts drawn points of the chart (vertices and samples along segments) inside a box.
+int points_inside(const ChartSpec& spec, const ChartLayout& l, const Viewport& box) {
+  auto in = [&](glm::vec2 p) {
+    return p.x >= float(box.x) && p.x <= float(box.x + box.width) && p.y >= float(box.y) &&
+           p.y <= float(box.y + box.height);
+  };
+  int n = 0;
+  for (const auto& s : spec.series) {
+    glm::vec2 prev{NAN, NAN};
+    for (const auto& pt : s.points) {
+      const glm::vec2 p = l.to_pixel(pt.x, pt.y);
+      if (std::isnan(p.x) || std::isnan(p.y)) {
+        prev = p;
+        continue;
+      }
+      if (in(p)) n += 4;
+      if (!std::isnan(prev.x))
+        for (int k = 1; k < 16; ++k)
+          if (in(prev + (p - prev) * (float(k) / 16.0f))) ++n;
+      prev = p;
+    }
+  }
+  return n;
+}
+
+}  // namespace
+
+glm::vec4 series_colour(std::size_t index) {
+  // Okabe & Ito's colour-blind-safe set (yellow left out: it fades on white).
+  static const std::array<glm::vec4, 7> colours{{
+      {0.000f, 0.447f, 0.698f, 1.0f},  // blue
+      {0.835f, 0.369f, 0.000f, 1.0f},  // vermillion
+      {0.000f, 0.620f, 0.451f, 1.0f},  // bluish green
+      {0.800f, 0.475f, 0.655f, 1.0f},  // reddish purple
+      {0.902f, 0.624f, 0.000f, 1.0f},  // orange
+      {0.337f, 0.706f, 0.914f, 1.0f},  // sky blue
+      {0.15f, 0.15f, 0.15f, 1.0f},     // near black
+  }};
+  return colours[index % colours.size()];
+}
+
+MarkerShape series_marker(std::size_t index) {
+  static const std::array<MarkerShape, 5> shapes{MarkerShape::circle, MarkerShape::square, MarkerShape::triangle_up,
+                                                 MarkerShape::diamond, MarkerShape::triangle_down};
+  // Shapes cycle on a different period from colours, so pairs stay distinct.
+  return shapes[index % shapes.size()];
+}
+
+std::string decade_label(int exponent) {
+  if (exponent == 0) return "1";
+  return "1e" + std::to_string(exponent);
+}
+
+float chart_font_px(const ChartOptions& options) {
+  if (options.builtin_font) return 13.0f;
+  if (options.font_px > 0.0f) return options.font_px;
+  return std::clamp(float(options.height) / 40.0f, 13.0f, 30.0f);
+}
+
+glm::vec2 ChartLayout::to_pixel(double x, double y) const {
+  const double ax = axis_value(x, log_x), ay = axis_value(y, log_y);
+  if (std::isnan(ax) || std::isnan(ay)) return {NAN, NAN};
+  const double fx = (ax - range.x_min) / (range.x_max - range.x_min);
+  const double fy = (ay - range.y_min) / (range.y_max - range.y_min);
+  return {float(plot_area.x + fx * plot_area.width), float(plot_area.y + (1.0 - fy) * plot_area.height)};
+}
+
+ChartLayout chart_layout(const ChartSpec& spec, int width, int height, float font_px) {
+  ChartLayout l;
+  l.log_x = spec.log_x;
+  l.log_y = spec.log_y;
+  Span sx, sy;
+  for (const auto& s : spec.series)
+    for (const auto& p : s.points) {
+      const double ax = axis_value(p.x, spec.log_x), ay = axis_value(p.y, spec.log_y);
+      if (std::isnan(ax) || std::isnan(ay)) continue;
+      sx.add(ax);
+      sy.add(ay);
+    }
+  finish_span(sx, spec.log_x);
+  finish_span(sy, spec.log_y);
+  l.range = {sx.lo, sx.hi, sy.lo, sy.hi};
+
+  // Margins: y tick labels on the left, x tick labels and the x label below,
+  // title and the y label (written horizontally above the axis) on top.
+  float widest_y = 0.0f;
+  for (const auto& t : axis_ticks(sy.lo, sy.hi, spec.log_y, 8)) widest_y = std::max(widest_y, estimate_width(t.label, font_px));
+  const float line = font_px * 1.35f;
+  const int left = int(std::ceil(widest_y + font_px * 1.6f));
+  const int top = int(std::ceil(font_px * 0.8f + (spec.title.empty() ? 0.0f : line * 1.3f) +
+                                (spec.y_label.empty() ? 0.0f : line)));
+  const int bottom = int(std::ceil(font_px * 0.9f + line + (spec.x_label.empty() ? 0.0f : line * 1.1f)));
+  int right = int(std::ceil(font_px * 1.5f));
+
+  // Legend: one row per series, a line sample with its marker, then the name.
+  float widest_name = 0.0f;
+  for (const auto& s : spec.series) widest_name = std::max(widest_name, estimate_width(s.name, font_px));
+  const int legend_w = int(std::ceil(font_px * 3.6f + widest_name + font_px * 0.8f));
+  const int legend_h = int(std::ceil(line * float(spec.series.size()) + font_px * 0.8f));
+  l.plot_area = {left, top, width - left - right, height - top - bottom};
+  if (spec.series.empty()) return l;
+
+  const int pad = int(font_px * 0.6f);
+  const Viewport& a = l.plot_area;
+  const std::array<Viewport, 4> corners{{
+      {a.x + a.width - legend_w - pad, a.y + pad, legend_w, legend_h},   // top right
+      {a.x + pad, a.y + pad, legend_w, legend_h},                        // top left
+      {a.x + pad, a.y + a.height - legend_h - pad, legend_w, legend_h},  // bottom left
+      {a.x + a.width - legend_w - pad, a.y + a.height - legend_h - pad, legend_w, legend_h},
+  }};
+  const bool fits = legend_w + 2 * pad < a.width / 2 + a.width / 4 && legend_h + 2 * pad < a.height;
+  if (fits)
+    for (const auto& c : corners)
+      if (points_inside(spec, l, c) == 0) {
+        l.legend = c;
+        return l;
+      }
+  // No free corner: the legend goes right of the plot, which narrows.
+  right = legend_w + pad * 2;
+  l.plot_area = {left, top, width - left - right, height - top - bottom};
+  l.legend = {l.plot_area.x + l.plot_area.width + pad, l.plot_area.y, legend_w, legend_h};
+  l.legend_outside = true;
+  return l;
+}
+
+render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec, const ChartOptions& options) {
+  context.make_current();
+  render::Renderer renderer(context, renderer_options(options));
+  const float font_px = chart_font_px(options);
+  const ChartLayout l = chart_layout(spec, options.width, options.height, font_px);
+  const Viewport& a = l.plot_area;
+  const float line = font_px * 1.35f;
+  const float tick = std::max(4.0f, font_px * 0.45f);
+  const float stroke = std::max(1.5f, font_px * 0.14f);
+
+  renderer.begin_frame(kPaper);
+  DrawList axes;
+  const float x0 = float(a.x), x1 = float(a.x + a.width), y0 = float(a.y), y1 = float(a.y + a.height);
+  auto px_x = [&](double v) { return float(a.x + (v - l.range.x_min) / (l.range.x_max - l.range.x_min) * a.width); };
+  auto px_y = [&](double v) {
+    return float(a.y + (1.0 - (v - l.range.y_min) / (l.range.y_max - l.range.y_min)) * a.height);
+  };
+  const int max_x_labels = std::clamp(int(float(a.width) / (font_px * 6.0f)), 2, 10);
+  const int max_y_labels = std::clamp(int(float(a.height) / (font_px * 2.6f)), 2, 10);
+  for (const auto& t : axis_ticks(l.range.x_min, l.range.x_max, l.log_x, max_x_labels)) {
+    const float x = px_x(t.at);
+    if (x < x0 - 0.5f || x > x1 + 0.5f) continue;
+    axes.add_line({x, y0, 0}, {x, y1, 0}, t.major ? kGrid : kGridMinor, 1.0f);
+    const float len = t.major ? tick : tick * 0.55f;
+    axes.add_line({x, y1, 0}, {x, y1 - len, 0}, kFrame, 1.0f);
+    axes.add_line({x, y0, 0}, {x, y0 + len, 0}, kFrame, 1.0f);
+    if (!t.label.empty()) axes.add_text(label({x, y1 + font_px * 0.45f}, t.label, TextAnchor::top));
+  }
+  for (const auto& t : axis_ticks(l.range.y_min, l.range.y_max, l.log_y, max_y_labels)) {
+    const float y = px_y(t.at);
+    if (y < y0 - 0.5f || y > y1 + 0.5f) continue;
+    axes.add_line({x0, y, 0}, {x1, y, 0}, t.major ? kGrid : kGridMinor, 1.0f);
+    const float len = t.major ? tick : tick * 0.55f;
+    axes.add_line({x0, y, 0}, {x0 + len, y, 0}, kFrame, 1.0f);
+    axes.add_line({x1, y, 0}, {x1 - len, y, 0}, kFrame, 1.0f);
+    if (!t.label.empty()) axes.add_text(label({x0 - font_px * 0.45f, y}, t.label, TextAnchor::right));
+  }
+  const std::vector<glm::vec3> frame{{x0, y0, 0}, {x1, y0, 0}, {x1, y1, 0}, {x0, y1, 0}};
+  axes.add_polyline(frame, kFrame, 1.25f, true);
+  if (!spec.title.empty())
+    axes.add_text(label({float(options.width) * 0.5f, font_px * 0.6f}, spec.title, TextAnchor::top));
+  if (!spec.y_label.empty()) axes.add_text(label({x0, y0 - font_px * 0.5f}, spec.y_label, TextAnchor::bottom_left));
+  if (!spec.x_label.empty())
+    axes.add_text(label({(x0 + x1) * 0.5f, y1 + font_px * 0.45f + line}, spec.x_label, TextAnchor::top));
+  renderer.draw_2d(axes);
+
+  // Data, clipped to the plot area: lines first, then all markers on top.
+  DrawList lines, markers;
+  const float marker_r = std::max(3.5f, font_px * 0.3f);
+  for (std::size_t i = 0; i < spec.series.size(); ++i) {
+    const auto& s = spec.series[i];
+    const glm::vec4 colour = series_colour(i);
+    std::vector<glm::vec3> run;
+    auto flush = [&] {
+      if (run.size() >= 2) lines.add_polyline(run, colour, stroke);
+      run.clear();
+    };
+    for (const auto& p : s.points) {
+      const glm::vec2 q = l.to_pixel(p.x, p.y);
+      if (std::isnan(q.x) || std::isnan(q.y)) {
+        flush();
+        continue;
+      }
+      run.emplace_back(q, 0.0f);
+      if (s.points.size() <= 60) add_shape(markers, q, series_marker(i), marker_r, colour);
+    }
+    flush();
+    // Long series (time series) get a few markers only, evenly spaced.
+    if (s.points.size() > 60) {
+      const std::size_t every = s.points.size() / 12 + 1;
+      for (std::size_t k = every / 2; k < s.points.size(); k += every) {
+        const glm::vec2 q = l.to_pixel(s.points[k].x, s.points[k].y);
+        if (!std::isnan(q.x) && !std::isnan(q.y)) add_shape(markers, q, series_marker(i), marker_r, colour);
+      }
+    }
+  }
+  renderer.draw_2d(lines, &a);
+  const Viewport marker_clip = a.inset(-int(marker_r) - 2, -int(marker_r) - 2, -int(marker_r) - 2, -int(marker_r) - 2);
+  renderer.draw_2d(markers, &marker_clip);
+
+  if (!spec.series.empty()) {
+    DrawList legend;
+    const Viewport& b = l.legend;
+    legend.add_rect({float(b.x), float(b.y)}, {float(b.x + b.width), float(b.y + b.height)},
+                    {1.0f, 1.0f, 1.0f, 0.92f});
+    const std::vector<glm::vec3> box{{float(b.x), float(b.y), 0},
+                                     {float(b.x + b.width), float(b.y), 0},
+                                     {float(b.x + b.width), float(b.y + b.height), 0},
+                                     {float(b.x), float(b.y + b.height), 0}};
+    legend.add_polyline(box, {0.0f, 0.0f, 0.0f, 0.35f}, 1.0f, true);
+    for (std::size_t i = 0; i < spec.series.size(); ++i) {
+      const float cy = float(b.y) + font_px * 0.4f + line * (float(i) + 0.5f);
+      const float lx0 = float(b.x) + font_px * 0.6f, lx1 = lx0 + font_px * 2.4f;
+      legend.add_line({lx0, cy, 0}, {lx1, cy, 0}, series_colour(i), stroke);
+      add_shape(legend, {(lx0 + lx1) * 0.5f, cy}, series_marker(i), marker_r, series_colour(i));
+      legend.add_text(label({lx1 + font_px * 0.6f, cy}, spec.series[i].name, TextAnchor::left));
+    }
+    renderer.draw_2d(legend);
+  }
+  return renderer.finish_frame();
+}
+
+render::RgbaImage paint_table(render::GlContext& context, const TableSpec& spec, const ChartOptions& options) {
+  context.make_current();
+  render::Renderer renderer(context, renderer_options(options));
+  const float font_px = chart_font_px(options);
+  const float line = font_px * 1.5f;
+  std::size_t columns = spec.header.size();
+  for (const auto& r : spec.rows) columns = std::max(columns, r.size());
+  auto cell = [](const std::vector<std::string>& row, std::size_t c) { return c < row.size() ? row[c] : std::string(); };
+
+  // Column widths from the longest cell, scaled down together if the table is too wide.
+  std::vector<float> widths(columns, 0.0f);
+  for (std::size_t c = 0; c < columns; ++c) {
+    widths[c] = estimate_width(cell(spec.header, c), font_px);
+    for (const auto& r : spec.rows) widths[c] = std::max(widths[c], estimate_width(cell(r, c), font_px));
+    widths[c] += font_px * 1.2f;
+  }
+  const float margin = font_px * 1.5f;
+  float total = 0.0f;
+  for (float w : widths) total += w;
+  const float avail = float(options.width) - 2.0f * margin;
+  if (total > avail && total > 0.0f)
+    for (float& w : widths) w *= avail / total;
+  total = std::min(total, avail);
+
+  renderer.begin_frame(kPaper);
+  DrawList list;
+  const float left = std::max(margin, (float(options.width) - total) * 0.5f);
+  float y = font_px * 0.8f;
+  if (!spec.title.empty()) {
+    list.add_text(label({float(options.width) * 0.5f, y}, spec.title, TextAnchor::top));
+    y += line * 1.3f;
+  }
+  const float rule_heavy = std::max(1.5f, font_px * 0.1f);
+  list.add_line({left, y, 0}, {left + total, y, 0}, kInk, rule_heavy);
+  auto write_row = [&](const std::vector<std::string>& row, float top, const glm::vec4& colour) {
+    float x = left;
+    for (std::size_t c = 0; c < columns; ++c) {
+      list.add_text(label({x + font_px * 0.4f, top + line * 0.5f}, cell(row, c), TextAnchor::left, colour));
+      x += widths[c];
+    }
+  };
+  if (!spec.header.empty()) {
+    write_row(spec.header, y, kInk);
+    y += line;
+    list.add_line({left, y, 0}, {left + total, y, 0}, kInk, 1.0f);
+  }
+  const float bottom_limit = float(options.height) - font_px;
+  std::size_t shown = 0;
+  for (const auto& r : spec.rows) {
+    if (y + line > bottom_limit - line) break;
+    if (shown % 2 == 1) list.add_rect({left, y}, {left + total, y + line}, {0.0f, 0.0f, 0.0f, 0.04f});
+    write_row(r, y, kInk);
+    y += line;
+    ++shown;
+  }
+  list.add_line({left, y, 0}, {left + total, y, 0}, kInk, rule_heavy);
+  if (shown < spec.rows.size()) {
+    char more[64];
+    std::snprintf(more, sizeof more, "(%zu more rows not shown)", spec.rows.size() - shown);
+    list.add_text(label({left, y + font_px * 0.4f}, more, TextAnchor::top_left, {0.4f, 0.4f, 0.4f, 1.0f}));
+  }
+  renderer.draw_2d(list);
+  return renderer.finish_frame();
+}
+
+}  // namespace epviz::paint

@@ -1,0 +1,86 @@
+#pragma once
+// Figures for papers, drawn with the render toolkit: a line chart (series as
+// polylines with markers, optional log10 axes with decade and minor ticks, axis
+// labels, a title and a legend) and a table figure. Input is plain data; the
+// painter knows nothing of what the numbers mean.
+//
+//   auto context = render::make_gl_context("osmesa", 16, 16);  // size unused
+//   render::RgbaImage img = paint::paint_chart(*context, spec, {.width = 1280, .height = 800});
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+
+#include "render/camera.hpp"
+#include "render/gl_context.hpp"
+#include "render/image.hpp"
+#include "render/panel_2d.hpp"
+
+namespace epviz::paint {
+
+struct ChartPoint {
+  double x = 0.0;
+  double y = 0.0;
+};
+
+struct ChartSeries {
+  std::string name;
+  std::vector<ChartPoint> points;  // drawn in this order; non-finite (or <= 0 on a log axis) points break the line
+};
+
+struct ChartSpec {
+  std::string title;
+  std::string x_label;
+  std::string y_label;
+  bool log_x = false;
+  bool log_y = false;
+  std::vector<ChartSeries> series;
+};
+
+struct TableSpec {
+  std::string title;
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;  // short rows are padded with empty cells
+};
+
+struct ChartOptions {
+  int width = 1280;
+  int height = 800;
+  int msaa_samples = 4;
+  // ImGui's built-in 13 px font (snapshot tests), else the overlay's TTF at a
+  // size that follows the picture's height.
+  bool builtin_font = false;
+  float font_px = 0.0f;  // > 0: this TTF size whatever the height
+};
+
+// The colour and marker of series i (colour-blind-safe palette, cycling).
+enum class MarkerShape { circle, square, triangle_up, diamond, triangle_down };
+glm::vec4 series_colour(std::size_t index);
+MarkerShape series_marker(std::size_t index);
+
+// Where the plot goes and the data range it shows. Ranges on log axes are in
+// log10 units (whole decades).
+struct ChartLayout {
+  render::Viewport plot_area;
+  render::DataRange range;
+  bool log_x = false;
+  bool log_y = false;
+  bool legend_outside = false;        // the legend sits right of the plot
+  render::Viewport legend;            // the legend's box in image pixels
+  // Image pixel of a data point (given unlogged); NaN for points a log axis cannot show.
+  glm::vec2 to_pixel(double x, double y) const;
+};
+// The layout paint_chart uses for `spec` at width x height (text widths estimated from `font_px`).
+ChartLayout chart_layout(const ChartSpec& spec, int width, int height, float font_px);
+// The font size paint_chart uses for a picture of this height.
+float chart_font_px(const ChartOptions& options);
+
+// The log10 decade labels: "1" for 1e0, else "1e-8" style.
+std::string decade_label(int exponent);
+
+// Renders a chart or table figure; `context` must be current (any size).
+render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec, const ChartOptions& options = {});
+render::RgbaImage paint_table(render::GlContext& context, const TableSpec& spec, const ChartOptions& options = {});
+
+}  // namespace epviz::paint

@@ -1,0 +1,118 @@
+// The chart painter: a log-log chart of two known series checked pixel by
+// pixel (checks that can fail) and against a reviewed golden, plus the table.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "paint/chart_painter.hpp"
+#include "render/render_test_support.hpp"
+#include "render/snapshot.hpp"
+
+namespace epviz {
+namespace {
+
+namespace et = epviz::testing;
+constexpr int W = 640, H = 400;
+
+paint::ChartSpec two_series() {
+  paint::ChartSpec s;
+  s.title = "Work-precision (test)";
+  s.x_label = "CPU time [ms]";
+  s.y_label = "error";
+  s.log_x = s.log_y = true;
+  paint::ChartSeries a{"rk4", {}}, b{"gauss6", {}};
+  for (int i = 0; i < 6; ++i) {
+    const double x = std::pow(10.0, -2.0 + 0.6 * i);
+    a.points.push_back({x, 1e-2 * std::pow(x, -4.0) * 1e-6});
+    b.points.push_back({x * 2.0, 1e-3 * std::pow(x, -6.0) * 1e-8});
+  }
+  s.series = {a, b};
+  return s;
+}
+
+paint::ChartOptions test_options() { return {.width = W, .height = H, .msaa_samples = 4, .builtin_font = true}; }
+
+// Whether a pixel near `at` (within r) is close to `colour`.
+bool colour_near(const render::RgbaImage& img, glm::vec2 at, const glm::vec4& colour, int r = 3) {
+  for (int dy = -r; dy <= r; ++dy)
+    for (int dx = -r; dx <= r; ++dx) {
+      const int x = int(at.x) + dx, y = int(at.y) + dy;
+      if (x < 0 || y < 0 || x >= img.width || y >= img.height) continue;
+      if (et::max_channel_difference(et::pixel_colour(img, x, y), colour) < 0.12f) return true;
+    }
+  return false;
+}
+
+int colour_count(const render::RgbaImage& img, const render::Viewport& box, const glm::vec4& colour) {
+  int n = 0;
+  for (int y = std::max(0, box.y); y < std::min(img.height, box.y + box.height); ++y)
+    for (int x = std::max(0, box.x); x < std::min(img.width, box.x + box.width); ++x)
+      if (et::max_channel_difference(et::pixel_colour(img, x, y), colour) < 0.12f) ++n;
+  return n;
+}
+
+TEST(ChartPainter, DecadeLabels) {
+  EXPECT_EQ(paint::decade_label(-8), "1e-8");
+  EXPECT_EQ(paint::decade_label(0), "1");
+  EXPECT_EQ(paint::decade_label(3), "1e3");
+}
+
+TEST(ChartPainter, LogLayoutCoversWholeDecades) {
+  const auto spec = two_series();
+  const auto l = paint::chart_layout(spec, W, H, 13.0f);
+  EXPECT_EQ(l.range.x_min, std::floor(l.range.x_min));
+  EXPECT_EQ(l.range.y_max, std::floor(l.range.y_max));
+  for (const auto& s : spec.series)
+    for (const auto& p : s.points) {
+      const glm::vec2 q = l.to_pixel(p.x, p.y);
+      EXPECT_GE(q.x, l.plot_area.x - 0.5f);
+      EXPECT_LE(q.x, l.plot_area.x + l.plot_area.width + 0.5f);
+      EXPECT_GE(q.y, l.plot_area.y - 0.5f);
+      EXPECT_LE(q.y, l.plot_area.y + l.plot_area.height + 0.5f);
+    }
+  EXPECT_TRUE(std::isnan(l.to_pixel(-1.0, 1.0).x));  // a log axis cannot show x <= 0
+}
+
+TEST(ChartPainter, SeriesAppearAtTheirPointsAndInTheLegend) {
+  const auto spec = two_series();
+  const auto img = paint::paint_chart(et::shared_gl_context(), spec, test_options());
+  ASSERT_EQ(img.width, W);
+  ASSERT_EQ(img.height, H);
+  const auto l = paint::chart_layout(spec, W, H, 13.0f);
+  for (std::size_t i = 0; i < spec.series.size(); ++i)
+    for (const auto& p : spec.series[i].points)
+      EXPECT_TRUE(colour_near(img, l.to_pixel(p.x, p.y), paint::series_colour(i)))
+          << "series " << i << " at " << p.x << ", " << p.y;
+  // The plot area is not blank: plenty of non-white pixels.
+  int ink = 0;
+  for (int y = l.plot_area.y; y < l.plot_area.y + l.plot_area.height; ++y)
+    for (int x = l.plot_area.x; x < l.plot_area.x + l.plot_area.width; ++x)
+      if (et::luminance(et::pixel_colour(img, x, y)) < 0.8f) ++ink;
+  EXPECT_GT(ink, 400);
+  // The legend shows both colours, and no data runs under it.
+  EXPECT_GT(colour_count(img, l.legend, paint::series_colour(0)), 10);
+  EXPECT_GT(colour_count(img, l.legend, paint::series_colour(1)), 10);
+  // The background is white, for papers.
+  EXPECT_LT(et::max_channel_difference(et::pixel_colour(img, 2, H - 2), glm::vec4(1.0f)), 0.02f);
+}
+
+TEST(ChartPainter, MatchesTheReviewedGolden) {
+  const auto img = paint::paint_chart(et::shared_gl_context(), two_series(), test_options());
+  EXPECT_TRUE(et::matches_snapshot("chart_loglog", img.width, img.height, img.pixels));
+}
+
+TEST(ChartPainter, TableFigureMatchesTheReviewedGolden) {
+  paint::TableSpec t{"Stability (test)", {"study", "case", "method", "result"}, {}};
+  t.rows = {{"max_step", "kovalevskaya", "rk4", "max step 0.328"},
+            {"chaos", "generic", "dop853", "separated no"},
+            {"pole", "custom", "dop853", "error 9.27e-10"}};
+  const auto img = paint::paint_table(et::shared_gl_context(), t, test_options());
+  int ink = 0;
+  for (std::size_t i = 0; i < img.pixels.size(); i += 4)
+    if (img.pixels[i] < 128) ++ink;
+  EXPECT_GT(ink, 500);
+  EXPECT_TRUE(et::matches_snapshot("chart_table", img.width, img.height, img.pixels));
+}
+
+}  // namespace
+}  // namespace epviz
