@@ -13,13 +13,17 @@
 #include "io/atomic_file.hpp"
 #include "physics/cases.hpp"
 #include "sim/study_bench.hpp"
+#ifdef EPVIZ_HAVE_RENDER
+#include "paint/bench_charts.hpp"
+#include "render/gl_context.hpp"
+#endif
 
 namespace epviz::app {
 namespace {
 
 struct RawOptions {
   bool quick = false;
-  std::string json, out, cases;
+  std::string json, out, cases, gl;
 };
 
 std::string compiler() {
@@ -210,7 +214,15 @@ int run_bench(const RawOptions& raw) {
   doc["rows"] = arr;
   const std::string text = doc.dump(1) + "\n";
   if (!raw.json.empty()) io::write_file_atomically(raw.json, text);
-  if (!raw.out.empty()) io::write_file_atomically(fs::path(raw.out) / "bench.json", text);
+  if (!raw.out.empty()) {
+    io::write_file_atomically(fs::path(raw.out) / "bench.json", text);
+#ifdef EPVIZ_HAVE_RENDER
+    // The charts are drawn by epviz's own offscreen renderer.
+    const std::string backend = raw.gl.empty() ? render::gl_backend_from_environment() : raw.gl;
+    const auto charts = paint::write_bench_charts(doc, raw.out, backend);
+    std::printf("%zu charts written to %s\n", charts.size(), raw.out.c_str());
+#endif
+  }
   return 0;
 }
 
@@ -221,7 +233,8 @@ std::function<int()> add_bench_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("bench", "Work-precision, invariant drift and stability studies of the methods");
   cmd->add_flag("--quick", raw->quick, "a short study for CI (well under a minute)");
   cmd->add_option("--json", raw->json, "write every row and the metadata to this JSON file");
-  cmd->add_option("--out", raw->out, "create this directory and write bench.json there");
+  cmd->add_option("--out", raw->out, "create this directory and write bench.json and the charts (PNG) there");
+  cmd->add_option("--gl", raw->gl, "offscreen GL backend for the charts (default: $EPVIZ_GL or osmesa)");
   cmd->add_option("--cases", raw->cases,
                   "comma-separated presets for the work-precision and drift studies (default all)");
   return [raw] { return run_bench(*raw); };

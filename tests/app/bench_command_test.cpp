@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <stb/stb_image.h>
 #include <set>
 
 #include "cli_runner.hpp"
@@ -110,6 +111,27 @@ TEST(BenchCommand, QuickRunWritesCompleteRows) {
   }
   EXPECT_EQ(cases.size(), 6u);
   EXPECT_GE(methods.size(), 7u);
+
+  // The charts, drawn by epviz itself: present and not blank (a white page with
+  // dark ink: axes, labels and series).
+  for (const char* name : {"work_precision_kovalevskaya.png", "drift_kovalevskaya.png", "stability.png"}) {
+    const auto png = out / name;
+    ASSERT_TRUE(std::filesystem::exists(png)) << png;
+    int w = 0, h = 0, n = 0;
+    unsigned char* pixels = stbi_load(png.c_str(), &w, &h, &n, 4);
+    ASSERT_NE(pixels, nullptr) << png;
+    long dark = 0, coloured = 0;
+    for (long i = 0; i < long(w) * h; ++i) {
+      const unsigned char* p = pixels + 4 * i;
+      dark += p[0] < 100 && p[1] < 100 && p[2] < 100;
+      coloured += std::abs(int(p[0]) - int(p[2])) > 60;
+    }
+    stbi_image_free(pixels);
+    EXPECT_GT(dark, 2000) << name;
+    if (std::string(name) != "stability.png") {
+      EXPECT_GT(coloured, 200) << name << ": no series drawn";
+    }
+  }
   EXPECT_EQ(count["reference"], 6);
   for (const char* s : {"work_precision", "drift", "stability_max_step", "stability_pole", "stability_separatrix",
                         "stability_sleeping_top", "stability_chaos"})
