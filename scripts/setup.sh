@@ -9,7 +9,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libosmesa6-dev libglm-dev libimgui-dev libstb-dev zlib1g-dev
-  ffmpeg
+  ffmpeg libgsl-dev python3-scipy
 )
 
 missing=()
