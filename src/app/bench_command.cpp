@@ -13,6 +13,9 @@
 #include "io/atomic_file.hpp"
 #include "physics/cases.hpp"
 #include "sim/study_bench.hpp"
+#ifdef EPVIZ_HAVE_PEERS
+#include "peers/peer_study.hpp"
+#endif
 #ifdef EPVIZ_HAVE_RENDER
 #include "paint/bench_charts.hpp"
 #include "render/gl_context.hpp"
@@ -131,6 +134,13 @@ int run_bench(const RawOptions& raw) {
   };
   std::fprintf(stderr, "epviz bench%s: work-precision...\n", raw.quick ? " --quick" : "");
   add(sim::work_precision_study(opts));
+#ifdef EPVIZ_HAVE_PEERS
+  std::fprintf(stderr, "epviz bench: peers (Boost.Odeint, GSL, SciPy)...\n");
+  auto peer_study = peers::peer_work_precision_study(opts);
+  for (const auto& line : peer_study.skipped) std::fprintf(stderr, "epviz bench: %s\n", line.c_str());
+  add(std::move(peer_study.rows));
+  add(peers::equal_error_ratios(rows, {1e-6, 1e-8, 1e-10}));
+#endif
   std::fprintf(stderr, "epviz bench: invariant drift...\n");
   add(sim::drift_study(opts));
   std::fprintf(stderr, "epviz bench: stability...\n");
@@ -142,7 +152,7 @@ int run_bench(const RawOptions& raw) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   // Tables.
-  const std::vector<Column> wp{{"method", "method", 10}, {"formulation", "formulation", 11},
+  const std::vector<Column> wp{{"impl", "impl", 12}, {"method", "method", 17}, {"formulation", "formulation", 11},
                                {"tol", "tol", 8},        {"step", "step", 9},
                                {"error", "error", 9},    {"rhs_evals", "rhs_evals", 10},
                                {"flow_evals", "flow_evals", 10}, {"cpu_ms", "cpu_ms", 9},
@@ -155,6 +165,11 @@ int run_bench(const RawOptions& raw) {
                     cell(*ref[0], {"", "self_check", 0}) + ")",
                 select(rows, "work_precision", p.name), wp);
   }
+  print_table("peers: CPU time against epviz dop853 at equal achieved error (log-log interpolation; ratio > 1: "
+              "epviz is faster)",
+              select(rows, "peer_ratio"),
+              {{"case", "case", 20}, {"impl", "impl", 12}, {"method", "method", 17}, {"error", "error", 9},
+               {"peer_ms", "peer_cpu_ms", 9}, {"epviz_ms", "epviz_dop853_cpu_ms", 9}, {"ratio", "ratio", 8}});
   print_table("invariant drift (max relative, direct formulation, equal evaluations per time unit)",
               select(rows, "drift"),
               {{"case", "case", 20}, {"method", "method", 10}, {"tol", "tol", 8}, {"step", "step", 9},

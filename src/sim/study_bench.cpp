@@ -138,14 +138,10 @@ TimedRun timed_run(const RunSpec& spec, int repeats) {
 
 // --- Work-precision --------------------------------------------------------
 
-namespace {
-
 // Final times: 10 time units, except the chaotic generic body (5: its
 // largest Lyapunov exponent amplifies errors so fast that beyond ~10 time
 // units every error saturates at O(1) and the chart says nothing).
 double wp_t_end(physics::Case c) { return c == physics::Case::generic ? 5.0 : 10.0; }
-
-}  // namespace
 
 std::vector<StudyRow> work_precision_study(const StudyOptions& o) {
   std::vector<StudyRow> rows;

@@ -54,6 +54,8 @@ struct TimedRun {
 };
 TimedRun timed_run(const RunSpec& spec, int repeats);
 
+// The final time of the work-precision runs of case c.
+double wp_t_end(physics::Case c);
 // Work-precision: rows of study "work_precision" plus one "reference" row per case.
 std::vector<StudyRow> work_precision_study(const StudyOptions& o);
 // Invariant drift over 1e5 (full) / 1e3 (quick) time units on Kovalevskaya and
