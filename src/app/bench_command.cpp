@@ -24,10 +24,7 @@
 namespace epviz::app {
 namespace {
 
-struct RawOptions {
-  bool quick = false;
-  std::string json, out, cases, gl;
-};
+using RawOptions = BenchRequest;
 
 std::string compiler() {
 #if defined(__clang__)
@@ -109,7 +106,9 @@ std::vector<physics::Case> parse_cases(const std::string& list) {
   return cases;
 }
 
-int run_bench(const RawOptions& raw) {
+}  // namespace
+
+int run_bench(const BenchRequest& raw) {
   sim::StudyOptions opts;
   opts.quick = raw.quick;
   opts.cases = parse_cases(raw.cases);
@@ -240,8 +239,6 @@ int run_bench(const RawOptions& raw) {
   }
   return 0;
 }
-
-}  // namespace
 
 std::function<int()> add_bench_command(CLI::App& app) {
   auto raw = std::make_shared<RawOptions>();

@@ -3,11 +3,23 @@
 // studies of epviz's own methods; tables on stdout, every row to JSON.
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <string>
 
 namespace epviz::app {
 
 // Adds the subcommand to `app`; the returned function runs it after parsing and
 // returns the process exit code.
 std::function<int()> add_bench_command(CLI::App& app);
+
+// What a bench run is asked for, from the command line or a render job
+// (render_jobs/bench_figures.json: `epviz render` draws the bench's figures).
+struct BenchRequest {
+  bool quick = false;
+  std::string json;   // write the rows here ("" for none)
+  std::string out;    // directory for bench.json and the charts ("" for none)
+  std::string cases;  // comma-separated presets ("" for all)
+  std::string gl;     // GL backend for the charts ("" for $EPVIZ_GL or osmesa)
+};
+int run_bench(const BenchRequest& request);
 
 }  // namespace epviz::app

@@ -7,6 +7,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "app/bench_command.hpp"
 #include "app/cli_values.hpp"
 #include "app/render_job.hpp"
 #include "app/usage_error.hpp"
@@ -263,6 +264,16 @@ int run_render(const RenderOptions& o) {
     if (!fs::is_directory(dir)) throw UsageError("--report-json: directory '" + dir.string() + "' does not exist");
   }
   auto loaded = load_render_job(o.job);
+  if (loaded.bench) {
+    if (!o.frames.empty() || !o.format.empty() || o.resume)
+      throw UsageError(o.job + ": a bench-figures job takes only --out and --gl");
+    BenchRequest b;
+    b.quick = loaded.bench->quick;
+    for (const auto& c : loaded.bench->cases) b.cases += (b.cases.empty() ? "" : ",") + c;
+    b.out = o.out.empty() ? loaded.bench->dir.string() : o.out;
+    b.gl = o.gl;
+    return run_bench(b);
+  }
   if (loaded.gallery) return render_gallery(std::move(*loaded.gallery), o);
   return render_single(std::move(*loaded.single), o);
 }

@@ -130,6 +130,26 @@ LoadedJob load_render_job(const std::filesystem::path& path) {
   LoadedJob loaded;
   try {
     const auto j = io::read_json_file(path);
+    if (j.contains("bench")) {
+      BenchFiguresJob b;
+      b.file = path;
+      io::ObjectReader r(j, path.string());
+      if (auto bench = r.object("bench")) {
+        if (auto q = bench->boolean("quick")) b.quick = *q;
+        if (const auto* cases = bench->raw("cases")) {
+          if (!cases->is_array()) bench->fail("cases", "expected an array of case names");
+          for (const auto& c : *cases) {
+            if (!c.is_string()) bench->fail("cases", "expected an array of case names");
+            b.cases.push_back(c.get<std::string>());
+          }
+        }
+        bench->finish();
+      }
+      if (auto v = r.string("dir")) b.dir = *v;
+      r.finish();
+      loaded.bench = std::move(b);
+      return loaded;
+    }
     if (!j.contains("jobs")) {
       loaded.single = read_single(j, path);
       return loaded;

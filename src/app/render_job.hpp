@@ -37,12 +37,22 @@ struct GalleryJob {
   std::filesystem::path dir = "out/gallery";
 };
 
-// Either a single job or a gallery (a top-level "jobs" key). Relative job
+// The figures of `epviz bench` (a top-level "bench" key): the study is run and
+// its charts are drawn into `dir`.
+struct BenchFiguresJob {
+  std::filesystem::path file;
+  bool quick = false;
+  std::vector<std::string> cases;  // empty: all presets
+  std::filesystem::path dir = "out/bench";
+};
+
+// A single job, a gallery (a top-level "jobs" key) or the bench figures. Relative job
 // paths inside a gallery are relative to the gallery file; relative output
 // directories are relative to the current directory.
 struct LoadedJob {
   std::optional<RenderJob> single;
   std::optional<GalleryJob> gallery;
+  std::optional<BenchFiguresJob> bench;
 };
 LoadedJob load_render_job(const std::filesystem::path& path);
 

@@ -151,6 +151,21 @@ TEST(Render, NumericalFailureStopsWithTimeAndMethodAndKeepsNoVideo) {
   for (const auto& e : fs::directory_iterator(dir / "video")) ADD_FAILURE() << "left behind: " << e.path();
 }
 
+TEST(Render, BenchFiguresJobRunsTheStudyAndDrawsItsCharts) {
+  test::TempDir dir;
+  const nlohmann::json job = {{"bench", {{"quick", true}, {"cases", {"kovalevskaya"}}}},
+                              {"dir", (dir / "figures").string()}};
+  const auto r = test::run_epviz("render " + write_job(dir, job, "bench.json").string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* f : {"bench.json", "work_precision_kovalevskaya.png", "stability.png"})
+    EXPECT_TRUE(fs::exists(dir / "figures" / f)) << f;
+
+  const nlohmann::json typo = {{"bench", {{"quik", true}}}};
+  const auto bad = test::run_epviz("render " + write_job(dir, typo, "typo.json").string(), dir);
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("key 'bench.quik': unknown key"), std::string::npos) << bad.err;
+}
+
 TEST(Render, GalleryTilesOneStillPerJob) {
   test::TempDir dir;
   write_job(dir, small_job(dir / "unused"), "a.json");
