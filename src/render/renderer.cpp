@@ -189,6 +189,12 @@ void Renderer::draw_lines(const DrawList& list, const glm::mat4& view_projection
     scratch_indices_.clear();
     std::vector<std::uint32_t> strip;
     for (const auto& range : list.polylines()) {
+        // A polyline whose every vertex is below the alpha threshold draws no
+        // fragment (the shader discards them): skip it rather than expand it.
+        bool visible = false;
+        for (std::size_t i = 0; i < range.count && !visible; ++i)
+            visible = vertices[range.first + i].colour.a >= min_alpha_;
+        if (!visible) continue;
         const auto base = static_cast<std::uint32_t>(scratch_vertices_.size() / 8);
         // Drop repeated points: a zero-length segment has no direction to mitre with.
         strip.clear();
