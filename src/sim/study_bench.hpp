@@ -62,6 +62,19 @@ std::vector<StudyRow> work_precision_study(const StudyOptions& o);
 // Goryachev-Chaplygin, direct formulation, a fixed budget of evaluations per time unit.
 std::vector<StudyRow> drift_study(const StudyOptions& o);
 
+// Invariant cost: on Kovalevskaya (direct formulation), for each method the
+// cheapest accuracy setting on a ladder (coarse to fine; tolerances for
+// adaptive methods, steps for fixed-step ones) whose largest relative drift of
+// C1 and of the fourth integral over t_end stays below `target`. Study
+// "invariant_cost"; reached = "no" when the finest setting within the ladder's
+// cost cap still misses. t_end <= 0: 1e4 (full) / 1e3 (quick).
+inline constexpr double kInvariantCostTarget = 1e-8;
+std::vector<StudyRow> invariant_cost_study(const StudyOptions& o, double t_end = 0.0,
+                                           double target = kInvariantCostTarget);
+// The initial state of the generic body used by the chaos study: one with a
+// short Lyapunov time, so that the study's runs separate within its time span.
+physics::InitialState chaos_initial_state();
+
 // --- Stability -------------------------------------------------------------
 // Whether one fixed-step run of `c`'s preset over t_end keeps the motion:
 // no failure, finite, global error <= 0.1 and relative energy drift <= 0.1 at t_end.

@@ -56,6 +56,7 @@ TEST(BenchCommand, QuickRunWritesCompleteRows) {
   const std::map<std::string, std::vector<std::string>> extra{
       {"work_precision", {"error"}},
       {"drift", {"drift_gamma_norm2", "drift_C0", "drift_C1", "drift_extra", "budget_evals_per_time"}},
+      {"invariant_cost", {"target", "drift_C1", "drift_extra", "reached", "cost"}},
       {"stability_pole", {"variant", "error", "chart_switches", "failure_method"}},
       {"stability_separatrix", {"flip_time", "reference_flip_time", "flip_time_error"}},
       {"stability_sleeping_top", {"reached", "gamma_error"}},
@@ -114,6 +115,14 @@ TEST(BenchCommand, QuickRunWritesCompleteRows) {
         EXPECT_TRUE(is_number(row[k])) << row.dump();
       EXPECT_GE(row["t_end"].get<double>(), 1e3);
     }
+    if (study == "invariant_cost") {
+      EXPECT_TRUE(is_number(row["cost"])) << row.dump();
+      EXPECT_EQ(row["case"], "kovalevskaya");
+      if (row["reached"] == "yes") {
+        EXPECT_LT(row["drift_C1"].get<double>(), row["target"].get<double>()) << row.dump();
+        EXPECT_LT(row["drift_extra"].get<double>(), row["target"].get<double>()) << row.dump();
+      }
+    }
     if (study == "stability_pole" && ok) {
       EXPECT_TRUE(is_number(row["error"])) << row.dump();
     }
@@ -144,7 +153,8 @@ TEST(BenchCommand, QuickRunWritesCompleteRows) {
     }
   }
   EXPECT_EQ(count["reference"], 6);
-  for (const char* s : {"work_precision", "drift", "stability_max_step", "stability_pole", "stability_separatrix",
+  EXPECT_GE(count["invariant_cost"], 9);
+  for (const char* s : {"work_precision", "drift", "invariant_cost", "stability_max_step", "stability_pole", "stability_separatrix",
                         "stability_sleeping_top", "stability_chaos"})
     EXPECT_GT(count[s], 0) << s;
 }
