@@ -14,12 +14,7 @@ namespace {
 using namespace epviz;
 
 std::vector<scene::Frame> frames(int width, int height, int count) {
-  const auto& p = physics::preset(physics::Case::kovalevskaya);
-  sim::RunSpec run;
-  run.case_id = physics::Case::kovalevskaya;
-  run.body = p.body;
-  run.initial = p.initial;
-  run.t_end = 40;
+  const auto run = sim::preset_run(physics::Case::kovalevskaya, sim::Method::dop853, sim::Formulation::direct, 40, 200);
   scene::SceneSettings s;
   s.width = width;
   s.height = height;

@@ -39,14 +39,18 @@ struct PreparedJob {
   io::FrameRange range;
 };
 
+// --format, checked; nullopt when not given.
+std::optional<OutputFormat> format_option(const RenderOptions& o) {
+  if (o.format.empty()) return std::nullopt;
+  auto f = output_format_from_name(o.format);
+  if (!f) throw UsageError("--format: unknown format '" + o.format + "' (allowed: png, mp4, webm, gif)");
+  return f;
+}
+
 PreparedJob prepare(RenderJob job, const RenderOptions& o) {
   if (!o.width.empty()) job.scene.width = int(parse_integer("--width", o.width, 16, 8192));
   if (!o.height.empty()) job.scene.height = int(parse_integer("--height", o.height, 16, 8192));
-  if (!o.format.empty()) {
-    auto f = output_format_from_name(o.format);
-    if (!f) throw UsageError("--format: unknown format '" + o.format + "' (allowed: png, mp4, webm, gif)");
-    job.output.format = *f;
-  }
+  if (auto f = format_option(o)) job.output.format = *f;
   if (!o.out.empty()) job.output.dir = o.out;
   if (job.output.format != OutputFormat::png && (job.scene.width % 2 || job.scene.height % 2))
     throw UsageError(job.file.string() + ": video needs an even width and height, got " +
@@ -196,11 +200,7 @@ int render_single(RenderJob job, const RenderOptions& o) {
 int render_gallery(GalleryJob g, const RenderOptions& o) {
   if (!o.frames.empty()) throw UsageError("--frames: a gallery renders whole jobs; give --frames to a single job");
   if (!o.out.empty()) g.dir = o.out;
-  if (!o.format.empty()) {
-    auto f = output_format_from_name(o.format);
-    if (!f) throw UsageError("--format: unknown format '" + o.format + "' (allowed: png, mp4, webm, gif)");
-    g.videos = *f == OutputFormat::png ? std::nullopt : f;
-  }
+  if (auto f = format_option(o)) g.videos = *f == OutputFormat::png ? std::nullopt : f;
   // Check every job before rendering any.
   std::vector<PreparedJob> stills, videos;
   RenderOptions job_opts = o;

@@ -49,19 +49,13 @@ FrameSource::FrameSource(const ScenePlan& plan, const SceneSettings& settings)
       monitor_(plan.run.body, plan.run.case_id, plan.run.initial),
       history_(sphere_pixels_per_unit(settings), plane_pixels_per_unit(settings)),
       shape_(body_shape(plan.run.body)) {
-  if (plan.run.case_id != physics::Case::custom && plan.run.case_id != physics::Case::generic)
-    max_drift_.extra = 0.0;
+  max_drift_ = monitor_.no_drift();
   take(trajectory_->initial());
 }
 
 void FrameSource::take(const sim::Sample& s) {
   latest_ = s;
-  const auto d = monitor_.relative_drift(monitor_.at(s));
-  auto keep = [](double& w, double v) { if (!(v <= w)) w = v; };
-  keep(max_drift_.gamma_norm2, d.gamma_norm2);
-  keep(max_drift_.area, d.area);
-  keep(max_drift_.energy, d.energy);
-  if (d.extra && max_drift_.extra) keep(*max_drift_.extra, *d.extra);
+  monitor_.worsen(max_drift_, s);
 
   HistoryPoint p;
   p.t = s.t;

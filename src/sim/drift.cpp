@@ -27,18 +27,24 @@ Drifts InvariantMonitor::relative_drift(const physics::Invariants& now) const {
   return d;
 }
 
+Drifts InvariantMonitor::no_drift() const {
+  Drifts d;
+  if (initial_.extra) d.extra = 0.0;
+  return d;
+}
+
+void InvariantMonitor::worsen(Drifts& worst, const Sample& s) const {
+  const Drifts d = relative_drift(at(s));
+  auto keep = [](double& w, double v) { if (!(v <= w)) w = v; };  // NaN wins
+  keep(worst.gamma_norm2, d.gamma_norm2);
+  keep(worst.area, d.area);
+  keep(worst.energy, d.energy);
+  if (d.extra && worst.extra) keep(*worst.extra, *d.extra);
+}
+
 Drifts InvariantMonitor::max_relative_drift(const std::vector<Sample>& samples) const {
-  Drifts worst;
-  if (initial_.extra) worst.extra = 0.0;
-  for (const auto& s : samples) {
-    const Drifts d = relative_drift(at(s));
-    // NaN must win: a non-finite invariant is the worst drift there is.
-    auto keep = [](double& w, double v) { if (!(v <= w)) w = v; };
-    keep(worst.gamma_norm2, d.gamma_norm2);
-    keep(worst.area, d.area);
-    keep(worst.energy, d.energy);
-    if (d.extra && worst.extra) keep(*worst.extra, *d.extra);
-  }
+  Drifts worst = no_drift();
+  for (const auto& s : samples) worsen(worst, s);
   return worst;
 }
 

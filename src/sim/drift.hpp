@@ -25,6 +25,12 @@ class InvariantMonitor {
   Drifts relative_drift(const physics::Invariants& now) const;
   Drifts max_relative_drift(const std::vector<Sample>& samples) const;
 
+  // A running maximum: start from no_drift() (zero, with an extra entry when
+  // the case has a fourth integral) and fold each sample in with worsen(). A
+  // non-finite drift wins: it is the worst there is.
+  Drifts no_drift() const;
+  void worsen(Drifts& worst, const Sample& s) const;
+
  private:
   physics::Body body_;
   physics::Case case_;

@@ -73,4 +73,17 @@ std::optional<std::string> incompatibility(Method m, Formulation f) {
   return std::nullopt;
 }
 
+RunSpec preset_run(physics::Case c, Method m, Formulation f, double t_end, int samples) {
+  const auto& p = physics::preset(c);
+  RunSpec s;
+  s.case_id = c;
+  s.body = p.body;
+  s.initial = p.initial;
+  s.method = m;
+  s.formulation = f;
+  s.t_end = t_end;
+  s.samples = samples;
+  return s;
+}
+
 }  // namespace epviz::sim

@@ -39,4 +39,8 @@ struct RunSpec {
   bool chart_switch = true;  // Riccati only: Moebius chart switch near the south pole
 };
 
+// The run of case `c`'s preset body and initial state with one method and
+// formulation; tol and step keep their defaults.
+RunSpec preset_run(physics::Case c, Method m, Formulation f, double t_end, int samples);
+
 }  // namespace epviz::sim

@@ -108,19 +108,6 @@ int method_order(Method m) {
   return 2;
 }
 
-RunSpec preset_run(physics::Case c, Method m, Formulation f, double t_end, int samples) {
-  const auto& p = physics::preset(c);
-  RunSpec s;
-  s.case_id = c;
-  s.body = p.body;
-  s.initial = p.initial;
-  s.method = m;
-  s.formulation = f;
-  s.t_end = t_end;
-  s.samples = samples;
-  return s;
-}
-
 TimedRun timed_run(const RunSpec& spec, int repeats) {
   TimedRun t;
   t.result = simulate(spec);

@@ -42,8 +42,6 @@ struct StudyOptions {
 // methods by name; an unknown one by the digit its name ends with, else 2.
 int method_order(Method m);
 
-// The run of `c`'s preset with one method; the caller sets tol/step/samples.
-RunSpec preset_run(physics::Case c, Method m, Formulation f, double t_end, int samples);
 
 // Median CPU time of `repeats` runs of spec (the first run's result is returned).
 struct TimedRun {

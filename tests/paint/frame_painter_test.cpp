@@ -24,12 +24,7 @@ paint::FramePainter& painter() {
 
 // A frame of the given case at 60 % of a short run, as `epviz render` builds it.
 scene::Frame case_frame(physics::Case c, scene::View view = scene::View::body, scene::Layers layers = {}) {
-  const auto& p = physics::preset(c);
-  sim::RunSpec run;
-  run.case_id = c;
-  run.body = p.body;
-  run.initial = p.initial;
-  run.t_end = 12.0;
+  const auto run = sim::preset_run(c, sim::Method::dop853, sim::Formulation::direct, 12.0, 200);
   scene::SceneSettings s;
   s.width = W;
   s.height = H;

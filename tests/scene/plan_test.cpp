@@ -8,13 +8,7 @@ namespace epviz {
 namespace {
 
 sim::RunSpec preset_run(physics::Case c, double t_end) {
-  const auto& p = physics::preset(c);
-  sim::RunSpec r;
-  r.case_id = c;
-  r.body = p.body;
-  r.initial = p.initial;
-  r.t_end = t_end;
-  return r;
+  return sim::preset_run(c, sim::Method::dop853, sim::Formulation::direct, t_end, 200);
 }
 
 TEST(Tolerance, TightensWithResolutionAndDuration) {

@@ -16,7 +16,7 @@ class EulerClosedFormAgreement : public ::testing::TestWithParam<EulerRun> {};
 
 TEST_P(EulerClosedFormAgreement, Dop853MatchesClosedFormOver60TimeUnits) {
   const auto& run = GetParam();
-  sim::RunSpec spec = test::preset_spec(physics::Case::euler, sim::Method::dop853,
+  sim::RunSpec spec = sim::preset_run(physics::Case::euler, sim::Method::dop853,
                                         sim::Formulation::direct, 60.0, 600);
   spec.body.inertia = run.inertia;
   spec.initial.omega = run.omega0;

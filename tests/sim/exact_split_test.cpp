@@ -30,7 +30,7 @@ Vec6 final_state(const sim::RunResult& r) {
 
 // Final state of a run with n fixed steps (or DOP853 at tol when method is adaptive).
 Vec6 run_final(physics::Case c, sim::Method m, double t_end, long n, double tol = 1e-10) {
-  auto spec = test::preset_spec(c, m, sim::Formulation::direct, t_end, 1);
+  auto spec = sim::preset_run(c, m, sim::Formulation::direct, t_end, 1);
   spec.step = t_end / double(n);
   spec.tol = tol;
   const auto r = sim::simulate(spec);
@@ -70,7 +70,7 @@ TEST(ExactSplit, ObservedOrderFour) { EXPECT_NEAR(observed_order(sim::Method::ex
 
 // 1e5 steps of h = 0.01 on the Kovalevskaya top, sampled 1000 times.
 void expect_long_run_invariants(sim::Method m) {
-  auto spec = test::preset_spec(physics::Case::kovalevskaya, m, sim::Formulation::direct, 1000.0, 1000);
+  auto spec = sim::preset_run(physics::Case::kovalevskaya, m, sim::Formulation::direct, 1000.0, 1000);
   spec.step = 0.01;
   const auto r = sim::simulate(spec);
   ASSERT_FALSE(r.failure) << r.failure->message();

@@ -11,7 +11,7 @@ namespace {
 class ExtraIntegral : public ::testing::TestWithParam<physics::Case> {};
 
 TEST_P(ExtraIntegral, ConservedByDop853) {
-  auto spec = test::preset_spec(GetParam(), sim::Method::dop853, sim::Formulation::direct, 50.0, 500);
+  auto spec = sim::preset_run(GetParam(), sim::Method::dop853, sim::Formulation::direct, 50.0, 500);
   spec.tol = 1e-12;
   const auto result = sim::simulate(spec);
   ASSERT_FALSE(result.failure) << result.failure->message();
@@ -26,7 +26,7 @@ TEST_P(ExtraIntegral, ConservedByDop853) {
 TEST_P(ExtraIntegral, NotConservedWhenTheConditionIsBroken) {
   // The same fourth integral on a perturbed (non-integrable) body drifts: the
   // conservation above is a property of the case, not of the bookkeeping.
-  auto spec = test::preset_spec(GetParam(), sim::Method::dop853, sim::Formulation::direct, 50.0, 500);
+  auto spec = sim::preset_run(GetParam(), sim::Method::dop853, sim::Formulation::direct, 50.0, 500);
   spec.tol = 1e-12;
   spec.body.inertia[0] *= 1.1;
   spec.body.com += Eigen::Vector3d(0.13, 0.21, 0.17);
@@ -50,7 +50,7 @@ INSTANTIATE_TEST_SUITE_P(Cases, ExtraIntegral,
                          });
 
 TEST(ExtraIntegral, GenericHasNone) {
-  auto spec = test::preset_spec(physics::Case::generic, sim::Method::dop853, sim::Formulation::direct, 1.0, 10);
+  auto spec = sim::preset_run(physics::Case::generic, sim::Method::dop853, sim::Formulation::direct, 1.0, 10);
   const auto result = sim::simulate(spec);
   const sim::InvariantMonitor monitor(spec.body, spec.case_id, spec.initial);
   EXPECT_FALSE(monitor.max_relative_drift(result.samples).extra.has_value());

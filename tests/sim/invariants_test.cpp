@@ -11,7 +11,7 @@ namespace {
 
 // 1e5 steps of h = 0.01 on the Kovalevskaya top, sampled 1000 times.
 sim::RunSpec long_run(sim::Method m, double t_end = 1000.0, int samples = 1000) {
-  auto spec = test::preset_spec(physics::Case::kovalevskaya, m, sim::Formulation::direct, t_end, samples);
+  auto spec = sim::preset_run(physics::Case::kovalevskaya, m, sim::Formulation::direct, t_end, samples);
   spec.step = 0.01;
   return spec;
 }

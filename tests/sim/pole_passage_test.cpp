@@ -14,7 +14,7 @@ constexpr double kPassTime = 2.0;
 // Distance from the south pole at the passage. At 5e-4 the north chart still
 // copes (|eta| ~ 4e3, with tiny steps); at 1e-7 (|eta| ~ 2e7) it cannot.
 sim::RunSpec pole_spec(sim::Formulation f, double distance = 5e-4) {
-  auto spec = test::preset_spec(physics::Case::generic, sim::Method::dop853, f, 6.0, 600);
+  auto spec = sim::preset_run(physics::Case::generic, sim::Method::dop853, f, 6.0, 600);
   spec.case_id = physics::Case::custom;
   spec.initial = sim::pole_passage_initial_state(spec.body, {0.3, 1.2, -0.4}, kPassTime, distance);
   spec.tol = 1e-12;
