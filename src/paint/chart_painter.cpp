@@ -278,11 +278,20 @@ ChartLayout chart_layout(const ChartSpec& spec, int width, int height, float fon
   return l;
 }
 
-render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec, const ChartOptions& options) {
+render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec, const ChartOptions& requested) {
   context.make_current();
+  // Keep the requested font size, but grow the picture downwards when a long
+  // legend (many series) would not fit beside the plot: nothing is cut off.
+  ChartOptions options = requested;
+  const float font_px = chart_font_px(requested);
+  options.font_px = font_px;
+  ChartLayout l = chart_layout(spec, options.width, options.height, font_px);
+  const int legend_bottom = l.legend.y + l.legend.height + int(font_px);
+  if (l.legend_outside && legend_bottom > options.height) {
+    options.height = legend_bottom;
+    l = chart_layout(spec, options.width, options.height, font_px);
+  }
   render::Renderer renderer(context, renderer_options(options));
-  const float font_px = chart_font_px(options);
-  const ChartLayout l = chart_layout(spec, options.width, options.height, font_px);
   const Viewport& a = l.plot_area;
   const float line = font_px * 1.35f;
   const float tick = std::max(4.0f, font_px * 0.45f);
