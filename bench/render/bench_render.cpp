@@ -1,10 +1,15 @@
-// Render-only cost of a 1280x720 frame (GL to pixels, no encoding), for the
-// README's frames/s figures: the Kovalevskaya job's frames, prebuilt so that
-// only painting is timed.
+// The costs behind the README's 1280x720 frames/s figures, on the Kovalevskaya
+// job's frames (prebuilt, so that only the measured stage is timed): painting
+// (GL to pixels), PNG encoding per zlib level and row filter, and MP4 encoding
+// through the ffmpeg pipe.
 //
 //   LP_NUM_THREADS=2 build/bench/epviz_render_bench
 #include <benchmark/benchmark.h>
 
+#include <filesystem>
+
+#include "io/png_writer.hpp"
+#include "io/video_writer.hpp"
 #include "paint/frame_painter.hpp"
 #include "physics/cases.hpp"
 #include "scene/frame_source.hpp"
@@ -42,6 +47,38 @@ void paint_frames(benchmark::State& state) {
   }
   state.counters["frames/s"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
 }
+
+// One rendered frame, for the encoders.
+const render::RgbaImage& sample_image() {
+  static const render::RgbaImage image = [] {
+    const auto fs = frames(1280, 720, 2);
+    paint::FramePainter painter(context(), 1280, 720);
+    return painter.paint(fs[1]);
+  }();
+  return image;
+}
+
+void png_encode(benchmark::State& state) {
+  const auto& img = sample_image();
+  const io::PngOptions opts{int(state.range(0)), int(state.range(1))};
+  std::size_t bytes = 0;
+  for (auto _ : state) bytes = io::encode_png_rgba(img.width, img.height, img.pixels, opts).size();
+  state.counters["kB"] = double(bytes) / 1024.0;
+}
+
+void mp4_encode(benchmark::State& state) {
+  const auto& img = sample_image();
+  const auto path = std::filesystem::temp_directory_path() / "epviz_bench.mp4";
+  io::VideoWriter video(path, io::VideoFormat::mp4, img.width, img.height, 30.0);
+  for (auto _ : state) video.write_frame(img.pixels.data());
+  video.finish();
+  std::filesystem::remove(path);
+  state.counters["frames/s"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+BENCHMARK(png_encode)->Name("png_encode_1280x720/level_filter")->ArgsProduct({{1, 4, 6}, {0, -1}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(mp4_encode)->Name("mp4_encode_1280x720")->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
 BENCHMARK(paint_frames)->Name("render_only_1280x720/msaa")->Arg(0)->Arg(4)->UseRealTime()->Unit(benchmark::kMillisecond);
 

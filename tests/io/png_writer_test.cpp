@@ -174,43 +174,4 @@ TEST_F(TempDir, AsyncWriterReportsTheFirstError) {
     writer.close();  // the error was reported once; closing is clean
 }
 
-// Not a test: the encode timings behind PngOptions' defaults. Run with
-//   ./test_io --gtest_also_run_disabled_tests --gtest_filter='*Timing*'
-TEST(DISABLED_Timing, PngEncode1280x720) {
-    // A rendered-looking frame: flat background, smooth shading, thin lines.
-    const int width = 1280, height = 720;
-    std::vector<std::uint8_t> rgba(static_cast<std::size_t>(width) * height * 4);
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            auto* p = &rgba[(static_cast<std::size_t>(y) * width + x) * 4];
-            const double dx = x - 400.0, dy = y - 360.0, r = std::sqrt(dx * dx + dy * dy);
-            const bool disc = r < 300.0;
-            const double shade = disc ? 0.4 + 0.6 * std::max(0.0, (-dx - dy) / 600.0 + 0.5) : 0.0;
-            p[0] = static_cast<std::uint8_t>(disc ? 240 * shade : 15);
-            p[1] = static_cast<std::uint8_t>(disc ? 140 * shade : 18);
-            p[2] = static_cast<std::uint8_t>(disc ? 50 * shade : 23);
-            if (std::abs(std::fmod(r, 60.0)) < 1.5 || (x > 900 && std::abs(y - 360 - 0.3 * (x - 900)) < 1.0)) {
-                p[0] = 200; p[1] = 210; p[2] = 230;
-            }
-            p[3] = 255;
-        }
-    // EPVIZ_PNG_TIMING_IMAGE=frame.png (1280x720) times a real rendered frame instead.
-    if (const char* real = std::getenv("EPVIZ_PNG_TIMING_IMAGE")) {
-        int w = 0, h = 0;
-        auto pixels = read_png(real, w, h);
-        ASSERT_EQ(w, width);
-        ASSERT_EQ(h, height);
-        rgba = std::move(pixels);
-    }
-    for (int filter : {-1, 0, 1, 2, 4})
-        for (int level : {1, 2, 4, 6, 8}) {
-            const auto start = std::chrono::steady_clock::now();
-            std::size_t bytes = 0;
-            const int runs = 5;
-            for (int i = 0; i < runs; ++i) bytes = encode_png_rgba(width, height, rgba, {level, filter}).size();
-            const double ms = 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / runs;
-            std::printf("filter %2d level %d: %7.1f ms  %8zu bytes\n", filter, level, ms, bytes);
-        }
-}
-
 }  // namespace

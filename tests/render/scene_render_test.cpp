@@ -261,32 +261,4 @@ TEST(Readback, TwoDPixelCoordinatesCountRowsFromTheTop) {
     EXPECT_EQ(image.at(10, 45).g, 0);
 }
 
-// Not a test: the 1280x720 timing asked for in the renderer's brief. Run with
-//   LP_NUM_THREADS=2 ./test_render --gtest_also_run_disabled_tests --gtest_filter='*Timing*'
-TEST(DISABLED_Timing, SyntheticScene1280x720) {
-    for (int samples : {4, 0, 8}) {
-        render::RendererOptions o = options(samples);
-        o.width = 1280;
-        o.height = 720;
-        render::Renderer renderer(et::shared_gl_context(), o);
-        SyntheticScene scene;
-        render::RgbaImage image;
-        scene.draw(renderer);
-        renderer.finish_frame(image);  // warm-up: shader compilation, first allocations
-        constexpr int frames = 60;
-        const auto start = std::chrono::steady_clock::now();
-        for (int i = 0; i < frames; ++i) {
-            scene.draw(renderer);
-            renderer.finish_frame(image);
-        }
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::printf("render only 1280x720, MSAA %dx: %.2f ms/frame, %.1f frames/s\n", renderer.msaa_samples(),
-                    1e3 * seconds / frames, frames / seconds);
-        const auto path = std::filesystem::temp_directory_path() /
-                          ("epviz_synthetic_1280x720_msaa" + std::to_string(renderer.msaa_samples()) + ".png");
-        io::write_png_rgba(path, image.width, image.height, image.pixels);
-        std::printf("  last frame: %s\n", path.c_str());
-    }
-}
-
 }  // namespace
