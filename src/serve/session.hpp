@@ -44,6 +44,11 @@ class Session {
   // Files and one-line messages for the user produced since the last call.
   virtual std::vector<Download> take_downloads() { return {}; }
   virtual std::vector<std::string> take_notices() { return {}; }
+  // Where the main controls of the last rendered frame are, as a JSON object
+  // of named rectangles in frame pixels ({"play": [x, y, w, h], ...}), or ""
+  // for none: the server puts it in the frame header as "controls" so that
+  // the page and browser tests can find a control without guessing a layout.
+  virtual std::string controls_json() const { return {}; }
 };
 
 // Called on the render thread for each new connection.
