@@ -20,12 +20,40 @@ for p in "${packages[@]}"; do
   fi
 done
 
+if [ "$(id -u)" -eq 0 ]; then sudo=(); else sudo=(sudo); fi
+apt_updated=0
+apt_install() {
+  if [ "$apt_updated" -eq 0 ]; then
+    "${sudo[@]}" apt-get update -qq
+    apt_updated=1
+  fi
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "$@"
+}
+
 if [ ${#missing[@]} -eq 0 ]; then
   echo "setup: all ${#packages[@]} packages present"
-  exit 0
+else
+  echo "setup: installing ${missing[*]}"
+  apt_install "${missing[@]}"
 fi
 
-if [ "$(id -u)" -eq 0 ]; then sudo=(); else sudo=(sudo); fi
-echo "setup: installing ${missing[*]}"
-"${sudo[@]}" apt-get update -qq
-DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+# Browser tests of `epviz serve` (tests/e2e) run Node.js with playwright-core
+# from the npm registry against Debian's Chromium. A machine that already has
+# node and npm (from any source) keeps them. When npm fails, the e2e test
+# skips and says why; everything else still builds and tests.
+repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+  echo "setup: installing nodejs npm"
+  apt_install nodejs npm || echo "setup: warning: could not install nodejs/npm; the browser e2e test will skip" >&2
+fi
+e2e="$repo/tests/e2e"
+if [ -d "$e2e/node_modules/playwright-core" ]; then
+  echo "setup: tests/e2e node_modules present"
+elif ! command -v npm >/dev/null 2>&1; then
+  echo "setup: warning: no npm; the browser e2e test will skip" >&2
+else
+  echo "setup: npm ci in tests/e2e"
+  if ! (cd "$e2e" && npm ci --no-audit --no-fund --loglevel=error >/dev/null); then
+    echo "setup: warning: npm ci failed in tests/e2e; the browser e2e test will skip" >&2
+  fi
+fi

@@ -1,0 +1,111 @@
+// Measures `epviz serve` as a browser sees it, at 1280x720: frames per second
+// drawn while playing, and input-to-frame latency (from the page sending an
+// input event to drawing the first frame whose header says it was applied).
+//
+//   node tests/e2e/measure.mjs path/to/epviz [out.json|-] [job arguments...]
+//
+// Prints one JSON object {width, height, fps, latency_median_ms,
+// latency_p90_ms, samples, ...} and writes it to out.json when given.
+// Exit codes as serve_e2e.mjs (77: skipped).
+import fs from 'node:fs';
+import { run, log, fail, sleep, waitFor, frameRectToCss, epvizState } from './harness.mjs';
+
+const [binary, outArg, ...serverArgs] = process.argv.slice(2);
+const outPath = outArg && outArg !== '-' ? outArg : null;
+
+const MEASURE_MS = 8000;
+const MOVES = 40;
+const MOVE_SPACING_MS = 150;
+const PAUSED_MOVES = 20;
+
+function percentile(sorted, q) {
+  if (!sorted.length) return null;
+  const i = Math.min(sorted.length - 1, Math.max(0, Math.ceil(q * sorted.length) - 1));
+  return sorted[i];
+}
+
+function round(v, digits = 1) {
+  return v === null ? null : Math.round(v * 10 ** digits) / 10 ** digits;
+}
+
+// Hovers back and forth inside the 3D view, one pointer move each spacing;
+// returns the latencies the page recorded for them.
+async function moveSamples(page, point, count) {
+  await page.evaluate(() => { window.epviz.latencies.length = 0; });
+  for (let i = 0; i < count; ++i) {
+    const dx = (i % 2 === 0 ? 1 : -1) * 20;
+    await page.mouse.move(point.x + dx, point.y + (i % 4 < 2 ? 0 : 10));
+    await sleep(MOVE_SPACING_MS);
+  }
+  await sleep(500);   // the last moves' frames
+  return page.evaluate(() => window.epviz.latencies.slice());
+}
+
+await run({
+  name: 'measure.mjs',
+  binary,
+  serverArgs,
+  timeoutMs: 90000,
+  async body({ page }) {
+    const first = await waitFor('the first frame', 20000, async () => {
+      const s = await epvizState(page);
+      return s && s.framesShown > 0 ? s : null;
+    });
+    const controls = first.header.controls || {};
+    if (!Array.isArray(controls.play) || !Array.isArray(controls.view3d)) {
+      fail(`the frame header names no play/view3d controls: ${JSON.stringify(controls)}`);
+    }
+    const play = await frameRectToCss(page, controls.play);
+    const view = await frameRectToCss(page, controls.view3d);
+    // Hover point: the middle of the 3D view, nudged down when another control covers it.
+    const others = Object.entries(controls).filter(([k, r]) => k !== 'view3d' && Array.isArray(r));
+    let point = { x: view.x + view.w / 2, y: view.y + view.h / 2 };
+    for (let f = 0.5; f < 0.95; f += 0.05) {
+      const p = { x: view.x + view.w / 2, y: view.y + view.h * f };
+      const frameP = [p.x * first.header.width / 1280, p.y * first.header.height / 720];
+      if (!others.some(([, r]) => frameP[0] >= r[0] - 30 && frameP[0] < r[0] + r[2] + 30 && frameP[1] >= r[1] - 20 && frameP[1] < r[1] + r[3] + 20)) { point = p; break; }
+    }
+
+    await page.mouse.click(play.x + play.w / 2, play.y + play.h / 2);
+    log('measure: playing; warming up 1 s');
+    await sleep(1000);
+
+    log(`measure: ${MEASURE_MS / 1000} s of frames, ${MOVES} pointer moves ${MOVE_SPACING_MS} ms apart`);
+    const t0 = await page.evaluate(() => performance.now());
+    const playing = await moveSamples(page, point, MOVES);
+    const elapsed = (await page.evaluate(() => performance.now())) - t0;
+    if (elapsed < MEASURE_MS) await sleep(MEASURE_MS - elapsed);
+    const t1 = await page.evaluate(() => performance.now());
+    const times = await page.evaluate(([a, b]) => window.epviz.frameTimes.filter((t) => t >= a && t <= b), [t0, t1]);
+    const state = await epvizState(page);
+    const fps = times.length / ((t1 - t0) / 1000);
+
+    // The same while paused: frames are rendered only for the input.
+    const playNow = await frameRectToCss(page, state.header.controls.play);
+    await page.mouse.click(playNow.x + playNow.w / 2, playNow.y + playNow.h / 2);
+    await sleep(1000);
+    log(`measure: paused; ${PAUSED_MOVES} pointer moves`);
+    const paused = await moveSamples(page, point, PAUSED_MOVES);
+
+    const sorted = playing.slice().sort((a, b) => a - b);
+    const sortedPaused = paused.slice().sort((a, b) => a - b);
+    const h = state.header;
+    const result = {
+      width: h.width,
+      height: h.height,
+      fps: round(fps),
+      latency_median_ms: round(percentile(sorted, 0.5)),
+      latency_p90_ms: round(percentile(sorted, 0.9)),
+      samples: sorted.length,
+      paused_latency_median_ms: round(percentile(sortedPaused, 0.5)),
+      paused_latency_p90_ms: round(percentile(sortedPaused, 0.9)),
+      paused_samples: sortedPaused.length,
+      mime: h.mime,
+      measure_s: round((t1 - t0) / 1000, 2),
+    };
+    if (sorted.length < MOVES / 2) fail(`only ${sorted.length} of ${MOVES} pointer moves got a latency: ${JSON.stringify(result)}`);
+    const text = JSON.stringify(result);
+    log(text);
+    if (outPath) fs.writeFileSync(outPath, JSON.stringify(result, null, 2) + '\n');
+  },
+});
