@@ -53,7 +53,9 @@ int overlay_lines_shown(const scene::OverlayText& o, int height) {
   return std::min(int(o.lines.size()), height < 480 ? 2 : int(o.lines.size()));
 }
 
-Layout layout_for(const scene::Layers& layers, const scene::OverlayText& overlay, int width, int height) {
+namespace {
+
+Layout layout_in_width(const scene::Layers& layers, const scene::OverlayText& overlay, int width, int height) {
   Layout l;
   const bool three_d = layers.body || layers.sphere;
   if (three_d && layers.riccati) {
@@ -84,6 +86,18 @@ Layout layout_for(const scene::Layers& layers, const scene::OverlayText& overlay
     const int y = c.y + margin_top + (c.height - margin_top - margin_bottom - side) / 2;
     l.plot_area = render::Viewport{x, y, side, side};
   }
+  return l;
+}
+
+}  // namespace
+
+Layout layout_for(const scene::Layers& layers, const scene::OverlayText& overlay, int full_width, int height,
+                  int reserved_left) {
+  reserved_left = std::clamp(reserved_left, 0, full_width - 16);
+  Layout l = layout_in_width(layers, overlay, full_width - reserved_left, height);
+  if (reserved_left == 0) return l;
+  for (auto* v : {&l.view_3d, &l.panel_column, &l.plot_area})
+    if (*v) (*v)->x += reserved_left;
   return l;
 }
 
@@ -260,13 +274,15 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
   renderer_->draw_2d(flat);
 }
 
-void FramePainter::draw_overlay(const scene::Frame& f, const Layout& layout, float px) {
+render::ImGuiOverlay& FramePainter::gui() { return *renderer_->overlay(); }
+
+void FramePainter::draw_info_window(const scene::Frame& f, const Layout& layout, float px) {
   const render::Viewport where = layout.overlay_in_column ? *layout.panel_column
                                  : layout.view_3d         ? *layout.view_3d
                                  : layout.panel_column    ? *layout.panel_column
                                                           : render::Viewport{0, 0, width(), height()};
   const bool light = is_light(f.colours.background);
-  renderer_->draw_overlay([&] {
+  {
     // The window's size is computed from this frame's text: ImGui's auto-fit
     // would use the previous frame's, which belongs to another job in a gallery.
     const int shown = overlay_lines_shown(f.overlay, height());
@@ -309,14 +325,14 @@ void FramePainter::draw_overlay(const scene::Frame& f, const Layout& layout, flo
       }
     }
     ImGui::End();
-  });
+  }
 }
 
-const render::RgbaImage& FramePainter::paint(const scene::Frame& f) {
+const render::RgbaImage& FramePainter::paint(const scene::Frame& f, const std::function<void()>& extra_ui) {
   context_.make_current();
   const int w = renderer_->width(), h = renderer_->height();
   const float px = std::max(1.0f, float(h) / 360.0f);  // line widths and marks scale with the picture
-  const Layout layout = layout_for(f.layers, f.overlay, w, h);
+  const Layout layout = layout_for(f.layers, f.overlay, w, h, reserved_left_);
 
   renderer_->begin_frame(to_glm(f.colours.background));
   if (layout.view_3d) {
@@ -333,7 +349,11 @@ const render::RgbaImage& FramePainter::paint(const scene::Frame& f) {
     }
   }
   if (layout.panel_column && f.layers.riccati) draw_plane(f, *layout.panel_column, *layout.plot_area, px);
-  if (f.layers.overlay) draw_overlay(f, layout, px);
+  if (f.layers.overlay || extra_ui)
+    renderer_->draw_overlay([&] {
+      if (f.layers.overlay) draw_info_window(f, layout, px);
+      if (extra_ui) extra_ui();
+    });
   renderer_->finish_frame(image_);
   return image_;
 }

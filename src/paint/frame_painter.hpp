@@ -2,6 +2,7 @@
 // Draws a scene::Frame with the render toolkit: the body, the sphere with its
 // trail, the Riccati (a, b) plane and the ImGui overlay, each a layer the frame
 // switches on or off. The painter reads plain values; it knows no physics.
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -33,7 +34,10 @@ struct Layout {
 };
 // `overlay` is the frame's overlay text, which takes the top of the panel's
 // column when there is one (so that it never covers the sphere).
-Layout layout_for(const scene::Layers& layers, const scene::OverlayText& overlay, int width, int height);
+// `reserved_left` pixels at the left edge are kept free (the interactive
+// panels sit there); the layout fills the rest.
+Layout layout_for(const scene::Layers& layers, const scene::OverlayText& overlay, int width, int height,
+                  int reserved_left = 0);
 // How many of the overlay's lines fit a picture of this height.
 int overlay_lines_shown(const scene::OverlayText& overlay, int height);
 // The camera the painter uses for the 3D view of `frame`.
@@ -46,17 +50,22 @@ class FramePainter {
   ~FramePainter();
 
   void resize(int width, int height);
+  // Keeps a strip at the left edge free of the scene (see layout_for).
+  void set_reserved_left(int pixels) { reserved_left_ = pixels; }
   int width() const;
   int height() const;
 
-  // The frame's picture; valid until the next call.
-  const render::RgbaImage& paint(const scene::Frame& frame);
+  // The frame's picture; valid until the next call. `extra_ui` (interactive
+  // panels) runs inside the same ImGui frame as the overlay layer.
+  const render::RgbaImage& paint(const scene::Frame& frame, const std::function<void()>& extra_ui = {});
+  // The ImGui overlay, for feeding it input and its clock.
+  render::ImGuiOverlay& gui();
 
  private:
   void draw_body(render::DrawList& list, const scene::Frame& f, float px);
   void draw_sphere(render::DrawList& list, const scene::Frame& f, float px) const;
   void draw_plane(const scene::Frame& f, const render::Viewport& column, const render::Viewport& area, float px);
-  void draw_overlay(const scene::Frame& f, const Layout& layout, float px);
+  void draw_info_window(const scene::Frame& f, const Layout& layout, float px);
 
   render::GlContext& context_;
   PainterOptions options_;
@@ -66,6 +75,7 @@ class FramePainter {
   Eigen::Vector3f box_half_extents_ = Eigen::Vector3f::Zero();
   std::vector<std::vector<glm::vec3>> grid_;
   render::RgbaImage image_;
+  int reserved_left_ = 0;
 };
 
 }  // namespace epviz::paint

@@ -55,6 +55,9 @@ public:
     ImFont* font() const { return font_; }
     const std::string& font_source() const { return font_source_; }
     ImGuiContext* context() const { return context_; }
+    // The time step ImGui is told for the next frames (interactive use passes
+    // the wall-clock time between frames; renders keep the fixed one).
+    void set_delta_time(float seconds) { options_.delta_time_s = seconds; }
 
 private:
     void begin(int width, int height);

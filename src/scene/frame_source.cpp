@@ -74,9 +74,23 @@ Frame FrameSource::frame(int index) {
     take(trajectory_->next());
     ++sample_index_;
   }
-  const double window = settings_.trail_length > 0.0 ? settings_.trail_length : plan_.run.t_end;
-  history_.forget_before(latest_.t - window);
+  history_.forget_before(latest_.t - trail_window());
   return compose(index);
+}
+
+double FrameSource::trail_window() const {
+  return settings_.trail_length > 0.0 ? settings_.trail_length : plan_.run.t_end;
+}
+
+Frame FrameSource::frame_at_time(double t) {
+  const double spacing = trajectory_->spacing();
+  // Half a spacing of slack: the sample nearest to t is taken, never one after it.
+  while (latest_.t + 0.5 * spacing <= t) {
+    take(trajectory_->next());
+    ++sample_index_;
+  }
+  history_.forget_before(latest_.t - trail_window());
+  return compose(++frames_composed_);
 }
 
 Frame FrameSource::compose(int index) const {
@@ -90,7 +104,7 @@ Frame FrameSource::compose(int index) const {
   f.body = shape_;
   f.plane_extent = settings_.plane_extent;
 
-  const double window = settings_.trail_length > 0.0 ? settings_.trail_length : plan_.run.t_end;
+  const double window = trail_window();
   auto age = [&](double t) { return float(std::clamp((latest_.t - t) / window, 0.0, 1.0)); };
 
   if (settings_.view == View::space && latest_.attitude) {
@@ -119,7 +133,10 @@ Frame FrameSource::compose(int index) const {
   f.overlay.title = settings_.title.empty() ? case_title(run.case_id) : settings_.title;
   // Most important first: a small picture shows only the first lines.
   char line[160];
-  std::snprintf(line, sizeof line, "t = %.3f / %g", latest_.t, run.t_end);
+  if (plan_.open_ended)
+    std::snprintf(line, sizeof line, "t = %.3f", latest_.t);
+  else
+    std::snprintf(line, sizeof line, "t = %.3f / %g", latest_.t, run.t_end);
   f.overlay.lines.emplace_back(line);
   f.overlay.lines.push_back(std::string(sim::name(run.method)) + ", " + plan_.accuracy_note);
   f.overlay.lines.push_back(std::string(sim::name(run.formulation)) + " formulation");

@@ -19,14 +19,20 @@ class FrameSource {
   // Frame `index`; indices must not decrease (skipped frames are still
   // integrated through). Throws numerics::IntegrationError on a numerical failure.
   Frame frame(int index);
+  // Open-ended use (the interactive scene): integrates through every sample up
+  // to simulation time `t` (never backwards) and composes the next frame.
+  Frame frame_at_time(double t);
 
   const sim::Trajectory& trajectory() const { return *trajectory_; }
   const sim::Drifts& max_drift() const { return max_drift_; }
   const ScenePlan& plan() const { return plan_; }
+  double time() const { return latest_.t; }
+  const sim::Sample& latest() const { return latest_; }
 
  private:
   void take(const sim::Sample& s);
   Frame compose(int index) const;
+  double trail_window() const;  // simulation time the trail covers
 
   ScenePlan plan_;
   SceneSettings settings_;
@@ -36,6 +42,7 @@ class FrameSource {
   TrailHistory history_;
   sim::Sample latest_;
   long sample_index_ = 0;
+  int frames_composed_ = 0;
   BodyShape shape_;
 };
 

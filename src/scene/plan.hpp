@@ -19,6 +19,7 @@ struct ScenePlan {
   int frames = 1;
   int samples_per_frame = 8; // trail samples between two frames
   std::string accuracy_note; // how the tolerance or step was chosen, for the report and overlay
+  bool open_ended = false;   // interactive: no last frame; run.t_end only sets the sample spacing's horizon
   double frame_time(int frame) const;  // simulation time shown by a frame
 };
 

@@ -1,0 +1,318 @@
+#include "live/control_panel.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "live/case_constraints.hpp"
+#include "physics/cases.hpp"
+#include "scene/frame_source.hpp"
+
+namespace epviz::live {
+namespace {
+
+const ImVec4 kErrorColour(1.0f, 0.45f, 0.4f, 1.0f);
+const ImVec4 kGoodColour(0.5f, 0.85f, 0.55f, 1.0f);
+const ImVec4 kWarnColour(0.95f, 0.8f, 0.4f, 1.0f);
+
+bool drag_double(const char* label, double* v, double speed, double lo, double hi, const char* format = "%.4g") {
+  return ImGui::DragScalar(label, ImGuiDataType_Double, v, float(speed), &lo, &hi, format);
+}
+
+bool log_slider(const char* label, double* v, double lo, double hi, const char* format) {
+  return ImGui::SliderScalar(label, ImGuiDataType_Double, v, &lo, &hi, format, ImGuiSliderFlags_Logarithmic);
+}
+
+// A new run of `setup` in which the edited body keeps its case when it can:
+// with "stay in case" the conditions are enforced; without it, a body that
+// breaks them runs as a custom body (its fourth integral is not conserved).
+LiveSetup edited_body(LiveSetup s, physics::Case chosen, Edited what) {
+  if (s.stay_in_case) {
+    enforce_case(chosen, what, s.run.body, s.run.initial);
+    s.run.case_id = chosen;
+  } else {
+    s.run.case_id = physics::broken_condition(chosen, s.run.body, s.run.initial) ? physics::Case::custom : chosen;
+  }
+  return s;
+}
+
+struct PlotData {
+  const std::deque<DriftPoint>* history;
+  int which;  // 0 |gamma|^2, 1 C0, 2 C1, 3 extra
+};
+
+float drift_log10(void* data, int index) {
+  const auto* d = static_cast<const PlotData*>(data);
+  const sim::Drifts& x = (*d->history)[std::size_t(index)].drift;
+  const double v = d->which == 0 ? x.gamma_norm2 : d->which == 1 ? x.area : d->which == 2 ? x.energy : x.extra.value_or(0.0);
+  // Round-off level at the bottom; a non-finite drift pins the top.
+  if (!std::isfinite(v)) return 0.0f;
+  return float(std::log10(std::max(std::abs(v), 1e-17)));
+}
+
+}  // namespace
+
+void ControlPanel::set_message(std::string text, bool error) {
+  message_ = std::move(text);
+  message_is_error_ = error;
+}
+
+void ControlPanel::note_item(const char* name) {
+  const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+  controls_[name] = {a.x, a.y, b.x - a.x, b.y - a.y};
+}
+
+bool ControlPanel::contains(float x, float y) const {
+  const auto it = controls_.find("panel");
+  if (it == controls_.end()) return false;
+  const Rect& r = it->second;
+  return x >= r[0] && y >= r[1] && x < r[0] + r[2] && y < r[1] + r[3];
+}
+
+PanelActions ControlPanel::draw(const LiveScene& scene, const render::Viewport& area) {
+  PanelActions out;
+  controls_.clear();
+  const float font = ImGui::GetFontSize();
+  const float width = std::min(24.0f * font, float(area.width) - 16.0f);
+  ImGui::SetNextWindowPos(ImVec2(float(area.x) + 8.0f, float(area.y) + 8.0f), ImGuiCond_Always);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, std::max(80.0f, float(area.height) - 16.0f)));
+  ImGui::SetNextWindowBgAlpha(0.82f);
+  const bool open = ImGui::Begin("epviz", nullptr,
+                                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                                     ImGuiWindowFlags_AlwaysAutoResize);
+  if (open) {
+    ImGui::PushItemWidth(-9.0f * font);  // room for the labels on the right
+    draw_playback(scene, out);
+    auto header = [&](const char* title, const char* name, bool open_at_start) {
+      const bool shown = ImGui::CollapsingHeader(title, open_at_start ? ImGuiTreeNodeFlags_DefaultOpen : 0);
+      note_item(name);
+      return shown;
+    };
+    if (header("Case and body", "header:case", true)) draw_case_and_body(scene, out);
+    if (header("Integrator", "header:integrator", false)) draw_integrator(scene, out);
+    if (header("View", "header:view", false)) draw_view(scene, out);
+    if (header("Invariant drift", "header:drift", true)) draw_drift(scene);
+    if (header("Save", "header:save", false)) draw_save();
+    ImGui::PopItemWidth();
+  }
+  const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  controls_["panel"] = {pos.x, pos.y, size.x, size.y};
+  collapsed_ = !open;
+  occupied_width_ = int(std::ceil(pos.x + size.x + 8.0f));
+  ImGui::End();
+  return out;
+}
+
+void ControlPanel::draw_playback(const LiveScene& scene, PanelActions& out) {
+  const LiveSetup& s = scene.setup();
+  ImGui::TextColored(ImVec4(1.0f, 0.82f, 0.45f, 1.0f), "%s",
+                     s.scene.title.empty() ? scene::case_title(s.run.case_id).c_str() : s.scene.title.c_str());
+  ImGui::Text("t = %.3f   %s, %s", scene.time(), std::string(sim::name(s.run.method)).c_str(),
+              scene.accuracy_note().c_str());
+  const float button_w = 5.5f * ImGui::GetFontSize();
+  if (ImGui::Button(scene.playing() ? "Pause" : "Play", ImVec2(button_w, 0))) out.toggle_play = true;
+  note_item("play");
+  ImGui::SameLine();
+  if (ImGui::Button("Step", ImVec2(button_w, 0))) out.step = true;
+  note_item("step");
+  ImGui::SameLine();
+  if (ImGui::Button("Restart", ImVec2(button_w, 0))) out.restart = true;
+  note_item("restart");
+  double speed = s.speed;
+  if (log_slider("speed (t/s)", &speed, 0.05, 100.0, "%.3g")) {
+    LiveSetup v = s;
+    v.speed = speed;
+    out.view = v;
+  }
+  note_item("speed");
+  if (ImGui::Button("Save PNG", ImVec2(button_w, 0))) out.save_frame = true;
+  note_item("save_frame");
+  ImGui::SameLine();
+  if (ImGui::Button("Save job", ImVec2(button_w, 0))) out.save_job = true;
+  note_item("save_job");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("a render job file that `epviz render` accepts");
+  ImGui::TextDisabled("Space: play/pause   R: restart   S: step");
+  if (scene.failure()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
+    ImGui::TextWrapped("Stopped: %s", scene.failure()->c_str());
+    ImGui::PopStyleColor();
+  }
+  if (!message_.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, message_is_error_ ? kErrorColour : kGoodColour);
+    ImGui::TextWrapped("%s", message_.c_str());
+    ImGui::PopStyleColor();
+  }
+}
+
+void ControlPanel::draw_case_and_body(const LiveScene& scene, PanelActions& out) {
+  const LiveSetup& s = scene.setup();
+  const physics::Case current = s.run.case_id;
+  const std::string preview = current == physics::Case::custom ? "custom body" : physics::case_name(current);
+  if (ImGui::BeginCombo("case", preview.c_str())) {
+    for (const auto& p : physics::case_presets()) {
+      if (ImGui::Selectable(p.name.c_str(), p.id == current)) out.load_case = p.id;
+      note_item(("case:" + p.name).c_str());
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", p.summary.c_str());
+    }
+    ImGui::EndCombo();
+  }
+  note_item("case");
+  bool stay = s.stay_in_case;
+  if (current == physics::Case::custom) ImGui::BeginDisabled();
+  if (ImGui::Checkbox("stay in case", &stay)) {
+    LiveSetup v = s;
+    v.stay_in_case = stay;
+    out.view = v;
+  }
+  note_item("stay");
+  if (current == physics::Case::custom) ImGui::EndDisabled();
+  if (current != physics::Case::custom && current != physics::Case::generic)
+    ImGui::TextWrapped("conditions: %s", case_conditions_summary(current));
+  if (auto broken = physics::broken_condition(current, s.run.body, s.run.initial)) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kWarnColour);
+    ImGui::TextWrapped("%s", broken->c_str());
+    ImGui::PopStyleColor();
+  }
+
+  LiveSetup e = s;
+  auto edited = [&](Edited what) { out.rerun = edited_body(e, current, what); };
+  double* I = e.run.body.inertia.data();
+  if (drag_double("I1", &I[0], 0.01, 0.01, 100.0)) edited(Edited::inertia_1);
+  note_item("I1");
+  if (drag_double("I2", &I[1], 0.01, 0.01, 100.0)) edited(Edited::inertia_2);
+  note_item("I2");
+  if (drag_double("I3", &I[2], 0.01, 0.01, 100.0)) edited(Edited::inertia_3);
+  note_item("I3");
+  if (ImGui::DragScalarN("centre of mass", ImGuiDataType_Double, e.run.body.com.data(), 3, 0.01f, nullptr, nullptr,
+                         "%.4g"))
+    edited(Edited::com);
+  if (ImGui::InputDouble("weight P", &e.run.body.weight, 0.1, 1.0, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue))
+    edited(Edited::weight);
+  note_item("weight");
+  if (ImGui::DragScalarN("omega(0)", ImGuiDataType_Double, e.run.initial.omega.data(), 3, 0.01f, nullptr, nullptr,
+                         "%.4g"))
+    edited(Edited::omega);
+  if (ImGui::DragScalarN("gamma(0)", ImGuiDataType_Double, e.run.initial.gamma.data(), 3, 0.01f, nullptr, nullptr,
+                         "%.4g")) {
+    // gamma is a unit vector: the edit sets its direction.
+    const double n = e.run.initial.gamma.norm();
+    if (n > 1e-9) e.run.initial.gamma /= n;
+    edited(Edited::gamma);
+  }
+}
+
+void ControlPanel::draw_integrator(const LiveScene& scene, PanelActions& out) {
+  const LiveSetup& s = scene.setup();
+  LiveSetup e = s;
+  if (ImGui::BeginCombo("formulation", std::string(sim::name(s.run.formulation)).c_str())) {
+    for (auto f : sim::all_formulations()) {
+      const bool usable = !sim::incompatibility(s.run.method, f) &&
+                          (s.scene.view != scene::View::space || f == sim::Formulation::spinor);
+      if (!usable) ImGui::BeginDisabled();
+      if (ImGui::Selectable(std::string(sim::name(f)).c_str(), f == s.run.formulation)) {
+        e.run.formulation = f;
+        e.scene.formulation_given = true;
+        out.rerun = e;
+      }
+      if (!usable) ImGui::EndDisabled();
+    }
+    ImGui::EndCombo();
+  }
+  note_item("formulation");
+  if (ImGui::BeginCombo("method", std::string(sim::name(s.run.method)).c_str())) {
+    for (auto m : sim::all_methods()) {
+      const bool usable = !sim::incompatibility(m, s.run.formulation);
+      if (!usable) ImGui::BeginDisabled();
+      if (ImGui::Selectable(std::string(sim::name(m)).c_str(), m == s.run.method)) {
+        e.run.method = m;
+        out.rerun = e;
+      }
+      note_item(("method:" + std::string(sim::name(m))).c_str());
+      if (!usable) ImGui::EndDisabled();
+    }
+    ImGui::EndCombo();
+  }
+  note_item("method");
+  if (sim::is_adaptive(s.run.method)) {
+    bool automatic = s.scene.auto_tolerance;
+    if (ImGui::Checkbox("tolerance from resolution", &automatic)) {
+      e.scene.auto_tolerance = automatic;
+      out.rerun = e;
+    }
+    if (!automatic && log_slider("tolerance", &e.run.tol, 1e-13, 1e-3, "%.1e")) out.rerun = e;
+  } else if (log_slider("step", &e.run.step, 1e-4, 0.5, "%.2e")) {
+    out.rerun = e;
+  }
+  if (s.run.formulation == sim::Formulation::riccati && ImGui::Checkbox("chart switch", &e.run.chart_switch))
+    out.rerun = e;
+}
+
+void ControlPanel::draw_view(const LiveScene& scene, PanelActions& out) {
+  const LiveSetup& s = scene.setup();
+  LiveSetup e = s;
+  int view = s.scene.view == scene::View::space ? 1 : 0;
+  bool view_changed = ImGui::RadioButton("body frame", &view, 0);
+  ImGui::SameLine();
+  view_changed |= ImGui::RadioButton("space frame", &view, 1);
+  if (view_changed) {
+    e.scene.view = view == 1 ? scene::View::space : scene::View::body;
+    // The space view needs the attitude, which only the spinor form carries.
+    if (e.scene.view == scene::View::space) e.run.formulation = sim::Formulation::spinor;
+    out.rerun = e;
+  }
+  auto& l = e.scene.layers;
+  bool layers_changed = ImGui::Checkbox("body", &l.body);
+  ImGui::SameLine();
+  layers_changed |= ImGui::Checkbox("sphere", &l.sphere);
+  ImGui::SameLine();
+  layers_changed |= ImGui::Checkbox("(a, b) plane", &l.riccati);
+  layers_changed |= ImGui::Checkbox("info overlay", &l.overlay);
+  if (layers_changed && (l.body || l.sphere || l.riccati || l.overlay)) out.view = e;
+  if (drag_double("trail length", &e.scene.trail_length, 0.1, 0.5, 1000.0, "%.3g")) out.rerun = e;
+  if (ImGui::Button("Reset camera")) {
+    e.scene.camera = scene::CameraSettings{};
+    out.view = e;
+  }
+  ImGui::SameLine();
+  ImGui::TextDisabled("drag: orbit, wheel: zoom");
+}
+
+void ControlPanel::draw_drift(const LiveScene& scene) {
+  const auto& history = scene.drift_history();
+  if (history.empty()) return;
+  const sim::Drifts& now = history.back().drift;
+  const sim::Drifts& worst = scene.max_drift();
+  const char* names[] = {"|gamma|^2", "C0 (area)", "C1 (energy)"};
+  const double values[] = {now.gamma_norm2, now.area, now.energy};
+  const double maxima[] = {worst.gamma_norm2, worst.area, worst.energy};
+  const std::string extra_name = scene::extra_integral_symbol(scene.setup().run.case_id);
+  const int rows = now.extra ? 4 : 3;
+  ImGui::TextDisabled("log10 relative drift over the last %zu frames", history.size());
+  for (int i = 0; i < rows; ++i) {
+    const double v = i < 3 ? values[i] : *now.extra;
+    const double m = i < 3 ? maxima[i] : worst.extra.value_or(0.0);
+    char overlay[96];
+    std::snprintf(overlay, sizeof overlay, "%.1e (max %.1e)", v, m);
+    PlotData data{&history, i};
+    ImGui::PushStyleColor(ImGuiCol_PlotLines, !(m < 1e-2) ? kErrorColour : m < 1e-8 ? kGoodColour : kWarnColour);
+    ImGui::PlotLines(i < 3 ? names[i] : extra_name.c_str(), drift_log10, &data, int(history.size()), 0, overlay,
+                     -17.0f, 0.0f, ImVec2(0, 2.4f * ImGui::GetFontSize()));
+    ImGui::PopStyleColor();
+  }
+}
+
+void ControlPanel::draw_save() {
+  char name[64];
+  std::snprintf(name, sizeof name, "%s", save_name_.c_str());
+  if (ImGui::InputText("file name", name, sizeof name)) {
+    std::string n = name;
+    n.erase(std::remove_if(n.begin(), n.end(), [](char c) { return c == '/' || c == '\\'; }), n.end());
+    if (!n.empty()) save_name_ = n;
+  }
+  note_item("file_name");
+  ImGui::TextDisabled("frames: <name>_t<time>.png, jobs: <name>.json");
+}
+
+}  // namespace epviz::live

@@ -1,0 +1,67 @@
+#pragma once
+// The ImGui panels of the interactive scene. The panel edits a copy of the
+// running setup and reports what the user asked for; the session applies it
+// (a new run, a view change, saving), so the panel owns no simulation state.
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "live/live_scene.hpp"
+#include "render/camera.hpp"
+
+namespace epviz::live {
+
+struct PanelActions {
+  bool toggle_play = false;
+  bool step = false;
+  bool restart = false;
+  std::optional<physics::Case> load_case;  // the case combo: that preset's setup
+  std::optional<LiveSetup> rerun;           // edits that need a new run from t = 0
+  std::optional<LiveSetup> view;            // edits of layers, camera, speed, trail: no new run
+  bool save_frame = false;
+  bool save_job = false;
+};
+
+using Rect = std::array<float, 4>;  // x, y, width, height in frame pixels
+
+class ControlPanel {
+ public:
+  // Draws the panels in the top-left corner of `area` (the 3D view) for the
+  // scene's current state. Call inside an ImGui frame.
+  PanelActions draw(const LiveScene& scene, const render::Viewport& area);
+
+  // A line shown under the playback buttons (saved file, refused edit, ...).
+  void set_message(std::string text, bool error = false);
+  // Where the named controls were in the last frame: "play", "step",
+  // "restart", "speed", "case", "case:<name>" (items of the open combo),
+  // "stay", "I1", "I2", "I3", "weight", "formulation", "method",
+  // "method:<name>", "header:<section>", "file_name", "save_frame",
+  // "save_job", and "panel" (the whole window).
+  const std::map<std::string, Rect>& controls() const { return controls_; }
+  // Whether (x, y) is on the panel (a press there is the panel's, not an orbit).
+  bool contains(float x, float y) const;
+  // The pixels the expanded panel takes from the left edge (0 when collapsed
+  // or not drawn yet), so the scene can be laid out beside it.
+  int occupied_width() const { return collapsed_ ? 0 : occupied_width_; }
+  // The file name stem for saved frames and jobs (editable in the panel).
+  const std::string& save_name() const { return save_name_; }
+
+ private:
+  void note_item(const char* name);  // records the last item's rectangle
+  void draw_playback(const LiveScene& scene, PanelActions& out);
+  void draw_case_and_body(const LiveScene& scene, PanelActions& out);
+  void draw_integrator(const LiveScene& scene, PanelActions& out);
+  void draw_view(const LiveScene& scene, PanelActions& out);
+  void draw_drift(const LiveScene& scene);
+  void draw_save();
+
+  std::map<std::string, Rect> controls_;
+  std::string message_;
+  bool message_is_error_ = false;
+  bool collapsed_ = false;
+  int occupied_width_ = 0;
+  std::string save_name_ = "epviz_live";
+};
+
+}  // namespace epviz::live

@@ -1,0 +1,16 @@
+#pragma once
+// The current interactive setup as a render job (render_jobs/*.json format)
+// that `epviz render` accepts: the same body, state, integrator and view, a
+// video of `duration` seconds at the live speed.
+#include <string>
+
+#include "live/live_setup.hpp"
+
+namespace epviz::live {
+
+// `name` is the output stem (out/<name>/...). The body and state are written
+// out in full, so the job reproduces an edited body; the case is named only
+// when its conditions hold (else the run is a custom body).
+std::string render_job_json(const LiveSetup& setup, const std::string& name, double duration_s = 10.0);
+
+}  // namespace epviz::live

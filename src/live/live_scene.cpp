@@ -1,0 +1,86 @@
+#include "live/live_scene.hpp"
+
+#include <algorithm>
+
+#include "numerics/failure.hpp"
+#include "scene/plan.hpp"
+
+namespace epviz::live {
+namespace {
+
+constexpr double kStepWallSeconds = 1.0 / 30.0;
+// Samples per second of wall-clock time at the setup's speed: the trail's
+// resolution in time, as in a rendered video (30 frames x 8 samples).
+constexpr double kSamplesPerWallSecond = 240.0;
+// The run has no end; this many samples make a horizon nobody reaches.
+constexpr int kOpenEndedSamples = 100'000'000;
+constexpr double kToleranceHorizon = 1e4;
+
+}  // namespace
+
+std::unique_ptr<scene::FrameSource> LiveScene::make_source(const LiveSetup& setup) {
+  // The automatic tolerance keeps the drawn error under a pixel up to a
+  // horizon; a live run has no end, so the horizon is long (the cost of a
+  // tighter tolerance is nothing next to drawing a frame).
+  sim::RunSpec run = setup.run;
+  run.t_end = std::max(run.t_end, kToleranceHorizon);
+  scene::ScenePlan plan = scene::plan_scene(run, setup.scene);
+  plan.open_ended = true;
+  const double spacing = std::max(setup.speed, 1e-3) / kSamplesPerWallSecond;
+  plan.run.samples = kOpenEndedSamples;
+  plan.run.t_end = spacing * kOpenEndedSamples;
+  return std::make_unique<scene::FrameSource>(plan, setup.scene);
+}
+
+LiveScene::LiveScene(const LiveSetup& setup) { restart(setup); }
+
+void LiveScene::restart(const LiveSetup& setup) {
+  auto source = make_source(setup);  // may throw: keep the old scene then
+  const auto& run = source->plan().run;
+  monitor_ = std::make_unique<sim::InvariantMonitor>(run.body, run.case_id, run.initial);
+  source_ = std::move(source);
+  setup_ = setup;
+  failure_.reset();
+  drift_history_.clear();
+  advance_to(0.0);
+}
+
+void LiveScene::set_view(const scene::SceneSettings& s, double speed) {
+  setup_.scene.layers = s.layers;
+  setup_.scene.camera = s.camera;
+  setup_.scene.colours = s.colours;
+  setup_.speed = speed;
+  frame_.layers = s.layers;
+  frame_.camera = s.camera;
+  frame_.colours = s.colours;
+}
+
+const scene::Frame& LiveScene::update(double wall_seconds) {
+  if (playing_) advance_to(frame_.t + wall_seconds * setup_.speed);
+  return frame_;
+}
+
+const scene::Frame& LiveScene::step() {
+  advance_to(frame_.t + kStepWallSeconds * setup_.speed);
+  return frame_;
+}
+
+void LiveScene::advance_to(double t) {
+  if (failure_) return;
+  try {
+    frame_ = source_->frame_at_time(t);
+  } catch (const numerics::IntegrationError& e) {
+    // The last good frame stays on screen with the report; nothing after it is drawn.
+    failure_ = e.failure().message();
+    playing_ = false;
+    return;
+  }
+  // The view settings live in the setup (they change without a restart).
+  frame_.layers = setup_.scene.layers;
+  frame_.camera = setup_.scene.camera;
+  frame_.colours = setup_.scene.colours;
+  drift_history_.push_back({frame_.t, monitor_->relative_drift(monitor_->at(source_->latest()))});
+  if (drift_history_.size() > kDriftHistory) drift_history_.pop_front();
+}
+
+}  // namespace epviz::live

@@ -1,0 +1,67 @@
+#pragma once
+// The simulation behind the interactive view: a scene::FrameSource with no
+// last frame, advanced by wall-clock time times the speed while playing, and
+// stopped (not drawn as garbage) at a numerical failure, whose report stays on
+// screen until the user restarts.
+#include <deque>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "live/live_setup.hpp"
+#include "scene/frame_source.hpp"
+#include "sim/drift.hpp"
+
+namespace epviz::live {
+
+// The current relative drift of each invariant at one time (for the live plots).
+struct DriftPoint {
+  double t;
+  sim::Drifts drift;
+};
+
+class LiveScene {
+ public:
+  // Throws scene::PlanError or std::invalid_argument for a setup that cannot run.
+  explicit LiveScene(const LiveSetup& setup);
+
+  const LiveSetup& setup() const { return setup_; }
+  // Starts again from t = 0 with `setup` (throws like the constructor, leaving
+  // the running scene as it was).
+  void restart(const LiveSetup& setup);
+  void restart() { restart(setup_); }
+  // View settings that need no new run: layers, camera, trail colours, speed.
+  void set_view(const scene::SceneSettings& scene, double speed);
+
+  bool playing() const { return playing_; }
+  void set_playing(bool on) { playing_ = on && !failure_; }
+  // Advances by `wall_seconds` x speed when playing and composes the frame.
+  const scene::Frame& update(double wall_seconds);
+  // Advances one frame's worth (1/30 s of wall-clock time at this speed), paused or not.
+  const scene::Frame& step();
+
+  const scene::Frame& frame() const { return frame_; }
+  double time() const { return frame_.t; }
+  // The numerical failure that stopped the run (time, method, reason), if any.
+  const std::optional<std::string>& failure() const { return failure_; }
+  // The drift at each composed frame, oldest first, at most `kDriftHistory` of them.
+  static constexpr std::size_t kDriftHistory = 600;
+  const std::deque<DriftPoint>& drift_history() const { return drift_history_; }
+  const sim::Drifts& max_drift() const { return source_->max_drift(); }
+  const std::string& accuracy_note() const { return source_->plan().accuracy_note; }
+  sim::Formulation formulation() const { return source_->plan().run.formulation; }
+
+ private:
+  static std::unique_ptr<scene::FrameSource> make_source(const LiveSetup& setup);
+  void advance_to(double t);
+
+  LiveSetup setup_;
+  std::unique_ptr<scene::FrameSource> source_;
+  std::unique_ptr<sim::InvariantMonitor> monitor_;
+  scene::Frame frame_;
+  bool playing_ = false;
+  std::optional<std::string> failure_;
+  std::deque<DriftPoint> drift_history_;
+};
+
+}  // namespace epviz::live

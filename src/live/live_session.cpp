@@ -1,0 +1,221 @@
+#include "live/live_session.hpp"
+
+#include <imgui.h>
+
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "io/atomic_file.hpp"
+#include "io/png_writer.hpp"
+#include "live/camera_control.hpp"
+#include "live/job_file.hpp"
+
+namespace epviz::live {
+namespace {
+
+constexpr double kFixedFrameSeconds = 1.0 / 30.0;
+// A frame after a long pause must not jump the simulation ahead.
+constexpr double kMaxFrameSeconds = 0.1;
+constexpr int kSettleFrames = 3;
+
+bool inside(const render::Viewport& v, float x, float y) {
+  return x >= float(v.x) && y >= float(v.y) && x < float(v.x + v.width) && y < float(v.y + v.height);
+}
+
+}  // namespace
+
+LiveSession::LiveSession(render::GlContext& gl, SessionOptions options)
+    : gl_(gl), options_(std::move(options)), scene_(options_.initial) {
+  scene_.set_playing(options_.start_playing);
+}
+
+LiveSession::~LiveSession() = default;
+
+void LiveSession::resize(int width, int height) {
+  if (width == width_ && height == height_) return;
+  width_ = width;
+  height_ = height;
+  if (!painter_) {
+    paint::PainterOptions po;
+    po.builtin_font = options_.builtin_font;
+    painter_ = std::make_unique<paint::FramePainter>(gl_, width, height, po);
+    ImGuiContext* previous = ImGui::GetCurrentContext();
+    ImGui::SetCurrentContext(painter_->gui().context());
+    render::GuiInput::configure(ImGui::GetIO());
+    ImGui::SetCurrentContext(previous);
+  } else {
+    painter_->resize(width, height);
+  }
+  settle_frames_ = kSettleFrames;
+}
+
+void LiveSession::input(const render::InputEvent& event) { gui_input_.push(event); }
+
+bool LiveSession::wants_frame() const {
+  return painter_ && (settle_frames_ > 0 || gui_input_.pending() || scene_.playing() || save_frame_pending_);
+}
+
+double LiveSession::wall_seconds_since_last_frame() {
+  if (options_.fixed_clock) return kFixedFrameSeconds;
+  const auto now = std::chrono::steady_clock::now();
+  const double dt = last_frame_ ? std::chrono::duration<double>(now - *last_frame_).count() : kFixedFrameSeconds;
+  last_frame_ = now;
+  return std::clamp(dt, 1e-4, kMaxFrameSeconds);
+}
+
+void LiveSession::observe(const render::InputEvent& e) {
+  using Kind = render::InputEvent::Kind;
+  settle_frames_ = kSettleFrames;
+  const ImGuiIO& io = ImGui::GetIO();
+  // Presses on the panels (or anywhere while a popup is open) are ImGui's.
+  const bool gui_owns = panel_.contains(e.x, e.y) || io.WantCaptureMouse;
+  switch (e.kind) {
+    case Kind::mouse_button:
+      if (e.button != 0) break;
+      if (e.down && !gui_owns && inside(view_3d_, e.x, e.y)) drag_.emplace(e.x, e.y);
+      if (!e.down) drag_.reset();
+      break;
+    case Kind::mouse_move:
+      if (drag_) {
+        LiveSetup s = scene_.setup();
+        s.scene.camera = orbit_by_drag(s.scene.camera, e.x - drag_->first, e.y - drag_->second,
+                                       float(view_3d_.height));
+        scene_.set_view(s.scene, s.speed);
+        drag_.emplace(e.x, e.y);
+      }
+      break;
+    case Kind::wheel:
+      if (!gui_owns && inside(view_3d_, e.x, e.y)) {
+        LiveSetup s = scene_.setup();
+        s.scene.camera = zoom_by_wheel(s.scene.camera, e.wheel_y);
+        scene_.set_view(s.scene, s.speed);
+      }
+      break;
+    case Kind::key:
+      // Shortcuts, unless the user is typing into a field.
+      if (!e.down || io.WantTextInput || e.ctrl || e.alt || e.super) break;
+      if (e.key == " ") scene_.set_playing(!scene_.playing());
+      if (e.key == "r" || e.key == "R") scene_.restart();
+      if (e.key == "s" || e.key == "S") scene_.step();
+      break;
+    case Kind::focus:
+      if (!e.down) drag_.reset();
+      break;
+    case Kind::text:
+      break;
+  }
+}
+
+const render::RgbaImage& LiveSession::render() {
+  if (!painter_) resize(1280, 720);
+  if (save_frame_pending_) save_frame();  // before the picture with the panels: the painter reuses its image
+
+  const double dt = wall_seconds_since_last_frame();
+  render::ImGuiOverlay& gui = painter_->gui();
+  gui.set_delta_time(float(dt));
+  {
+    ImGuiContext* previous = ImGui::GetCurrentContext();
+    ImGui::SetCurrentContext(gui.context());
+    gui_input_.apply(ImGui::GetIO(), [this](const render::InputEvent& e) { observe(e); });
+    ImGui::SetCurrentContext(previous);
+  }
+  scene_.update(dt);
+  const scene::Frame& frame = scene_.frame();
+  // The scene moves right of the expanded panel when the window is wide
+  // enough to keep most of it; in a narrow window the panel floats over it.
+  const int panel_px = panel_.occupied_width();
+  const int reserved = panel_px > 0 && width_ - panel_px >= width_ / 2 ? panel_px : 0;
+  painter_->set_reserved_left(reserved);
+  const paint::Layout layout = paint::layout_for(frame.layers, frame.overlay, width_, height_, reserved);
+  view_3d_ = layout.view_3d ? *layout.view_3d : render::Viewport{reserved, 0, width_ - reserved, height_};
+
+  PanelActions actions;
+  const render::RgbaImage& image =
+      painter_->paint(frame, [&] { actions = panel_.draw(scene_, render::Viewport{0, 0, width_, height_}); });
+  if (panel_.occupied_width() != panel_px) settle_frames_ = kSettleFrames;  // lay the scene out again
+  if (settle_frames_ > 0) --settle_frames_;
+  apply(actions);
+  return image;
+}
+
+void LiveSession::apply(const PanelActions& a) {
+  const bool any = a.toggle_play || a.step || a.restart || a.load_case || a.rerun || a.view || a.save_frame ||
+                   a.save_job;
+  if (!any) return;
+  settle_frames_ = kSettleFrames;
+  if (a.toggle_play) scene_.set_playing(!scene_.playing());
+  if (a.step) scene_.step();
+  if (a.restart) scene_.restart();
+  if (a.view) {
+    scene_.set_view(a.view->scene, a.view->speed);
+    if (a.view->stay_in_case != scene_.setup().stay_in_case) {
+      LiveSetup s = scene_.setup();
+      s.stay_in_case = a.view->stay_in_case;
+      rerun(s);
+    }
+  }
+  if (a.rerun) rerun(*a.rerun);
+  if (a.load_case) {
+    LiveSetup s = options_.presets(*a.load_case);
+    s.scene.layers = scene_.setup().scene.layers;  // the user's layers stay as chosen
+    rerun(s);
+  }
+  if (a.save_frame) save_frame_pending_ = true;
+  if (a.save_job) save_job();
+}
+
+void LiveSession::rerun(const LiveSetup& s) {
+  const bool was_playing = scene_.playing();
+  try {
+    physics::validate_body(s.run.body, false);
+    scene_.restart(s);
+    scene_.set_playing(was_playing);
+    panel_.set_message("");
+  } catch (const std::exception& e) {
+    // The running scene is kept; the panel says why the edit was refused.
+    panel_.set_message(std::string("not applied: ") + e.what(), true);
+  }
+}
+
+void LiveSession::deliver(serve::Download d) {
+  std::string note = "sent " + d.name + " to the browser";
+  if (!options_.save_dir.empty()) {
+    const auto path = options_.save_dir / d.name;
+    try {
+      std::filesystem::create_directories(options_.save_dir);
+      io::write_file_atomically(path, std::span(reinterpret_cast<const std::byte*>(d.bytes.data()), d.bytes.size()));
+      note = "saved " + path.string();
+    } catch (const std::exception& e) {
+      note = std::string("could not save: ") + e.what();
+    }
+  }
+  panel_.set_message(note, note.rfind("could not", 0) == 0);
+  notices_.push_back(note);
+  downloads_.push_back(std::move(d));
+}
+
+void LiveSession::save_frame() {
+  save_frame_pending_ = false;
+  // The picture without the panels, as `epviz render` would draw it.
+  const render::RgbaImage& clean = painter_->paint(scene_.frame());
+  char name[160];
+  std::snprintf(name, sizeof name, "%s_t%08.3f.png", panel_.save_name().c_str(), scene_.time());
+  deliver({name, "image/png", io::encode_png_rgba(clean.width, clean.height, clean.pixels)});
+}
+
+void LiveSession::save_job() {
+  const std::string text = render_job_json(scene_.setup(), panel_.save_name());
+  deliver({panel_.save_name() + ".json", "application/json", std::vector<std::uint8_t>(text.begin(), text.end())});
+}
+
+std::vector<serve::Download> LiveSession::take_downloads() { return std::exchange(downloads_, {}); }
+std::vector<std::string> LiveSession::take_notices() { return std::exchange(notices_, {}); }
+
+std::string LiveSession::controls_json() const {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [name, r] : panel_.controls()) j[name] = {r[0], r[1], r[2], r[3]};
+  j["view3d"] = {view_3d_.x, view_3d_.y, view_3d_.width, view_3d_.height};
+  return j.dump();
+}
+
+}  // namespace epviz::live

@@ -1,0 +1,26 @@
+#pragma once
+// Everything the user can set in the interactive scene: what is simulated (a
+// sim::RunSpec), what is drawn (scene::SceneSettings) and how fast it plays.
+// A render job converts to one (epviz serve JOB) and one converts back to a
+// render job (job_file.hpp), so a setup found interactively can be rendered.
+#include "scene/settings.hpp"
+#include "sim/run_spec.hpp"
+
+namespace epviz::live {
+
+struct LiveSetup {
+  sim::RunSpec run;
+  scene::SceneSettings scene;
+  double speed = 4.0;         // simulation time units per second of wall-clock time
+  bool stay_in_case = true;   // edits keep the case's defining conditions
+};
+
+// Case `c`'s preset body and state with the settings of its render job in
+// render_jobs/ (body view, DOP853 with the tolerance from the resolution).
+LiveSetup preset_setup(physics::Case c);
+
+// The setup of a render job: `run` as resolved from its simulation fields, the
+// speed that plays the job's t_end over its duration.
+LiveSetup setup_from_job(const sim::RunSpec& run, const scene::SceneSettings& scene);
+
+}  // namespace epviz::live

@@ -1,0 +1,40 @@
+#pragma once
+// The platform adapter between input events (input_event.hpp) and ImGui.
+// Debian's Dear ImGui is 1.86, whose input is state (io.MousePos,
+// io.MouseDown[], io.KeysDown[]) read once per frame, not a queue of events:
+// a click whose press and release arrive between two frames would vanish. So
+// events wait here and are applied in order, a frame at a time, stopping
+// before an event that would change a button or key already changed in this
+// frame, or release a button after the pointer moved in it (the "trickle"
+// ImGui 1.87+ does itself).
+#include <deque>
+#include <functional>
+
+#include "render/input_event.hpp"
+
+struct ImGuiIO;
+
+namespace epviz::render {
+
+class GuiInput {
+ public:
+  // Sets io's key map for the keys this adapter reports. Call once per context.
+  static void configure(ImGuiIO& io);
+
+  void push(InputEvent event);
+  bool pending() const { return !queue_.empty(); }
+  std::size_t queued() const { return queue_.size(); }
+
+  // Applies the events that fit into the next frame to `io` (call with the
+  // context current, before NewFrame) and passes each one applied to
+  // `observe`, in order (the application's own shortcuts and camera drags).
+  void apply(ImGuiIO& io, const std::function<void(const InputEvent&)>& observe = {});
+
+ private:
+  std::deque<InputEvent> queue_;
+};
+
+// The io.KeysDown index for a DOM key name, or -1 for keys ImGui has no use for.
+int gui_key_index(const std::string& dom_key);
+
+}  // namespace epviz::render
