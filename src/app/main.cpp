@@ -10,6 +10,7 @@
 #include "app/simulate_command.hpp"
 #ifdef EPVIZ_HAVE_RENDER
 #include "app/render_command.hpp"
+#include "app/serve_command.hpp"
 #endif
 #include "app/usage_error.hpp"
 
@@ -25,6 +26,7 @@ int main(int argc, char** argv) {
   commands["bench"] = epviz::app::add_bench_command(app);
 #ifdef EPVIZ_HAVE_RENDER
   commands["render"] = epviz::app::add_render_command(app);
+  commands["serve"] = epviz::app::add_serve_command(app);
 #endif
 
   try {

@@ -1,0 +1,132 @@
+#include "app/serve_command.hpp"
+
+#include <algorithm>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "app/cli_values.hpp"
+#include "app/render_job.hpp"
+#include "app/usage_error.hpp"
+#include "live/live_session.hpp"
+#include "render/gl_context.hpp"
+#include "serve/server.hpp"
+
+namespace epviz::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ServeOptions {
+  std::string job, bind = "127.0.0.1", gl, image = "jpeg", save_dir;
+  std::string port = "8080", quality = "85";
+  bool play = false;
+};
+
+serve::Server* g_server = nullptr;  // for the signal handler only
+
+extern "C" void on_stop_signal(int) {
+  if (g_server) g_server->request_stop();
+}
+
+bool is_loopback(const std::string& host) {
+  return host == "127.0.0.1" || host == "::1" || host == "localhost" || host.rfind("127.", 0) == 0;
+}
+
+live::LiveSetup setup_of_single_job(const fs::path& file) {
+  LoadedJob loaded = load_render_job(file);
+  if (!loaded.single)
+    throw UsageError(file.string() + ": serve needs a single render job (this file is a " +
+                     (loaded.gallery ? "gallery" : "bench figures job") + ")");
+  return live::setup_from_job(resolve(loaded.single->simulation), loaded.single->scene);
+}
+
+// The case combo loads the case's job from render_jobs/ when it is there
+// (the same title, view, camera and trail as the rendered videos), else the
+// built-in preset.
+live::LiveSetup preset_from_jobs(physics::Case c) {
+  const fs::path file = fs::path(EPVIZ_ASSET_DIR).parent_path() / "render_jobs" / (physics::case_name(c) + ".json");
+  try {
+    if (fs::is_regular_file(file)) return setup_of_single_job(file);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "epviz serve: %s (using the built-in preset)\n", e.what());
+  }
+  return live::preset_setup(c);
+}
+
+int run_serve(const ServeOptions& o) {
+  serve::ServerOptions so;
+  so.bind = o.bind;
+  so.port = static_cast<unsigned short>(parse_integer("--port", o.port, 0, 65535));
+  so.jpeg_quality = int(parse_integer("--quality", o.quality, 1, 100));
+  if (o.image == "jpeg")
+    so.image_format = serve::ImageFormat::jpeg;
+  else if (o.image == "png")
+    so.image_format = serve::ImageFormat::png;
+  else
+    throw UsageError("--image: unknown format '" + o.image + "' (allowed: jpeg, png)");
+  so.page = fs::path(EPVIZ_ASSET_DIR) / "serve.html";
+  if (!fs::is_regular_file(so.page)) throw UsageError("the page " + so.page.string() + " is missing");
+  so.log = [](const std::string& line) { std::fprintf(stderr, "epviz serve: %s\n", line.c_str()); };
+
+  const std::string backend = o.gl.empty() ? render::gl_backend_from_environment() : o.gl;
+  const auto backends = render::gl_backends();
+  if (std::find(backends.begin(), backends.end(), backend) == backends.end())
+    throw UsageError(std::string(o.gl.empty() ? "EPVIZ_GL" : "--gl") + ": unknown backend '" + backend + "'");
+
+  live::SessionOptions session;
+  session.initial = o.job.empty() ? preset_from_jobs(physics::Case::kovalevskaya) : setup_of_single_job(o.job);
+  session.presets = preset_from_jobs;
+  session.save_dir = o.save_dir;
+  session.start_playing = o.play;
+  try {
+    live::LiveScene check(session.initial);  // a job the scene cannot run is an error now, not per connection
+  } catch (const std::exception& e) {
+    throw UsageError((o.job.empty() ? std::string("default scene") : o.job) + ": " + e.what());
+  }
+
+  // The GL context belongs to the render thread, which creates it.
+  std::unique_ptr<render::GlContext> gl;
+  serve::Server server(
+      so, [&] { gl = render::make_gl_context(backend, 16, 16); },
+      [&]() -> std::unique_ptr<serve::Session> { return std::make_unique<live::LiveSession>(*gl, session); });
+  server.start();
+  if (!is_loopback(o.bind))
+    std::fprintf(stderr,
+                 "epviz serve: warning: listening on %s: anyone who can reach this address can use the "
+                 "server (and write files to --save-dir if given)\n",
+                 o.bind.c_str());
+  const std::string host = o.bind.find(':') != std::string::npos ? "[" + o.bind + "]" : o.bind;
+  std::printf("epviz serve: http://%s:%u/  (Ctrl+C to stop)\n", host.c_str(), unsigned(server.port()));
+  std::fflush(stdout);
+
+  g_server = &server;
+  std::signal(SIGINT, on_stop_signal);
+  std::signal(SIGTERM, on_stop_signal);
+  server.wait();
+  g_server = nullptr;
+  const serve::ServerStats stats = server.stats();
+  std::fprintf(stderr, "epviz serve: stopped after %ld connections, %ld frames sent\n", stats.connections_accepted,
+               stats.frames_sent);
+  return 0;
+}
+
+}  // namespace
+
+std::function<int()> add_serve_command(CLI::App& app) {
+  auto o = std::make_shared<ServeOptions>();
+  CLI::App* cmd = app.add_subcommand("serve", "Serve the renderer live to a web browser (one scene per tab)");
+  cmd->add_option("job", o->job, "render job to start from (default: the Kovalevskaya top)");
+  cmd->add_option("--port", o->port, "TCP port (0: any free port)")->capture_default_str();
+  cmd->add_option("--bind", o->bind, "address to listen on; other than loopback is reachable from the network")
+      ->capture_default_str();
+  cmd->add_option("--gl", o->gl, "offscreen GL backend (default: EPVIZ_GL or osmesa)");
+  cmd->add_option("--image", o->image, "frame encoding: jpeg or png")->capture_default_str();
+  cmd->add_option("--quality", o->quality, "JPEG quality 1..100")->capture_default_str();
+  cmd->add_option("--save-dir", o->save_dir, "also write saved frames and jobs here (default: browser downloads only)");
+  cmd->add_flag("--play", o->play, "start playing");
+  return [o] { return run_serve(*o); };
+}
+
+}  // namespace epviz::app
