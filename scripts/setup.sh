@@ -10,7 +10,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libosmesa6-dev libglm-dev libimgui-dev libstb-dev zlib1g-dev
   ffmpeg libgsl-dev python3-scipy
-  libturbojpeg0-dev chromium
+  libturbojpeg0-dev chromium fonts-dejavu-core
 )
 
 missing=()

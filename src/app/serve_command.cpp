@@ -19,7 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct ServeOptions {
-  std::string job, bind = "127.0.0.1", gl, image = "jpeg", save_dir;
+  std::string job, bind = "127.0.0.1", gl, image = "jpeg", save_dir, record;
   std::string port = "8080", quality = "85";
   bool play = false;
 };
@@ -68,6 +68,7 @@ int run_serve(const ServeOptions& o) {
     throw UsageError("--image: unknown format '" + o.image + "' (allowed: jpeg, png)");
   so.page = fs::path(EPVIZ_ASSET_DIR) / "serve.html";
   if (!fs::is_regular_file(so.page)) throw UsageError("the page " + so.page.string() + " is missing");
+  so.record_path = o.record;
   so.log = [](const std::string& line) { std::fprintf(stderr, "epviz serve: %s\n", line.c_str()); };
 
   const std::string backend = o.gl.empty() ? render::gl_backend_from_environment() : o.gl;
@@ -126,6 +127,7 @@ std::function<int()> add_serve_command(CLI::App& app) {
   cmd->add_option("--quality", o->quality, "JPEG quality 1..100")->capture_default_str();
   cmd->add_option("--save-dir", o->save_dir, "also write saved frames and jobs here (default: browser downloads only)");
   cmd->add_flag("--play", o->play, "start playing");
+  cmd->add_option("--record", o->record, "record the first connection's events (replayed by the tests)");
   return [o] { return run_serve(*o); };
 }
 
