@@ -47,11 +47,13 @@ await run({
   serverArgs,
   timeoutMs: 90000,
   async body({ page }) {
-    const first = await waitFor('the first frame', 20000, async () => {
+    await waitFor('the first frame', 20000, async () => {
       const s = await epvizState(page);
       return s && s.framesShown > 0 ? s : null;
     });
-    const controls = first.header.controls || {};
+    await sleep(300);   // the layout of the latest frame (the first frames may precede it)
+    const latest = (await epvizState(page)).header;
+    const controls = latest.controls || {};
     if (!Array.isArray(controls.play) || !Array.isArray(controls.view3d)) {
       fail(`the frame header names no play/view3d controls: ${JSON.stringify(controls)}`);
     }
@@ -62,7 +64,7 @@ await run({
     let point = { x: view.x + view.w / 2, y: view.y + view.h / 2 };
     for (let f = 0.5; f < 0.95; f += 0.05) {
       const p = { x: view.x + view.w / 2, y: view.y + view.h * f };
-      const frameP = [p.x * first.header.width / 1280, p.y * first.header.height / 720];
+      const frameP = [p.x * latest.width / 1280, p.y * latest.height / 720];
       if (!others.some(([, r]) => frameP[0] >= r[0] - 30 && frameP[0] < r[0] + r[2] + 30 && frameP[1] >= r[1] - 20 && frameP[1] < r[1] + r[3] + 20)) { point = p; break; }
     }
 

@@ -82,11 +82,17 @@ await run({
     if (layout.bw !== h.width || layout.bh !== h.height) fail(`canvas backing ${layout.bw}x${layout.bh} is not the frame size`);
     log('ok: the canvas fills the window, no scrolling');
 
-    const controls = h.controls;
-    if (!controls || !Array.isArray(controls.play) || !Array.isArray(controls.view3d)) {
-      fail(`the frame header names no play/view3d controls: ${JSON.stringify(controls)}`);
-    }
-    const view = controls.view3d;
+    // The layout of the latest frame (the first frames may precede it).
+    await sleep(300);
+    const currentControls = async () => {
+      const c = (await epvizState(page)).header.controls;
+      if (!c || !Array.isArray(c.play) || !Array.isArray(c.view3d)) {
+        fail(`the frame header names no play/view3d controls: ${JSON.stringify(c)}`);
+      }
+      return c;
+    };
+    let controls = await currentControls();
+    let view = controls.view3d;
 
     // 2. Play: frames keep coming and the 3D view moves.
     const play = await frameRectToCss(page, controls.play);
@@ -104,13 +110,15 @@ await run({
     log(`ok: Play at (${playX.toFixed(0)}, ${playY.toFixed(0)}) css px: the view moves, ${framesLater - framesAtPlay} frames in ~1 s`);
 
     // 3. Pause (the same control again): the view comes to rest.
-    const playAgain = await frameRectToCss(page, (await epvizState(page)).header.controls.play);
+    const playAgain = await frameRectToCss(page, (await currentControls()).play);
     await page.mouse.click(playAgain.x + playAgain.w / 2, playAgain.y + playAgain.h / 2);
     const still = await waitStill(page, view, 700, 5000);
     if (!still) fail('after clicking Play again (pause) the 3D view kept changing for 5 s');
     log('ok: paused, the view is at rest');
 
     // 4. Left-drag inside the 3D view (clear of other controls) turns it.
+    controls = await currentControls();
+    view = controls.view3d;
     const start = freePoint(controls);
     if (!start) fail(`no point of view3d is clear of the other controls: ${JSON.stringify(controls)}`);
     const [sx, sy] = start;
@@ -126,7 +134,7 @@ await run({
     await page.mouse.up({ button: 'left' });
     const dragged = await waitChange(page, view, beforeDrag, 3000);
     if (!dragged) fail(`dragging from (${a.x.toFixed(0)}, ${a.y.toFixed(0)}) to (${b.x.toFixed(0)}, ${b.y.toFixed(0)}) css px did not change the 3D view`);
-    log(`ok: left-drag (${a.x.toFixed(0)}, ${a.y.toFixed(0)}) -> (${b.x.toFixed(0)}, ${b.y.toFixed(0)}) css px turned the view`);
+    log(`ok: left-drag (${a.x.toFixed(0)}, ${a.y.toFixed(0)}) -> (${b.x.toFixed(0)}, ${b.y.toFixed(0)}) css px in view3d ${JSON.stringify(view)} turned the view`);
 
     // 5. Wheel over the view (reported, not required).
     await page.mouse.move(a.x, a.y);
