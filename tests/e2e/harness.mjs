@@ -48,8 +48,8 @@ async function loadPlaywright() {
   return null;
 }
 
-// The epviz server: started in its own process group so that it and anything
-// it starts are ended together.
+// The epviz server (one process). It stays in this script's process group,
+// so a runner that kills the group (CTest on its timeout, Ctrl+C) ends it too.
 class ServerProcess {
   constructor(binary, args) {
     this.binary = binary;
@@ -80,7 +80,7 @@ class ServerProcess {
       };
       const timer = setTimeout(() => finish(new Failure(`the server printed no URL within ${timeoutMs / 1000} s`)), timeoutMs);
       try {
-        this.child = spawn(this.binary, this.args, { stdio: ['ignore', 'pipe', 'pipe'], detached: true });
+        this.child = spawn(this.binary, this.args, { stdio: ['ignore', 'pipe', 'pipe'] });
       } catch (e) {
         finish(new Failure(`cannot start ${this.binary}: ${e.message}`));
         return;
@@ -107,17 +107,14 @@ class ServerProcess {
 
   async stop() {
     if (!this.alive()) return;
-    const group = -this.child.pid;
-    const signalGroup = (sig) => {
-      try { process.kill(group, sig); } catch (_) {
-        try { this.child.kill(sig); } catch (_) { /* already gone */ }
-      }
+    const signal = (sig) => {
+      try { this.child.kill(sig); } catch (_) { /* already gone */ }
     };
-    signalGroup('SIGTERM');
+    signal('SIGTERM');
     for (let i = 0; i < 30 && this.alive(); ++i) await sleep(100);
     if (this.alive()) {
       log('note: the server ignored SIGTERM for 3 s; killing it');
-      signalGroup('SIGKILL');
+      signal('SIGKILL');
       for (let i = 0; i < 20 && this.alive(); ++i) await sleep(100);
     }
   }
