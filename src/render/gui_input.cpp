@@ -113,7 +113,9 @@ void apply_one(ImGuiIO& io, const InputEvent& e, FrameChanges& changed) {
     case InputEvent::Kind::key: {
       set_modifiers(io, e);
       const int index = gui_key_index(e.key);
-      if (index < 0) break;
+      // The page sends what the browser pastes as text; ImGui's Ctrl+V would
+      // paste its own in-process clipboard a second time.
+      if (index < 0 || (index == 'V' && (e.ctrl || e.super))) break;
       io.KeysDown[index] = e.down;
       changed.keys.set(std::size_t(index));
       break;
