@@ -27,6 +27,10 @@ struct ServerOptions {
   int jpeg_quality = 85;
   // One line per event worth logging (connections, closes and their reasons).
   std::function<void(const std::string&)> log;
+  // Records the first connection's messages here, one JSON line each as the
+  // page sent them, with {"type":"render"} where a frame was rendered: the
+  // session calls in order, which live::replay() repeats without a browser.
+  std::filesystem::path record_path;
 };
 
 struct ServerStats {
@@ -53,6 +57,10 @@ class Server {
   void stop();
   // Blocks until stop() is called from another thread or a signal handler.
   void wait();
+  // Async-signal-safe (one lock-free atomic store), for SIGINT/SIGTERM
+  // handlers, where stop() itself must not run: wait() notices within
+  // ~100 ms, calls stop() and returns.
+  void request_stop() noexcept;
   ServerStats stats() const;
 
  private:

@@ -1,0 +1,75 @@
+#include "serve/shared_state.hpp"
+
+#include <algorithm>
+
+namespace epviz::serve {
+
+bool ConnectionLink::push(ClientMessage message) {
+  std::lock_guard lock(mutex_);
+  inbox_.push_back(std::move(message));
+  if (inbox_.size() >= inbox_limit) paused_ = true;
+  return !paused_;
+}
+
+std::vector<ClientMessage> ConnectionLink::take(bool& resume) {
+  std::vector<ClientMessage> taken;
+  std::lock_guard lock(mutex_);
+  taken.swap(inbox_);
+  resume = paused_;
+  paused_ = false;
+  return taken;
+}
+
+void ConnectionLink::acknowledge(std::int64_t frame) {
+  frame = std::min(frame, frames_sent.load());
+  std::int64_t current = frames_acked.load();
+  // Only the network thread writes, but a CAS loop keeps this right if that changes.
+  while (frame > current && !frames_acked.compare_exchange_weak(current, frame)) {
+  }
+}
+
+void RenderHub::add(std::shared_ptr<ConnectionLink> link) {
+  {
+    std::lock_guard lock(mutex_);
+    new_links_.push_back(std::move(link));
+    dirty_ = true;
+  }
+  wake_.notify_one();
+}
+
+void RenderHub::notify() {
+  {
+    std::lock_guard lock(mutex_);
+    dirty_ = true;
+  }
+  wake_.notify_one();
+}
+
+void RenderHub::request_stop() {
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  wake_.notify_one();
+}
+
+bool RenderHub::wait_for_work() {
+  std::unique_lock lock(mutex_);
+  wake_.wait(lock, [&] { return dirty_ || stopping_; });
+  dirty_ = false;
+  return !stopping_;
+}
+
+bool RenderHub::stop_requested() {
+  std::lock_guard lock(mutex_);
+  return stopping_;
+}
+
+std::vector<std::shared_ptr<ConnectionLink>> RenderHub::take_new_links() {
+  std::lock_guard lock(mutex_);
+  std::vector<std::shared_ptr<ConnectionLink>> taken;
+  taken.swap(new_links_);
+  return taken;
+}
+
+}  // namespace epviz::serve

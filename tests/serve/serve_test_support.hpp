@@ -1,0 +1,160 @@
+#pragma once
+// Test doubles for the frame server: a fake Session that paints a solid
+// colour (a new one per input event) and reports what was done to it, a
+// WebSocket client whose every wait has a deadline, and a server fixture
+// that captures the log.
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <future>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <boost/asio/io_context.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/http.hpp>
+#include <boost/beast/websocket.hpp>
+#include <glm/vec4.hpp>
+#include <nlohmann/json.hpp>
+
+#include "serve/protocol.hpp"
+#include "serve/server.hpp"
+#include "serve/session.hpp"
+
+namespace epviz::serve::testing {
+
+using namespace std::chrono_literals;
+
+// Long enough for a loaded two-core machine; a passing run never waits this long.
+inline constexpr auto expect_within = 10s;
+// How long "nothing arrives" is watched for.
+inline constexpr auto quiet_period = 300ms;
+
+// The fake session's colour after `inputs` input events.
+glm::u8vec4 fake_colour(int inputs);
+
+// What the fake sessions report, shared with the test thread.
+struct FakeProbe {
+  std::atomic<int> created{0};
+  std::atomic<int> destroyed{0};
+  std::atomic<int> renders{0};
+  std::atomic<int> inputs{0};
+  std::atomic<bool> wrong_thread{false};  // a session was touched off the render thread
+  std::atomic<std::thread::id> render_thread{};
+  // A key event "block" holds the render thread in input() until this is set.
+  std::atomic<bool> blocked{false};  // a session is waiting in input("block")
+  std::promise<void> unblock;
+  std::shared_future<void> unblocked = unblock.get_future().share();
+  void check_thread() {
+    if (std::this_thread::get_id() != render_thread.load()) wrong_thread = true;
+  }
+};
+
+// Paints fake_colour(inputs seen). Wants a frame after a resize or input, or
+// always. A key event "notice" / "download" queues one; "throw" makes the
+// next render() throw; "block" waits for FakeProbe::unblock. Its controls:
+// one rectangle, "play", the size of the frame.
+class FakeSession : public Session {
+ public:
+  FakeSession(std::shared_ptr<FakeProbe> probe, bool always_wants);
+  ~FakeSession() override;
+  void resize(int width, int height) override;
+  void input(const render::InputEvent& event) override;
+  bool wants_frame() const override;
+  const render::RgbaImage& render() override;
+  std::vector<Download> take_downloads() override;
+  std::vector<std::string> take_notices() override;
+  std::string controls_json() const override;
+
+ private:
+  std::shared_ptr<FakeProbe> probe_;
+  bool always_wants_;
+  bool dirty_ = true;
+  bool throw_next_ = false;
+  int inputs_ = 0;
+  render::RgbaImage image_;
+  std::vector<Download> downloads_;
+  std::vector<std::string> notices_;
+};
+
+// Lines from ServerOptions::log, waitable.
+class LogCapture {
+ public:
+  void add(const std::string& line);
+  // Whether a line containing every one of `parts` arrives within `timeout`.
+  bool wait_for(const std::vector<std::string>& parts, std::chrono::milliseconds timeout = expect_within);
+  std::string all() const;
+
+ private:
+  mutable std::mutex mutex_;
+  std::condition_variable added_;
+  std::vector<std::string> lines_;
+};
+
+// A started server with fake sessions on a free port and a page file.
+struct TestServer {
+  explicit TestServer(const std::function<void(ServerOptions&)>& configure = {}, bool always_wants = false);
+  ~TestServer();
+  unsigned short port() const { return server->port(); }
+  // Polls `condition` until it holds or `timeout` passes (for state with no event to wait on).
+  static bool eventually(const std::function<bool()>& condition, std::chrono::milliseconds timeout = expect_within);
+
+  std::shared_ptr<FakeProbe> probe = std::make_shared<FakeProbe>();
+  std::shared_ptr<LogCapture> log = std::make_shared<LogCapture>();
+  std::filesystem::path page;
+  std::string page_text;
+  std::unique_ptr<Server> server;
+};
+
+// How the server ended a connection, as the client saw it.
+struct Closed {
+  boost::beast::error_code error;  // websocket::error::closed after a close frame
+  int code = -1;                   // the close frame's code, -1 without one
+};
+
+// A WebSocket client on its own io_context; every wait has a deadline. A
+// receive() that times out leaves its read pending for the next call, so no
+// message is lost and nothing is cancelled.
+class TestClient {
+ public:
+  // Connects and upgrades; throws std::runtime_error when either fails.
+  explicit TestClient(unsigned short port);
+  ~TestClient();
+
+  boost::beast::error_code send_text(const std::string& text);
+  boost::beast::error_code send(const nlohmann::json& message) { return send_text(message.dump()); }
+  // The next server message, or nullopt when none arrives within `timeout`.
+  // Throws std::runtime_error if the connection ends.
+  std::optional<ServerMessage> receive(std::chrono::milliseconds timeout = expect_within);
+  // Skips messages until the connection ends; nullopt when it does not within `timeout`.
+  std::optional<Closed> wait_closed(std::chrono::milliseconds timeout = expect_within);
+  void close();  // polite WebSocket close (code 1000)
+  void drop();   // resets the TCP connection without any WebSocket close
+
+ private:
+  void start_read();
+  bool run_until(const bool& done, std::chrono::milliseconds timeout);
+
+  boost::asio::io_context io_;
+  boost::beast::websocket::stream<boost::beast::tcp_stream> ws_;
+  boost::beast::flat_buffer buffer_;
+  bool read_pending_ = false;
+  bool read_done_ = false;
+  boost::beast::error_code read_error_;
+};
+
+// One plain HTTP GET.
+boost::beast::http::response<boost::beast::http::string_body> http_get(unsigned short port, const std::string& target);
+// A WebSocket upgrade that is expected to be refused: the HTTP response.
+boost::beast::http::response<boost::beast::http::string_body> refused_upgrade(unsigned short port);
+
+// Decodes a JPEG frame payload to RGBA (TurboJPEG); throws on failure.
+render::RgbaImage decode_jpeg(const std::vector<std::uint8_t>& jpeg);
+
+}  // namespace epviz::serve::testing
