@@ -164,7 +164,7 @@ void ControlPanel::draw_case_and_body(const LiveScene& scene, PanelActions& out)
   if (ImGui::Checkbox("stay in case", &stay)) {
     LiveSetup v = s;
     v.stay_in_case = stay;
-    out.view = v;
+    out.rerun = v;
   }
   note_item("stay");
   if (current == physics::Case::custom) ImGui::EndDisabled();

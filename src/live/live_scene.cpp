@@ -50,9 +50,13 @@ void LiveScene::set_view(const scene::SceneSettings& s, double speed) {
   setup_.scene.camera = s.camera;
   setup_.scene.colours = s.colours;
   setup_.speed = speed;
-  frame_.layers = s.layers;
-  frame_.camera = s.camera;
-  frame_.colours = s.colours;
+  show_view_settings();
+}
+
+void LiveScene::show_view_settings() {
+  frame_.layers = setup_.scene.layers;
+  frame_.camera = setup_.scene.camera;
+  frame_.colours = setup_.scene.colours;
 }
 
 const scene::Frame& LiveScene::update(double wall_seconds) {
@@ -75,10 +79,7 @@ void LiveScene::advance_to(double t) {
     playing_ = false;
     return;
   }
-  // The view settings live in the setup (they change without a restart).
-  frame_.layers = setup_.scene.layers;
-  frame_.camera = setup_.scene.camera;
-  frame_.colours = setup_.scene.colours;
+  show_view_settings();
   drift_history_.push_back({frame_.t, monitor_->relative_drift(monitor_->at(source_->latest()))});
   if (drift_history_.size() > kDriftHistory) drift_history_.pop_front();
 }

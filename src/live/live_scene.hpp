@@ -54,6 +54,8 @@ class LiveScene {
  private:
   static std::unique_ptr<scene::FrameSource> make_source(const LiveSetup& setup);
   void advance_to(double t);
+  // The view settings live in the setup (they change without a restart).
+  void show_view_settings();
 
   LiveSetup setup_;
   std::unique_ptr<scene::FrameSource> source_;

@@ -39,10 +39,7 @@ void LiveSession::resize(int width, int height) {
     paint::PainterOptions po;
     po.builtin_font = options_.builtin_font;
     painter_ = std::make_unique<paint::FramePainter>(gl_, width, height, po);
-    ImGuiContext* previous = ImGui::GetCurrentContext();
-    ImGui::SetCurrentContext(painter_->gui().context());
-    render::GuiInput::configure(ImGui::GetIO());
-    ImGui::SetCurrentContext(previous);
+    render::GuiInput::configure(painter_->gui().context());
   } else {
     painter_->resize(width, height);
   }
@@ -113,12 +110,7 @@ const render::RgbaImage& LiveSession::render() {
   const double dt = wall_seconds_since_last_frame();
   render::ImGuiOverlay& gui = painter_->gui();
   gui.set_delta_time(float(dt));
-  {
-    ImGuiContext* previous = ImGui::GetCurrentContext();
-    ImGui::SetCurrentContext(gui.context());
-    gui_input_.apply(ImGui::GetIO(), [this](const render::InputEvent& e) { observe(e); });
-    ImGui::SetCurrentContext(previous);
-  }
+  gui_input_.apply(gui.context(), [this](const render::InputEvent& e) { observe(e); });
   scene_.update(dt);
   const scene::Frame& frame = scene_.frame();
   // The scene moves right of the expanded panel when the window is wide
@@ -146,14 +138,7 @@ void LiveSession::apply(const PanelActions& a) {
   if (a.toggle_play) scene_.set_playing(!scene_.playing());
   if (a.step) scene_.step();
   if (a.restart) scene_.restart();
-  if (a.view) {
-    scene_.set_view(a.view->scene, a.view->speed);
-    if (a.view->stay_in_case != scene_.setup().stay_in_case) {
-      LiveSetup s = scene_.setup();
-      s.stay_in_case = a.view->stay_in_case;
-      rerun(s);
-    }
-  }
+  if (a.view) scene_.set_view(a.view->scene, a.view->speed);
   if (a.rerun) rerun(*a.rerun);
   if (a.load_case) {
     LiveSetup s = options_.presets(*a.load_case);
@@ -179,6 +164,7 @@ void LiveSession::rerun(const LiveSetup& s) {
 
 void LiveSession::deliver(serve::Download d) {
   std::string note = "sent " + d.name + " to the browser";
+  bool failed = false;
   if (!options_.save_dir.empty()) {
     const auto path = options_.save_dir / d.name;
     try {
@@ -187,9 +173,10 @@ void LiveSession::deliver(serve::Download d) {
       note = "saved " + path.string();
     } catch (const std::exception& e) {
       note = std::string("could not save: ") + e.what();
+      failed = true;
     }
   }
-  panel_.set_message(note, note.rfind("could not", 0) == 0);
+  panel_.set_message(note, failed);
   notices_.push_back(note);
   downloads_.push_back(std::move(d));
 }

@@ -2,6 +2,8 @@
 
 #include <imgui.h>
 
+#include "render/imgui_context_scope.hpp"
+
 #include <bitset>
 #include <cctype>
 #include <utility>
@@ -42,7 +44,9 @@ int gui_key_index(const std::string& dom_key) {
   return -1;
 }
 
-void GuiInput::configure(ImGuiIO& io) {
+void GuiInput::configure(ImGuiContext* context) {
+  ImGuiContextScope scope(context);
+  ImGuiIO& io = ImGui::GetIO();
   for (const auto& k : kNamedKeys) io.KeyMap[k.key] = kNamedBase + k.key;
   io.KeyMap[ImGuiKey_KeyPadEnter] = kNamedBase + ImGuiKey_Enter;
   io.KeyMap[ImGuiKey_A] = 'A';
@@ -131,7 +135,9 @@ void apply_one(ImGuiIO& io, const InputEvent& e, FrameChanges& changed) {
 
 }  // namespace
 
-void GuiInput::apply(ImGuiIO& io, const std::function<void(const InputEvent&)>& observe) {
+void GuiInput::apply(ImGuiContext* context, const std::function<void(const InputEvent&)>& observe) {
+  ImGuiContextScope scope(context);
+  ImGuiIO& io = ImGui::GetIO();
   // The wheel is an amount per frame, not a state.
   io.MouseWheel = 0.0f;
   io.MouseWheelH = 0.0f;

@@ -12,23 +12,24 @@
 
 #include "render/input_event.hpp"
 
-struct ImGuiIO;
+struct ImGuiContext;
 
 namespace epviz::render {
 
 class GuiInput {
  public:
-  // Sets io's key map for the keys this adapter reports. Call once per context.
-  static void configure(ImGuiIO& io);
+  // Sets the context's key map for the keys this adapter reports. Call once per context.
+  static void configure(ImGuiContext* context);
 
   void push(InputEvent event);
   bool pending() const { return !queue_.empty(); }
   std::size_t queued() const { return queue_.size(); }
 
-  // Applies the events that fit into the next frame to `io` (call with the
-  // context current, before NewFrame) and passes each one applied to
-  // `observe`, in order (the application's own shortcuts and camera drags).
-  void apply(ImGuiIO& io, const std::function<void(const InputEvent&)>& observe = {});
+  // Applies the events that fit into the next frame to the context's io
+  // (call before its NewFrame) and passes each one applied to `observe`, in
+  // order, with the context current (the application's own shortcuts and
+  // camera drags, which may read ImGui::GetIO()).
+  void apply(ImGuiContext* context, const std::function<void(const InputEvent&)>& observe = {});
 
  private:
   std::deque<InputEvent> queue_;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "render/gl.hpp"
+#include "render/imgui_context_scope.hpp"
 #include "render/imgui_gl_renderer.hpp"
 
 namespace epviz::render {
@@ -31,19 +32,6 @@ std::filesystem::path default_font_file() {
 
 ImU32 to_imgui_colour(const glm::vec4& c) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, c.a)); }
 
-// Restores the ImGui context that was current before, so overlays can nest.
-class ContextScope {
-public:
-    explicit ContextScope(ImGuiContext* context) : previous_(ImGui::GetCurrentContext()) {
-        ImGui::SetCurrentContext(context);
-    }
-    ~ContextScope() { ImGui::SetCurrentContext(previous_); }
-    ContextScope(const ContextScope&) = delete;
-    ContextScope& operator=(const ContextScope&) = delete;
-
-private:
-    ImGuiContext* previous_;
-};
 
 }  // namespace
 
@@ -57,7 +45,7 @@ glm::vec2 anchored_top_left(const glm::vec2& point, const glm::vec2& size, TextA
 ImGuiOverlay::ImGuiOverlay(const OverlayOptions& options) : options_(options) {
     IMGUI_CHECKVERSION();
     context_ = ImGui::CreateContext();
-    ContextScope scope(context_);
+    ImGuiContextScope scope(context_);
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr;  // no imgui.ini: a render must not depend on or leave state
     io.LogFilename = nullptr;
@@ -88,7 +76,7 @@ ImGuiOverlay::ImGuiOverlay(const OverlayOptions& options) : options_(options) {
 }
 
 ImGuiOverlay::~ImGuiOverlay() {
-    ContextScope scope(context_);
+    ImGuiContextScope scope(context_);
     gl_renderer_.reset();  // needs the ImGui context alive
     ImGui::DestroyContext(context_);
 }
@@ -102,7 +90,7 @@ void ImGuiOverlay::begin(int width, int height) {
 }
 
 void ImGuiOverlay::warm_up(int width, int height, const std::function<void()>& build_ui) {
-    ContextScope scope(context_);
+    ImGuiContextScope scope(context_);
     begin(width, height);
     if (build_ui) build_ui();
     ImGui::EndFrame();
@@ -133,7 +121,7 @@ void ImGuiOverlay::add_labels(std::span<const PlacedLabel> labels) {
 void ImGuiOverlay::draw_frame(int width, int height, const std::function<void()>& build_ui,
                               std::span<const PlacedLabel> labels) {
     if (!warmed_up_) warm_up(width, height, build_ui);
-    ContextScope scope(context_);
+    ImGuiContextScope scope(context_);
     begin(width, height);
     if (build_ui) build_ui();
     add_labels(labels);
