@@ -148,9 +148,9 @@ std::function<int()> add_simulate_command(CLI::App& app) {
   cmd->add_option("--weight", raw->weight, "weight P = m g");
   cmd->add_option("--omega", raw->omega, "initial angular velocity W1,W2,W3 (body axes)");
   cmd->add_option("--gamma", raw->gamma, "initial unit vertical G1,G2,G3 (body axes)");
-  cmd->add_option("--formulation", raw->formulation, "direct|riccati|spinor (default direct)");
-  cmd->add_option("--method", raw->method,
-                  "rk4|dopri5|dop853|midpoint|gauss4|gauss6|splitting|exact-split2|exact-split4 (default dop853)");
+  cmd->add_option("--formulation", raw->formulation,
+                  sim::names_joined(sim::all_formulations()) + " (default direct)");
+  cmd->add_option("--method", raw->method, sim::names_joined(sim::all_methods()) + " (default dop853)");
   cmd->add_option("--tol", raw->tol, "relative and absolute tolerance of adaptive methods (default 1e-10)");
   cmd->add_option("--step", raw->step, "largest step of fixed-step methods (default 0.01)");
   cmd->add_option("--t-end", raw->t_end, "final time (default 20)");

@@ -16,12 +16,6 @@ void take(Given<T>& mine, const Given<T>& theirs) {
 
 Eigen::Vector3d to_vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
 
-std::string join_names(const auto& items) {
-  std::string s;
-  for (const auto& i : items) s += (s.empty() ? "" : ", ") + std::string(sim::name(i));
-  return s;
-}
-
 std::string case_names() {
   std::string s;
   for (const auto& p : physics::case_presets()) s += (s.empty() ? "" : ", ") + p.name;
@@ -121,14 +115,14 @@ sim::RunSpec resolve(const SimulationFields& f) {
     auto v = sim::formulation_from_name(*f.formulation);
     if (!v)
       throw UsageError(f.formulation.origin + ": unknown formulation '" + *f.formulation +
-                       "' (allowed: " + join_names(sim::all_formulations()) + ")");
+                       "' (allowed: " + sim::names_joined(sim::all_formulations(), ", ") + ")");
     spec.formulation = *v;
   }
   if (f.method) {
     auto v = sim::method_from_name(*f.method);
     if (!v)
       throw UsageError(f.method.origin + ": unknown method '" + *f.method +
-                       "' (allowed: " + join_names(sim::all_methods()) + ")");
+                       "' (allowed: " + sim::names_joined(sim::all_methods(), ", ") + ")");
     spec.method = *v;
   }
   if (auto why = sim::incompatibility(spec.method, spec.formulation))
@@ -147,7 +141,7 @@ sim::RunSpec resolve(const SimulationFields& f) {
     if (f.tol)
       throw UsageError(f.tol.origin + ": method " + m +
                        " has a fixed step and takes --step, not a tolerance "
-                       "(adaptive methods: dopri5, dop853)");
+                       "(adaptive methods: " + sim::names_joined(sim::adaptive_methods(), ", ") + ")");
     if (f.step) spec.step = *f.step;
   }
   if (f.chart_switch) {

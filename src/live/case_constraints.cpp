@@ -12,7 +12,11 @@ void tie_moments(Vector3d& I, double k, Edited edited) {
   switch (edited) {
     case Edited::inertia_3: I.x() = I.y() = k * I.z(); break;
     case Edited::inertia_2: I.x() = I.y(); I.z() = I.y() / k; break;
-    default: I.y() = I.x(); I.z() = I.x() / k; break;
+    case Edited::inertia_1:
+    case Edited::com:
+    case Edited::weight:
+    case Edited::omega:
+    case Edited::gamma: I.y() = I.x(); I.z() = I.x() / k; break;
   }
 }
 

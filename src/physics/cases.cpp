@@ -45,6 +45,8 @@ std::vector<CasePreset> make_presets() {
     CasePreset p;
     p.id = Case::euler;
     p.name = "euler";
+    p.title = "Euler top (torque-free)";
+    p.integral_symbol = "|L|^2";
     p.summary = "torque-free body spun near its intermediate axis: periodic flips (tennis racket effect)";
     p.conditions = "r = 0 or P = 0";
     p.extra_integral = "|L|^2 = (I1 Omega1)^2 + (I2 Omega2)^2 + (I3 Omega3)^2";
@@ -56,6 +58,8 @@ std::vector<CasePreset> make_presets() {
     CasePreset p;
     p.id = Case::lagrange;
     p.name = "lagrange";
+    p.title = "Lagrange top";
+    p.integral_symbol = "Omega3";
     p.summary = "symmetric spinning top tilted 30 degrees: slow precession with cusped nutation";
     p.conditions = "I1 = I2, a0 = b0 = 0";
     p.extra_integral = "Omega3";
@@ -67,6 +71,8 @@ std::vector<CasePreset> make_presets() {
     CasePreset p;
     p.id = Case::kovalevskaya;
     p.name = "kovalevskaya";
+    p.title = "Kovalevskaya top";
+    p.integral_symbol = "K";
     p.summary = "Kovalevskaya top: centre of mass in the equatorial plane, quasi-periodic tumbling";
     p.conditions = "I1 = I2 = 2 I3, b0 = 0, c0 = 0";
     p.extra_integral =
@@ -79,6 +85,8 @@ std::vector<CasePreset> make_presets() {
     CasePreset p;
     p.id = Case::goryachev_chaplygin;
     p.name = "goryachev-chaplygin";
+    p.title = "Goryachev-Chaplygin top";
+    p.integral_symbol = "G";
     p.summary = "Goryachev-Chaplygin top on the zero level of the area integral: quasi-periodic motion";
     p.conditions = "I1 = I2 = 4 I3, b0 = c0 = 0, initial C0 = 0";
     p.extra_integral = "G = Omega3 (Omega1^2 + Omega2^2) - (P a0 / I3) Omega1 gamma3";
@@ -94,6 +102,8 @@ std::vector<CasePreset> make_presets() {
     CasePreset p;
     p.id = Case::hess;
     p.name = "hess";
+    p.title = "Hess top";
+    p.integral_symbol = "H";
     p.summary = "Hess motion: on the invariant relation H = 0 the body swings like a pendulum about its lowest position";
     p.conditions =
         "I1 > I2 > I3, b0 = 0, c0 = +-a0 sqrt(I1 (I2 - I3)) / sqrt(I3 (I1 - I2)), initial H = 0";
@@ -111,6 +121,8 @@ std::vector<CasePreset> make_presets() {
     CasePreset p;
     p.id = Case::generic;
     p.name = "generic";
+    p.title = "Generic heavy top (chaotic)";
+    p.integral_symbol = "";
     p.summary = "asymmetric body with an off-axis centre of mass: chaotic tumbling";
     p.conditions = "none";
     p.extra_integral = "";

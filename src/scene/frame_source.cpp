@@ -19,27 +19,11 @@ std::string fmt3(const Eigen::Vector3d& v) {
 }  // namespace
 
 std::string case_title(physics::Case c) {
-  switch (c) {
-    case physics::Case::euler: return "Euler top (torque-free)";
-    case physics::Case::lagrange: return "Lagrange top";
-    case physics::Case::kovalevskaya: return "Kovalevskaya top";
-    case physics::Case::goryachev_chaplygin: return "Goryachev-Chaplygin top";
-    case physics::Case::hess: return "Hess top";
-    case physics::Case::generic: return "Generic heavy top (chaotic)";
-    case physics::Case::custom: break;
-  }
-  return "Heavy top";
+  return c == physics::Case::custom ? "Heavy top" : physics::preset(c).title;
 }
 
 std::string extra_integral_symbol(physics::Case c) {
-  switch (c) {
-    case physics::Case::euler: return "|L|^2";
-    case physics::Case::lagrange: return "Omega3";
-    case physics::Case::kovalevskaya: return "K";
-    case physics::Case::goryachev_chaplygin: return "G";
-    case physics::Case::hess: return "H";
-    default: return "";
-  }
+  return c == physics::Case::custom ? "" : physics::preset(c).integral_symbol;
 }
 
 FrameSource::FrameSource(const ScenePlan& plan, const SceneSettings& settings)

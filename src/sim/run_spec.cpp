@@ -1,76 +1,71 @@
 #include "sim/run_spec.hpp"
 
-#include <array>
-#include <utility>
-
 namespace epviz::sim {
-namespace {
+std::string_view name(Formulation f) { return info(f).name; }
+std::string_view name(Method m) { return info(m).name; }
 
-constexpr std::array<std::pair<Formulation, std::string_view>, 3> kFormulations{{
-    {Formulation::direct, "direct"},
-    {Formulation::riccati, "riccati"},
-    {Formulation::spinor, "spinor"},
-}};
-
-constexpr std::array<std::pair<Method, std::string_view>, 9> kMethods{{
-    {Method::rk4, "rk4"},
-    {Method::dopri5, "dopri5"},
-    {Method::dop853, "dop853"},
-    {Method::midpoint, "midpoint"},
-    {Method::gauss4, "gauss4"},
-    {Method::gauss6, "gauss6"},
-    {Method::splitting, "splitting"},
-    {Method::exact_split2, "exact-split2"},
-    {Method::exact_split4, "exact-split4"},
-}};
-
-template <class Table, class Key>
-std::string_view lookup_name(const Table& table, Key key) {
-  for (const auto& [k, n] : table)
-    if (k == key) return n;
-  return "?";
-}
-
-template <class Table>
-auto lookup_key(const Table& table, std::string_view s)
-    -> std::optional<typename Table::value_type::first_type> {
-  for (const auto& [k, n] : table)
-    if (n == s) return k;
+std::optional<Formulation> formulation_from_name(std::string_view s) {
+  for (const auto& row : kFormulationTable)
+    if (row.name == s) return row.formulation;
   return std::nullopt;
 }
 
-}  // namespace
-
-std::string_view name(Formulation f) { return lookup_name(kFormulations, f); }
-std::string_view name(Method m) { return lookup_name(kMethods, m); }
-std::optional<Formulation> formulation_from_name(std::string_view s) { return lookup_key(kFormulations, s); }
-std::optional<Method> method_from_name(std::string_view s) { return lookup_key(kMethods, s); }
+std::optional<Method> method_from_name(std::string_view s) {
+  for (const auto& row : kMethodTable)
+    if (row.name == s) return row.method;
+  return std::nullopt;
+}
 
 const std::vector<Formulation>& all_formulations() {
-  static const std::vector<Formulation> all{Formulation::direct, Formulation::riccati,
-                                            Formulation::spinor};
+  static const std::vector<Formulation> all = [] {
+    std::vector<Formulation> v;
+    for (const auto& row : kFormulationTable) v.push_back(row.formulation);
+    return v;
+  }();
   return all;
 }
 
 const std::vector<Method>& all_methods() {
-  static const std::vector<Method> all{Method::rk4,    Method::dopri5, Method::dop853,
-                                       Method::midpoint, Method::gauss4, Method::gauss6,
-                                       Method::splitting, Method::exact_split2,
-                                       Method::exact_split4};
+  static const std::vector<Method> all = [] {
+    std::vector<Method> v;
+    for (const auto& row : kMethodTable) v.push_back(row.method);
+    return v;
+  }();
   return all;
 }
 
-bool is_adaptive(Method m) { return m == Method::dopri5 || m == Method::dop853; }
+std::vector<Method> adaptive_methods() {
+  std::vector<Method> v;
+  for (const auto& row : kMethodTable)
+    if (row.adaptive) v.push_back(row.method);
+  return v;
+}
+
+bool is_adaptive(Method m) { return info(m).adaptive; }
+int order(Method m) { return info(m).order; }
+
+std::string names_joined(const std::vector<Method>& methods, std::string_view sep) {
+  std::string out;
+  for (auto m : methods) {
+    if (!out.empty()) out += sep;
+    out += name(m);
+  }
+  return out;
+}
+
+std::string names_joined(const std::vector<Formulation>& formulations, std::string_view sep) {
+  std::string out;
+  for (auto f : formulations) {
+    if (!out.empty()) out += sep;
+    out += name(f);
+  }
+  return out;
+}
 
 std::optional<std::string> incompatibility(Method m, Formulation f) {
-  if (m == Method::splitting && f != Formulation::direct)
-    return "method splitting needs formulation direct (its sub-flows are exact rotations of "
-           "(I Omega, gamma)); got formulation " + std::string(name(f));
-  if ((m == Method::exact_split2 || m == Method::exact_split4) && f != Formulation::direct)
-    return "method " + std::string(name(m)) +
-           " needs formulation direct (its sub-flows are the gravity kick and the exact free "
-           "rigid body flow of (Omega, gamma)); got formulation " + std::string(name(f));
-  return std::nullopt;
+  if (!info(m).needs_direct || f == Formulation::direct) return std::nullopt;
+  return "method " + std::string(name(m)) + " needs formulation direct (" + std::string(info(m).why_direct) +
+         "); got formulation " + std::string(name(f));
 }
 
 RunSpec preset_run(physics::Case c, Method m, Formulation f, double t_end, int samples) {

@@ -8,11 +8,10 @@
 
 #include "physics/body.hpp"
 #include "physics/cases.hpp"
+#include "sim/methods.hpp"
 
 namespace epviz::sim {
 
-enum class Formulation { direct, riccati, spinor };
-enum class Method { rk4, dopri5, dop853, midpoint, gauss4, gauss6, splitting, exact_split2, exact_split4 };
 
 std::string_view name(Formulation f);
 std::string_view name(Method m);
@@ -20,10 +19,15 @@ std::optional<Formulation> formulation_from_name(std::string_view s);
 std::optional<Method> method_from_name(std::string_view s);
 const std::vector<Formulation>& all_formulations();
 const std::vector<Method>& all_methods();
+std::vector<Method> adaptive_methods();
 
-bool is_adaptive(Method m);  // dopri5, dop853: use tol; the others use a fixed step
-// Why `m` cannot integrate formulation `f`, or nullopt (splitting, exact-split2
-// and exact-split4 need the direct formulation's exact sub-flows).
+bool is_adaptive(Method m);  // uses tol and dense output; the others use a fixed step
+int order(Method m);         // classical order of the global error
+// "rk4|dopri5|..." for help texts and error messages.
+std::string names_joined(const std::vector<Method>& methods, std::string_view sep = "|");
+std::string names_joined(const std::vector<Formulation>& formulations, std::string_view sep = "|");
+// Why `m` cannot integrate formulation `f`, or nullopt (methods whose
+// sub-flows are exact only in the direct formulation need it).
 std::optional<std::string> incompatibility(Method m, Formulation f);
 
 struct RunSpec {

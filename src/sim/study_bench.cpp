@@ -92,22 +92,6 @@ std::optional<double> StudyRow::number(const std::string& key) const {
   return std::nullopt;
 }
 
-int method_order(Method m) {
-  switch (m) {
-    case Method::rk4: return 4;
-    case Method::dopri5: return 5;
-    case Method::dop853: return 8;
-    case Method::midpoint: return 2;
-    case Method::gauss4: return 4;
-    case Method::gauss6: return 6;
-    case Method::splitting: return 2;
-    default: break;
-  }
-  const std::string_view n = name(m);
-  if (!n.empty() && std::isdigit(static_cast<unsigned char>(n.back()))) return n.back() - '0';
-  return 2;
-}
-
 TimedRun timed_run(const RunSpec& spec, int repeats) {
   TimedRun t;
   t.result = simulate(spec);
@@ -172,7 +156,7 @@ std::vector<StudyRow> work_precision_study(const StudyOptions& o) {
           }
         } else {
           long n = first_steps(t_end, period, 1.0 / 8.0);
-          const int j = halvings_per_point(method_order(m));
+          const int j = halvings_per_point(order(m));
           for (int k = 0; k < max_points; ++k, n <<= j) {
             spec.step = t_end / double(n);
             const auto [err, cost] = one(spec);

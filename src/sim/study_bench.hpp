@@ -38,10 +38,6 @@ struct StudyOptions {
   std::function<void(const std::string&)> progress;  // optional: told what runs next
 };
 
-// Convergence order of a method (for choosing fixed-step sequences): known
-// methods by name; an unknown one by the digit its name ends with, else 2.
-int method_order(Method m);
-
 
 // Median CPU time of `repeats` runs of spec (the first run's result is returned).
 struct TimedRun {
