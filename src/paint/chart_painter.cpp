@@ -128,6 +128,7 @@ void add_shape(DrawList& list, glm::vec2 c, MarkerShape shape, float r, const gl
     case MarkerShape::triangle_down:
       poly = {{c.x, c.y + r * 1.15f}, {c.x - r, c.y - r * 0.75f}, {c.x + r, c.y - r * 0.75f}};
       break;
+    case MarkerShape::circle:  // drawn above as a round marker
     case MarkerShape::diamond:
       poly = {{c.x, c.y - r * 1.2f}, {c.x + r, c.y}, {c.x, c.y + r * 1.2f}, {c.x - r, c.y}};
       break;
