@@ -16,11 +16,11 @@ enum class Case { custom, euler, lagrange, kovalevskaya, goryachev_chaplygin, he
 struct CasePreset {
   Case id;
   std::string name;        // "euler", "lagrange", "kovalevskaya", "goryachev-chaplygin", "hess", "generic"
-  std::string title;       // what a picture calls it: "Kovalevskaya top"
+  std::string_view title;  // what a picture calls it: "Kovalevskaya top"
   std::string summary;     // one line: what motion it shows
   std::string conditions;  // human-readable defining conditions
   std::string extra_integral;  // formula of the fourth integral ("" for generic)
-  std::string integral_symbol; // its short name in overlays ("K"; "" for generic)
+  std::string_view integral_symbol;  // its short name in overlays ("K"; "" for generic)
   Body body;
   InitialState initial;    // satisfies the conditions (and is chaotic for generic)
 };

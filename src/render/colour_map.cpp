@@ -32,8 +32,6 @@ glm::vec3 oklab_to_srgb(const glm::vec3& lab) {
 
 }  // namespace
 
-glm::vec3 oklch_to_srgb(const OkLch& colour) { return oklab_to_srgb(oklch_to_oklab(colour)); }
-
 ColourMap::ColourMap(std::string name, std::vector<OkLch> control_points) : name_(std::move(name)) {
     if (control_points.size() < 2) throw std::invalid_argument("a colour map needs at least two control points");
     for (const auto& point : control_points) lab_.push_back(oklch_to_oklab(point));

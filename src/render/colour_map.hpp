@@ -16,9 +16,6 @@ struct OkLch {
     float hue_degrees;
 };
 
-// OKLab/OKLCH to sRGB (gamma-encoded, each channel clamped to [0, 1]).
-glm::vec3 oklch_to_srgb(const OkLch& colour);
-
 class ColourMap {
 public:
     // Control points spread evenly over [0, 1], at least two.

@@ -93,13 +93,6 @@ MeshData make_uv_sphere(float radius, int slices, int stacks) {
     return mesh;
 }
 
-MeshData make_ellipsoid(const glm::vec3& radii, int slices, int stacks) {
-    require(radii.x > 0 && radii.y > 0 && radii.z > 0, "ellipsoid radii must be positive");
-    MeshData mesh;
-    append_mesh(mesh, make_uv_sphere(1.0f, slices, stacks), glm::scale(glm::mat4(1.0f), radii));
-    return mesh;
-}
-
 MeshData make_box(const glm::vec3& half_extents) {
     require(half_extents.x > 0 && half_extents.y > 0 && half_extents.z > 0, "box half extents must be positive");
     MeshData mesh;

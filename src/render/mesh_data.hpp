@@ -22,7 +22,6 @@ void append_mesh(MeshData& mesh, const MeshData& part, const glm::mat4& transfor
 // Sphere of `radius` about the origin; `slices` around the z axis, `stacks` from pole to pole.
 MeshData make_uv_sphere(float radius = 1.0f, int slices = 48, int stacks = 24);
 // Ellipsoid with semi-axes `radii` along x, y, z (a scaled sphere with correct normals).
-MeshData make_ellipsoid(const glm::vec3& radii, int slices = 48, int stacks = 24);
 // Box centred on the origin with flat faces.
 MeshData make_box(const glm::vec3& half_extents);
 // Cylinder along +z from z = 0 to z = length.

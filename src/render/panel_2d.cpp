@@ -82,12 +82,6 @@ glm::vec2 Panel2D::to_pixel(const glm::dvec2& data) const {
     return {static_cast<float>(area_.x + u * area_.width), static_cast<float>(area_.y + (1.0 - v) * area_.height)};
 }
 
-glm::dvec2 Panel2D::to_data(const glm::vec2& pixel) const {
-    const double u = (pixel.x - area_.x) / static_cast<double>(area_.width);
-    const double v = 1.0 - (pixel.y - area_.y) / static_cast<double>(area_.height);
-    return {range_.x_min + u * (range_.x_max - range_.x_min), range_.y_min + v * (range_.y_max - range_.y_min)};
-}
-
 bool Panel2D::contains(const glm::dvec2& data) const {
     return data.x >= range_.x_min && data.x <= range_.x_max && data.y >= range_.y_min && data.y <= range_.y_max;
 }

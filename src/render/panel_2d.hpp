@@ -53,9 +53,8 @@ public:
 
     const Viewport& plot_area() const { return area_; }
     const DataRange& range() const { return range_; }
-    // Data -> image pixels (y down) and back.
+    // Data -> image pixels (y down).
     glm::vec2 to_pixel(const glm::dvec2& data) const;
-    glm::dvec2 to_data(const glm::vec2& pixel) const;
     bool contains(const glm::dvec2& data) const;
 
     // Background, grid, axis lines through 0, frame, ticks and tick labels.

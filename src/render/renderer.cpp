@@ -101,15 +101,6 @@ void Renderer::set_gl_viewport(const Viewport& viewport) const {
     glViewport(viewport.x, framebuffer_.height() - viewport.y - viewport.height, viewport.width, viewport.height);
 }
 
-void Renderer::clear_viewport(const Viewport& viewport, const glm::vec4& colour) {
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(viewport.x, framebuffer_.height() - viewport.y - viewport.height, viewport.width, viewport.height);
-    glDepthMask(GL_TRUE);
-    glClearColor(colour.r, colour.g, colour.b, colour.a);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glDisable(GL_SCISSOR_TEST);
-}
-
 void Renderer::draw_meshes(const DrawList& list, const Camera& camera, const Lighting& lighting,
                            bool translucent) {
     std::vector<std::size_t> order;

@@ -59,8 +59,6 @@ public:
 
     // Binds the frame and clears it to `background` (sRGB + alpha).
     void begin_frame(const glm::vec4& background);
-    // Fills `viewport` with a colour (a 3D view's or a panel's own background).
-    void clear_viewport(const Viewport& viewport, const glm::vec4& colour);
 
     // Draws a 3D list seen by `camera` into `viewport` with depth testing:
     // opaque meshes, fills, lines and markers first (lines and markers write

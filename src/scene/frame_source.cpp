@@ -19,11 +19,11 @@ std::string fmt3(const Eigen::Vector3d& v) {
 }  // namespace
 
 std::string case_title(physics::Case c) {
-  return c == physics::Case::custom ? "Heavy top" : physics::preset(c).title;
+  return c == physics::Case::custom ? "Heavy top" : std::string(physics::preset(c).title);
 }
 
 std::string extra_integral_symbol(physics::Case c) {
-  return c == physics::Case::custom ? "" : physics::preset(c).integral_symbol;
+  return c == physics::Case::custom ? "" : std::string(physics::preset(c).integral_symbol);
 }
 
 FrameSource::FrameSource(const ScenePlan& plan, const SceneSettings& settings)

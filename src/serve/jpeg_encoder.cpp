@@ -50,10 +50,4 @@ std::vector<std::uint8_t> JpegEncoder::encode(int width, int height, std::span<c
   return {buffer_, buffer_ + size};
 }
 
-std::vector<std::uint8_t> encode_jpeg_rgba(int width, int height, std::span<const std::uint8_t> rgba,
-                                           int quality) {
-  JpegEncoder encoder;
-  return encoder.encode(width, height, rgba, quality);
-}
-
 }  // namespace epviz::serve

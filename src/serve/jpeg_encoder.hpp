@@ -30,8 +30,4 @@ class JpegEncoder {
   unsigned long capacity_ = 0;
 };
 
-// One-off convenience (creates a handle per call).
-std::vector<std::uint8_t> encode_jpeg_rgba(int width, int height, std::span<const std::uint8_t> rgba,
-                                           int quality);
-
 }  // namespace epviz::serve
