@@ -1,0 +1,50 @@
+#!/usr/bin/env python3
+"""Checks that each module's include edges are its link edges.
+
+A module is a folder under src/ built as the library epviz_<folder> by
+CMakeLists.txt's epviz_module(<folder> DEPS ...). For every module, the set of
+other modules whose headers it includes must equal the set of epviz_<module>
+libraries it lists in DEPS, so that the build graph says what the code does.
+The command line (src/app) is checked against EPVIZ_APP_DEPS and the optional
+libraries it adds with target_link_libraries(epviz ...).
+Exit 0 when they match, 1 with one line per mismatch otherwise.
+"""
+import pathlib
+import re
+import sys
+
+root = pathlib.Path(__file__).resolve().parent.parent
+cmake = (root / "CMakeLists.txt").read_text()
+modules = sorted(p.name for p in (root / "src").iterdir() if p.is_dir())
+
+declared = {}
+for name, deps in re.findall(r"epviz_module\((\w+)\s+DEPS([^)]*)\)", cmake):
+    declared[name] = set(re.findall(r"\bepviz_(\w+)", deps))
+app = set()
+for body in re.findall(r"EPVIZ_APP_DEPS([^)]*)\)", cmake):
+    app |= set(re.findall(r"\bepviz_(\w+)", body))
+for body in re.findall(r"target_link_libraries\(epviz\s+PRIVATE([^)]*)\)", cmake):
+    app |= set(re.findall(r"\bepviz_(\w+)", body))
+declared["app"] = app - {"app"}
+
+include = re.compile(r'^\s*#\s*include\s+"(\w+)/', re.M)
+problems = []
+for m in modules:
+    used = set()
+    for f in (root / "src" / m).rglob("*"):
+        if f.suffix in (".cpp", ".hpp"):
+            used |= {u for u in include.findall(f.read_text()) if u in modules and u != m}
+    if m not in declared:
+        problems.append(f"src/{m}: not declared with epviz_module() in CMakeLists.txt")
+        continue
+    deps = declared[m] & set(modules)
+    for u in sorted(used - deps):
+        problems.append(f"src/{m} includes {u}/ headers but does not link epviz_{u}")
+    for d in sorted(deps - used):
+        problems.append(f"src/{m} links epviz_{d} but includes none of its headers")
+
+for p in problems:
+    print(p)
+if problems:
+    sys.exit(1)
+print(f"module edges: {len(modules)} modules, include edges match link edges")
