@@ -1,6 +1,6 @@
 #pragma once
 // The classical cases of the heavy top as named presets, their defining
-// conditions and their fourth integrals (math.md section 2).
+// conditions and their fourth integrals (docs/math.md §2.1-2.2).
 #include <optional>
 #include <string>
 #include <string_view>

@@ -1,5 +1,5 @@
 #pragma once
-// The Euler-Poisson equations in their direct form (math.md eqs. 1.1, 1.2):
+// The Euler-Poisson equations in their direct form (docs/math.md §1.2, eqs. 1.1, 1.2):
 // state (Omega, gamma), 6 dimensions, plus the exact sub-flows of the
 // Lie-Poisson splitting H = T1 + T2 + T3 + V.
 #include <Eigen/Core>

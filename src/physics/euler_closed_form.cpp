@@ -45,7 +45,7 @@ EulerClosedForm::EulerClosedForm(const Eigen::Vector3d& I, const Eigen::Vector3d
   if (std::abs(gap) <= 1e-12 * m2)
     throw std::invalid_argument(
         "EulerClosedForm: the motion lies on the separatrix (M^2 = 2 E I_mid)");
-  // Roles 1, 2, 3 of math.md: 3 = the axis Omega keeps its sign on.
+  // Roles 1, 2, 3 of docs/math.md §2.4: 3 = the axis Omega keeps its sign on.
   if (gap > 0.0) {
     ax_[0] = order[0]; ax_[1] = order[1]; ax_[2] = order[2];
   } else {

@@ -1,6 +1,6 @@
 #pragma once
 // Torque-free motion (Euler case) in closed form by Jacobi elliptic functions,
-// math.md section 2: a test oracle for the integrators.
+// docs/math.md §2.4: a test oracle for the integrators.
 #include <Eigen/Core>
 
 namespace epviz::physics {
@@ -23,7 +23,7 @@ class EulerClosedForm {
   int dominant_axis() const { return ax_[2]; }  // 0-based axis Omega never crosses zero on
 
  private:
-  int ax_[3];            // body axes playing the roles 1, 2, 3 of math.md
+  int ax_[3];            // body axes playing the roles 1, 2, 3 of docs/math.md §2.4
   double amp_[3];        // A1, nu A2, s3 A3 (signs included)
   double k_ = 0.0;
   double lambda_ = 0.0;

@@ -88,7 +88,7 @@ FreeRigidBodyFlow::Path FreeRigidBodyFlow::symmetric(double h, int s, Vector3d& 
   return Path::symmetric;
 }
 
-// Distinct moments. Labels 1, 2, 3 (math.md section 2): 3 is the axis Omega keeps
+// Distinct moments. Labels 1, 2, 3 (docs/math.md §2.4): 3 is the axis Omega keeps
 // its sign on (largest moment when M^2 > 2E I_mid, smallest otherwise):
 //   M1 = c1 cn(tau), M2 = c2 sn(tau), M3 = c3 dn(tau), tau = tau0 + lambda t.
 // Attitude (Celledoni et al. 2008, sec. 3): Q(t) = A(M0)^T R3(psi(t)) A(M(t)), with

@@ -6,7 +6,7 @@
 // computation of the free rigid body motion and its use in splitting methods",
 // SIAM J. Sci. Comput. 30(4), 2008):
 //   * M = I Omega follows the Euler equations in closed form (Jacobi elliptic
-//     functions, math.md section 2, any axis ordering, either side of the
+//     functions, docs/math.md §2.4-2.5, any axis ordering, either side of the
 //     separatrix);
 //   * the attitude is Q(t) = A(M(0))^T R3(psi(t)) A(M(t)), where A(M) is a
 //     rotation taking the body vector M/|M| to e3 and R3 a rotation about e3;

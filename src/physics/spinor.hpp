@@ -1,5 +1,5 @@
 #pragma once
-// The linearised Riccati formulation (math.md section 3, remedy 2): eta = p / q
+// The linearised Riccati formulation (docs/math.md §3.4): eta = p / q
 // with complex p, q (Cayley-Klein parameters),
 //   p' = (beta/2) p + delta q,   q' = -alpha p - (beta/2) q,
 //   alpha = (Omega2 + i Omega1)/2, beta = -i Omega3, delta = (Omega2 - i Omega1)/2,

@@ -1,5 +1,5 @@
 #pragma once
-// Stereographic coordinates of the unit sphere (math.md eq. 3.4, sigma = 1):
+// Stereographic coordinates of the unit sphere (docs/math.md eq. 3.4):
 //   gamma1 = -2 a / (1 + a^2 + b^2), gamma2 = -2 b / (1 + a^2 + b^2),
 //   gamma3 = (1 - a^2 - b^2) / (1 + a^2 + b^2).
 // The projection is from the south pole gamma = (0, 0, -1), which maps to infinity.

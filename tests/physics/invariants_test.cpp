@@ -1,5 +1,5 @@
 // First integrals and the cases' extra integrals: their derivative along the
-// direct rhs, computed here by the product rule from math.md's formulas.
+// direct rhs, computed here by the product rule from docs/math.md §1.3's formulas.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -61,7 +61,7 @@ Deriv d_energy(const Body& b, const Point& p) {
   return a.get();
 }
 
-// math.md section 2, written out here.
+// docs/math.md §2.1, written out here.
 double euler_L2(const Body& b, const Vector3d& w, const Vector3d&) {
   return b.inertia.cwiseProduct(w).squaredNorm();
 }
@@ -254,7 +254,7 @@ TEST(Invariants, ExtraIntegralsDriftWhenTheConditionBreaks) {
 }
 
 TEST(Invariants, GoryachevChaplyginNeedsZeroArea) {
-  // dG/dt = -(P a0 Omega2 / (4 I3^2)) C0 (math.md), so G drifts off C0 = 0.
+  // dG/dt = -(P a0 Omega2 / (4 I3^2)) C0 (docs/math.md eq. 2.1), so G drifts off C0 = 0.
   test::Random rng;
   for (int trial = 0; trial < 100; ++trial) {
     const Body body = random_case_body(Case::goryachev_chaplygin, rng);
