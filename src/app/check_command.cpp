@@ -38,9 +38,9 @@ namespace {
 namespace fs = std::filesystem;
 
 // Defaults chosen from measurement (docs/ci.md, "How the defaults were chosen").
-constexpr int kDefaultChannelThreshold = 4;        // of 255
-constexpr double kDefaultMaxDifferingPercent = 1;  // of the frame's pixels
-constexpr double kDefaultMinSsim = 0.98;
+constexpr int kDefaultChannelThreshold = 1;          // of 255
+constexpr double kDefaultMaxDifferingPercent = 0.5;  // of the frame's pixels
+constexpr double kDefaultMinSsim = 0.999;
 
 struct CheckOptions {
   std::vector<std::string> jobs;
@@ -594,7 +594,7 @@ std::function<int()> add_check_command(CLI::App& app) {
                   "pixel: largest channel difference 0..255 that counts as equal (default 4); "
                   "ssim: lowest SSIM that passes (default 0.98)");
   cmd->add_option("--max-differing", o->max_differing,
-                  "pixel: percentage of pixels allowed to differ (default 1)");
+                  "pixel: percentage of pixels allowed to differ (default 0.5)");
   cmd->add_option("-j,--jobs-in-parallel", o->workers, "check this many jobs at once (default 1)");
   cmd->add_option("--gl", o->gl, "offscreen GL backend (default: $EPVIZ_GL or osmesa)");
   return [o] { return run_check(*o); };

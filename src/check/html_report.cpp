@@ -23,7 +23,7 @@ table { border-collapse: collapse; } td, th { padding: 0.2em 0.8em; border-botto
 .pass { color: #17692c; } .fail { color: #b00020; font-weight: bold; }
 .frames { display: flex; gap: 1em; flex-wrap: wrap; }
 figure { margin: 0; } figcaption { text-align: center; color: #555; }
-img { display: block; max-width: 640px; border: 1px solid #999; image-rendering: pixelated; }
+img { display: block; min-width: 320px; max-width: 640px; border: 1px solid #999; image-rendering: pixelated; }
 .none { width: 160px; height: 120px; border: 1px dashed #999; display: flex; align-items: center; justify-content: center; }
 )";
 
