@@ -481,9 +481,14 @@ std::vector<std::future<JobOutcome>> check_jobs(const std::vector<CheckJob>& job
       }
       const Checker checker(o, t, gl);
       for (std::size_t i; (i = next->fetch_add(1)) < jobs.size();) {
+        // Created, used and destroyed under the paint lock (also on an exception).
+        std::unique_ptr<paint::FramePainter> painter;
+        auto drop_painter = [&] {
+          std::lock_guard lock(*paint_lock);
+          painter.reset();
+        };
         try {
           const auto& c = jobs[i];
-          std::unique_ptr<paint::FramePainter> painter;
           {
             std::lock_guard lock(*paint_lock);
             painter = std::make_unique<paint::FramePainter>(*context, c.job.scene.width,
@@ -491,13 +496,11 @@ std::vector<std::future<JobOutcome>> check_jobs(const std::vector<CheckJob>& job
           }
           const auto rendered =
               render_job_frames(c.plan, c.job.scene, c.frames, *painter, paint_lock.get());
-          {
-            std::lock_guard lock(*paint_lock);
-            painter.reset();
-          }
+          drop_painter();
           (*promises)[i].set_value(checker.check(c, i, rendered.images.data(),
                                                  rendered.images.size(), rendered.failure));
         } catch (...) {
+          drop_painter();
           (*promises)[i].set_exception(std::current_exception());
         }
       }
