@@ -221,6 +221,25 @@ TEST_F(Check, ParallelJobsGiveTheSameOutputInTheSameOrder) {
   EXPECT_LT(pc, pk);
 }
 
+TEST_F(Check, NumericalFailureFailsTheFramesFromThereOnAndWritesNoGoldens) {
+  // A steady rotation carries gamma exactly through the south pole; the north
+  // Riccati chart alone cannot follow it.
+  auto j = small_job();
+  j["simulation"] = {{"case", "euler"},          {"omega", {1, 0, 0}},    {"gamma", {0, 0.6, 0.8}},
+                     {"formulation", "riccati"}, {"chart_switch", false}, {"t_end", 6.0}};
+  j.erase("trail");
+  write_job(job_, j);
+  const auto u = epviz("check " + job() + " --update");
+  EXPECT_EQ(u.exit_code, 1) << u.out << u.err;
+  EXPECT_NE(u.out.find("numerical failure, no goldens written: dop853 failed at t = "),
+            std::string::npos)
+      << u.out;
+  EXPECT_FALSE(fs::exists(golden(0).parent_path()));
+  const auto r = epviz("check " + job());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.out.find("numerical failure before this frame"), std::string::npos) << r.out;
+}
+
 struct BadCheck {
   std::string name, args, must_name;
 };
