@@ -9,6 +9,7 @@
 #include "app/cases_command.hpp"
 #include "app/simulate_command.hpp"
 #ifdef EPVIZ_HAVE_RENDER
+#include "app/check_command.hpp"
 #include "app/render_command.hpp"
 #include "app/serve_command.hpp"
 #endif
@@ -26,6 +27,7 @@ int main(int argc, char** argv) {
   commands["bench"] = epviz::app::add_bench_command(app);
 #ifdef EPVIZ_HAVE_RENDER
   commands["render"] = epviz::app::add_render_command(app);
+  commands["check"] = epviz::app::add_check_command(app);
   commands["serve"] = epviz::app::add_serve_command(app);
 #endif
 

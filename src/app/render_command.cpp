@@ -9,6 +9,7 @@
 
 #include "app/bench_command.hpp"
 #include "app/cli_values.hpp"
+#include "app/job_frames.hpp"
 #include "app/render_job.hpp"
 #include "app/usage_error.hpp"
 #include "io/atomic_file.hpp"
@@ -62,12 +63,7 @@ PreparedJob prepare(RenderJob job, const RenderOptions& o) {
     throw UsageError("--resume: applies to PNG sequences only (a video is written whole)");
 
   PreparedJob p;
-  const sim::RunSpec run = resolve(job.simulation);
-  try {
-    p.plan = scene::plan_scene(run, job.scene);
-  } catch (const scene::PlanError& e) {
-    throw UsageError(job.file.string() + ": " + e.what());
-  }
+  p.plan = plan_job(job);
   try {
     p.range = o.frames.empty() ? io::all_frames(p.plan.frames) : io::parse_frame_range(o.frames, p.plan.frames);
   } catch (const io::FrameRangeError& e) {
@@ -110,7 +106,7 @@ RenderStats render_frames(const PreparedJob& p, paint::FramePainter& painter, co
   const auto& job = p.job;
   const auto& s = job.scene;
   fs::create_directories(job.output.dir);
-  scene::FrameSource source(p.plan, s);
+  JobFrameDrawer drawer(p.plan, s);
 
   std::unique_ptr<io::AsyncPngWriter> pngs;
   std::unique_ptr<io::VideoWriter> video;
@@ -137,8 +133,7 @@ RenderStats render_frames(const PreparedJob& p, paint::FramePainter& painter, co
         progress.advance();
         continue;
       }
-      const scene::Frame frame = source.frame(i);
-      const render::RgbaImage& image = painter.paint(frame);
+      const render::RgbaImage& image = drawer.draw(i, painter);
       if (pngs) pngs->submit(png_path, image.width, image.height, image.pixels);
       if (video) video->write_frame(image.pixels.data());
       if (!write_output) stats.kept = image;

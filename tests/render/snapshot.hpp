@@ -5,19 +5,18 @@
 // pixels allowed to exceed it (Blender uses 4/255 and 1 %).
 //
 // - A missing golden is a FAILURE, never a silent new baseline.
+// - The comparison is check::compare_pixels, the one `epviz check` uses.
 // - On failure the actual image and a diff image go to tests/snapshots/actual/
-//   (git-ignored): <name>.png and <name>.diff.png (over-threshold pixels red,
-//   the rest a faded copy of the actual image).
+//   (git-ignored): <name>.png and <name>.diff.png (check::diff_image:
+//   over-threshold pixels red over a dimmed copy of the golden).
 // - To create or update goldens, run the tests with EPVIZ_UPDATE_SNAPSHOTS=1:
 //       EPVIZ_UPDATE_SNAPSHOTS=1 ./build/tests/test_render
 //   then LOOK at every changed PNG before committing it.
-#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <span>
 #include <string>
 #include <string_view>
-#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -38,18 +37,6 @@ struct SnapshotStore {
     // The project's store; update mode when EPVIZ_UPDATE_SNAPSHOTS=1.
     static SnapshotStore project();
 };
-
-struct ImageDifference {
-    bool same_size = true;
-    int largest_channel_difference = 0;
-    std::size_t pixels_over = 0;
-    double fraction_over = 0.0;
-    std::vector<std::uint8_t> diff_rgba;  // visualisation, same size as the images
-};
-
-// Compares two RGBA8 images of width x height.
-ImageDifference compare_images(int width, int height, std::span<const std::uint8_t> actual,
-                               std::span<const std::uint8_t> expected, int max_channel_difference);
 
 // Compares `rgba` (top-down RGBA8) with the golden <name>.png. In update mode
 // writes the golden instead and succeeds.

@@ -1,0 +1,35 @@
+#pragma once
+// golden.json, written next to a job's goldens by `epviz check --update`:
+// what made them, so that a later check can tell when the renderer changed
+// (a Mesa upgrade moves antialiased edges) or the job file did.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace epviz::check {
+
+struct GoldenRecord {
+  std::string epviz_version;
+  std::string gl_renderer;  // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
+  std::string gl_version;   // GL_VERSION, e.g. "4.5 (Core Profile) Mesa 22.3.6"
+  std::string job_file;
+  std::string job_hash;  // "fnv1a64:" + 16 hex digits of the job file's bytes
+  std::vector<int> frames;
+  int width = 0, height = 0;
+};
+
+// 64-bit FNV-1a (Fowler, Noll, Vo): a fingerprint to notice an edited job
+// file, not a defence against forgery.
+std::uint64_t fnv1a64(std::string_view bytes);
+// "fnv1a64:0123456789abcdef" of the file's contents; throws std::runtime_error
+// when it cannot be read.
+std::string job_file_hash(const std::filesystem::path& file);
+
+std::string to_json_text(const GoldenRecord& r);
+// nullopt when the file is missing or not a golden record.
+std::optional<GoldenRecord> read_golden_record(const std::filesystem::path& file);
+
+}  // namespace epviz::check
