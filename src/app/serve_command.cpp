@@ -78,8 +78,12 @@ int run_serve(const ServeOptions& o) {
 
   const std::string backend = o.gl.empty() ? render::gl_backend_from_environment() : o.gl;
   const auto backends = render::gl_backends();
-  if (std::find(backends.begin(), backends.end(), backend) == backends.end())
-    throw UsageError(std::string(o.gl.empty() ? "EPVIZ_GL" : "--gl") + ": unknown backend '" + backend + "'");
+  if (std::find(backends.begin(), backends.end(), backend) == backends.end()) {
+    std::string allowed;
+    for (const auto& name : backends) allowed += (allowed.empty() ? "" : ", ") + name;
+    throw UsageError(std::string(o.gl.empty() ? "EPVIZ_GL" : "--gl") + ": unknown backend '" + backend +
+                     "' (allowed: " + allowed + ")");
+  }
 
   live::SessionOptions session;
   session.initial = o.job.empty() ? preset_from_jobs(physics::Case::kovalevskaya) : setup_of_single_job(o.job);

@@ -18,7 +18,7 @@ namespace epviz::render {
 namespace {
 
 struct EglApi {
-  SharedLibrary library{"libEGL.so.1", "libegl1 libegl-mesa0"};
+  SharedLibrary library{"libEGL.so.1", "libegl1 and libegl-mesa0"};
   PFNEGLGETPROCADDRESSPROC get_proc_address =
       library.required<PFNEGLGETPROCADDRESSPROC>("eglGetProcAddress");
   PFNEGLQUERYSTRINGPROC query_string = library.required<PFNEGLQUERYSTRINGPROC>("eglQueryString");
