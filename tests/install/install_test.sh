@@ -62,6 +62,16 @@ set -e
 [[ $rc -eq 1 ]] || fail "render with a broken libOSMesa: want exit 1, got $rc"
 grep -q 'libosmesa6' "$work/err.txt" || fail "the error does not name the package: $(cat "$work/err.txt")"
 
+# `auto` takes EGL when libOSMesa is broken, and falls back to OSMesa when libEGL is.
+for pair in libOSMesa.so.8:egl libEGL.so.1:osmesa; do
+    lib=${pair%%:*} want=${pair##*:}
+    rm -rf "$work/only" && mkdir "$work/only" && echo garbage >"$work/only/$lib"
+    LD_LIBRARY_PATH="$work/only" EPVIZ_GL=auto "$epviz" render "$data/render_jobs/kovalevskaya.json" --frames 0 \
+        --width 64 --height 48 --format png --out "$work/auto" --quiet --report-json "$work/auto.json" ||
+        fail "auto with a broken $lib did not render"
+    grep -q "\"gl_backend\": \"$want\"" "$work/auto.json" || fail "auto with a broken $lib: want $want"
+done
+
 # The installed page is served.
 "$epviz" serve --port 0 >"$work/serve.txt" 2>"$work/serve_err.txt" &
 server=$!
