@@ -104,7 +104,8 @@ EGLContext core_context(EGLDisplay display, std::string& why) {
     why = "eglInitialize failed (" + egl_error() + ")";
     return EGL_NO_CONTEXT;
   }
-  const EGLint config_attributes[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+  const EGLint config_attributes[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE,
+                                      EGL_OPENGL_BIT, EGL_NONE};
   EGLConfig config = nullptr;
   EGLint configs = 0;
   if (api.choose_config(display, config_attributes, &config, 1, &configs) != EGL_TRUE ||
