@@ -167,6 +167,9 @@ EglContext::~EglContext() {
 }
 
 void EglContext::make_current() {
+  // The client API is per thread, and a context may be made current on a
+  // thread other than the one that created it.
+  egl().bind_api(EGL_OPENGL_API);
   if (egl().make_current(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_) != EGL_TRUE)
     throw std::runtime_error("eglMakeCurrent failed (" + egl_error() + ")");
   load_gl_functions("egl", egl_proc);
