@@ -8,7 +8,7 @@ packages=(
   libeigen3-dev libboost-dev
   libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libosmesa6-dev libglm-dev libimgui-dev libstb-dev zlib1g-dev
+  libosmesa6-dev libgl-dev libegl-dev libegl-mesa0 libegl1 libglm-dev libimgui-dev libstb-dev zlib1g-dev
   ffmpeg libgsl-dev python3-scipy
   libturbojpeg0-dev chromium fonts-dejavu-core
 )

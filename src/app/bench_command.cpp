@@ -260,7 +260,7 @@ std::function<int()> add_bench_command(CLI::App& app) {
   cmd->add_flag("--quick", raw->quick, "a short study for CI (well under a minute)");
   cmd->add_option("--json", raw->json, "write every row and the metadata to this JSON file");
   cmd->add_option("--out", raw->out, "create this directory and write bench.json and the charts (PNG) there");
-  cmd->add_option("--gl", raw->gl, "offscreen GL backend for the charts (default: $EPVIZ_GL or osmesa)");
+  cmd->add_option("--gl", raw->gl, "offscreen GL backend for the charts: auto, egl or osmesa (default: $EPVIZ_GL or auto)");
   cmd->add_option("--cases", raw->cases,
                   "comma-separated presets for the work-precision and drift studies (default all)");
   return [raw] { return run_bench(*raw); };

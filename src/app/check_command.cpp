@@ -29,7 +29,6 @@
 #include "io/frame_range.hpp"
 #include "io/png_reader.hpp"
 #include "io/png_writer.hpp"
-#include "render/gl.hpp"
 #include "render/gl_context.hpp"
 
 namespace epviz::app {
@@ -297,12 +296,8 @@ std::unique_ptr<render::GlContext> open_context(const CheckOptions& o) {
   }
 }
 
-GlStrings gl_strings() {
-  auto text = [](GLenum name) {
-    const auto* v = reinterpret_cast<const char*>(glGetString(name));
-    return std::string(v ? v : "?");
-  };
-  return {text(GL_RENDERER), text(GL_VERSION)};
+GlStrings gl_strings(const render::GlContext& context) {
+  return {context.renderer(), context.version()};
 }
 
 class Checker {
@@ -469,7 +464,7 @@ std::vector<std::future<JobOutcome>> check_jobs(const std::vector<CheckJob>& job
       try {
         std::lock_guard lock(*paint_lock);
         context = open_context(o);
-        gl = gl_strings();
+        gl = gl_strings(*context);
         std::call_once(*gl_once, [&] { gl_ready->set_value(gl); });
       } catch (...) {
         // No context on this worker: every job it takes reports the error.
@@ -599,7 +594,7 @@ std::function<int()> add_check_command(CLI::App& app) {
   cmd->add_option("--max-differing", o->max_differing,
                   "pixel: percentage of pixels allowed to differ (default 0.5)");
   cmd->add_option("-j,--jobs-in-parallel", o->workers, "check this many jobs at once (default 1)");
-  cmd->add_option("--gl", o->gl, "offscreen GL backend (default: $EPVIZ_GL or osmesa)");
+  cmd->add_option("--gl", o->gl, "offscreen GL backend: auto, egl or osmesa (default: $EPVIZ_GL or auto)");
   return [o] { return run_check(*o); };
 }
 

@@ -12,6 +12,7 @@
 #include "app/check_command.hpp"
 #include "app/render_command.hpp"
 #include "app/serve_command.hpp"
+#include "render/gl_context.hpp"
 #endif
 #include "app/usage_error.hpp"
 
@@ -21,6 +22,18 @@ int main(int argc, char** argv) {
   // An option given twice takes its last value, so a command line can override
   // what a wrapper script put before it.
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  app.set_version_flag("--version", [] {
+    std::string text = "epviz " EPVIZ_VERSION " (git " EPVIZ_GIT_COMMIT ")";
+#ifdef EPVIZ_HAVE_RENDER
+    text += "\nGL backend (auto): " + epviz::render::probe_gl_backend();
+#endif
+    return text;
+  });
+#ifdef EPVIZ_HAVE_RENDER
+  bool verbose = false;
+  app.add_flag("--verbose", verbose, "say on stderr which GL backend was chosen");
+  app.fallthrough();  // --verbose may also follow the command
+#endif
   std::map<std::string, std::function<int()>> commands;
   commands["simulate"] = epviz::app::add_simulate_command(app);
   commands["cases"] = epviz::app::add_cases_command(app);
@@ -37,10 +50,15 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "epviz: error: %s (see epviz --help)\n", e.what());
     return 2;
   }
+#ifdef EPVIZ_HAVE_RENDER
+  epviz::render::set_gl_verbose(verbose);
+#endif
   try {
     for (auto* sub : app.get_subcommands()) return commands.at(sub->get_name())();
   } catch (const epviz::app::UsageError& e) {

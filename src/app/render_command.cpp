@@ -168,6 +168,14 @@ nlohmann::json job_report(const PreparedJob& p, const RenderStats& st) {
   return j;
 }
 
+// Which GL implementation drew the frames (goldens are compared per backend).
+void add_gl_report(nlohmann::json& j, const render::GlContext& context) {
+  j["gl_backend"] = std::string(context.backend());
+  j["gl_platform"] = context.platform();
+  j["gl_renderer"] = context.renderer();
+  j["gl_version"] = context.version();
+}
+
 void print_job_line(const PreparedJob& p, const RenderStats& st) {
   std::printf("%s: %d frames %dx%d in %.2f s (%.1f frames/s), %s %s, %s -> %s\n", p.job.file.string().c_str(),
               st.frames_drawn, p.job.scene.width, p.job.scene.height, st.seconds,
@@ -188,7 +196,11 @@ int render_single(RenderJob job, const RenderOptions& o) {
   paint::FramePainter painter(*context, p.job.scene.width, p.job.scene.height);
   const auto st = render_frames(p, painter, o);
   print_job_line(p, st);
-  if (!o.report_json.empty()) io::write_file_atomically(o.report_json, job_report(p, st).dump(2) + "\n");
+  if (!o.report_json.empty()) {
+    auto report = job_report(p, st);
+    add_gl_report(report, *context);
+    io::write_file_atomically(o.report_json, report.dump(2) + "\n");
+  }
   return report_failure(st.failure);
 }
 
@@ -247,6 +259,7 @@ int render_gallery(GalleryJob g, const RenderOptions& o) {
     const auto st = render_frames(p, painter, o);
     print_job_line(p, st);
     reports.push_back(job_report(p, st));
+    add_gl_report(reports.back(), *context);
     failures += report_failure(st.failure) != 0;
   }
   if (!o.report_json.empty()) io::write_file_atomically(o.report_json, reports.dump(2) + "\n");
@@ -284,7 +297,7 @@ std::function<int()> add_render_command(CLI::App& app) {
   cmd->add_option("--width", o->width, "frame width in pixels");
   cmd->add_option("--height", o->height, "frame height in pixels");
   cmd->add_option("--format", o->format, "png|mp4|webm|gif");
-  cmd->add_option("--gl", o->gl, "offscreen GL backend (default: $EPVIZ_GL or osmesa)");
+  cmd->add_option("--gl", o->gl, "offscreen GL backend: auto, egl or osmesa (default: $EPVIZ_GL or auto)");
   cmd->add_option("--report-json", o->report_json, "write what was rendered (tolerance chosen, timings) as JSON");
   cmd->add_flag("--resume", o->resume, "PNG: skip frames already written completely");
   cmd->add_flag("--quiet", o->quiet, "no progress line");

@@ -10,6 +10,7 @@
 #include "app/render_job.hpp"
 #include "app/usage_error.hpp"
 #include "live/live_session.hpp"
+#include "render/data_dir.hpp"
 #include "render/gl_context.hpp"
 #include "serve/server.hpp"
 
@@ -46,9 +47,9 @@ live::LiveSetup setup_of_single_job(const fs::path& file) {
 // (the same title, view, camera and trail as the rendered videos), else the
 // built-in preset.
 live::LiveSetup preset_from_jobs(physics::Case c) {
-  const fs::path file = fs::path(EPVIZ_ASSET_DIR).parent_path() / "render_jobs" / (physics::case_name(c) + ".json");
+  const fs::path file = render::find_data_path("render_jobs/" + physics::case_name(c) + ".json");
   try {
-    if (fs::is_regular_file(file)) return setup_of_single_job(file);
+    if (!file.empty() && fs::is_regular_file(file)) return setup_of_single_job(file);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "epviz serve: %s (using the built-in preset)\n", e.what());
   }
@@ -66,15 +67,23 @@ int run_serve(const ServeOptions& o) {
     so.image_format = serve::ImageFormat::png;
   else
     throw UsageError("--image: unknown format '" + o.image + "' (allowed: jpeg, png)");
-  so.page = fs::path(EPVIZ_ASSET_DIR) / "serve.html";
-  if (!fs::is_regular_file(so.page)) throw UsageError("the page " + so.page.string() + " is missing");
+  so.page = render::find_data_path("assets/serve.html");
+  if (so.page.empty()) {
+    std::string searched;
+    for (const auto& dir : render::data_search_path()) searched += " " + (dir / "assets").string();
+    throw UsageError("the page serve.html is missing; searched:" + searched + " (set EPVIZ_DATA_DIR)");
+  }
   so.record_path = o.record;
   so.log = [](const std::string& line) { std::fprintf(stderr, "epviz serve: %s\n", line.c_str()); };
 
   const std::string backend = o.gl.empty() ? render::gl_backend_from_environment() : o.gl;
   const auto backends = render::gl_backends();
-  if (std::find(backends.begin(), backends.end(), backend) == backends.end())
-    throw UsageError(std::string(o.gl.empty() ? "EPVIZ_GL" : "--gl") + ": unknown backend '" + backend + "'");
+  if (std::find(backends.begin(), backends.end(), backend) == backends.end()) {
+    std::string allowed;
+    for (const auto& name : backends) allowed += (allowed.empty() ? "" : ", ") + name;
+    throw UsageError(std::string(o.gl.empty() ? "EPVIZ_GL" : "--gl") + ": unknown backend '" + backend +
+                     "' (allowed: " + allowed + ")");
+  }
 
   live::SessionOptions session;
   session.initial = o.job.empty() ? preset_from_jobs(physics::Case::kovalevskaya) : setup_of_single_job(o.job);
@@ -122,7 +131,7 @@ std::function<int()> add_serve_command(CLI::App& app) {
   cmd->add_option("--port", o->port, "TCP port (0: any free port)")->capture_default_str();
   cmd->add_option("--bind", o->bind, "address to listen on; other than loopback is reachable from the network")
       ->capture_default_str();
-  cmd->add_option("--gl", o->gl, "offscreen GL backend (default: EPVIZ_GL or osmesa)");
+  cmd->add_option("--gl", o->gl, "offscreen GL backend: auto, egl or osmesa (default: $EPVIZ_GL or auto)");
   cmd->add_option("--image", o->image, "frame encoding: jpeg or png")->capture_default_str();
   cmd->add_option("--quality", o->quality, "JPEG quality 1..100")->capture_default_str();
   cmd->add_option("--save-dir", o->save_dir, "also write saved frames and jobs here (default: browser downloads only)");

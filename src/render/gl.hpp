@@ -1,12 +1,9 @@
 #pragma once
-// The one place that includes the OpenGL headers. libOSMesa exports every GL
-// entry point, so with GL_GLEXT_PROTOTYPES (set by CMake) the core-profile
-// functions are plain declarations and no loader is needed.
-#ifndef GL_GLEXT_PROTOTYPES
-#define GL_GLEXT_PROTOTYPES 1
-#endif
-#include <GL/gl.h>
-#include <GL/glext.h>
+// The one place that includes the OpenGL declarations. The executable links no
+// GL library: every gl function is a pointer the backend fills at run time
+// (gl_loader.hpp), so simulate and the other commands that draw nothing never
+// load Mesa or LLVM.
+#include "render/gl_loader.hpp"
 
 #include <string_view>
 

@@ -1,5 +1,7 @@
 #include "render/shader_program.hpp"
 
+#include "render/data_dir.hpp"
+
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
@@ -68,9 +70,7 @@ std::vector<std::filesystem::path> shader_search_path() {
     if (auto dir = executable_directory(); !dir.empty()) path.push_back(dir / "shaders");
     if (const char* env = std::getenv("EPVIZ_SHADER_DIR"); env != nullptr && *env != '\0')
         path.emplace_back(env);
-#ifdef EPVIZ_SHADER_DIR
-    path.emplace_back(EPVIZ_SHADER_DIR);
-#endif
+for (const auto& dir : data_search_path()) path.push_back(dir / "shaders");
     return path;
 }
 
@@ -84,7 +84,7 @@ std::filesystem::path find_shader_file(std::string_view file_name) {
     }
     throw std::runtime_error("shader file '" + std::string(file_name) +
                              "' not found; searched:" + searched +
-                             "\n(set EPVIZ_SHADER_DIR to the project's shaders/ folder)");
+                             "\n(set EPVIZ_DATA_DIR to a folder holding shaders/, or EPVIZ_SHADER_DIR to the shaders folder)");
 }
 
 ShaderProgram ShaderProgram::from_files(std::string_view vertex_file, std::string_view fragment_file,

@@ -16,7 +16,7 @@
 namespace epviz::render {
 
 // Where shader files are looked for, in order: `shaders/` next to the running
-// binary, $EPVIZ_SHADER_DIR, then the source tree's shaders/ compiled in.
+// binary, $EPVIZ_SHADER_DIR, then shaders/ in each of data_search_path().
 std::vector<std::filesystem::path> shader_search_path();
 
 // The first directory of shader_search_path() holding `file_name`; throws

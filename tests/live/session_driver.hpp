@@ -14,7 +14,7 @@
 namespace epviz::live::testing {
 
 inline render::GlContext& shared_gl() {
-  static std::unique_ptr<render::GlContext> gl = render::make_gl_context("osmesa", 64, 64);
+  static std::unique_ptr<render::GlContext> gl = render::make_gl_context(render::gl_backend_from_environment(), 64, 64);
   return *gl;
 }
 

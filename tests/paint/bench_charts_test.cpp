@@ -48,7 +48,7 @@ TEST(BenchCharts, WritesNonBlankPngs) {
   testing::shared_gl_context();  // sets LP_NUM_THREADS
   const auto dir = std::filesystem::temp_directory_path() / "epviz_bench_charts_test";
   std::filesystem::remove_all(dir);
-  const auto files = paint::write_bench_charts(tiny_bench(), dir, "osmesa",
+  const auto files = paint::write_bench_charts(tiny_bench(), dir, render::gl_backend_from_environment(),
                                                {.width = 480, .height = 300, .msaa_samples = 0, .builtin_font = true});
   ASSERT_EQ(files.size(), 4u);
   for (const char* name : {"work_precision_euler.png", "work_precision_evals_euler.png", "drift_kovalevskaya.png",

@@ -1,6 +1,7 @@
 #pragma once
-// Shared helpers for the render tests: one OSMesa context per test program
-// (creating contexts is the slow part), and small pixel measures.
+// Shared helpers for the render tests: one GL context per test program
+// (creating contexts is the slow part), and small pixel measures. The backend
+// comes from EPVIZ_GL (CTest runs the GL test programs once per backend).
 #include <cstdlib>
 #include <memory>
 
@@ -11,13 +12,13 @@
 
 namespace epviz::testing {
 
-// A current OSMesa context shared by all tests of the program.
+// A current context of the EPVIZ_GL backend shared by all tests of the program.
 inline render::GlContext& shared_gl_context() {
     static std::unique_ptr<render::GlContext> context = [] {
         // Two rasteriser threads: the machine has two cores, and results must
         // not depend on it anyway.
         setenv("LP_NUM_THREADS", "2", 0);
-        return render::make_gl_context("osmesa", 64, 64);
+        return render::make_gl_context(render::gl_backend_from_environment(), 64, 64);
     }();
     context->make_current();
     return *context;
