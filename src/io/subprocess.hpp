@@ -54,7 +54,7 @@ class Subprocess {
 
   // Starts argv[0] with arguments argv. Throws SubprocessError.
   Subprocess(const std::vector<std::string>& argv, const Options& options);
-  Subprocess(const std::vector<std::string>& argv) : Subprocess(argv, Options{}) {}
+  explicit Subprocess(const std::vector<std::string>& argv) : Subprocess(argv, Options{}) {}
   // A child still running is killed (SIGKILL) and reaped.
   ~Subprocess();
   Subprocess(const Subprocess&) = delete;
