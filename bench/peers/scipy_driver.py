@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""SciPy's DOP853 on epviz's heavy-top problem (issue 4, peers side by side).
+"""SciPy's DOP853 on epviz's heavy-top problem, a peer `epviz bench` compares with.
 
 Run with /usr/bin/python3 (Debian's python3-scipy). Reads one JSON object on
 stdin:

@@ -1,5 +1,6 @@
 #include "app/bench_command.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -9,22 +10,29 @@
 #include <sstream>
 #include <thread>
 
+#include "app/text_table.hpp"
 #include "app/usage_error.hpp"
 #include "io/atomic_file.hpp"
 #include "physics/cases.hpp"
-#include "sim/study_bench.hpp"
-#ifdef EPVIZ_HAVE_PEERS
-#include "peers/peer_study.hpp"
-#endif
+#include "study/bench_json.hpp"
+#include "study/invariant_cost.hpp"
+#include "study/invariant_drift.hpp"
+#include "study/peers/peer_study.hpp"
+#include "study/pole_passage.hpp"
+#include "study/stability.hpp"
+#include "study/work_precision.hpp"
 #ifdef EPVIZ_HAVE_RENDER
-#include "paint/bench_charts.hpp"
+#include "io/png_writer.hpp"
+#include "paint/chart_painter.hpp"
 #include "render/gl_context.hpp"
+#include "study/bench_figures.hpp"
 #endif
 
 namespace epviz::app {
 namespace {
 
-using RawOptions = BenchRequest;
+namespace fs = std::filesystem;
+using namespace study;
 
 std::string compiler() {
 #if defined(__clang__)
@@ -36,58 +44,7 @@ std::string compiler() {
 #endif
 }
 
-nlohmann::json number_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
-
-nlohmann::json row_json(const sim::StudyRow& r) {
-  nlohmann::json j;
-  j["study"] = r.study;
-  for (const auto& [k, v] : r.text) j[k] = v;
-  for (const auto& [k, v] : r.numbers) j[k] = number_or_null(v);
-  for (const auto& [k, v] : r.series) {
-    auto a = nlohmann::json::array();
-    for (double x : v) a.push_back(number_or_null(x));
-    j[k] = a;
-  }
-  return j;
-}
-
-// One table column: a header, the row's field, and how wide.
-struct Column {
-  const char* header;
-  const char* key;
-  int width;
-};
-
-std::string cell(const sim::StudyRow& r, const Column& c) {
-  if (auto t = r.text_of(c.key)) return *t;
-  if (auto x = r.number(c.key)) {
-    if (!std::isfinite(*x)) return "-";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", *x);
-    return buf;
-  }
-  return "-";
-}
-
-void print_table(const std::string& title, const std::vector<const sim::StudyRow*>& rows,
-                 const std::vector<Column>& cols) {
-  if (rows.empty()) return;
-  std::printf("\n%s\n", title.c_str());
-  for (const auto& c : cols) std::printf("%-*s ", c.width, c.header);
-  std::printf("\n");
-  for (const auto* r : rows) {
-    for (const auto& c : cols) std::printf("%-*s ", c.width, cell(*r, c).c_str());
-    std::printf("\n");
-  }
-}
-
-std::vector<const sim::StudyRow*> select(const std::vector<sim::StudyRow>& rows, const std::string& study,
-                                         const std::string& case_name = "") {
-  std::vector<const sim::StudyRow*> out;
-  for (const auto& r : rows)
-    if (r.study == study && (case_name.empty() || r.text_of("case") == case_name)) out.push_back(&r);
-  return out;
-}
+// --- Stage 1: the request, checked before any work ---------------------------
 
 std::vector<physics::Case> parse_cases(const std::string& list) {
   std::vector<physics::Case> cases;
@@ -106,126 +63,196 @@ std::vector<physics::Case> parse_cases(const std::string& list) {
   return cases;
 }
 
-}  // namespace
-
-int run_bench(const BenchRequest& raw) {
-  sim::StudyOptions opts;
-  opts.quick = raw.quick;
-  opts.cases = parse_cases(raw.cases);
-  namespace fs = std::filesystem;
-  if (!raw.json.empty()) {
-    const auto dir = fs::absolute(raw.json).parent_path();
+// Checks where the outputs go and creates the --out directory.
+void prepare_outputs(const BenchRequest& request) {
+  if (!request.json.empty()) {
+    const auto dir = fs::absolute(request.json).parent_path();
     if (!fs::is_directory(dir)) throw UsageError("--json: directory '" + dir.string() + "' does not exist");
-    if (fs::is_directory(raw.json)) throw UsageError("--json: '" + raw.json + "' is a directory");
+    if (fs::is_directory(request.json)) throw UsageError("--json: '" + request.json + "' is a directory");
   }
-  if (!raw.out.empty()) {
-    if (fs::exists(raw.out) && !fs::is_directory(raw.out))
-      throw UsageError("--out: '" + raw.out + "' exists and is not a directory");
+  if (!request.out.empty()) {
+    if (fs::exists(request.out) && !fs::is_directory(request.out))
+      throw UsageError("--out: '" + request.out + "' exists and is not a directory");
     std::error_code ec;
-    fs::create_directories(raw.out, ec);
-    if (ec) throw UsageError("--out: cannot create directory '" + raw.out + "': " + ec.message());
+    fs::create_directories(request.out, ec);
+    if (ec) throw UsageError("--out: cannot create directory '" + request.out + "': " + ec.message());
   }
+}
 
-  const auto t0 = std::chrono::steady_clock::now();
-  std::vector<sim::StudyRow> rows;
-  auto add = [&](std::vector<sim::StudyRow> more) {
-    for (auto& r : more) rows.push_back(std::move(r));
-  };
-  std::fprintf(stderr, "epviz bench%s: work-precision...\n", raw.quick ? " --quick" : "");
-  add(sim::work_precision_study(opts));
-#ifdef EPVIZ_HAVE_PEERS
-  std::fprintf(stderr, "epviz bench: peers (Boost.Odeint, GSL, SciPy)...\n");
+// --- Stage 2: the studies ------------------------------------------------------
+
+std::vector<StudyRow> run_studies(const StudyOptions& opts) {
+  std::vector<StudyRow> rows;
+  std::fprintf(stderr, "epviz bench%s: work-precision...\n", opts.quick ? " --quick" : "");
+  append(rows, work_precision_study(opts));
+  std::fprintf(stderr, "epviz bench: peers (Boost.Odeint, GSL, SciPy where available)...\n");
   auto peer_study = peers::peer_work_precision_study(opts);
   for (const auto& line : peer_study.skipped) std::fprintf(stderr, "epviz bench: %s\n", line.c_str());
-  add(std::move(peer_study.rows));
-  add(peers::equal_error_ratios(rows, {1e-6, 1e-8, 1e-10}));
-#endif
+  append(rows, std::move(peer_study.rows));
+  append(rows, peers::equal_error_ratios(rows_of<WorkPrecisionRow>(rows), {1e-6, 1e-8, 1e-10}));
   std::fprintf(stderr, "epviz bench: invariant drift...\n");
-  add(sim::drift_study(opts));
+  append(rows, drift_study(opts));
   std::fprintf(stderr, "epviz bench: invariant cost...\n");
-  add(sim::invariant_cost_study(opts));
+  append(rows, invariant_cost_study(opts));
   std::fprintf(stderr, "epviz bench: stability...\n");
-  add(sim::stability_max_step(opts));
-  add(sim::stability_pole(opts));
-  add(sim::stability_separatrix(opts));
-  add(sim::stability_sleeping(opts));
-  add(sim::stability_chaos(opts));
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  append(rows, stability_max_step(opts));
+  append(rows, stability_pole(opts));
+  append(rows, stability_separatrix(opts));
+  append(rows, stability_sleeping(opts));
+  append(rows, stability_chaos(opts));
+  return rows;
+}
 
-  // Tables.
-  const std::vector<Column> wp{{"impl", "impl", 12}, {"method", "method", 17}, {"formulation", "formulation", 11},
-                               {"tol", "tol", 8},        {"step", "step", 9},
-                               {"error", "error", 9},    {"rhs_evals", "rhs_evals", 10},
-                               {"flow_evals", "flow_evals", 10}, {"cpu_ms", "cpu_ms", 9},
-                               {"status", "status", 6}};
-  for (const auto& p : physics::case_presets()) {
-    const auto ref = select(rows, "reference", p.name);
-    if (ref.empty()) continue;
-    print_table("work-precision: " + p.name + " (t_end " + cell(*ref[0], {"", "t_end", 0}) +
-                    "; error = |dOmega|_2 + |dgamma|_2 vs Gauss6 Richardson, self-check vs DOP853 1e-14: " +
-                    cell(*ref[0], {"", "self_check", 0}) + ")",
-                select(rows, "work_precision", p.name), wp);
+// --- Stage 3: the tables -------------------------------------------------------
+
+// Columns reading a field of the row, or of its RunRecord.
+template <class Row>
+TextColumn<Row> text(std::string header, std::string Row::*field) {
+  return {std::move(header), [field](const Row& r) { return r.*field; }};
+}
+template <class Row, class T>
+TextColumn<Row> number(std::string header, T Row::*field) {
+  return {std::move(header), [field](const Row& r) { return cell_number(double(r.*field)); }};
+}
+template <class Row>
+TextColumn<Row> flag(std::string header, bool Row::*field) {
+  return {std::move(header), [field](const Row& r) { return std::string(r.*field ? "yes" : "no"); }};
+}
+template <class Row>
+TextColumn<Row> run_text(std::string header, std::string RunRecord::*field) {
+  return {std::move(header), [field](const Row& r) { return r.run.*field; }};
+}
+template <class Row, class T>
+TextColumn<Row> run_number(std::string header, T RunRecord::*field) {
+  return {std::move(header), [field](const Row& r) { return cell_number(double(r.run.*field)); }};
+}
+template <class Row>
+TextColumn<Row> run_status(std::string header) {
+  return {std::move(header), [](const Row& r) { return std::string(r.run.ok ? "ok" : "failed"); }};
+}
+
+void print_work_precision_tables(const std::vector<StudyRow>& rows) {
+  using R = WorkPrecisionRow;
+  TextTable<R> table{"", {run_text<R>("impl", &RunRecord::impl), run_text<R>("method", &RunRecord::method),
+                          run_text<R>("formulation", &RunRecord::formulation), run_number<R>("tol", &RunRecord::tol),
+                          run_number<R>("step", &RunRecord::step), number("error", &R::error),
+                          run_number<R>("rhs_evals", &RunRecord::rhs_evals),
+                          run_number<R>("flow_evals", &RunRecord::flow_evals),
+                          run_number<R>("cpu_ms", &RunRecord::cpu_ms), run_status<R>("status")}};
+  const auto runs = rows_of<R>(rows);
+  for (const auto* ref : rows_of<ReferenceRow>(rows)) {
+    table.title = "work-precision: " + ref->case_name + " (t_end " + cell_number(ref->t_end) +
+                  "; error = |dOmega|_2 + |dgamma|_2 vs Gauss6 Richardson, self-check vs DOP853 1e-14: " +
+                  cell_number(ref->self_check) + ")";
+    std::vector<const R*> of_case;
+    std::copy_if(runs.begin(), runs.end(), std::back_inserter(of_case),
+                 [&](const R* r) { return r->run.case_name == ref->case_name; });
+    print_table(table, of_case);
   }
-  print_table("peers: CPU time against epviz dop853 at equal achieved error (log-log interpolation; ratio > 1: "
-              "epviz is faster)",
-              select(rows, "peer_ratio"),
-              {{"case", "case", 20}, {"impl", "impl", 12}, {"method", "method", 17}, {"error", "error", 9},
-               {"peer_ms", "peer_cpu_ms", 9}, {"epviz_ms", "epviz_dop853_cpu_ms", 9}, {"ratio", "ratio", 8}});
-  print_table("invariant drift (max relative, direct formulation, equal evaluations per time unit)",
-              select(rows, "drift"),
-              {{"case", "case", 20}, {"method", "method", 10}, {"tol", "tol", 8}, {"step", "step", 9},
-               {"t_end", "t_end", 7}, {"rhs_evals", "rhs_evals", 10}, {"cpu_ms", "cpu_ms", 9},
-               {"|gamma|^2", "drift_gamma_norm2", 9}, {"C0", "drift_C0", 9}, {"C1", "drift_C1", 9},
-               {"extra", "drift_extra", 9}});
+}
+
+void print_peer_table(const std::vector<StudyRow>& rows) {
+  using R = PeerRatioRow;
+  print_table(TextTable<R>{"peers: CPU time against epviz dop853 at equal achieved error (log-log interpolation; "
+                           "ratio > 1: epviz is faster)",
+                           {text("case", &R::case_name), text("impl", &R::impl), text("method", &R::method),
+                            number("error", &R::error), number("peer_ms", &R::peer_cpu_ms),
+                            number("epviz_ms", &R::epviz_dop853_cpu_ms), number("ratio", &R::ratio)}},
+              rows_of<R>(rows));
+}
+
+void print_invariant_tables(const std::vector<StudyRow>& rows) {
   {
-    const auto ic = select(rows, "invariant_cost");
-    char title[160];
-    std::snprintf(title, sizeof title,
-                  "invariant cost: cheapest run keeping C1 and the 4th integral within %g over T = %g "
-                  "(kovalevskaya, direct)",
-                  sim::kInvariantCostTarget, ic.empty() ? 0.0 : ic[0]->number("t_end").value_or(0.0));
-    print_table(title, ic,
-                {{"method", "method", 12}, {"tol", "tol", 8}, {"step", "step", 9}, {"reached", "reached", 7},
-                 {"cost", "cost", 10}, {"cpu_ms", "cpu_ms", 9}, {"C1", "drift_C1", 9},
-                 {"extra", "drift_extra", 9}});
+    using R = DriftRow;
+    print_table(TextTable<R>{"invariant drift (max relative, direct formulation, equal evaluations per time unit)",
+                             {run_text<R>("case", &RunRecord::case_name), run_text<R>("method", &RunRecord::method),
+                              run_number<R>("tol", &RunRecord::tol), run_number<R>("step", &RunRecord::step),
+                              run_number<R>("t_end", &RunRecord::t_end),
+                              run_number<R>("rhs_evals", &RunRecord::rhs_evals),
+                              run_number<R>("cpu_ms", &RunRecord::cpu_ms), number("|gamma|^2", &R::drift_gamma_norm2),
+                              number("C0", &R::drift_C0), number("C1", &R::drift_C1),
+                              number("extra", &R::drift_extra)}},
+                rows_of<R>(rows));
   }
-  print_table("stability 1: largest fixed step before blow-up or loss of shape (error > 0.1 or energy drift > 10%)",
-              select(rows, "stability_max_step"),
-              {{"case", "case", 13}, {"method", "method", 10}, {"max_step", "max_step", 9},
-               {"h/period", "max_step_over_period", 9}, {"failing", "failing_step", 9},
-               {"failure at the failing step", "failure_reason", 40}});
-  print_table("stability 2: south-pole passage, dop853 at equal tolerance", select(rows, "stability_pole"),
-              {{"variant", "variant", 21}, {"status", "status", 7}, {"fail_t", "failure_t", 8},
-               {"steps", "steps", 7}, {"switches", "chart_switches", 8}, {"error", "error", 9},
-               {"reason", "failure_reason", 40}});
-  print_table("stability 3: Euler case near the separatrix, first flip of Omega_2",
-              select(rows, "stability_separatrix"),
-              {{"method", "method", 10}, {"tol", "tol", 8}, {"step", "step", 9}, {"flip_t", "flip_time", 9},
-               {"ref_flip_t", "reference_flip_time", 10}, {"|dt|", "flip_time_error", 9},
-               {"flips", "flips", 5}, {"ref", "reference_flips", 4}, {"|dt| last", "last_flip_time_error", 9}});
-  print_table("stability 4: fast sleeping top (Omega3 = 50): cheapest run with gamma error < 1e-3",
-              select(rows, "stability_sleeping_top"),
-              {{"method", "method", 10}, {"formulation", "formulation", 11}, {"tol", "tol", 8},
-               {"step", "step", 9}, {"reached", "reached", 7}, {"gamma_err", "gamma_error", 9},
-               {"rhs_evals", "rhs_evals", 10}, {"cpu_ms", "cpu_ms", 9}});
-  print_table("stability 5: generic body from a strongly chaotic state (Lyapunov time ~2), time of separation > 1e-3 from the reference",
-              select(rows, "stability_chaos"),
-              {{"method", "method", 10}, {"tol", "tol", 8}, {"step", "step", 9},
-               {"separated", "separated", 9}, {"sep_time", "separation_time", 9}, {"t_end", "t_end", 6},
-               {"cpu_ms", "cpu_ms", 9}});
-  std::printf("\nbench finished in %.1f s\n", wall);
+  using R = InvariantCostRow;
+  const auto cost = rows_of<R>(rows);
+  char title[160];
+  std::snprintf(title, sizeof title,
+                "invariant cost: cheapest run keeping C1 and the 4th integral within %g over T = %g "
+                "(kovalevskaya, direct)",
+                kInvariantCostTarget, cost.empty() ? 0.0 : cost[0]->run.t_end);
+  print_table(TextTable<R>{title,
+                           {run_text<R>("method", &RunRecord::method), run_number<R>("tol", &RunRecord::tol),
+                            run_number<R>("step", &RunRecord::step), flag("reached", &R::reached),
+                            {"cost", [](const R& r) { return cell_number(double(r.run.cost())); }},
+                            run_number<R>("cpu_ms", &RunRecord::cpu_ms), number("C1", &R::drift_C1),
+                            number("extra", &R::drift_extra)}},
+              cost);
+}
 
-  if (raw.json.empty() && raw.out.empty()) return 0;
-  nlohmann::json doc;
-  double worst_check = 0.0, smallest = INFINITY;
-  for (const auto* r : select(rows, "reference")) {
-    worst_check = std::max(worst_check, r->number("self_check").value_or(0.0));
-    const double s = r->number("smallest_error").value_or(NAN);
-    if (std::isfinite(s)) smallest = std::min(smallest, s);
+void print_stability_tables(const std::vector<StudyRow>& rows) {
+  {
+    using R = MaxStepRow;
+    print_table(
+        TextTable<R>{"stability 1: largest fixed step before blow-up or loss of shape (error > 0.1 or energy drift > 10%)",
+                     {text("case", &R::case_name), text("method", &R::method), number("max_step", &R::max_step),
+                      number("h/period", &R::max_step_over_period), number("failing", &R::failing_step),
+                      text("failure at the failing step", &R::failure_reason)}},
+        rows_of<R>(rows));
   }
+  {
+    using R = PolePassageRow;
+    print_table(TextTable<R>{"stability 2: south-pole passage, dop853 at equal tolerance",
+                             {text("variant", &R::variant), run_status<R>("status"),
+                              run_number<R>("fail_t", &RunRecord::failure_t),
+                              {"steps", [](const R& r) { return cell_number(r.run.steps ? double(*r.run.steps) : NAN); }},
+                              number("switches", &R::chart_switches), number("error", &R::error),
+                              run_text<R>("reason", &RunRecord::failure_reason)}},
+                rows_of<R>(rows));
+  }
+  {
+    using R = SeparatrixRow;
+    print_table(TextTable<R>{"stability 3: Euler case near the separatrix, first flip of Omega_2",
+                             {run_text<R>("method", &RunRecord::method), run_number<R>("tol", &RunRecord::tol),
+                              run_number<R>("step", &RunRecord::step), number("flip_t", &R::flip_time),
+                              number("ref_flip_t", &R::reference_flip_time), number("|dt|", &R::flip_time_error),
+                              number("flips", &R::flips), number("ref", &R::reference_flips),
+                              number("|dt| last", &R::last_flip_time_error)}},
+                rows_of<R>(rows));
+  }
+  {
+    using R = SleepingTopRow;
+    print_table(TextTable<R>{"stability 4: fast sleeping top (Omega3 = 50): cheapest run with gamma error < 1e-3",
+                             {run_text<R>("method", &RunRecord::method),
+                              run_text<R>("formulation", &RunRecord::formulation),
+                              run_number<R>("tol", &RunRecord::tol), run_number<R>("step", &RunRecord::step),
+                              flag("reached", &R::reached), number("gamma_err", &R::gamma_error),
+                              run_number<R>("rhs_evals", &RunRecord::rhs_evals),
+                              run_number<R>("cpu_ms", &RunRecord::cpu_ms)}},
+                rows_of<R>(rows));
+  }
+  using R = ChaosRow;
+  print_table(TextTable<R>{"stability 5: generic body from a strongly chaotic state (Lyapunov time ~2), time of "
+                           "separation > 1e-3 from the reference",
+                           {run_text<R>("method", &RunRecord::method), run_number<R>("tol", &RunRecord::tol),
+                            run_number<R>("step", &RunRecord::step), flag("separated", &R::separated),
+                            number("sep_time", &R::separation_time), run_number<R>("t_end", &RunRecord::t_end),
+                            run_number<R>("cpu_ms", &RunRecord::cpu_ms)}},
+              rows_of<R>(rows));
+}
+
+// --- Stage 4: the JSON document and the charts --------------------------------
+
+nlohmann::json bench_document(const std::vector<StudyRow>& rows, bool quick, double wall) {
+  double worst_check = 0.0, smallest = INFINITY;
+  for (const auto* r : rows_of<ReferenceRow>(rows)) {
+    worst_check = std::max(worst_check, r->self_check);
+    if (std::isfinite(r->smallest_error)) smallest = std::min(smallest, r->smallest_error);
+  }
+  nlohmann::json doc;
   doc["metadata"] = {
       {"tool", "epviz bench"},
-      {"mode", raw.quick ? "quick" : "full"},
+      {"mode", quick ? "quick" : "full"},
       {"wall_seconds", wall},
       {"machine", {{"nproc", std::thread::hardware_concurrency()}, {"compiler", compiler()}}},
       {"error_measure", "|Omega - Omega_ref|_2 + |gamma - gamma_ref|_2 at the final time"},
@@ -237,33 +264,65 @@ int run_bench(const BenchRequest& raw) {
         {"max_self_check", worst_check},
         {"smallest_reported_error", number_or_null(smallest)}}},
   };
-  auto arr = nlohmann::json::array();
-  for (const auto& r : rows) arr.push_back(row_json(r));
-  doc["rows"] = arr;
-  const std::string text = doc.dump(1) + "\n";
-  if (!raw.json.empty()) io::write_file_atomically(raw.json, text);
-  if (!raw.out.empty()) {
-    io::write_file_atomically(fs::path(raw.out) / "bench.json", text);
+  doc["rows"] = rows_json(rows);
+  return doc;
+}
+
 #ifdef EPVIZ_HAVE_RENDER
-    // The charts are drawn by epviz's own offscreen renderer.
-    const std::string backend = raw.gl.empty() ? render::gl_backend_from_environment() : raw.gl;
-    const auto charts = paint::write_bench_charts(doc, raw.out, backend);
-    std::printf("%zu charts written to %s\n", charts.size(), raw.out.c_str());
-#endif
+// Draws the bench's figures with epviz's own offscreen renderer, one PNG each.
+std::size_t write_figures(const std::vector<StudyRow>& rows, const fs::path& out_dir, const std::string& gl) {
+  const auto figures = bench_figures(rows);
+  if (figures.empty()) return 0;
+  auto context = render::make_gl_context(gl.empty() ? render::gl_backend_from_environment() : gl, 16, 16);
+  for (const auto& figure : figures) {
+    const auto image = paint::paint_figure(*context, figure);
+    io::write_png_rgba(out_dir / figure.file_name, image.width, image.height, image.pixels);
   }
+  return figures.size();
+}
+#endif
+
+void write_outputs(const BenchRequest& request, const std::vector<StudyRow>& rows, double wall) {
+  if (request.json.empty() && request.out.empty()) return;
+  const std::string text = bench_document(rows, request.quick, wall).dump(1) + "\n";
+  if (!request.json.empty()) io::write_file_atomically(request.json, text);
+  if (request.out.empty()) return;
+  io::write_file_atomically(fs::path(request.out) / "bench.json", text);
+#ifdef EPVIZ_HAVE_RENDER
+  const std::size_t n = write_figures(rows, request.out, request.gl);
+  std::printf("%zu charts written to %s\n", n, request.out.c_str());
+#endif
+}
+
+}  // namespace
+
+int run_bench(const BenchRequest& request) {
+  StudyOptions opts;
+  opts.quick = request.quick;
+  opts.cases = parse_cases(request.cases);
+  prepare_outputs(request);
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto rows = run_studies(opts);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  print_work_precision_tables(rows);
+  print_peer_table(rows);
+  print_invariant_tables(rows);
+  print_stability_tables(rows);
+  std::printf("\nbench finished in %.1f s\n", wall);
+  write_outputs(request, rows, wall);
   return 0;
 }
 
 std::function<int()> add_bench_command(CLI::App& app) {
-  auto raw = std::make_shared<RawOptions>();
+  auto request = std::make_shared<BenchRequest>();
   auto* cmd = app.add_subcommand("bench", "Work-precision, invariant drift and stability studies of the methods");
-  cmd->add_flag("--quick", raw->quick, "a short study for CI (well under a minute)");
-  cmd->add_option("--json", raw->json, "write every row and the metadata to this JSON file");
-  cmd->add_option("--out", raw->out, "create this directory and write bench.json and the charts (PNG) there");
-  cmd->add_option("--gl", raw->gl, "offscreen GL backend for the charts: auto, egl or osmesa (default: $EPVIZ_GL or auto)");
-  cmd->add_option("--cases", raw->cases,
+  cmd->add_flag("--quick", request->quick, "a short study for CI (well under a minute)");
+  cmd->add_option("--json", request->json, "write every row and the metadata to this JSON file");
+  cmd->add_option("--out", request->out, "create this directory and write bench.json and the charts (PNG) there");
+  cmd->add_option("--gl", request->gl, "offscreen GL backend for the charts: auto, egl or osmesa (default: $EPVIZ_GL or auto)");
+  cmd->add_option("--cases", request->cases,
                   "comma-separated presets for the work-precision and drift studies (default all)");
-  return [raw] { return run_bench(*raw); };
+  return [request] { return run_bench(*request); };
 }
 
 }  // namespace epviz::app

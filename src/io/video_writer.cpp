@@ -2,9 +2,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -15,8 +13,6 @@
 #include <utility>
 
 #include "io/atomic_file.hpp"
-
-extern char** environ;
 
 namespace epviz::io {
 namespace {
@@ -37,54 +33,6 @@ std::string format_number(double value) {
     char buffer[64];
     const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
     return std::string(buffer, result.ptr);
-}
-
-// Blocks SIGPIPE in this thread for the guard's lifetime; a SIGPIPE raised
-// meanwhile by a write to a closed pipe is consumed before the mask is restored
-// (unless one was already pending before, which is then not ours to take).
-class SigpipeGuard {
-public:
-    SigpipeGuard() {
-        sigset_t block;
-        sigemptyset(&block);
-        sigaddset(&block, SIGPIPE);
-        ::pthread_sigmask(SIG_BLOCK, &block, &old_);
-        sigset_t pending;
-        sigemptyset(&pending);
-        ::sigpending(&pending);
-        was_pending_ = sigismember(&pending, SIGPIPE) == 1;
-    }
-    ~SigpipeGuard() {
-        if (!was_pending_) {
-            sigset_t pending;
-            sigemptyset(&pending);
-            ::sigpending(&pending);
-            if (sigismember(&pending, SIGPIPE) == 1) {
-                sigset_t pipe_only;
-                sigemptyset(&pipe_only);
-                sigaddset(&pipe_only, SIGPIPE);
-                const timespec zero{0, 0};
-                const int saved = errno;
-                while (::sigtimedwait(&pipe_only, nullptr, &zero) < 0 && errno == EINTR) {
-                }
-                errno = saved;
-            }
-        }
-        ::pthread_sigmask(SIG_SETMASK, &old_, nullptr);
-    }
-    SigpipeGuard(const SigpipeGuard&) = delete;
-    SigpipeGuard& operator=(const SigpipeGuard&) = delete;
-
-private:
-    sigset_t old_{};
-    bool was_pending_ = false;
-};
-
-std::string describe_status(int status) {
-    if (status == -1) return "could not be waited for";
-    if (WIFEXITED(status)) return "exited with status " + std::to_string(WEXITSTATUS(status));
-    if (WIFSIGNALED(status)) return std::string("was killed by signal ") + ::strsignal(WTERMSIG(status));
-    return "ended abnormally";
 }
 
 }  // namespace
@@ -205,78 +153,40 @@ VideoWriter::VideoWriter(fs::path target, VideoFormat format, int width, int hei
     }
     ::unlink(stderr_name.c_str());
 
-    int fds[2];
-    if (::pipe2(fds, O_CLOEXEC) != 0) {
-        const int error = errno;
-        ::close(stderr_fd_);
-        stderr_fd_ = -1;
-        throw VideoError("cannot write video '" + target_.string() + "': pipe: " + errno_text(error));
-    }
     // A stale temporary of this pid (an earlier crash) is overwritten by -y.
-    const std::vector<std::string> args = ffmpeg_arguments(format, width, height, fps, temporary_, options);
-    std::vector<char*> argv;
-    argv.reserve(args.size() + 1);
-    for (const std::string& arg : args) argv.push_back(const_cast<char*>(arg.c_str()));
-    argv.push_back(nullptr);
-
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_adddup2(&actions, fds[0], STDIN_FILENO);
-    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_adddup2(&actions, stderr_fd_, STDERR_FILENO);
-    posix_spawnattr_t attr;
-    posix_spawnattr_init(&attr);
-    // ffmpeg gets default signal handling and an empty mask whatever this process uses.
-    sigset_t defaults;
-    sigemptyset(&defaults);
-    sigaddset(&defaults, SIGPIPE);
-    sigaddset(&defaults, SIGINT);
-    sigaddset(&defaults, SIGTERM);
-    posix_spawnattr_setsigdefault(&attr, &defaults);
-    sigset_t empty;
-    sigemptyset(&empty);
-    posix_spawnattr_setsigmask(&attr, &empty);
-    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
-    pid_t pid = -1;
-    const int spawned = ::posix_spawnp(&pid, argv[0], &actions, &attr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    posix_spawnattr_destroy(&attr);
-    ::close(fds[0]);
-    if (spawned != 0) {
-        ::close(fds[1]);
+    Subprocess::Options streams;
+    streams.out = Subprocess::Stream::null;
+    streams.err = Subprocess::Stream::fd;
+    streams.err_fd = stderr_fd_;
+    try {
+        ffmpeg_ = std::make_unique<Subprocess>(ffmpeg_arguments(format, width, height, fps, temporary_, options),
+                                               streams);
+    } catch (const SubprocessError& e) {
         ::close(stderr_fd_);
         stderr_fd_ = -1;
-        if (spawned == ENOENT)
+        if (e.errno_value == ENOENT)
             throw VideoError("cannot write video '" + target_.string() + "': " + std::string(kNotFound));
         throw VideoError("cannot write video '" + target_.string() + "': cannot start " + options.ffmpeg + ": " +
-                         errno_text(spawned));
+                         errno_text(e.errno_value));
     }
-    pid_ = pid;
-    pipe_fd_ = fds[1];
 }
 
 VideoWriter::~VideoWriter() {
     if (!finished_) abort();
 }
 
-int VideoWriter::wait_for_exit() noexcept {
-    if (pid_ <= 0) return -1;
-    int status = 0;
-    pid_t result;
-    do {
-        result = ::waitpid(pid_, &status, 0);
-    } while (result < 0 && errno == EINTR);
-    pid_ = -1;
-    return result < 0 ? -1 : status;
+ExitStatus VideoWriter::wait_for_exit() noexcept {
+    if (!ffmpeg_) return {};
+    ffmpeg_->close_stdin();
+    const ExitStatus status = ffmpeg_->wait();
+    ffmpeg_.reset();
+    return status;
 }
 
 void VideoWriter::abort() noexcept {
-    if (pipe_fd_ >= 0) {
-        ::close(pipe_fd_);
-        pipe_fd_ = -1;
-    }
-    if (pid_ > 0) {
-        ::kill(pid_, SIGKILL);
+    if (ffmpeg_) {
+        ffmpeg_->close_stdin();
+        ffmpeg_->kill(SIGKILL);
         wait_for_exit();
     }
     ::unlink(temporary_.c_str());
@@ -307,13 +217,9 @@ std::string VideoWriter::ffmpeg_stderr() const {
 }
 
 void VideoWriter::fail(const std::string& what) {
-    if (pipe_fd_ >= 0) {
-        ::close(pipe_fd_);
-        pipe_fd_ = -1;
-    }
-    const int status = wait_for_exit();
+    const ExitStatus status = wait_for_exit();
     std::string message = "cannot write video '" + target_.string() + "': " + what;
-    if (status != -1) message += "; ffmpeg " + describe_status(status);
+    if (status.raw != -1) message += "; ffmpeg " + status.describe();
     const std::string log = ffmpeg_stderr();
     message += log.empty() ? std::string(" (no message from ffmpeg)") : ":\n" + log;
     abort();
@@ -330,24 +236,9 @@ void VideoWriter::write_frame(std::span<const std::uint8_t> rgba) {
 
 void VideoWriter::write_frame(const std::uint8_t* rgba) {
     if (finished_) throw VideoError("cannot write video '" + target_.string() + "': already finished");
-    if (pipe_fd_ < 0 || pid_ <= 0)
+    if (!ffmpeg_)
         throw VideoError("cannot write video '" + target_.string() + "': the writer has already failed");
-    int error = 0;
-    {
-        SigpipeGuard guard;
-        const auto* bytes = rgba;
-        std::size_t left = frame_bytes_;
-        while (left > 0) {
-            const ssize_t written = ::write(pipe_fd_, bytes, left);
-            if (written < 0) {
-                if (errno == EINTR) continue;
-                error = errno;
-                break;
-            }
-            bytes += written;
-            left -= static_cast<std::size_t>(written);
-        }
-    }
+    const int error = ffmpeg_->write_stdin(rgba, frame_bytes_);
     if (error == EPIPE) fail("ffmpeg stopped reading frames after " + std::to_string(frames_));
     if (error != 0) fail("writing a frame to ffmpeg: " + errno_text(error));
     ++frames_;
@@ -355,16 +246,14 @@ void VideoWriter::write_frame(const std::uint8_t* rgba) {
 
 void VideoWriter::finish() {
     if (finished_) return;
-    if (pid_ <= 0) throw VideoError("cannot write video '" + target_.string() + "': the writer has already failed");
+    if (!ffmpeg_) throw VideoError("cannot write video '" + target_.string() + "': the writer has already failed");
     if (frames_ == 0) {
         abort();
         throw VideoError("cannot write video '" + target_.string() + "': no frames were written");
     }
-    ::close(pipe_fd_);
-    pipe_fd_ = -1;
-    const int status = wait_for_exit();
-    if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-        std::string message = "cannot write video '" + target_.string() + "': ffmpeg " + describe_status(status);
+    const ExitStatus status = wait_for_exit();
+    if (!status.success()) {
+        std::string message = "cannot write video '" + target_.string() + "': ffmpeg " + status.describe();
         const std::string log = ffmpeg_stderr();
         message += log.empty() ? std::string(" (no message from ffmpeg)") : ":\n" + log;
         abort();

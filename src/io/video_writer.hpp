@@ -1,7 +1,7 @@
 #pragma once
 // Video output by piping raw RGBA frames to an ffmpeg child process
 // (`ffmpeg -f rawvideo -pix_fmt rgba -s WxH -r FPS -i - ...`, as matplotlib's
-// FFMpegWriter does), started with posix_spawnp (no shell, so any path works).
+// FFMpegWriter does), started through io/subprocess.hpp (no shell, so any path works).
 //
 // ffmpeg writes to "<target>.tmp-<pid>" (atomic_file.hpp's temporary name) in
 // the target's directory; finish() waits for ffmpeg and renames the temporary
@@ -38,19 +38,20 @@
 // ffmpeg runs with -nostdin -loglevel error; its stderr goes to an unlinked
 // temporary file and is quoted in the exception when it fails.
 //
-// SIGPIPE: a write to an ffmpeg that has died raises no signal (SIGPIPE is
-// blocked in the writing thread around the write and a resulting pending
-// SIGPIPE is consumed); the write reports the failure with ffmpeg's stderr.
+// SIGPIPE: a write to an ffmpeg that has died raises no signal (Subprocess's
+// writes block and consume it); the write reports the failure with ffmpeg's stderr.
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
-#include <sys/types.h>
 #include <vector>
+
+#include "io/subprocess.hpp"
 
 namespace epviz::io {
 
@@ -122,7 +123,7 @@ public:
 
 private:
     void abort() noexcept;            // kill, reap, remove the temporary
-    int wait_for_exit() noexcept;     // reaps ffmpeg; returns the raw wait status (-1 if none)
+    ExitStatus wait_for_exit() noexcept;  // closes ffmpeg's input and reaps it
     std::string ffmpeg_stderr() const;
     [[noreturn]] void fail(const std::string& what);
 
@@ -133,8 +134,7 @@ private:
     int height_ = 0;
     std::size_t frame_bytes_ = 0;
     std::size_t frames_ = 0;
-    pid_t pid_ = -1;
-    int pipe_fd_ = -1;    // write end of ffmpeg's stdin
+    std::unique_ptr<Subprocess> ffmpeg_;  // null once reaped
     int stderr_fd_ = -1;  // unlinked temporary holding ffmpeg's stderr
     bool finished_ = false;
 };

@@ -455,4 +455,16 @@ render::RgbaImage paint_table(render::GlContext& context, const TableSpec& spec,
   return renderer.finish_frame();
 }
 
+render::RgbaImage paint_figure(render::GlContext& context, const Figure& figure, const ChartOptions& options) {
+  if (const auto* chart = std::get_if<ChartSpec>(&figure.content)) return paint_chart(context, *chart, options);
+  const auto& table = std::get<TableSpec>(figure.content);
+  ChartOptions o = options;
+  // Tall enough for every row: the title, the header, the rules and the
+  // margins take five and a half lines (paint_table's layout); one more spare.
+  o.font_px = chart_font_px(options);
+  const float line = o.font_px * 1.5f;
+  o.height = std::max(o.height, int(std::ceil(line * float(table.rows.size() + 6))));
+  return paint_table(context, table, o);
+}
+
 }  // namespace epviz::paint

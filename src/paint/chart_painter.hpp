@@ -12,6 +12,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
+#include "chart/chart_spec.hpp"
 #include "render/camera.hpp"
 #include "render/gl_context.hpp"
 #include "render/image.hpp"
@@ -19,30 +20,12 @@
 
 namespace epviz::paint {
 
-struct ChartPoint {
-  double x = 0.0;
-  double y = 0.0;
-};
-
-struct ChartSeries {
-  std::string name;
-  std::vector<ChartPoint> points;  // drawn in this order; non-finite (or <= 0 on a log axis) points break the line
-};
-
-struct ChartSpec {
-  std::string title;
-  std::string x_label;
-  std::string y_label;
-  bool log_x = false;
-  bool log_y = false;
-  std::vector<ChartSeries> series;
-};
-
-struct TableSpec {
-  std::string title;
-  std::vector<std::string> header;
-  std::vector<std::vector<std::string>> rows;  // short rows are padded with empty cells
-};
+// The painter's input types are plain data from chart/chart_spec.hpp.
+using chart::ChartPoint;
+using chart::ChartSeries;
+using chart::ChartSpec;
+using chart::Figure;
+using chart::TableSpec;
 
 struct ChartOptions {
   int width = 1280;
@@ -82,5 +65,7 @@ std::string decade_label(int exponent);
 // Renders a chart or table figure; `context` must be current (any size).
 render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec, const ChartOptions& options = {});
 render::RgbaImage paint_table(render::GlContext& context, const TableSpec& spec, const ChartOptions& options = {});
+// Either of the two; a table is drawn taller than options.height when its rows need it.
+render::RgbaImage paint_figure(render::GlContext& context, const Figure& figure, const ChartOptions& options = {});
 
 }  // namespace epviz::paint

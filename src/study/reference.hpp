@@ -1,0 +1,39 @@
+#pragma once
+// The reference solution used by `epviz bench` to measure global errors, and
+// the error measure itself. The reference is computed by a different method
+// from those it judges at much tighter accuracy: Richardson extrapolation of
+// Gauss6 (fixed steps h and h/2, combined as (64 y_{h/2} - y_h) / 63 to cancel
+// the h^6 term of the global error), checked against DOP853 at tolerance 1e-14.
+#include <vector>
+
+#include "physics/body.hpp"
+#include "sim/simulate.hpp"
+
+namespace epviz::study {
+
+// Global error of one state against another: |Omega - Omega_ref|_2 + |gamma - gamma_ref|_2
+// (Euclidean norms of the two 3-vectors, added).
+double state_error(const sim::Sample& a, const sim::Sample& b);
+
+// 2 pi / |Omega|: the period of the fastest rotation of a state.
+double fastest_period(const physics::InitialState& s);
+
+struct Reference {
+  std::vector<sim::Sample> samples;  // at output_times(t_end, samples)
+  double step = 0.0;            // the coarse Gauss6 step h (the fine one is h / 2)
+  // Max over the samples of state_error(Richardson, DOP853 at tol 1e-14): the
+  // two independent references' disagreement.
+  double self_check = 0.0;
+  double cpu_seconds = 0.0;
+};
+
+// Reference trajectory of (body, initial) in the direct formulation. `h_target`
+// is the largest Gauss6 step; it is shortened so that h and h/2 both divide the
+// output spacing. Throws std::runtime_error if either reference run fails.
+Reference compute_reference(const physics::Body& body, const physics::InitialState& initial,
+                            double t_end, int samples, double h_target);
+
+// A reasonable h_target: min(0.01, T / 200) with T = fastest_period(initial).
+double reference_step(const physics::InitialState& initial);
+
+}  // namespace epviz::study

@@ -1,0 +1,38 @@
+#pragma once
+// Stability studies: methods pushed into their failure regimes, where the
+// failure must be detected and reported. The fifth, the south-pole passage of
+// the Riccati chart, is in study/pole_passage.hpp.
+#include <string>
+#include <vector>
+
+#include "physics/cases.hpp"
+#include "sim/simulate.hpp"
+#include "study/options.hpp"
+#include "study/study_row.hpp"
+
+namespace epviz::study {
+
+// Whether one fixed-step run of `c`'s preset over t_end keeps the motion:
+// no failure, finite, global error <= 0.1 and relative energy drift <= 0.1 at t_end.
+struct StepVerdict {
+  bool ok = true;
+  std::string reason;  // "" when ok: "blew up: ...", "lost the motion: error ...", or the failure
+  double error = 0.0, energy_drift = 0.0, failure_t = 0.0;
+};
+StepVerdict check_fixed_step(physics::Case c, sim::Method m, double step, double t_end,
+                             const sim::Sample& reference_end);
+
+// The largest fixed step keeping the motion, on Kovalevskaya and Lagrange.
+std::vector<MaxStepRow> stability_max_step(const StudyOptions& o);
+// The Euler case near the separatrix: the first and last flips of Omega_2.
+std::vector<SeparatrixRow> stability_separatrix(const StudyOptions& o);
+// A fast sleeping top (Omega3 = 50): the cheapest run with gamma error < 1e-3.
+std::vector<SleepingTopRow> stability_sleeping(const StudyOptions& o);
+// The generic body from a strongly chaotic state: when a run separates from the reference.
+std::vector<ChaosRow> stability_chaos(const StudyOptions& o);
+
+// The initial state of the generic body used by the chaos study: one with a
+// short Lyapunov time, so that the study's runs separate within its time span.
+physics::InitialState chaos_initial_state();
+
+}  // namespace epviz::study

@@ -1,0 +1,19 @@
+#pragma once
+// Work-precision: global error at t_end against the case's reference
+// (study/reference.hpp) over a sweep of tolerances (adaptive methods) or steps
+// (fixed-step ones), for each case, formulation and method.
+#include <vector>
+
+#include "physics/cases.hpp"
+#include "study/options.hpp"
+#include "study/study_row.hpp"
+
+namespace epviz::study {
+
+// The final time of the work-precision runs of case c.
+double wp_t_end(physics::Case c);
+
+// Per case: its WorkPrecisionRows, then its ReferenceRow.
+std::vector<StudyRow> work_precision_study(const StudyOptions& o);
+
+}  // namespace epviz::study

@@ -1,0 +1,111 @@
+// Peers: each library integrates the same problem as epviz, so at tol 1e-10
+// it reaches epviz's DOP853 tol-1e-13 final state closely, and its error falls
+// with the tolerance.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+#include "sim/simulate.hpp"
+#include "study/peers/peers.hpp"
+#include "study/peers/scipy_peer.hpp"
+#include "study/reference.hpp"
+
+namespace epviz::study::peers {
+namespace {
+
+constexpr double kTEnd = 10.0;
+
+sim::RunSpec kovalevskaya(double tol) {
+  auto spec = sim::preset_run(physics::Case::kovalevskaya, sim::Method::dop853, sim::Formulation::direct,
+                              kTEnd, 1);
+  spec.tol = tol;
+  return spec;
+}
+
+const sim::Sample& reference_end() {
+  static const sim::Sample s = [] {
+    const auto r = sim::simulate(kovalevskaya(1e-13));
+    EXPECT_FALSE(r.failure);
+    return r.samples.back();
+  }();
+  return s;
+}
+
+double error_of(const PeerResult& r) {
+  sim::Sample s;
+  s.t = r.t;
+  s.omega = r.omega;
+  s.gamma = r.gamma;
+  return study::state_error(s, reference_end());
+}
+
+bool scipy_available() {
+  const auto r = run_scipy_peers(physics::Body{}, physics::InitialState{}, 0.1, {1e-6}, 1);
+  return r.solve_ivp.at(0).status != PeerStatus::skipped;
+}
+
+class PeerTest : public ::testing::TestWithParam<PeerId> {};
+
+TEST_P(PeerTest, ReachesEpvizFinalStateOnKovalevskaya) {
+  const PeerId id = GetParam();
+  const auto r = run_peer(id, kovalevskaya(1e-10), 1);
+  if (r.status == PeerStatus::skipped) GTEST_SKIP() << method_name(id) << ": " << r.reason;
+  ASSERT_TRUE(r.ok()) << r.reason;
+  EXPECT_DOUBLE_EQ(r.t, kTEnd);
+  EXPECT_GT(r.rhs_evals, 0);
+  const double err = error_of(r);
+  RecordProperty("error", std::to_string(err));
+  EXPECT_LT(err, 1e-7) << impl_name(id) << " " << method_name(id);
+}
+
+TEST_P(PeerTest, ErrorFallsWithTolerance) {
+  const PeerId id = GetParam();
+  const auto loose = run_peer(id, kovalevskaya(1e-5), 1);
+  if (loose.status == PeerStatus::skipped) GTEST_SKIP() << method_name(id) << ": " << loose.reason;
+  const auto tight = run_peer(id, kovalevskaya(1e-10), 1);
+  ASSERT_TRUE(loose.ok()) << loose.reason;
+  ASSERT_TRUE(tight.ok()) << tight.reason;
+  EXPECT_LT(10.0 * error_of(tight), error_of(loose));
+  EXPECT_GT(tight.rhs_evals, loose.rhs_evals);
+}
+
+INSTANTIATE_TEST_SUITE_P(All, PeerTest, ::testing::ValuesIn(all_peers()),
+                         [](const ::testing::TestParamInfo<PeerId>& info) {
+                           std::string s = impl_name(info.param) + "_" + method_name(info.param);
+                           for (char& c : s)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return s;
+                         });
+
+TEST(ScipyPeer, SkipsWithAMessageWhenScipyIsAbsent) {
+  if (!scipy_available()) GTEST_SKIP() << "scipy is not installed for /usr/bin/python3";
+  // A missing driver script reads the same as a missing scipy: skipped, with the reason.
+  setenv("EPVIZ_SCIPY_DRIVER", "/nonexistent/scipy_driver.py", 1);
+  const auto r = run_scipy_peers(physics::Body{}, physics::InitialState{}, 0.1, {1e-6, 1e-8}, 1);
+  unsetenv("EPVIZ_SCIPY_DRIVER");
+  ASSERT_EQ(r.solve_ivp.size(), 2u);
+  for (const auto& p : r.solve_ivp) {
+    EXPECT_EQ(p.status, PeerStatus::skipped);
+    EXPECT_NE(p.reason.find("not found"), std::string::npos) << p.reason;
+  }
+}
+
+TEST(PeerWorkPrecision, OneRowPerPeerAndTolerance) {
+  const std::vector<double> tols{1e-6, 1e-9};
+  const auto rows = peer_work_precision(physics::Case::kovalevskaya, tols, kTEnd, 1);
+  ASSERT_EQ(rows.size(), all_peers().size() * tols.size());
+  for (const auto& row : rows) {
+    const std::string impl = impl_name(row.id), method = method_name(row.id);
+    EXPECT_TRUE(impl == "boost-odeint" || impl == "gsl" || impl == "scipy") << impl;
+    EXPECT_EQ(row.t_end, kTEnd);
+    const auto& r = row.result;
+    if (r.status == PeerStatus::skipped) continue;
+    EXPECT_TRUE(r.ok()) << method << ": " << r.reason;
+    EXPECT_GT(r.cpu_seconds, 0.0) << method;
+    EXPECT_GT(r.rhs_evals, 0) << method;
+    EXPECT_LT(error_of(r), row.tol * 1e3) << impl << " " << method << " tol " << row.tol;
+  }
+}
+
+}  // namespace
+}  // namespace epviz::study::peers
