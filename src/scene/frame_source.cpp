@@ -36,7 +36,7 @@ FrameSource::FrameSource(const ScenePlan& plan, const SceneSettings& settings)
       settings_(settings),
       trajectory_(sim::Trajectory::start(plan.run)),
       monitor_(plan.run.body, plan.run.case_id, plan.run.initial),
-      history_(plan.layout.sphere_px_per_unit, plan.layout.plane_px_per_unit),
+      history_(plan.trail_sphere_px, plan.trail_plane_px),
       shape_(body_shape(plan.run.body)) {
   max_drift_ = monitor_.no_drift();
   take(trajectory_->initial());

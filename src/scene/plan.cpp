@@ -25,6 +25,18 @@ FrameLayout planned_layout(const SceneSettings& s, const sim::RunSpec& run) {
   return frame_layout(q);
 }
 
+void trail_pixel_scales(const SceneSettings& s, double& sphere_px, double& plane_px) {
+  LayoutRequest q;
+  q.width = s.width;
+  q.height = s.height;
+  q.camera_distance = s.camera.distance;
+  q.plane_extent = s.plane_extent;
+  q.layers = {false, true, false, false};
+  sphere_px = frame_layout(q).sphere_px_per_unit;
+  q.layers = {false, false, true, false};
+  plane_px = frame_layout(q).plane_px_per_unit;
+}
+
 double pixels_per_gamma(const FrameLayout& l, float plane_extent) {
   // d(a, b) = d(gamma) (1 + |eta|^2) / 2: the plane magnifies errors towards its edge.
   const double e2 = double(plane_extent) * plane_extent;
@@ -52,6 +64,7 @@ ScenePlan plan_scene(sim::RunSpec run, const SceneSettings& s) {
   }
   if (auto why = sim::incompatibility(run.method, run.formulation)) throw PlanError(*why);
   plan.layout = planned_layout(s, run);
+  trail_pixel_scales(s, plan.trail_sphere_px, plan.trail_plane_px);
 
   char note[160];
   if (sim::is_adaptive(run.method)) {

@@ -21,13 +21,21 @@ struct ScenePlan {
   int samples_per_frame = 8; // trail samples between two frames
   std::string accuracy_note; // how the tolerance or step was chosen, for the report and overlay
   bool open_ended = false;   // interactive: no last frame; run.t_end only sets the sample spacing's horizon
-  FrameLayout layout;        // the picture the frames are drawn into (tolerance and trail decimation follow it)
+  FrameLayout layout;        // the picture the frames are drawn into (the tolerance follows it)
+  // Pixels per unit of gamma on the sphere and of (a, b) on the plane that the
+  // trails are decimated for (see trail_pixel_scales).
+  double trail_sphere_px = 0.0, trail_plane_px = 0.0;
   double frame_time(int frame) const;  // simulation time shown by a frame
 };
 
 // The layout of the frames of this job: the painter's own (scene::frame_layout),
 // with the overlay FrameSource composes for this run.
 FrameLayout planned_layout(const SceneSettings& s, const sim::RunSpec& run);
+
+// The largest scale the sphere and the plane take in a picture of this size:
+// each alone in it. Trails are decimated for these, so that a layer switched
+// on interactively (which keeps the run, and its plan) never shows a coarse trail.
+void trail_pixel_scales(const SceneSettings& s, double& sphere_px, double& plane_px);
 
 // The relative/absolute tolerance that keeps the drawn error well below a pixel
 // over the run: tol = 0.02 px / (pixels per unit of gamma, with the plane's

@@ -78,6 +78,24 @@ TEST(Plan, FramesAndTrailSamples) {
   EXPECT_NE(plan.accuracy_note.find("auto"), std::string::npos);
 }
 
+// Trails are kept fine enough for any layers the picture may switch on later.
+TEST(Plan, TrailsAreDecimatedForTheLargestScaleOfEachPart) {
+  scene::SceneSettings s;
+  s.layers = {false, false, true, false};  // planned with the plane alone
+  const auto plan = scene::plan_scene(preset_run(physics::Case::euler, 10), s);
+  for (int bits = 1; bits < 16; ++bits) {
+    scene::LayoutRequest q;
+    q.width = s.width;
+    q.height = s.height;
+    q.layers = {bool(bits & 1), bool(bits & 2), bool(bits & 4), bool(bits & 8)};
+    q.overlay = {scene::kOverlayLines, 3};
+    const auto l = scene::frame_layout(q);
+    EXPECT_GE(plan.trail_sphere_px, l.sphere_px_per_unit) << bits;
+    EXPECT_GE(plan.trail_plane_px, l.plane_px_per_unit) << bits;
+  }
+  EXPECT_GT(plan.trail_sphere_px, 0.0);
+}
+
 // The tolerance chosen for a resolution keeps the drawn error below half a
 // pixel, measured against a run at tol 1e-13.
 class AutoToleranceIsEnough : public ::testing::TestWithParam<physics::Case> {};
