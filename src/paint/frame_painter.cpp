@@ -42,13 +42,15 @@ const render::ColourMap& time_map() {
 // top is cut where the theme's background would swallow it.
 glm::vec4 age_colour(float age, float top) { return time_map()((1.0f - age) * top, 0.25f + 0.75f * (1.0f - age)); }
 
-}  // namespace
-
-namespace {
-
 render::Viewport to_viewport(const scene::Rect& r) { return {r.x, r.y, r.width, r.height}; }
 std::optional<render::Viewport> to_viewport(const std::optional<scene::Rect>& r) {
   return r ? std::optional(to_viewport(*r)) : std::nullopt;
+}
+
+Layout layout_from(const scene::LayoutRequest& q) {
+  const scene::FrameLayout f = scene::frame_layout(q);
+  return {to_viewport(f.view_3d), to_viewport(f.panel_column), to_viewport(f.plot_area),
+          f.overlay_in_column, f.sphere_px_per_unit, f.plane_px_per_unit};
 }
 
 }  // namespace
@@ -56,16 +58,6 @@ std::optional<render::Viewport> to_viewport(const std::optional<scene::Rect>& r)
 int overlay_lines_shown(const scene::OverlayText& o, int height) {
   return scene::overlay_lines_shown(int(o.lines.size()), height);
 }
-
-namespace {
-
-Layout layout_from(const scene::LayoutRequest& q) {
-  const scene::FrameLayout f = scene::frame_layout(q);
-  return {to_viewport(f.view_3d),  to_viewport(f.panel_column), to_viewport(f.plot_area),
-          f.overlay_in_column, f.sphere_px_per_unit, f.plane_px_per_unit};
-}
-
-}  // namespace
 
 Layout layout_for(const scene::Frame& f, int width, int height, int reserved_left) {
   return layout_from(scene::layout_request(f, width, height, reserved_left));
