@@ -7,17 +7,16 @@
 #include <vector>
 
 #include "app/simulation_fields.hpp"
+#include "job/document.hpp"
 #include "scene/settings.hpp"
 
 namespace epviz::app {
 
-enum class OutputFormat { png, mp4, webm, gif };
-
-struct OutputSettings {
-  std::filesystem::path dir = "out";
-  OutputFormat format = OutputFormat::png;
-  std::string name;  // video file stem, or PNG frame prefix ("frame" -> frame_0042.png)
-};
+// The keys of a single job and their reading live in job/schema.hpp.
+using job::output_format_from_name;
+using job::output_format_name;
+using job::OutputFormat;
+using job::OutputSettings;
 
 struct RenderJob {
   std::filesystem::path file;
@@ -55,8 +54,5 @@ struct LoadedJob {
   std::optional<BenchFiguresJob> bench;
 };
 LoadedJob load_render_job(const std::filesystem::path& path);
-
-std::string_view output_format_name(OutputFormat f);
-std::optional<OutputFormat> output_format_from_name(std::string_view s);
 
 }  // namespace epviz::app

@@ -9,11 +9,6 @@
 namespace epviz::app {
 namespace {
 
-template <class T>
-void take(Given<T>& mine, const Given<T>& theirs) {
-  if (theirs) mine = theirs;
-}
-
 Eigen::Vector3d to_vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
 
 std::string case_names() {
@@ -34,60 +29,6 @@ std::string origin_of(const SimulationFields& f, const std::string& field) {
 }
 
 }  // namespace
-
-void SimulationFields::overlay(const SimulationFields& o) {
-  take(case_name, o.case_name);
-  take(inertia, o.inertia);
-  take(com, o.com);
-  take(omega, o.omega);
-  take(gamma, o.gamma);
-  take(weight, o.weight);
-  take(tol, o.tol);
-  take(step, o.step);
-  take(t_end, o.t_end);
-  take(samples, o.samples);
-  take(formulation, o.formulation);
-  take(method, o.method);
-  take(allow_nonphysical, o.allow_nonphysical);
-  take(normalize_gamma, o.normalize_gamma);
-  take(chart_switch, o.chart_switch);
-}
-
-SimulationFields read_simulation_fields(io::ObjectReader& r, bool* auto_tol) {
-  SimulationFields f;
-  if (auto_tol) {
-    *auto_tol = r.peek_string("tol") == std::optional<std::string>("auto");
-    if (*auto_tol) r.mark_read("tol");
-  }
-  auto str = [&](Given<std::string>& g, const char* key) {
-    if (auto v = r.string(key)) g.set(*v, r.where(key));
-  };
-  auto num = [&](Given<double>& g, const char* key, bool positive) {
-    if (auto v = positive ? r.positive_number(key) : r.number(key)) g.set(*v, r.where(key));
-  };
-  auto vec = [&](Given<std::array<double, 3>>& g, const char* key) {
-    if (auto v = r.vec3(key)) g.set(*v, r.where(key));
-  };
-  auto flag = [&](Given<bool>& g, const char* key) {
-    if (auto v = r.boolean(key)) g.set(*v, r.where(key));
-  };
-  str(f.case_name, "case");
-  vec(f.inertia, "inertia");
-  vec(f.com, "com");
-  vec(f.omega, "omega");
-  vec(f.gamma, "gamma");
-  num(f.weight, "weight", false);
-  if (!(auto_tol && *auto_tol)) num(f.tol, "tol", true);
-  num(f.step, "step", true);
-  num(f.t_end, "t_end", true);
-  if (auto v = r.integer("samples", 1, 100'000'000)) f.samples.set(*v, r.where("samples"));
-  str(f.formulation, "formulation");
-  str(f.method, "method");
-  flag(f.allow_nonphysical, "allow_nonphysical");
-  flag(f.normalize_gamma, "normalize_gamma");
-  flag(f.chart_switch, "chart_switch");
-  return f;
-}
 
 sim::RunSpec resolve(const SimulationFields& f) {
   sim::RunSpec spec;

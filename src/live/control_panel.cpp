@@ -9,13 +9,17 @@
 #include "live/case_constraints.hpp"
 #include "physics/cases.hpp"
 #include "scene/frame_source.hpp"
+#include "scene/theme.hpp"
 
 namespace epviz::live {
 namespace {
 
-const ImVec4 kErrorColour(1.0f, 0.45f, 0.4f, 1.0f);
-const ImVec4 kGoodColour(0.5f, 0.85f, 0.55f, 1.0f);
-const ImVec4 kWarnColour(0.95f, 0.8f, 0.4f, 1.0f);
+// The interactive panels are ImGui's dark windows: the dark theme's colours.
+const scene::Theme& kTheme = scene::dark_theme();
+ImVec4 to_imgui(const scene::Rgba& c) { return {c[0], c[1], c[2], c[3]}; }
+const ImVec4 kErrorColour = to_imgui(kTheme.drift_bad);
+const ImVec4 kGoodColour = to_imgui(kTheme.drift_ok);
+const ImVec4 kWarnColour = to_imgui(kTheme.drift_warn);
 
 bool drag_double(const char* label, double* v, double speed, double lo, double hi, const char* format = "%.4g") {
   return ImGui::DragScalar(label, ImGuiDataType_Double, v, float(speed), &lo, &hi, format);
@@ -107,7 +111,7 @@ PanelActions ControlPanel::draw(const LiveScene& scene, const render::Viewport& 
 
 void ControlPanel::draw_playback(const LiveScene& scene, PanelActions& out) {
   const LiveSetup& s = scene.setup();
-  ImGui::TextColored(ImVec4(1.0f, 0.82f, 0.45f, 1.0f), "%s",
+  ImGui::TextColored(to_imgui(kTheme.title), "%s",
                      s.scene.title.empty() ? scene::case_title(s.run.case_id).c_str() : s.scene.title.c_str());
   ImGui::Text("t = %.3f   %s, %s", scene.time(), std::string(sim::name(s.run.method)).c_str(),
               scene.accuracy_note().c_str());
@@ -296,7 +300,7 @@ void ControlPanel::draw_drift(const LiveScene& scene) {
     char overlay[96];
     std::snprintf(overlay, sizeof overlay, "%.1e (max %.1e)", v, m);
     PlotData data{&history, i};
-    ImGui::PushStyleColor(ImGuiCol_PlotLines, !(m < 1e-2) ? kErrorColour : m < 1e-8 ? kGoodColour : kWarnColour);
+    ImGui::PushStyleColor(ImGuiCol_PlotLines, to_imgui(kTheme.drift_colour(m)));
     ImGui::PlotLines(i < 3 ? names[i] : extra_name.c_str(), drift_log10, &data, int(history.size()), 0, overlay,
                      -17.0f, 0.0f, ImVec2(0, 2.4f * ImGui::GetFontSize()));
     ImGui::PopStyleColor();

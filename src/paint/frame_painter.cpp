@@ -11,6 +11,8 @@
 
 #include "render/colour_map.hpp"
 #include "render/mesh_data.hpp"
+#include "scene/layout.hpp"
+#include "scene/theme.hpp"
 
 namespace epviz::paint {
 namespace {
@@ -22,93 +24,60 @@ glm::vec4 to_glm(const scene::Rgba& c) { return {c[0], c[1], c[2], c[3]}; }
 glm::vec3 to_glm(const Eigen::Vector3f& v) { return {v.x(), v.y(), v.z()}; }
 glm::quat to_glm(const Eigen::Quaternionf& q) { return {q.w(), q.x(), q.y(), q.z()}; }
 
-// Perceived brightness, to pick text colours that read on the background.
-bool is_light(const scene::Rgba& c) { return 0.299f * c[0] + 0.587f * c[1] + 0.114f * c[2] > 0.55f; }
+ImVec4 to_imgui(const scene::Rgba& c) { return {c[0], c[1], c[2], c[3]}; }
+
+// The frame's theme; where the job's own background is of the other kind, the
+// built-in theme for that kind of background, so that lines and text still read.
+const scene::Theme& ink_for(const scene::Frame& f) {
+  const scene::Theme& t = scene::theme(f.theme);
+  if (scene::is_light(f.colours.background) == t.light) return t;
+  return t.light ? scene::dark_theme() : scene::light_theme();
+}
 
 const render::ColourMap& time_map() {
   static const render::ColourMap map = render::ColourMap::time();
   return map;
 }
-// Newest points bright and opaque, old ones darker and fading out.
-glm::vec4 age_colour(float age) { return time_map()(1.0f - age, 0.25f + 0.75f * (1.0f - age)); }
+// Newest points bright and opaque, old ones darker and fading out; the map's
+// top is cut where the theme's background would swallow it.
+glm::vec4 age_colour(float age, float top) { return time_map()((1.0f - age) * top, 0.25f + 0.75f * (1.0f - age)); }
 
-constexpr float kFovDegrees = 30.0f;
+render::Viewport to_viewport(const scene::Rect& r) { return {r.x, r.y, r.width, r.height}; }
+std::optional<render::Viewport> to_viewport(const std::optional<scene::Rect>& r) {
+  return r ? std::optional(to_viewport(*r)) : std::nullopt;
+}
 
-}  // namespace
-
-namespace {
-
-float overlay_font_px(int height) { return std::clamp(float(height) / 48.0f, 13.0f, 28.0f); }
-
-// Height of the overlay window: title, shown lines, and the drift table.
-int overlay_height(const scene::OverlayText& o, int height) {
-  const int rows = 1 + overlay_lines_shown(o, height) + (o.drifts.empty() ? 0 : 1 + int(o.drifts.size()));
-  return int(std::ceil(overlay_font_px(height) * 1.36f * float(rows) + 18.0f));
+Layout layout_from(const scene::LayoutRequest& q) {
+  const scene::FrameLayout f = scene::frame_layout(q);
+  return {to_viewport(f.view_3d), to_viewport(f.panel_column), to_viewport(f.plot_area),
+          f.overlay_in_column, f.sphere_px_per_unit, f.plane_px_per_unit};
 }
 
 }  // namespace
 
 int overlay_lines_shown(const scene::OverlayText& o, int height) {
-  // Below 480 rows (gallery tiles) only the time and the method.
-  return std::min(int(o.lines.size()), height < 480 ? 2 : int(o.lines.size()));
+  return scene::overlay_lines_shown(int(o.lines.size()), height);
 }
 
-namespace {
-
-Layout layout_in_width(const scene::Layers& layers, const scene::OverlayText& overlay, int width, int height) {
-  Layout l;
-  const bool three_d = layers.body || layers.sphere;
-  if (three_d && layers.riccati) {
-    const int w3 = width * 3 / 5;
-    l.view_3d = render::Viewport{0, 0, w3, height};
-    l.panel_column = render::Viewport{w3, 0, width - w3, height};
-  } else if (three_d) {
-    l.view_3d = render::Viewport{0, 0, width, height};
-  } else if (layers.riccati) {
-    l.panel_column = render::Viewport{0, 0, width, height};
-  }
-  if (l.panel_column) {
-    const auto& c = *l.panel_column;
-    // Room for the title above and the tick labels and legend below.
-    const int margin_bottom = std::max(26, height / 9), margin_top_base = std::max(22, height / 14);
-    const int margin_left = std::max(30, c.width / 8), margin_right = std::max(10, c.width / 20);
-    auto side_for = [&](int margin_top) {
-      return std::min(c.width - margin_left - margin_right, c.height - margin_top - margin_bottom);
-    };
-    // The overlay takes the top of the panel's column when the plot keeps at
-    // least 35 % of the height there, so that it does not cover the sphere;
-    // otherwise (small pictures) it floats over the 3D view's corner.
-    const int overlay_px = l.view_3d && layers.overlay ? overlay_height(overlay, height) : 0;
-    l.overlay_in_column = overlay_px > 0 && side_for(margin_top_base + overlay_px) >= height * 35 / 100;
-    const int margin_top = margin_top_base + (l.overlay_in_column ? overlay_px : 0);
-    const int side = std::max(16, side_for(margin_top));
-    const int x = c.x + margin_left + (c.width - margin_left - margin_right - side) / 2;
-    const int y = c.y + margin_top + (c.height - margin_top - margin_bottom - side) / 2;
-    l.plot_area = render::Viewport{x, y, side, side};
-  }
-  return l;
+Layout layout_for(const scene::Frame& f, int width, int height, int reserved_left) {
+  return layout_from(scene::layout_request(f, width, height, reserved_left));
 }
 
-}  // namespace
-
-Layout layout_for(const scene::Layers& layers, const scene::OverlayText& overlay, int full_width, int height,
+Layout layout_for(const scene::Layers& layers, const scene::OverlayText& overlay, int width, int height,
                   int reserved_left) {
-  reserved_left = std::clamp(reserved_left, 0, full_width - 16);
-  Layout l = layout_in_width(layers, overlay, full_width - reserved_left, height);
-  if (reserved_left == 0) return l;
-  for (auto* v : {&l.view_3d, &l.panel_column, &l.plot_area})
-    if (*v) (*v)->x += reserved_left;
-  return l;
+  scene::Frame f;
+  f.layers = layers;
+  f.overlay = overlay;
+  return layout_for(f, width, height, reserved_left);
 }
 
 render::Camera camera_for(const scene::Frame& f, const render::Viewport& view) {
   // The unit sphere (and its pole labels) fits the narrower side of the view at
   // the frame's distance; a distance of 3.4 radii frames it with a small margin.
   const float aspect = view.aspect();
-  const float half = std::tan(glm::radians(kFovDegrees) / 2.0f) * std::min(1.0f, aspect);
-  const float distance = float(f.camera.distance) * (1.22f / half) / 3.4f;
-  return render::Camera::orbit(glm::vec3(0.0f), distance, float(f.camera.azimuth_deg),
-                               float(f.camera.elevation_deg), kFovDegrees, aspect);
+  return render::Camera::orbit(glm::vec3(0.0f), scene::camera_distance_for(f.camera.distance, aspect),
+                               float(f.camera.azimuth_deg), float(f.camera.elevation_deg), scene::kFovDegrees,
+                               aspect);
 }
 
 FramePainter::FramePainter(render::GlContext& context, int width, int height, PainterOptions options)
@@ -120,7 +89,7 @@ FramePainter::FramePainter(render::GlContext& context, int width, int height, Pa
   ro.msaa_samples = options.msaa_samples;
   ro.overlay = true;
   ro.overlay_options.builtin_font = options.builtin_font;
-  ro.overlay_options.font_size_px = overlay_font_px(height);
+  ro.overlay_options.font_size_px = scene::overlay_font_px(height);
   renderer_ = std::make_unique<render::Renderer>(context_, ro);
   glass_ = render::GpuMesh(render::make_uv_sphere(1.0f, 72, 36));
   arrow_ = render::GpuMesh(render::make_arrow(1.0f, 0.018f, 0.045f, 0.12f, 20));
@@ -146,11 +115,13 @@ void FramePainter::draw_body(DrawList& list, const scene::Frame& f, float px) {
   const glm::mat4 rot = glm::mat4_cast(to_glm(f.body_rotation));
   const glm::vec3 com = to_glm(f.body.centre_of_mass);
   list.add_mesh(*box_, rot * glm::translate(glm::mat4(1.0f), com), {to_glm(f.colours.body), 0.35f, 40.0f, 0.0f});
+  const scene::Theme& ink = ink_for(f);
 
   // Box edges, slightly darker than the faces, so the orientation reads even
   // where two faces are lit alike.
   const glm::vec3 h = to_glm(f.body.half_extents);
-  const glm::vec4 edge{f.colours.body[0] * 0.45f, f.colours.body[1] * 0.45f, f.colours.body[2] * 0.45f, 1.0f};
+  const float dark = ink.body_edge_factor;
+  const glm::vec4 edge{f.colours.body[0] * dark, f.colours.body[1] * dark, f.colours.body[2] * dark, 1.0f};
   auto corner = [&](int i) {
     const glm::vec3 c(i & 1 ? h.x : -h.x, i & 2 ? h.y : -h.y, i & 4 ? h.z : -h.z);
     return glm::vec3(rot * glm::vec4(com + c * 1.002f, 1.0f));
@@ -159,43 +130,42 @@ void FramePainter::draw_body(DrawList& list, const scene::Frame& f, float px) {
     for (int bit : {1, 2, 4})
       if (!(i & bit)) list.add_line(corner(i), corner(i | bit), edge, 1.0f * px);
 
-  // Principal axes from the fixed point, muted red/green/blue for print.
-  const glm::vec4 axis_colours[] = {{0.86f, 0.33f, 0.30f, 1}, {0.36f, 0.74f, 0.40f, 1}, {0.36f, 0.54f, 0.92f, 1}};
+  // Principal axes from the fixed point.
   const char* names[] = {"e1", "e2", "e3"};
   const float length = std::max(0.95f, glm::length(com) + 0.25f);
-  const glm::vec4 label_colour = is_light(f.colours.background) ? glm::vec4(0.2f, 0.2f, 0.25f, 1) : glm::vec4(0.85f, 0.87f, 0.92f, 1);
+  const glm::vec4 label_colour = to_glm(ink.axis_label);
   for (int i = 0; i < 3; ++i) {
     glm::vec3 axis(0.0f);
     axis[i] = 1.0f;
     const glm::mat4 model = rot * render::rotation_from_z_to(axis) * glm::scale(glm::mat4(1.0f), glm::vec3(length));
-    list.add_mesh(arrow_, model, {axis_colours[i], 0.3f, 32.0f, 0.0f});
+    list.add_mesh(arrow_, model, {to_glm(ink.axes[i]), 0.3f, 32.0f, 0.0f});
     list.add_text({glm::vec3(rot * glm::vec4(axis * (length + 0.08f), 1.0f)), names[i], label_colour, TextAnchor::centre});
   }
   // The fixed point, and the centre of mass where it is not the fixed point.
-  list.add_marker({glm::vec3(0.0f), {0.08f, 0.08f, 0.1f, 1}, {0.95f, 0.95f, 0.95f, 1}, 4.0f * px, 1.2f * px});
+  list.add_marker({glm::vec3(0.0f), to_glm(ink.fixed_point_fill), to_glm(ink.fixed_point_edge), 4.0f * px, 1.2f * px});
   if (glm::length(com) > 1e-4f) {
     const glm::vec3 c = glm::vec3(rot * glm::vec4(com, 1.0f));
-    list.add_marker({c, {0.98f, 0.85f, 0.25f, 1}, {0.1f, 0.1f, 0.1f, 1}, 4.0f * px, 1.2f * px});
+    list.add_marker({c, to_glm(ink.centre_of_mass_fill), to_glm(ink.centre_of_mass_edge), 4.0f * px, 1.2f * px});
   }
 }
 
 void FramePainter::draw_sphere(DrawList& list, const scene::Frame& f, float px) const {
-  const bool light = is_light(f.colours.background);
+  const scene::Theme& ink = ink_for(f);
   // Unlit glass: it covers a third of the picture, and llvmpipe pays for every
   // pixel's lighting (about 6 ms a 720p frame); the rim term keeps its outline.
   render::Material glass{to_glm(f.colours.sphere), 0.0f, 60.0f, 1.4f, false};
   glass.lit = false;
   list.add_mesh(glass_, glm::mat4(1.0f), glass);
-  const glm::vec4 grid = light ? glm::vec4(0.25f, 0.3f, 0.4f, 0.22f) : glm::vec4(0.75f, 0.82f, 0.95f, 0.16f);
+  const glm::vec4 grid = to_glm(ink.sphere_grid);
   for (const auto& line : grid_) list.add_polyline(line, grid, 1.0f * px);
 
   std::vector<render::LineVertex> trail;
   trail.reserve(f.trail.size());
-  for (const auto& p : f.trail) trail.push_back({to_glm(p.p), age_colour(p.age)});
+  for (const auto& p : f.trail) trail.push_back({to_glm(p.p), age_colour(p.age, ink.trail_map_top)});
   if (trail.size() >= 2) list.add_polyline(trail, 2.2f * px);
-  list.add_marker({to_glm(f.current), to_glm(f.colours.marker), {1, 1, 1, 1}, 5.0f * px, 1.3f * px});
+  list.add_marker({to_glm(f.current), to_glm(f.colours.marker), to_glm(ink.marker_edge), 5.0f * px, 1.3f * px});
 
-  const glm::vec4 text = light ? glm::vec4(0.15f, 0.15f, 0.2f, 1) : glm::vec4(0.92f, 0.94f, 1.0f, 1);
+  const glm::vec4 text = to_glm(ink.pole_label);
   list.add_text({{0, 0, 1.1f}, "N", text, TextAnchor::bottom});
   list.add_text({{0, 0, -1.1f}, "S", text, TextAnchor::top});
 }
@@ -204,15 +174,13 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
                               float px) {
   const double e = f.plane_extent;
   const render::Panel2D plot(area, {-e, e, -e, e}, true);
+  const scene::Theme& ink = ink_for(f);
   render::PanelStyle style;
-  const bool light = is_light(f.colours.background);
-  if (light) {
-    style.background = {0.97f, 0.97f, 0.98f, 1};
-    style.frame = {0.5f, 0.5f, 0.55f, 1};
-    style.grid = {0, 0, 0, 0.08f};
-    style.axis = {0.3f, 0.3f, 0.35f, 0.8f};
-    style.text = {0.15f, 0.15f, 0.2f, 1};
-  }
+  style.background = to_glm(ink.panel_background);
+  style.frame = to_glm(ink.panel_frame);
+  style.grid = to_glm(ink.panel_grid);
+  style.axis = to_glm(ink.panel_axis);
+  style.text = to_glm(ink.panel_text);
   style.tick_length = 4.0f * px;
   style.frame_width = style.axis_width = 1.0f * px;
   style.min_tick_spacing_px = 34.0f * px;
@@ -232,14 +200,14 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
   for (const auto& p : f.plane_path) {
     if (p.break_before) flush();
     run.emplace_back(p.ab.x(), p.ab.y());
-    colours.push_back(age_colour(p.age));
+    colours.push_back(age_colour(p.age, ink.trail_map_top));
   }
   flush();
 
   bool any_infinity = false, any_exit = false;
   for (const auto& m : f.plane_marks) {
     const glm::dvec2 at(m.ab.x(), m.ab.y());
-    const glm::vec4 c = age_colour(m.age);
+    const glm::vec4 c = age_colour(m.age, ink.trail_map_top);
     switch (m.kind) {
       case scene::PlaneMark::Kind::leaves_panel:  // hollow: the path goes on outside
         plot.draw_marker(flat, at, {{}, {0, 0, 0, 0}, {c.r, c.g, c.b, 1}, 4.0f * px, 1.5f * px});
@@ -250,15 +218,15 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
         any_exit = true;
         break;
       case scene::PlaneMark::Kind::through_infinity:
-        plot.draw_marker(flat, at, {{}, {0, 0, 0, 0}, {0.95f, 0.3f, 0.3f, 1}, 6.0f * px, 2.0f * px});
-        plot.draw_text(flat, at, {{}, "inf", {0.95f, 0.35f, 0.35f, 1}, TextAnchor::centre, {0.0f, -11.0f * px}});
+        plot.draw_marker(flat, at, {{}, {0, 0, 0, 0}, to_glm(ink.infinity_mark), 6.0f * px, 2.0f * px});
+        plot.draw_text(flat, at, {{}, "inf", to_glm(ink.infinity_label), TextAnchor::centre, {0.0f, -11.0f * px}});
         any_infinity = true;
         break;
     }
   }
   if (f.plane_current)
     plot.draw_marker(flat, {f.plane_current->x(), f.plane_current->y()},
-                     {{}, to_glm(f.colours.marker), {1, 1, 1, 1}, 4.5f * px, 1.2f * px});
+                     {{}, to_glm(f.colours.marker), to_glm(ink.marker_edge), 4.5f * px, 1.2f * px});
 
   plot.draw_text(flat, {0.0, e}, {{}, area.width >= 200 ? "Riccati plane (a, b)" : "(a, b) plane", style.text,
                                    TextAnchor::bottom, {0, -6 * px}});
@@ -281,7 +249,7 @@ void FramePainter::draw_info_window(const scene::Frame& f, const Layout& layout,
                                  : layout.view_3d         ? *layout.view_3d
                                  : layout.panel_column    ? *layout.panel_column
                                                           : render::Viewport{0, 0, width(), height()};
-  const bool light = is_light(f.colours.background);
+  const scene::Theme& ink = ink_for(f);
   {
     // The window's size is computed from this frame's text: ImGui's auto-fit
     // would use the previous frame's, which belongs to another job in a gallery.
@@ -305,26 +273,36 @@ void FramePainter::draw_info_window(const scene::Frame& f, const Layout& layout,
     else
       ImGui::SetNextWindowPos(ImVec2(float(where.x) + 6 * px, float(where.y) + 6 * px), ImGuiCond_Always);
     // More see-through where it floats over the 3D view (small pictures).
-    ImGui::SetNextWindowBgAlpha(layout.overlay_in_column || !layout.view_3d ? (light ? 0.85f : 0.7f) : 0.55f);
+    ImGui::SetNextWindowBgAlpha(layout.overlay_in_column || !layout.view_3d ? ink.overlay_alpha_in_column
+                                                                            : ink.overlay_alpha_floating);
+    // The overlay's ImGui context has ImGui's dark colours; a light theme
+    // lends its window ImGui's light ones.
+    int pushed = 0;
+    if (ink.light_gui) {
+      ImGuiStyle light;
+      ImGui::StyleColorsLight(&light);
+      for (ImGuiCol c : {ImGuiCol_WindowBg, ImGuiCol_Border, ImGuiCol_Text, ImGuiCol_TextDisabled, ImGuiCol_Separator}) {
+        ImGui::PushStyleColor(c, light.Colors[c]);
+        ++pushed;
+      }
+    }
     ImGui::Begin("overlay", nullptr,
                  ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoScrollbar);
-    ImGui::TextColored(ImVec4(1.0f, 0.82f, 0.45f, 1.0f), "%s", f.overlay.title.c_str());
+    ImGui::TextColored(to_imgui(ink.title), "%s", f.overlay.title.c_str());
     for (int i = 0; i < shown; ++i) ImGui::TextUnformatted(f.overlay.lines[std::size_t(i)].c_str());
     if (!f.overlay.drifts.empty()) {
       ImGui::Separator();
       ImGui::TextDisabled("max rel. drift");
       for (const auto& [name, value] : f.overlay.drifts) {
-        // Green near round-off, amber at picture-level accuracy, red when the
-        // drift would show in the picture.
-        const ImVec4 c = !(value < 1e-2) ? ImVec4(1.0f, 0.45f, 0.4f, 1) : value < 1e-8 ? ImVec4(0.5f, 0.85f, 0.55f, 1)
-                                                                                       : ImVec4(0.95f, 0.8f, 0.4f, 1);
+        const ImVec4 c = to_imgui(ink.drift_colour(value));  // traffic light: scene::drift_level
         ImGui::Text("%-12s", name.c_str());
         ImGui::SameLine();
         ImGui::TextColored(c, "%9.1e", value);
       }
     }
     ImGui::End();
+    ImGui::PopStyleColor(pushed);
   }
 }
 
@@ -332,7 +310,7 @@ const render::RgbaImage& FramePainter::paint(const scene::Frame& f, const std::f
   context_.make_current();
   const int w = renderer_->width(), h = renderer_->height();
   const float px = std::max(1.0f, float(h) / 360.0f);  // line widths and marks scale with the picture
-  const Layout layout = layout_for(f.layers, f.overlay, w, h, reserved_left_);
+  const Layout layout = layout_for(f, w, h, reserved_left_);
 
   renderer_->begin_frame(to_glm(f.colours.background));
   if (layout.view_3d) {
@@ -342,7 +320,7 @@ const render::RgbaImage& FramePainter::paint(const scene::Frame& f, const std::f
     renderer_->draw_3d(scene3d, camera_for(f, *layout.view_3d), *layout.view_3d);
     if (f.layers.sphere && !f.trail_label.empty()) {
       DrawList caption;
-      const glm::vec4 text = is_light(f.colours.background) ? glm::vec4(0.3f, 0.3f, 0.35f, 1) : glm::vec4(0.65f, 0.68f, 0.75f, 1);
+      const glm::vec4 text = to_glm(ink_for(f).trail_caption);
       caption.add_text({{float(layout.view_3d->x) + 8 * px, float(layout.view_3d->y + layout.view_3d->height) - 6 * px, 0},
                         "trail: " + f.trail_label, text, TextAnchor::bottom_left});
       renderer_->draw_2d(caption);

@@ -25,17 +25,20 @@ struct PainterOptions {
   bool builtin_font = false;
 };
 
-// Where each part of a frame goes in the image (shared by painter and tests).
+// Where each part of a frame goes in the image: scene::frame_layout (the one
+// layout, which the plan uses too) in the render toolkit's viewports.
 struct Layout {
   std::optional<render::Viewport> view_3d;
   std::optional<render::Viewport> panel_column;
   std::optional<render::Viewport> plot_area;  // the panel's square plot inside its column
   bool overlay_in_column = false;  // the overlay sits above the plot (else over the 3D view)
+  double sphere_px_per_unit = 0.0, plane_px_per_unit = 0.0;  // see scene::FrameLayout
 };
-// `overlay` is the frame's overlay text, which takes the top of the panel's
-// column when there is one (so that it never covers the sphere).
-// `reserved_left` pixels at the left edge are kept free (the interactive
-// panels sit there); the layout fills the rest.
+// The frame's overlay takes the top of the panel's column when there is one
+// (so that it never covers the sphere). `reserved_left` pixels at the left
+// edge are kept free (the interactive panels sit there); the layout fills the rest.
+Layout layout_for(const scene::Frame& frame, int width, int height, int reserved_left = 0);
+// The rectangles only (the pixel scales as for the default camera and panel extent).
 Layout layout_for(const scene::Layers& layers, const scene::OverlayText& overlay, int width, int height,
                   int reserved_left = 0);
 // How many of the overlay's lines fit a picture of this height.

@@ -31,6 +31,9 @@ struct CameraSettings {
   double distance = 3.4;        // in units of the sphere radius
 };
 
+// The named colour sets (scene/theme.hpp); a job's own colours override a theme's defaults.
+enum class ThemeId { dark, light };
+
 struct Colours {
   Rgba background{0.06f, 0.07f, 0.09f, 1.0f};
   Rgba body{0.80f, 0.62f, 0.36f, 1.0f};
@@ -82,6 +85,7 @@ struct Frame {
   View view = View::body;
   Layers layers;
   CameraSettings camera;
+  ThemeId theme = ThemeId::dark;
   Colours colours;
 
   // Body -> screen-world rotation of the body. Body view: identity. Space view:

@@ -1,5 +1,6 @@
 #include "scene/frame_source.hpp"
 
+#include <cassert>
 #include <cmath>
 #include <cstdio>
 
@@ -26,12 +27,16 @@ std::string extra_integral_symbol(physics::Case c) {
   return c == physics::Case::custom ? "" : std::string(physics::preset(c).integral_symbol);
 }
 
+int overlay_drift_rows(const sim::RunSpec& run) {
+  return 3 + (sim::InvariantMonitor(run.body, run.case_id, run.initial).no_drift().extra ? 1 : 0);
+}
+
 FrameSource::FrameSource(const ScenePlan& plan, const SceneSettings& settings)
     : plan_(plan),
       settings_(settings),
       trajectory_(sim::Trajectory::start(plan.run)),
       monitor_(plan.run.body, plan.run.case_id, plan.run.initial),
-      history_(sphere_pixels_per_unit(settings), plane_pixels_per_unit(settings)),
+      history_(plan.trail_sphere_px, plan.trail_plane_px),
       shape_(body_shape(plan.run.body)) {
   max_drift_ = monitor_.no_drift();
   take(trajectory_->initial());
@@ -84,6 +89,7 @@ Frame FrameSource::compose(int index) const {
   f.view = settings_.view;
   f.layers = settings_.layers;
   f.camera = settings_.camera;
+  f.theme = settings_.theme;
   f.colours = settings_.colours;
   f.body = shape_;
   f.plane_extent = settings_.plane_extent;
@@ -128,6 +134,7 @@ Frame FrameSource::compose(int index) const {
   f.overlay.lines.emplace_back(line);
   std::snprintf(line, sizeof line, "r = %s   P = %.4g", fmt3(run.body.com).c_str(), run.body.weight);
   f.overlay.lines.emplace_back(line);
+  assert(int(f.overlay.lines.size()) == kOverlayLines);
   f.overlay.drifts = {{"|gamma|^2", max_drift_.gamma_norm2},
                       {"C0 (area)", max_drift_.area},
                       {"C1 (energy)", max_drift_.energy}};

@@ -46,6 +46,11 @@ class FrameSource {
   BodyShape shape_;
 };
 
+// The overlay a FrameSource composes has this many text lines, and a drift row
+// per invariant it monitors for the run (the plan lays the picture out for it).
+constexpr int kOverlayLines = 5;
+int overlay_drift_rows(const sim::RunSpec& run);
+
 // "Kovalevskaya top", "Heavy top" for a custom body, ...
 std::string case_title(physics::Case c);
 // The name of the case's fourth integral on the overlay ("K", "G", ...).

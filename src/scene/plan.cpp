@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "scene/frame_source.hpp"
+
 namespace epviz::scene {
 
 int SceneSettings::frame_count() const { return std::max(1, int(std::lround(fps * duration))); }
@@ -12,26 +14,37 @@ double ScenePlan::frame_time(int frame) const {
   return frames <= 1 ? 0.0 : run.t_end * double(frame) / double(frames - 1);
 }
 
-// The painter gives the 3D view the left 60 % when the plane is shown, and the
-// sphere (radius 1 at camera distance ~3.4) about 0.3 of the view's short side.
-double sphere_pixels_per_unit(const SceneSettings& s) {
-  const double w3d = s.layers.riccati ? 0.6 * s.width : double(s.width);
-  return 0.3 * std::min(w3d, double(s.height));
+FrameLayout planned_layout(const SceneSettings& s, const sim::RunSpec& run) {
+  LayoutRequest q;
+  q.width = s.width;
+  q.height = s.height;
+  q.layers = s.layers;
+  q.overlay = {kOverlayLines, overlay_drift_rows(run)};
+  q.camera_distance = s.camera.distance;
+  q.plane_extent = s.plane_extent;
+  return frame_layout(q);
 }
 
-double plane_pixels_per_unit(const SceneSettings& s) {
-  const double side = std::min(s.layers.riccati && (s.layers.body || s.layers.sphere) ? 0.4 * s.width
-                                                                                      : double(s.width),
-                               double(s.height));
-  return 0.8 * side / (2.0 * s.plane_extent);
+void trail_pixel_scales(const SceneSettings& s, double& sphere_px, double& plane_px) {
+  LayoutRequest q;
+  q.width = s.width;
+  q.height = s.height;
+  q.camera_distance = s.camera.distance;
+  q.plane_extent = s.plane_extent;
+  q.layers = {false, true, false, false};
+  sphere_px = frame_layout(q).sphere_px_per_unit;
+  q.layers = {false, false, true, false};
+  plane_px = frame_layout(q).plane_px_per_unit;
 }
 
-double tolerance_for_resolution(const SceneSettings& s, double t_end) {
+double pixels_per_gamma(const FrameLayout& l, float plane_extent) {
   // d(a, b) = d(gamma) (1 + |eta|^2) / 2: the plane magnifies errors towards its edge.
-  const double e2 = double(s.plane_extent) * s.plane_extent;
-  double px_per_gamma = s.layers.sphere || s.layers.body ? sphere_pixels_per_unit(s) : 1.0;
-  if (s.layers.riccati) px_per_gamma = std::max(px_per_gamma, plane_pixels_per_unit(s) * (1.0 + e2) / 2.0);
-  const double tol = 0.02 / px_per_gamma / (1.0 + t_end / 10.0);
+  const double e2 = double(plane_extent) * plane_extent;
+  return std::max({1.0, l.sphere_px_per_unit, l.plane_px_per_unit * (1.0 + e2) / 2.0});
+}
+
+double tolerance_for_layout(const FrameLayout& l, float plane_extent, double t_end) {
+  const double tol = 0.02 / pixels_per_gamma(l, plane_extent) / (1.0 + t_end / 10.0);
   return std::clamp(tol, 1e-13, 1e-4);
 }
 
@@ -50,11 +63,13 @@ ScenePlan plan_scene(sim::RunSpec run, const SceneSettings& s) {
     run.formulation = sim::Formulation::direct;
   }
   if (auto why = sim::incompatibility(run.method, run.formulation)) throw PlanError(*why);
+  plan.layout = planned_layout(s, run);
+  trail_pixel_scales(s, plan.trail_sphere_px, plan.trail_plane_px);
 
   char note[160];
   if (sim::is_adaptive(run.method)) {
     if (s.auto_tolerance) {
-      run.tol = tolerance_for_resolution(s, run.t_end);
+      run.tol = tolerance_for_layout(plan.layout, s.plane_extent, run.t_end);
       std::snprintf(note, sizeof note, "tol %.2g (auto)", run.tol);
     } else {
       std::snprintf(note, sizeof note, "tol %.2g", run.tol);

@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "scene/layout.hpp"
 #include "scene/settings.hpp"
 #include "sim/run_spec.hpp"
 
@@ -20,21 +21,31 @@ struct ScenePlan {
   int samples_per_frame = 8; // trail samples between two frames
   std::string accuracy_note; // how the tolerance or step was chosen, for the report and overlay
   bool open_ended = false;   // interactive: no last frame; run.t_end only sets the sample spacing's horizon
+  FrameLayout layout;        // the picture the frames are drawn into (the tolerance follows it)
+  // Pixels per unit of gamma on the sphere and of (a, b) on the plane that the
+  // trails are decimated for (see trail_pixel_scales).
+  double trail_sphere_px = 0.0, trail_plane_px = 0.0;
   double frame_time(int frame) const;  // simulation time shown by a frame
 };
 
-// Pixels per unit of gamma on the sphere and of (a, b) on the Riccati plane at
-// this resolution and layout (an estimate shared with the painter's layout).
-double sphere_pixels_per_unit(const SceneSettings& s);
-double plane_pixels_per_unit(const SceneSettings& s);
+// The layout of the frames of this job: the painter's own (scene::frame_layout),
+// with the overlay FrameSource composes for this run.
+FrameLayout planned_layout(const SceneSettings& s, const sim::RunSpec& run);
+
+// The largest scale the sphere and the plane take in a picture of this size:
+// each alone in it. Trails are decimated for these, so that a layer switched
+// on interactively (which keeps the run, and its plan) never shows a coarse trail.
+void trail_pixel_scales(const SceneSettings& s, double& sphere_px, double& plane_px);
 
 // The relative/absolute tolerance that keeps the drawn error well below a pixel
-// at this resolution over the run: tol = 0.02 px / (pixels per unit of gamma,
-// with the plane's magnification at its edge) / (1 + t_end / 10) for the
-// growth of the global error, clamped to [1e-13, 1e-4]. The factor 0.02 is
-// calibrated so that the measured error of every integrable preset stays
-// under 0.1 px (tests/scene/plan_test.cpp checks < 0.5 px against tol 1e-13).
-double tolerance_for_resolution(const SceneSettings& s, double t_end);
+// over the run: tol = 0.02 px / (pixels per unit of gamma, with the plane's
+// magnification at its edge) / (1 + t_end / 10) for the growth of the global
+// error, clamped to [1e-13, 1e-4]. The factor 0.02 is calibrated so that the
+// measured error of every integrable preset stays under 0.1 px
+// (tests/scene/plan_test.cpp checks < 0.5 px against tol 1e-13).
+double tolerance_for_layout(const FrameLayout& layout, float plane_extent, double t_end);
+// The largest pixels per unit of gamma anywhere in the picture (the plane's at its edge).
+double pixels_per_gamma(const FrameLayout& layout, float plane_extent);
 
 // Throws PlanError when the job asks for something the view cannot show (the
 // space view needs the attitude, i.e. the spinor formulation).

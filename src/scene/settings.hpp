@@ -8,6 +8,7 @@ struct SceneSettings {
   View view = View::body;
   Layers layers;
   CameraSettings camera;
+  ThemeId theme = ThemeId::dark;  // colours not given by the job are the theme's
   Colours colours;
   int width = 1280;
   int height = 720;

@@ -55,6 +55,7 @@ INSTANTIATE_TEST_SUITE_P(
                "key 'layers.bodies': unknown key"},
         BadJob{"bad_view", [](auto& j) { j["view"] = "top"; }, "", "key 'view': 'top' is not one of: body, space"},
         BadJob{"bad_colour", [](auto& j) { j["colours"] = {{"body", "orange"}}; }, "", "key 'colours.body': expected a colour"},
+        BadJob{"bad_theme", [](auto& j) { j["theme"] = "sepia"; }, "", "key 'theme': 'sepia' is not one of: dark, light"},
         BadJob{"missing_simulation", [](auto& j) { j.erase("simulation"); }, "", "key 'simulation': missing"},
         BadJob{"bad_case", [](auto& j) { j["simulation"]["case"] = "top"; }, "", "key 'simulation.case': unknown case"},
         BadJob{"bad_tol", [](auto& j) { j["simulation"]["tol"] = "fine"; }, "", "key 'simulation.tol': expected a number"},

@@ -10,6 +10,7 @@
 #include "render/render_test_support.hpp"
 #include "render/snapshot.hpp"
 #include "scene/frame_source.hpp"
+#include "scene/theme.hpp"
 
 namespace epviz {
 namespace {
@@ -75,6 +76,36 @@ INSTANTIATE_TEST_SUITE_P(
                       Named{"layer_overlay", physics::Case::kovalevskaya, scene::View::body, only(false, false, false, true)}),
     [](const auto& info) { return info.param.name; });
 
+// The plan picks the tolerance and the trail's decimation from the same layout
+// the painter draws into, and its pixel scales are those of the real camera and plot.
+TEST(Painter, PlanAndPainterShareOneLayout) {
+  const auto run = sim::preset_run(physics::Case::lagrange, sim::Method::dop853, sim::Formulation::direct, 12.0, 200);
+  for (auto [w, h] : {std::pair{W, H}, std::pair{1280, 720}}) {
+    scene::SceneSettings s;
+    s.width = w;
+    s.height = h;
+    s.camera.distance = 4.0;
+    const auto plan = scene::plan_scene(run, s);
+    scene::FrameSource source(plan, s);
+    const auto f = source.frame(3);
+    const auto layout = paint::layout_for(f, w, h);
+    EXPECT_EQ(layout.sphere_px_per_unit, plan.layout.sphere_px_per_unit);
+    EXPECT_EQ(layout.plane_px_per_unit, plan.layout.plane_px_per_unit);
+    EXPECT_EQ(layout.overlay_in_column, plan.layout.overlay_in_column);
+
+    // A small step off the sphere's centre, seen by the painter's camera.
+    const auto cam = paint::camera_for(f, *layout.view_3d);
+    const auto centre = render::project_to_pixel(cam, *layout.view_3d, {0, 0, 0});
+    const auto up = render::project_to_pixel(cam, *layout.view_3d, {0, 0, 1e-3f});
+    ASSERT_TRUE(centre && up);
+    const double cos_elevation = std::cos(s.camera.elevation_deg * M_PI / 180);
+    EXPECT_NEAR(glm::length(glm::vec2(*up) - glm::vec2(*centre)) / 1e-3 / cos_elevation, layout.sphere_px_per_unit,
+                0.01 * layout.sphere_px_per_unit);
+    const render::Panel2D plot(*layout.plot_area, {-f.plane_extent, f.plane_extent, -f.plane_extent, f.plane_extent}, true);
+    EXPECT_NEAR(glm::length(plot.to_pixel({1, 0}) - plot.to_pixel({0, 0})), layout.plane_px_per_unit, 1e-3);
+  }
+}
+
 TEST(Painter, SphereLayerDrawsTheCurrentPointWithTheMarkerColour) {
   const auto f = case_frame(physics::Case::kovalevskaya, scene::View::body, only(false, true, false, false));
   const auto& img = painter().paint(f);
@@ -136,6 +167,33 @@ TEST(Painter, PassThroughInfinityIsMarked) {
       red += p.r > 0.6f && p.g < 0.45f && p.b < 0.45f;
     }
   EXPECT_GT(red, 6);
+}
+
+// The light theme (no golden: its pictures are looked at, not pinned): a
+// light page with the body, sphere, panel and overlay drawn dark on it.
+TEST(Painter, LightThemeDrawsDarkOnALightPage) {
+  const auto run = sim::preset_run(physics::Case::kovalevskaya, sim::Method::dop853, sim::Formulation::direct, 12.0, 200);
+  scene::SceneSettings s;
+  s.width = W;
+  s.height = H;
+  s.fps = 10;
+  s.duration = 3;
+  s.theme = scene::ThemeId::light;
+  s.colours = scene::light_theme().colours;
+  scene::FrameSource source(scene::plan_scene(run, s), s);
+  const auto f = source.frame(18);
+  const auto& img = painter().paint(f);
+  int light = 0, dark = 0;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const float l = et::luminance(et::pixel_colour(img, x, y));
+      light += l > 0.85f;
+      dark += l < 0.45f;
+    }
+  EXPECT_GT(light, W * H / 2);   // mostly page
+  EXPECT_GT(dark, W * H / 200);  // and lines and text on it
+  for (glm::vec2 at : {glm::vec2(2, 2), glm::vec2(W - 3, H - 3)})
+    EXPECT_LT(et::max_channel_difference(px(img, at), background_of(f)), 0.02f) << at.x << "," << at.y;
 }
 
 TEST(Painter, OverlayAloneDrawsTextAndNothingElse) {

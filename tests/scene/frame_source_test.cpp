@@ -25,7 +25,7 @@ TEST(FrameSource, BodyViewTrailIsGammaEndingAtTheCurrentPoint) {
   EXPECT_FLOAT_EQ(f.trail.back().age, 0.0f);
   EXPECT_NEAR(f.trail.front().age, 1.0f, 0.05f);
   // On the unit sphere to well below a pixel (the auto tolerance at 320x240 is loose).
-  const double px = scene::sphere_pixels_per_unit(s);
+  const double px = src.plan().trail_sphere_px;
   for (const auto& p : f.trail) EXPECT_LT(std::abs(p.p.norm() - 1.0f) * px, 0.1);
   EXPECT_TRUE(f.body_rotation.isApprox(Eigen::Quaternionf::Identity()));
   EXPECT_EQ(f.overlay.title, "Lagrange top");

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "physics/cases.hpp"
+#include "scene/frame_source.hpp"
 #include "scene/plan.hpp"
 #include "sim/simulate.hpp"
 
@@ -11,15 +12,33 @@ sim::RunSpec preset_run(physics::Case c, double t_end) {
   return sim::preset_run(c, sim::Method::dop853, sim::Formulation::direct, t_end, 200);
 }
 
+double tolerance_for(const scene::SceneSettings& s, double t_end) {
+  const auto run = preset_run(physics::Case::lagrange, t_end);
+  return scene::tolerance_for_layout(scene::planned_layout(s, run), s.plane_extent, t_end);
+}
+
 TEST(Tolerance, TightensWithResolutionAndDuration) {
   scene::SceneSettings small, large;
   small.width = 1280, small.height = 720;
   large.width = 3840, large.height = 2160;
-  EXPECT_GT(scene::tolerance_for_resolution(small, 10), scene::tolerance_for_resolution(large, 10));
-  EXPECT_GT(scene::tolerance_for_resolution(small, 10), scene::tolerance_for_resolution(small, 100));
-  EXPECT_GE(scene::tolerance_for_resolution(large, 1e9), 1e-13);
+  EXPECT_GT(tolerance_for(small, 10), tolerance_for(large, 10));
+  EXPECT_GT(tolerance_for(small, 10), tolerance_for(small, 100));
+  EXPECT_GE(tolerance_for(large, 1e9), 1e-13);
   small.width = 64, small.height = 48;
-  EXPECT_LE(scene::tolerance_for_resolution(small, 0), 1e-4);
+  EXPECT_LE(tolerance_for(small, 0), 1e-4);
+}
+
+TEST(Plan, LaysOutThePictureWithTheOverlayItWillShow) {
+  scene::SceneSettings s;  // 1280 x 720: the overlay sits above the plot
+  const auto run = preset_run(physics::Case::kovalevskaya, 10);
+  const auto plan = scene::plan_scene(run, s);
+  scene::LayoutRequest q{s.width, s.height, s.layers, {scene::kOverlayLines, 4}, s.camera.distance, s.plane_extent};
+  const auto expected = scene::frame_layout(q);
+  ASSERT_TRUE(plan.layout.plot_area && expected.plot_area);
+  EXPECT_TRUE(expected.overlay_in_column);
+  EXPECT_EQ(plan.layout.plot_area->y, expected.plot_area->y);
+  EXPECT_EQ(plan.layout.plane_px_per_unit, expected.plane_px_per_unit);
+  EXPECT_EQ(plan.layout.sphere_px_per_unit, expected.sphere_px_per_unit);
 }
 
 TEST(Plan, SpaceViewIntegratesTheAttitude) {
@@ -59,6 +78,24 @@ TEST(Plan, FramesAndTrailSamples) {
   EXPECT_NE(plan.accuracy_note.find("auto"), std::string::npos);
 }
 
+// Trails are kept fine enough for any layers the picture may switch on later.
+TEST(Plan, TrailsAreDecimatedForTheLargestScaleOfEachPart) {
+  scene::SceneSettings s;
+  s.layers = {false, false, true, false};  // planned with the plane alone
+  const auto plan = scene::plan_scene(preset_run(physics::Case::euler, 10), s);
+  for (int bits = 1; bits < 16; ++bits) {
+    scene::LayoutRequest q;
+    q.width = s.width;
+    q.height = s.height;
+    q.layers = {bool(bits & 1), bool(bits & 2), bool(bits & 4), bool(bits & 8)};
+    q.overlay = {scene::kOverlayLines, 3};
+    const auto l = scene::frame_layout(q);
+    EXPECT_GE(plan.trail_sphere_px, l.sphere_px_per_unit) << bits;
+    EXPECT_GE(plan.trail_plane_px, l.plane_px_per_unit) << bits;
+  }
+  EXPECT_GT(plan.trail_sphere_px, 0.0);
+}
+
 // The tolerance chosen for a resolution keeps the drawn error below half a
 // pixel, measured against a run at tol 1e-13.
 class AutoToleranceIsEnough : public ::testing::TestWithParam<physics::Case> {};
@@ -77,7 +114,7 @@ TEST_P(AutoToleranceIsEnough, ErrorBelowHalfAPixel) {
   for (std::size_t i = 0; i < coarse.samples.size(); ++i)
     worst = std::max(worst, (coarse.samples[i].gamma - fine.samples[i].gamma).norm());
   const double e = s.plane_extent;
-  const double px = std::max(scene::sphere_pixels_per_unit(s), scene::plane_pixels_per_unit(s) * (1 + e * e) / 2);
+  const double px = std::max(plan.layout.sphere_px_per_unit, plan.layout.plane_px_per_unit * (1 + e * e) / 2);
   EXPECT_LT(worst * px, 0.5) << "tol " << plan.run.tol;
 }
 

@@ -1,0 +1,60 @@
+#pragma once
+// A render job as its file states it (render_jobs/*.json), before the
+// simulation fields are checked against physics: what job/schema.hpp reads
+// from a file and writes to one.
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "scene/settings.hpp"
+
+namespace epviz::job {
+
+// A value the job (or the command line) gave, and where, for messages
+// ("--inertia", "job.json: key 'simulation.inertia'").
+template <class T>
+struct Given {
+  std::optional<T> value;
+  std::string origin;
+  explicit operator bool() const { return value.has_value(); }
+  const T& operator*() const { return *value; }
+  void set(T v, std::string from) {
+    value = std::move(v);
+    origin = std::move(from);
+  }
+};
+
+// The fields that describe a simulation: the same names on the command line
+// (`epviz simulate --inertia`) and in a job's "simulation" object.
+struct SimulationFields {
+  Given<std::string> case_name;
+  Given<std::array<double, 3>> inertia, com, omega, gamma;
+  Given<double> weight, tol, step, t_end;
+  Given<long> samples;
+  Given<std::string> formulation, method;
+  Given<bool> allow_nonphysical, normalize_gamma, chart_switch;
+
+  // Fields given in `over` replace those here (the command line over a job file).
+  void overlay(const SimulationFields& over);
+};
+
+enum class OutputFormat { png, mp4, webm, gif };
+std::string_view output_format_name(OutputFormat f);
+std::optional<OutputFormat> output_format_from_name(std::string_view s);
+
+struct OutputSettings {
+  std::filesystem::path dir = "out";
+  OutputFormat format = OutputFormat::png;
+  std::string
+      name;  // video file stem, or PNG frame prefix ("frame" -> frame_0042.png); empty: not given
+};
+
+struct JobDocument {
+  SimulationFields simulation;
+  scene::SceneSettings scene;  // auto_tolerance: "tol" is "auto" or absent
+  OutputSettings output;
+};
+
+}  // namespace epviz::job

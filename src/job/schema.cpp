@@ -1,0 +1,492 @@
+#include "job/schema.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+
+#include "scene/theme.hpp"
+
+namespace epviz::job {
+namespace {
+
+using Json = nlohmann::ordered_json;
+using Vec3 = std::array<double, 3>;
+
+// One key of an object in a job: what it is (for help and messages), how it
+// is read into `Doc` and how it is written from it. An object's entry has
+// children instead, and an optional check of the object once they are read.
+template <class Doc>
+struct Entry {
+  KeyInfo info;  // info.path: the key within its object
+  std::function<void(io::ObjectReader&, Doc&)> read;
+  std::function<void(const Doc&, Json&)> write;  // sets its key, or leaves it out
+  std::vector<Entry> children = {};
+  std::function<void(const io::ObjectReader&, const Doc&)> check = {};
+};
+
+template <class Doc>
+void read_entries(const std::vector<Entry<Doc>>& entries, io::ObjectReader& r, Doc& doc) {
+  for (const auto& e : entries) {
+    if (e.children.empty()) {
+      e.read(r, doc);
+      continue;
+    }
+    if (auto o = r.object(e.info.path)) {
+      read_entries(e.children, *o, doc);
+      o->finish();
+      if (e.check) e.check(*o, doc);
+    }
+  }
+}
+
+template <class Doc>
+void write_entries(const std::vector<Entry<Doc>>& entries, const Doc& doc, Json& out) {
+  for (const auto& e : entries) {
+    if (e.children.empty()) {
+      e.write(doc, out);
+      continue;
+    }
+    Json o = Json::object();
+    write_entries(e.children, doc, o);
+    if (!o.empty()) out[e.info.path] = std::move(o);
+  }
+}
+
+template <class Doc>
+void list_keys(const std::vector<Entry<Doc>>& entries, const std::string& prefix,
+               std::vector<KeyInfo>& out) {
+  for (const auto& e : entries) {
+    KeyInfo k = e.info;
+    k.path = prefix + k.path;
+    out.push_back(k);
+    list_keys(e.children, k.path + ".", out);
+  }
+}
+
+// ---- the "simulation" object: SimulationFields -----------------------------
+
+using Sim = Entry<SimulationFields>;
+template <class T>
+using SimMember = Given<T> SimulationFields::*;
+
+Sim sim_text(const char* key, SimMember<std::string> m, std::string allowed, std::string help) {
+  return {{key, ValueType::text, "", std::move(allowed), std::move(help)},
+          [=](io::ObjectReader& r, SimulationFields& f) {
+            if (auto v = r.string(key)) (f.*m).set(*v, r.where(key));
+          },
+          [=](const SimulationFields& f, Json& j) {
+            if (f.*m) j[key] = *(f.*m);
+          }};
+}
+
+Sim sim_vec(const char* key, SimMember<Vec3> m, std::string help) {
+  return {{key, ValueType::vec3, "", "three numbers", std::move(help)},
+          [=](io::ObjectReader& r, SimulationFields& f) {
+            if (auto v = r.vec3(key)) (f.*m).set(*v, r.where(key));
+          },
+          [=](const SimulationFields& f, Json& j) {
+            if (f.*m) j[key] = *(f.*m);
+          }};
+}
+
+Sim sim_number(const char* key, SimMember<double> m, bool positive, std::string help) {
+  return {{key, ValueType::number, "", positive ? "> 0" : "", std::move(help)},
+          [=](io::ObjectReader& r, SimulationFields& f) {
+            if (auto v = positive ? r.positive_number(key) : r.number(key))
+              (f.*m).set(*v, r.where(key));
+          },
+          [=](const SimulationFields& f, Json& j) {
+            if (f.*m) j[key] = *(f.*m);
+          }};
+}
+
+Sim sim_flag(const char* key, SimMember<bool> m, std::string help) {
+  return {{key, ValueType::boolean, "false", "true, false", std::move(help)},
+          [=](io::ObjectReader& r, SimulationFields& f) {
+            if (auto v = r.boolean(key)) (f.*m).set(*v, r.where(key));
+          },
+          [=](const SimulationFields& f, Json& j) {
+            if (f.*m) j[key] = *(f.*m);
+          }};
+}
+
+constexpr long kMaxSamples = 100'000'000;
+
+// "tol" is read by read_simulation_fields itself ("auto" or a number).
+const std::vector<Sim>& simulation_entries() {
+  static const std::vector<Sim> entries{
+      sim_text("case", &SimulationFields::case_name, "a case preset (epviz cases)",
+               "the classical case whose body and state are the defaults; none: a generic body"),
+      sim_vec("inertia", &SimulationFields::inertia, "principal moments I1, I2, I3"),
+      sim_vec("com", &SimulationFields::com, "centre of mass in body axes"),
+      sim_vec("omega", &SimulationFields::omega, "initial angular velocity in body axes"),
+      sim_vec("gamma", &SimulationFields::gamma, "initial vertical in body axes (unit length)"),
+      sim_number("weight", &SimulationFields::weight, false, "weight m g"),
+      {{"tol", ValueType::number, "auto", "1e-15 to 0.1, or \"auto\"",
+        "tolerance of an adaptive method; auto: an error well below a pixel at the job's "
+        "resolution"},
+       [](io::ObjectReader& r, SimulationFields& f) {
+         if (auto v = r.positive_number("tol")) f.tol.set(*v, r.where("tol"));
+       },
+       [](const SimulationFields& f, Json& j) {
+         if (f.tol) j["tol"] = *f.tol;
+       }},
+      sim_number("step", &SimulationFields::step, true, "step of a fixed-step method"),
+      sim_number("t_end", &SimulationFields::t_end, true, "simulation time of the run"),
+      {{"samples", ValueType::integer, "", "1 to " + std::to_string(kMaxSamples),
+        "output samples (epviz simulate)"},
+       [](io::ObjectReader& r, SimulationFields& f) {
+         if (auto v = r.integer("samples", 1, kMaxSamples)) f.samples.set(*v, r.where("samples"));
+       },
+       [](const SimulationFields& f, Json& j) {
+         if (f.samples) j["samples"] = *f.samples;
+       }},
+      sim_text("formulation", &SimulationFields::formulation,
+               "a formulation (epviz simulate --help)", "the equations integrated"),
+      sim_text("method", &SimulationFields::method, "a method (epviz simulate --help)",
+               "the integrator"),
+      sim_flag("allow_nonphysical", &SimulationFields::allow_nonphysical,
+               "accept moments that violate the triangle inequality"),
+      sim_flag("normalize_gamma", &SimulationFields::normalize_gamma, "scale gamma to unit length"),
+      sim_flag("chart_switch", &SimulationFields::chart_switch,
+               "riccati: switch charts near infinity"),
+  };
+  return entries;
+}
+
+// ---- a whole render job: JobDocument ---------------------------------------
+
+using Job = Entry<JobDocument>;
+
+// "#rrggbb" or "#rrggbbaa".
+scene::Rgba parse_colour(const io::ObjectReader& r, const std::string& key,
+                         const std::string& text) {
+  const std::string expected =
+      "expected a colour \"#rrggbb\" or \"#rrggbbaa\", got \"" + text + "\"";
+  if (text.empty() || text[0] != '#' || (text.size() != 7 && text.size() != 9))
+    r.fail(key, expected);
+  auto hex = [&](std::size_t i) {
+    if (!std::isxdigit(unsigned(text[i])) || !std::isxdigit(unsigned(text[i + 1])))
+      r.fail(key, expected);
+    return float(std::stoi(text.substr(i, 2), nullptr, 16)) / 255.0f;
+  };
+  return {hex(1), hex(3), hex(5), text.size() == 9 ? hex(7) : 1.0f};
+}
+
+Job colour(const char* key, scene::Rgba scene::Colours::*m, std::string help) {
+  return {{key, ValueType::colour, hex_colour(scene::dark_theme().colours.*m),
+           "\"#rrggbb\" or \"#rrggbbaa\"", std::move(help) + " (default: the theme's)"},
+          [=](io::ObjectReader& r, JobDocument& d) {
+            if (auto s = r.string(key)) d.scene.colours.*m = parse_colour(r, key, *s);
+          },
+          [=](const JobDocument& d, Json& j) { j[key] = hex_colour(d.scene.colours.*m); }};
+}
+
+Job layer(const char* key, bool scene::Layers::*m, std::string help) {
+  return {{key, ValueType::boolean, "true", "true, false", std::move(help)},
+          [=](io::ObjectReader& r, JobDocument& d) {
+            if (auto v = r.boolean(key)) d.scene.layers.*m = *v;
+          },
+          [=](const JobDocument& d, Json& j) { j[key] = d.scene.layers.*m; }};
+}
+
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+std::vector<std::string> format_names() {
+  std::vector<std::string> names;
+  for (auto f : {OutputFormat::png, OutputFormat::mp4, OutputFormat::webm, OutputFormat::gif})
+    names.emplace_back(output_format_name(f));
+  return names;
+}
+
+std::string joined(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
+  return s;
+}
+
+const std::vector<Job>& job_entries() {
+  static const scene::SceneSettings defaults;
+  static const std::vector<Job> entries{
+      {{"title", ValueType::text, "", "", "overrides the case's title on the overlay"},
+       [](io::ObjectReader& r, JobDocument& d) {
+         if (auto v = r.string("title")) d.scene.title = *v;
+       },
+       [](const JobDocument& d, Json& j) {
+         if (!d.scene.title.empty()) j["title"] = d.scene.title;
+       }},
+      {{"simulation", ValueType::object, "", "",
+        "what to simulate: the keys of epviz simulate (required)"},
+       [](io::ObjectReader& r, JobDocument& d) {
+         auto sim = r.object("simulation");
+         if (!sim)
+           r.fail("simulation",
+                  "missing: a render job needs a \"simulation\" object (at least {\"case\": ...})");
+         bool auto_tol = false;
+         d.simulation = read_simulation_fields(*sim, &auto_tol);
+         // Without a "tol" the tolerance follows the resolution, as with "auto".
+         d.scene.auto_tolerance = auto_tol || !d.simulation.tol;
+         d.scene.formulation_given = d.simulation.formulation.value.has_value();
+         sim->finish();
+       },
+       [](const JobDocument& d, Json& j) {
+         Json sim = Json::object();
+         write_entries(simulation_entries(), d.simulation, sim);
+         if (d.scene.auto_tolerance && !d.simulation.tol && !d.simulation.step) sim["tol"] = "auto";
+         j["simulation"] = std::move(sim);
+       }},
+      {{"view", ValueType::choice, "body", "body, space",
+        "body: the body fixed, gamma moves; space: the vertical fixed, the body turns"},
+       [](io::ObjectReader& r, JobDocument& d) {
+         if (auto v = r.choice("view", {"body", "space"}))
+           d.scene.view = *v == "space" ? scene::View::space : scene::View::body;
+       },
+       [](const JobDocument& d, Json& j) {
+         j["view"] = d.scene.view == scene::View::space ? "space" : "body";
+       }},
+      {{"theme", ValueType::choice, "dark", "dark, light",
+        "the colour set; \"colours\" override its defaults"},
+       [](io::ObjectReader& r, JobDocument& d) {
+         if (auto v = r.choice("theme", {"dark", "light"})) {
+           d.scene.theme = *scene::theme_from_name(*v);
+           d.scene.colours = scene::theme(d.scene.theme).colours;  // before "colours" is read
+         }
+       },
+       [](const JobDocument& d, Json& j) { j["theme"] = std::string(scene::name(d.scene.theme)); }},
+      {{"camera", ValueType::object, "", "", "where the 3D view looks from"},
+       {},
+       {},
+       {
+           {{"azimuth", ValueType::number, fmt(defaults.camera.azimuth_deg), "degrees",
+             "about the vertical, from +x towards +y"},
+            [](io::ObjectReader& r, JobDocument& d) {
+              if (auto v = r.number("azimuth")) d.scene.camera.azimuth_deg = *v;
+            },
+            [](const JobDocument& d, Json& j) { j["azimuth"] = d.scene.camera.azimuth_deg; }},
+           {{"elevation", ValueType::number, fmt(defaults.camera.elevation_deg),
+             "-90 to 90 (exclusive)", "degrees above the horizontal plane"},
+            [](io::ObjectReader& r, JobDocument& d) {
+              if (auto v = r.number("elevation")) {
+                if (std::abs(*v) >= 90.0)
+                  r.fail("elevation", "expected degrees strictly between -90 and 90");
+                d.scene.camera.elevation_deg = *v;
+              }
+            },
+            [](const JobDocument& d, Json& j) { j["elevation"] = d.scene.camera.elevation_deg; }},
+           {{"distance", ValueType::number, fmt(defaults.camera.distance), "> 1.2",
+             "from the fixed point, in sphere radii"},
+            [](io::ObjectReader& r, JobDocument& d) {
+              if (auto v = r.positive_number("distance")) {
+                if (*v <= 1.2)
+                  r.fail("distance",
+                         "expected more than 1.2 sphere radii (the camera would be inside the "
+                         "sphere)");
+                d.scene.camera.distance = *v;
+              }
+            },
+            [](const JobDocument& d, Json& j) { j["distance"] = d.scene.camera.distance; }},
+       }},
+      {{"layers", ValueType::object, "", "", "what is drawn (at least one)"},
+       {},
+       {},
+       {
+           layer("body", &scene::Layers::body,
+                 "the body, its principal axes, fixed point and centre of mass"),
+           layer("sphere", &scene::Layers::sphere, "the unit sphere with the trail"),
+           layer("riccati", &scene::Layers::riccati, "the (a, b) plane panel"),
+           layer("overlay", &scene::Layers::overlay, "case, time, method and drifts"),
+       },
+       [](const io::ObjectReader& r, const JobDocument& d) {
+         const auto& l = d.scene.layers;
+         if (!l.body && !l.sphere && !l.riccati && !l.overlay)
+           r.fail("body", "every layer is switched off: nothing to draw");
+       }},
+      {{"colours", ValueType::object, "", "", "colours over the theme's"},
+       {},
+       {},
+       {
+           colour("background", &scene::Colours::background, "the picture's background"),
+           colour("body", &scene::Colours::body, "the body's faces"),
+           colour("sphere", &scene::Colours::sphere, "the glass sphere (alpha: its opacity)"),
+           colour("marker", &scene::Colours::marker, "the current point on sphere and plane"),
+       }},
+      {{"trail", ValueType::object, "", "", "the trail on sphere and plane"},
+       {},
+       {},
+       {
+           {{"length", ValueType::number, "", "> 0",
+             "simulation time the trail covers (default: the whole run)"},
+            [](io::ObjectReader& r, JobDocument& d) {
+              if (auto v = r.positive_number("length")) d.scene.trail_length = *v;
+            },
+            [](const JobDocument& d, Json& j) {
+              if (d.scene.trail_length > 0.0) j["length"] = d.scene.trail_length;
+            }},
+       }},
+      {{"plane", ValueType::object, "", "", "the Riccati (a, b) panel"},
+       {},
+       {},
+       {
+           {{"extent", ValueType::number, fmt(defaults.plane_extent), "> 0",
+             "the panel shows [-extent, extent]^2"},
+            [](io::ObjectReader& r, JobDocument& d) {
+              if (auto v = r.positive_number("extent")) d.scene.plane_extent = float(*v);
+            },
+            [](const JobDocument& d, Json& j) { j["extent"] = d.scene.plane_extent; }},
+       }},
+      {{"width", ValueType::integer, std::to_string(defaults.width), "16 to 8192",
+        "picture width in pixels"},
+       [](io::ObjectReader& r, JobDocument& d) {
+         if (auto v = r.integer("width", 16, 8192)) d.scene.width = int(*v);
+       },
+       [](const JobDocument& d, Json& j) { j["width"] = d.scene.width; }},
+      {{"height", ValueType::integer, std::to_string(defaults.height), "16 to 8192",
+        "picture height in pixels"},
+       [](io::ObjectReader& r, JobDocument& d) {
+         if (auto v = r.integer("height", 16, 8192)) d.scene.height = int(*v);
+       },
+       [](const JobDocument& d, Json& j) { j["height"] = d.scene.height; }},
+      {{"fps", ValueType::number, fmt(defaults.fps), "> 0, at most 240",
+        "frames per second of video"},
+       [](io::ObjectReader& r, JobDocument& d) {
+         if (auto v = r.positive_number("fps")) {
+           if (*v > 240) r.fail("fps", "expected at most 240 frames per second");
+           d.scene.fps = *v;
+         }
+       },
+       [](const JobDocument& d, Json& j) { j["fps"] = d.scene.fps; }},
+      {{"duration", ValueType::number, fmt(defaults.duration),
+        "> 0, fps x duration at most a million",
+        "seconds of video; the run's t_end is spread over them"},
+       [](io::ObjectReader& r, JobDocument& d) {
+         if (auto v = r.positive_number("duration")) d.scene.duration = *v;
+         if (d.scene.fps * d.scene.duration > 1e6)
+           r.fail("duration", "fps x duration exceeds a million frames");
+       },
+       [](const JobDocument& d, Json& j) { j["duration"] = d.scene.duration; }},
+      {{"output", ValueType::object, "", "", "where and how the frames are written"},
+       {},
+       {},
+       {
+           {{"dir", ValueType::text, "out", "a directory", "relative to the current directory"},
+            [](io::ObjectReader& r, JobDocument& d) {
+              if (auto v = r.string("dir")) d.output.dir = *v;
+            },
+            [](const JobDocument& d, Json& j) { j["dir"] = d.output.dir.string(); }},
+           {{"format", ValueType::choice, "png", joined(format_names()), "PNG frames or a video"},
+            [](io::ObjectReader& r, JobDocument& d) {
+              if (auto v = r.choice("format", format_names()))
+                d.output.format = *output_format_from_name(*v);
+            },
+            [](const JobDocument& d, Json& j) {
+              j["format"] = std::string(output_format_name(d.output.format));
+            }},
+           {{"name", ValueType::text, "frame (png), the job file's name (video)",
+             "a file name without '/'", "PNG frame prefix or video file stem"},
+            [](io::ObjectReader& r, JobDocument& d) {
+              if (auto v = r.string("name")) {
+                if (v->empty() || v->find('/') != std::string::npos)
+                  r.fail("name", "expected a file name without '/'");
+                d.output.name = *v;
+              }
+            },
+            [](const JobDocument& d, Json& j) {
+              if (!d.output.name.empty()) j["name"] = d.output.name;
+            }},
+       }},
+  };
+  return entries;
+}
+
+template <class T>
+void take(Given<T>& mine, const Given<T>& theirs) {
+  if (theirs) mine = theirs;
+}
+
+}  // namespace
+
+void SimulationFields::overlay(const SimulationFields& o) {
+  take(case_name, o.case_name);
+  take(inertia, o.inertia);
+  take(com, o.com);
+  take(omega, o.omega);
+  take(gamma, o.gamma);
+  take(weight, o.weight);
+  take(tol, o.tol);
+  take(step, o.step);
+  take(t_end, o.t_end);
+  take(samples, o.samples);
+  take(formulation, o.formulation);
+  take(method, o.method);
+  take(allow_nonphysical, o.allow_nonphysical);
+  take(normalize_gamma, o.normalize_gamma);
+  take(chart_switch, o.chart_switch);
+}
+
+std::string_view output_format_name(OutputFormat f) {
+  switch (f) {
+    case OutputFormat::png: return "png";
+    case OutputFormat::mp4: return "mp4";
+    case OutputFormat::webm: return "webm";
+    case OutputFormat::gif: return "gif";
+  }
+  return "?";
+}
+
+std::optional<OutputFormat> output_format_from_name(std::string_view s) {
+  for (auto f : {OutputFormat::png, OutputFormat::mp4, OutputFormat::webm, OutputFormat::gif})
+    if (output_format_name(f) == s) return f;
+  return std::nullopt;
+}
+
+std::string hex_colour(const scene::Rgba& c) {
+  auto byte = [](float x) { return int(std::lround(std::clamp(x, 0.0f, 1.0f) * 255.0f)); };
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "#%02x%02x%02x%02x", byte(c[0]), byte(c[1]), byte(c[2]),
+                byte(c[3]));
+  return buf;
+}
+
+std::vector<KeyInfo> render_job_keys() {
+  std::vector<KeyInfo> keys;
+  for (const auto& e : job_entries()) {
+    keys.push_back(e.info);
+    if (e.info.path == "simulation") list_keys(simulation_entries(), "simulation.", keys);
+    list_keys(e.children, e.info.path + ".", keys);
+  }
+  return keys;
+}
+
+SimulationFields read_simulation_fields(io::ObjectReader& r, bool* auto_tol) {
+  SimulationFields f;
+  if (auto_tol) {
+    *auto_tol = r.peek_string("tol") == std::optional<std::string>("auto");
+    if (*auto_tol) r.mark_read("tol");
+  }
+  for (const auto& e : simulation_entries())
+    if (!(auto_tol && *auto_tol && e.info.path == "tol")) e.read(r, f);
+  return f;
+}
+
+JobDocument read_job(const nlohmann::json& object, const std::string& file) {
+  JobDocument d;
+  io::ObjectReader r(object, file);
+  read_entries(job_entries(), r, d);
+  r.finish();
+  return d;
+}
+
+Json write_job(const JobDocument& job) {
+  Json j = Json::object();
+  write_entries(job_entries(), job, j);
+  return j;
+}
+
+}  // namespace epviz::job

@@ -1,0 +1,93 @@
+#include "scene/layout.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace epviz::scene {
+namespace {
+
+// Height of the overlay window: title, shown lines, and the drift table.
+int overlay_height(const OverlayShape& o, int height) {
+  const int rows = 1 + overlay_lines_shown(o.lines, height) + (o.drifts == 0 ? 0 : 1 + o.drifts);
+  return int(std::ceil(overlay_font_px(height) * 1.36f * float(rows) + 18.0f));
+}
+
+FrameLayout layout_in_width(const LayoutRequest& q, int width) {
+  const int height = q.height;
+  FrameLayout l;
+  const bool three_d = q.layers.body || q.layers.sphere;
+  // The 3D view takes the left 60 % when the panel is shown.
+  if (three_d && q.layers.riccati) {
+    const int w3 = width * 3 / 5;
+    l.view_3d = Rect{0, 0, w3, height};
+    l.panel_column = Rect{w3, 0, width - w3, height};
+  } else if (three_d) {
+    l.view_3d = Rect{0, 0, width, height};
+  } else if (q.layers.riccati) {
+    l.panel_column = Rect{0, 0, width, height};
+  }
+  if (l.panel_column) {
+    const auto& c = *l.panel_column;
+    // Room for the title above and the tick labels and legend below.
+    const int margin_bottom = std::max(26, height / 9), margin_top_base = std::max(22, height / 14);
+    const int margin_left = std::max(30, c.width / 8), margin_right = std::max(10, c.width / 20);
+    auto side_for = [&](int margin_top) {
+      return std::min(c.width - margin_left - margin_right, c.height - margin_top - margin_bottom);
+    };
+    // The overlay takes the top of the panel's column when the plot keeps at
+    // least 35 % of the height there, so that it does not cover the sphere;
+    // otherwise (small pictures) it floats over the 3D view's corner.
+    const int overlay_px = l.view_3d && q.layers.overlay ? overlay_height(q.overlay, height) : 0;
+    l.overlay_in_column =
+        overlay_px > 0 && side_for(margin_top_base + overlay_px) >= height * 35 / 100;
+    const int margin_top = margin_top_base + (l.overlay_in_column ? overlay_px : 0);
+    const int side = std::max(16, side_for(margin_top));
+    const int x = c.x + margin_left + (c.width - margin_left - margin_right - side) / 2;
+    const int y = c.y + margin_top + (c.height - margin_top - margin_bottom - side) / 2;
+    l.plot_area = Rect{x, y, side, side};
+    l.plane_px_per_unit = double(side) / (2.0 * double(q.plane_extent));
+  }
+  if (l.view_3d) {
+    // The perspective scale at the sphere's centre: half the view's height
+    // spans tan(fov / 2) at the camera's distance.
+    const float aspect =
+        l.view_3d->height > 0 ? float(l.view_3d->width) / float(l.view_3d->height) : 1.0f;
+    const double half_tan = std::tan(double(kFovDegrees) * M_PI / 360.0);
+    l.sphere_px_per_unit = 0.5 * double(l.view_3d->height) /
+                           (double(camera_distance_for(q.camera_distance, aspect)) * half_tan);
+  }
+  return l;
+}
+
+}  // namespace
+
+OverlayShape overlay_shape(const OverlayText& o) {
+  return {int(o.lines.size()), int(o.drifts.size())};
+}
+
+float overlay_font_px(int height) { return std::clamp(float(height) / 48.0f, 13.0f, 28.0f); }
+
+int overlay_lines_shown(int lines, int height) { return std::min(lines, height < 480 ? 2 : lines); }
+
+float camera_distance_for(double distance_setting, float aspect) {
+  // Degrees to radians as glm::radians does, so that the painter's camera is unchanged to the bit.
+  const float half =
+      std::tan(kFovDegrees * 0.01745329251994329577f / 2.0f) * std::min(1.0f, aspect);
+  return float(distance_setting) * (1.22f / half) / 3.4f;
+}
+
+LayoutRequest layout_request(const Frame& f, int width, int height, int reserved_left) {
+  return {width,          height,       f.layers, overlay_shape(f.overlay), f.camera.distance,
+          f.plane_extent, reserved_left};
+}
+
+FrameLayout frame_layout(const LayoutRequest& q) {
+  const int reserved_left = std::clamp(q.reserved_left, 0, q.width - 16);
+  FrameLayout l = layout_in_width(q, q.width - reserved_left);
+  if (reserved_left == 0) return l;
+  for (auto* r : {&l.view_3d, &l.panel_column, &l.plot_area})
+    if (*r) (*r)->x += reserved_left;
+  return l;
+}
+
+}  // namespace epviz::scene

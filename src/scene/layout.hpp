@@ -1,0 +1,62 @@
+#pragma once
+// Where each part of a picture goes, and how many pixels a unit of gamma or of
+// (a, b) covers there: one computation for the painter (which draws into these
+// rectangles) and for the plan (which picks the tolerance and the trail's
+// decimation from the pixel scales). Plain integers, no GL.
+#include <optional>
+
+#include "scene/frame.hpp"
+
+namespace epviz::scene {
+
+// Pixels, origin at the top left (the painter's viewports use the same convention).
+struct Rect {
+  int x = 0, y = 0, width = 0, height = 0;
+  int right() const { return x + width; }
+  int bottom() const { return y + height; }
+};
+
+// What the overlay window holds: text lines (before the height cut, see
+// overlay_lines_shown) and drift rows.
+struct OverlayShape {
+  int lines = 0;
+  int drifts = 0;
+};
+OverlayShape overlay_shape(const OverlayText& overlay);
+
+struct LayoutRequest {
+  int width = 1280, height = 720;
+  Layers layers;
+  OverlayShape overlay;
+  double camera_distance = 3.4;  // sphere radii (CameraSettings::distance)
+  float plane_extent = 2.5f;     // the panel shows [-extent, extent]^2
+  int reserved_left = 0;         // kept free at the left edge (interactive panels)
+};
+
+struct FrameLayout {
+  std::optional<Rect> view_3d;       // body and sphere
+  std::optional<Rect> panel_column;  // the Riccati panel's column
+  std::optional<Rect> plot_area;     // the panel's square plot inside its column
+  bool overlay_in_column = false;    // the overlay sits above the plot (else over the 3D view)
+  // Pixels per unit of gamma at the sphere's centre, and per unit of a or b in
+  // the plot; 0 where the picture has no such part.
+  double sphere_px_per_unit = 0.0;
+  double plane_px_per_unit = 0.0;
+};
+
+FrameLayout frame_layout(const LayoutRequest& request);
+// What a frame asks of a picture of this size.
+LayoutRequest layout_request(const Frame& frame, int width, int height, int reserved_left = 0);
+
+// The 3D view's vertical field of view, and the camera's distance from the
+// sphere's centre for a view of this aspect: the unit sphere (with its pole
+// labels) fits the narrower side at the nominal distance of 3.4 radii.
+constexpr float kFovDegrees = 30.0f;
+float camera_distance_for(double distance_setting, float aspect);
+
+// The overlay's font size at this picture height, and how many of its lines
+// fit (below 480 rows, gallery tiles, only the time and the method).
+float overlay_font_px(int height);
+int overlay_lines_shown(int lines, int height);
+
+}  // namespace epviz::scene

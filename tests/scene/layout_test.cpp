@@ -1,0 +1,109 @@
+// The one layout of a picture: its rectangles lie inside the picture, do not
+// overlap, keep their proportions, and its pixel scales follow from the
+// camera's framing of the sphere and the plot's side.
+#include <gtest/gtest.h>
+
+#include "scene/layout.hpp"
+
+namespace epviz {
+namespace {
+
+using scene::Rect;
+
+bool inside(const Rect& r, int x0, int width, int height) {
+  return r.x >= x0 && r.y >= 0 && r.right() <= width && r.bottom() <= height && r.width > 0 &&
+         r.height > 0;
+}
+bool overlap(const Rect& a, const Rect& b) {
+  return a.x < b.right() && b.x < a.right() && a.y < b.bottom() && b.y < a.bottom();
+}
+
+scene::LayoutRequest request(int w, int h, scene::Layers layers = {}, int reserved = 0) {
+  scene::LayoutRequest q;
+  q.width = w;
+  q.height = h;
+  q.layers = layers;
+  q.overlay = {5, 4};
+  q.reserved_left = reserved;
+  return q;
+}
+
+class LayoutAtSize : public ::testing::TestWithParam<std::pair<int, int>> {};
+
+TEST_P(LayoutAtSize, RectanglesInsideThePictureWithoutOverlap) {
+  const auto [w, h] = GetParam();
+  for (int reserved : {0, w / 4}) {
+    const auto l = scene::frame_layout(request(w, h, {}, reserved));
+    ASSERT_TRUE(l.view_3d && l.panel_column && l.plot_area);
+    EXPECT_TRUE(inside(*l.view_3d, reserved, w, h));
+    EXPECT_TRUE(inside(*l.panel_column, reserved, w, h));
+    EXPECT_FALSE(overlap(*l.view_3d, *l.panel_column));
+    // Side by side, filling what is not reserved.
+    EXPECT_EQ(l.view_3d->x, reserved);
+    EXPECT_EQ(l.view_3d->right(), l.panel_column->x);
+    EXPECT_EQ(l.panel_column->right(), w);
+    // The 3D view takes 60 % of the width, the plot is a square in the panel's column.
+    EXPECT_NEAR(double(l.view_3d->width) / (w - reserved), 0.6, 0.01);
+    const auto& p = *l.plot_area;
+    EXPECT_EQ(p.width, p.height);
+    EXPECT_GE(p.x, l.panel_column->x);
+    EXPECT_LE(p.right(), l.panel_column->right());
+    EXPECT_GE(p.y, 0);
+    EXPECT_LE(p.bottom(), h);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Sizes, LayoutAtSize,
+                         ::testing::Values(std::pair{320, 240}, std::pair{640, 360},
+                                           std::pair{1280, 720}, std::pair{1920, 1080},
+                                           std::pair{720, 1280}));
+
+TEST(Layout, OneLayerTakesTheWholePicture) {
+  const auto sphere = scene::frame_layout(request(800, 600, {false, true, false, true}));
+  ASSERT_TRUE(sphere.view_3d);
+  EXPECT_FALSE(sphere.panel_column);
+  EXPECT_EQ(sphere.view_3d->width, 800);
+  EXPECT_EQ(sphere.plane_px_per_unit, 0.0);
+  const auto plane = scene::frame_layout(request(800, 600, {false, false, true, false}));
+  ASSERT_TRUE(plane.panel_column);
+  EXPECT_FALSE(plane.view_3d);
+  EXPECT_EQ(plane.panel_column->width, 800);
+  EXPECT_EQ(plane.sphere_px_per_unit, 0.0);
+}
+
+TEST(Layout, OverlayTakesTheColumnTopOnlyWhereThePlotStaysLarge) {
+  const auto large = scene::frame_layout(request(1280, 720));
+  EXPECT_TRUE(large.overlay_in_column);
+  EXPECT_GE(large.plot_area->height, 720 * 35 / 100);
+  const auto small = scene::frame_layout(request(320, 240));
+  EXPECT_FALSE(small.overlay_in_column);
+  // Without the overlay the plot grows back.
+  auto q = request(1280, 720);
+  q.layers.overlay = false;
+  EXPECT_GT(scene::frame_layout(q).plot_area->width, large.plot_area->width);
+}
+
+TEST(Layout, SphereScaleFramesTheSphereWithItsLabels) {
+  // At the nominal distance of 3.4 radii a sphere of radius 1.22 (the sphere
+  // and its pole labels) just fits the narrower side of the 3D view.
+  for (auto [w, h] : {std::pair{1280, 720}, std::pair{320, 240}, std::pair{400, 900}}) {
+    const auto l = scene::frame_layout(request(w, h));
+    const int narrow = std::min(l.view_3d->width, l.view_3d->height);
+    EXPECT_NEAR(1.22 * l.sphere_px_per_unit, narrow / 2.0, 1e-3 * narrow) << w << "x" << h;
+  }
+  // Twice as far: half the size.
+  auto q = request(1280, 720);
+  const double near_px = scene::frame_layout(q).sphere_px_per_unit;
+  q.camera_distance *= 2;
+  EXPECT_NEAR(scene::frame_layout(q).sphere_px_per_unit, near_px / 2, 1e-6 * near_px);
+}
+
+TEST(Layout, PlaneScaleIsThePlotSideOverTheExtent) {
+  auto q = request(1280, 720);
+  q.plane_extent = 2.0f;
+  const auto l = scene::frame_layout(q);
+  EXPECT_DOUBLE_EQ(l.plane_px_per_unit * 4.0, double(l.plot_area->width));
+}
+
+}  // namespace
+}  // namespace epviz
