@@ -1,36 +1,54 @@
 #include "sim/run_spec.hpp"
 
 namespace epviz::sim {
+namespace {
+
+// The enum values of a table's rows (Method of kMethodTable, ...), in order.
+template <class Table, class Key>
+std::vector<Key> keys(const Table& table, Key Table::value_type::*key) {
+  std::vector<Key> v;
+  for (const auto& row : table) v.push_back(row.*key);
+  return v;
+}
+
+// The row of `table` named `s`, as its enum value.
+template <class Table, class Key>
+std::optional<Key> key_named(const Table& table, Key Table::value_type::*key, std::string_view s) {
+  for (const auto& row : table)
+    if (row.name == s) return row.*key;
+  return std::nullopt;
+}
+
+template <class Key>
+std::string joined(const std::vector<Key>& keys, std::string_view sep) {
+  std::string out;
+  for (auto k : keys) {
+    if (!out.empty()) out += sep;
+    out += name(k);
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string_view name(Formulation f) { return info(f).name; }
 std::string_view name(Method m) { return info(m).name; }
 
 std::optional<Formulation> formulation_from_name(std::string_view s) {
-  for (const auto& row : kFormulationTable)
-    if (row.name == s) return row.formulation;
-  return std::nullopt;
+  return key_named(kFormulationTable, &FormulationInfo::formulation, s);
 }
 
 std::optional<Method> method_from_name(std::string_view s) {
-  for (const auto& row : kMethodTable)
-    if (row.name == s) return row.method;
-  return std::nullopt;
+  return key_named(kMethodTable, &MethodInfo::method, s);
 }
 
 const std::vector<Formulation>& all_formulations() {
-  static const std::vector<Formulation> all = [] {
-    std::vector<Formulation> v;
-    for (const auto& row : kFormulationTable) v.push_back(row.formulation);
-    return v;
-  }();
+  static const auto all = keys(kFormulationTable, &FormulationInfo::formulation);
   return all;
 }
 
 const std::vector<Method>& all_methods() {
-  static const std::vector<Method> all = [] {
-    std::vector<Method> v;
-    for (const auto& row : kMethodTable) v.push_back(row.method);
-    return v;
-  }();
+  static const auto all = keys(kMethodTable, &MethodInfo::method);
   return all;
 }
 
@@ -45,21 +63,11 @@ bool is_adaptive(Method m) { return info(m).adaptive; }
 int order(Method m) { return info(m).order; }
 
 std::string names_joined(const std::vector<Method>& methods, std::string_view sep) {
-  std::string out;
-  for (auto m : methods) {
-    if (!out.empty()) out += sep;
-    out += name(m);
-  }
-  return out;
+  return joined(methods, sep);
 }
 
 std::string names_joined(const std::vector<Formulation>& formulations, std::string_view sep) {
-  std::string out;
-  for (auto f : formulations) {
-    if (!out.empty()) out += sep;
-    out += name(f);
-  }
-  return out;
+  return joined(formulations, sep);
 }
 
 std::optional<std::string> incompatibility(Method m, Formulation f) {

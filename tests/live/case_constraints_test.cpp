@@ -44,10 +44,14 @@ TEST_P(StayInCase, EveryEditEndsInsideTheCaseKeepingTheEditedValue) {
         case Edited::inertia_1: EXPECT_EQ(body.inertia.x(), kept); break;
         case Edited::inertia_2: EXPECT_EQ(body.inertia.y(), kept); break;
         case Edited::inertia_3:
-          if (c != Case::lagrange) EXPECT_EQ(body.inertia.z(), kept);  // Lagrange ties only I1 and I2
+          if (c != Case::lagrange) {  // Lagrange ties only I1 and I2
+            EXPECT_EQ(body.inertia.z(), kept);
+          }
           break;
         case Edited::com:
-          if (c != Case::euler && c != Case::lagrange) EXPECT_EQ(body.com.x(), kept);
+          if (c != Case::euler && c != Case::lagrange) {
+            EXPECT_EQ(body.com.x(), kept);
+          }
           break;
         case Edited::weight: EXPECT_EQ(body.weight, kept); break;
         case Edited::gamma: EXPECT_EQ(s.gamma, before.gamma); break;
