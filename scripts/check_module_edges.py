@@ -17,14 +17,29 @@ root = pathlib.Path(__file__).resolve().parent.parent
 cmake = (root / "CMakeLists.txt").read_text()
 modules = sorted(p.name for p in (root / "src").iterdir() if p.is_dir())
 
+# set(VAR ...) and list(APPEND VAR ...) values, so that DEPS ${VAR} can be expanded.
+variables = {}
+for name, body in re.findall(r"\bset\((\w+)([^)]*)\)", cmake):
+    variables.setdefault(name, []).append(body)
+for name, body in re.findall(r"\blist\(APPEND\s+(\w+)([^)]*)\)", cmake):
+    variables.setdefault(name, []).append(body)
+
+
+def libraries(text):
+    """The epviz_<module> names in `text`, with ${VAR} expanded."""
+    found = set(re.findall(r"\bepviz_(\w+)", re.sub(r"\$\{\w+\}", "", text)))
+    for var in re.findall(r"\$\{(\w+)\}", text):
+        for body in variables.get(var, []):
+            found |= libraries(body)
+    return found
+
+
 declared = {}
-for name, deps in re.findall(r"epviz_module\((\w+)\s+DEPS([^)]*)\)", cmake):
-    declared[name] = set(re.findall(r"\bepviz_(\w+)", deps))
-app = set()
-for body in re.findall(r"EPVIZ_APP_DEPS([^)]*)\)", cmake):
-    app |= set(re.findall(r"\bepviz_(\w+)", body))
+for name, deps in re.findall(r"epviz_module\((\w+)(?:\s+DEPS([^)]*))?\)", cmake):
+    declared.setdefault(name, set()).update(libraries(deps or ""))
+app = libraries("${EPVIZ_APP_DEPS}")
 for body in re.findall(r"target_link_libraries\(epviz\s+PRIVATE([^)]*)\)", cmake):
-    app |= set(re.findall(r"\bepviz_(\w+)", body))
+    app |= libraries(body)
 declared["app"] = app - {"app"}
 
 include = re.compile(r'^\s*#\s*include\s+"(\w+)/', re.M)

@@ -2,5 +2,5 @@
 # The README's second command (and CI's): set up, build, and run the whole test suite.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/build.sh
+EPVIZ_WERROR=ON bash scripts/build.sh
 ctest --test-dir build --output-on-failure -j2
