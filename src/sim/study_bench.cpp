@@ -56,7 +56,7 @@ StudyRow run_row(const std::string& study, const RunSpec& spec, const TimedRun& 
   const auto& f = t.result.failure;
   row.set("status", f ? "failed" : "ok");
   row.set("failure_t", f ? f->t : kNaN);
-  row.set("failure_reason", f ? f->reason : std::string());
+  row.set("failure_reason", f ? f->detail : std::string());
   return row;
 }
 
@@ -339,7 +339,7 @@ StepVerdict check_fixed_step(physics::Case c, Method m, double step, double t_en
   if (r.failure) {
     v.ok = false;
     v.failure_t = r.failure->t;
-    v.reason = "failed: " + r.failure->reason;
+    v.reason = "failed: " + r.failure->detail;
     v.error = v.energy_drift = kNaN;
     return v;
   }
