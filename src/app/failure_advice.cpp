@@ -68,7 +68,7 @@ std::string failure_advice(numerics::FailureKind kind, std::string_view method, 
         return "tighten " + w.tol +
                " so that the steps stay below the motion's fastest time scale.";
       return "use a smaller " + w.step +
-             ": the implicit stage equations converge only for steps well below the motion's "
+             ": the fixed-point iteration converges only for steps well below the motion's "
              "fastest time scale.";
     case FailureKind::lost_motion:
       if (adaptive) return "tighten " + w.tol + ".";

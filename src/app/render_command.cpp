@@ -172,7 +172,7 @@ nlohmann::json job_report(const PreparedJob& p, const RenderStats& st) {
   j["seconds"] = st.seconds;
   j["output"] = (p.job.output.dir).string();
   j["failure"] = st.failure ? nlohmann::json(failure_line(*st.failure, SettingsIn::render_job)) : nlohmann::json(nullptr);
-  j["failure_kind"] = st.failure ? nlohmann::json(numerics::name(st.failure->kind)) : nlohmann::json(nullptr);
+  j["failure_kind"] = st.failure ? nlohmann::json(std::string(numerics::name(st.failure->kind))) : nlohmann::json(nullptr);
   return j;
 }
 

@@ -32,7 +32,7 @@ std::string failure_advice(numerics::FailureKind kind, bool adaptive) {
     case FailureKind::solver_divergence:
       if (adaptive) return "lower the tolerance" + where + ".";
       return "lower the step" + where +
-             ": the implicit stage equations converge only for steps well below the motion's "
+             ": the fixed-point iteration converges only for steps well below the motion's "
              "fastest time scale.";
     case FailureKind::lost_motion:
       if (adaptive) return "lower the tolerance" + where + ".";
