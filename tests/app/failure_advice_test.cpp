@@ -61,7 +61,9 @@ TEST(FailureAdvice, EveryKindNamesAnOptionOfSimulate) {
       for (const auto& f : flags) {
         EXPECT_NE(help.out.find(f), std::string::npos) << f << " is not an option of epviz simulate";
         // What `epviz simulate` would refuse for this method (bad_input_test).
-        if (k != FailureKind::chart_pole) EXPECT_NE(f, m.adaptive ? "--step" : "--tol");
+        if (k != FailureKind::chart_pole) {
+          EXPECT_NE(f, m.adaptive ? "--step" : "--tol");
+        }
       }
     }
   }

@@ -30,8 +30,9 @@ TEST(LiveFailureAdvice, EveryKindNamesAPanelControl) {
       for (const char* c : controls) names_control |= a.find(c) != std::string::npos;
       EXPECT_TRUE(names_control);
       // A fixed-step method has no tolerance control, an adaptive one no step control.
-      if (k != FailureKind::chart_pole)
+      if (k != FailureKind::chart_pole) {
         EXPECT_EQ(a.find(adaptive ? "the step" : "the tolerance"), std::string::npos);
+      }
     }
   }
 }
