@@ -1,5 +1,7 @@
 #include "app/bench_command.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>

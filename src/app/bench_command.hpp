@@ -1,9 +1,12 @@
 #pragma once
 // `epviz bench`: work-precision, long-time invariant drift and stability
 // studies of epviz's own methods; tables on stdout, every row to JSON.
-#include <CLI/CLI.hpp>
 #include <functional>
 #include <string>
+
+namespace CLI {
+class App;  // CLI11: included only where a command is defined
+}
 
 namespace epviz::app {
 
@@ -18,7 +21,7 @@ struct BenchRequest {
   std::string json;   // write the rows here ("" for none)
   std::string out;    // directory for bench.json and the charts ("" for none)
   std::string cases;  // comma-separated presets ("" for all)
-  std::string gl;     // GL backend for the charts ("" for $EPVIZ_GL or osmesa)
+  std::string gl;     // GL backend for the charts ("" for $EPVIZ_GL or auto)
 };
 int run_bench(const BenchRequest& request);
 

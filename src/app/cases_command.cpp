@@ -1,5 +1,6 @@
 #include "app/cases_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <memory>
 

@@ -1,6 +1,9 @@
 #pragma once
-#include <CLI/CLI.hpp>
 #include <functional>
+
+namespace CLI {
+class App;  // CLI11: included only where a command is defined
+}
 
 namespace epviz::app {
 // `epviz cases`: the presets with their parameters, conditions and fourth integral.

@@ -1,5 +1,7 @@
 #include "app/check_command.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
 #include <atomic>
 #include <cctype>

@@ -1,9 +1,16 @@
 #pragma once
-#include <CLI/CLI.hpp>
-#include <functional>
-
-namespace epviz::app {
 // `epviz check JOB...`: renders chosen frames of jobs in memory and compares
 // them with committed goldens (render regression checks for CI).
+#include <functional>
+
+namespace CLI {
+class App;  // CLI11: included only where a command is defined
+}
+
+namespace epviz::app {
+
+// Adds the subcommand to `app`; the returned function runs it after parsing and
+// returns the process exit code.
 std::function<int()> add_check_command(CLI::App& app);
+
 }  // namespace epviz::app

@@ -1,5 +1,6 @@
 #include "app/render_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -9,6 +10,7 @@
 
 #include "app/bench_command.hpp"
 #include "app/cli_values.hpp"
+#include "app/failure_advice.hpp"
 #include "app/job_frames.hpp"
 #include "app/render_job.hpp"
 #include "app/usage_error.hpp"
@@ -164,7 +166,8 @@ nlohmann::json job_report(const PreparedJob& p, const RenderStats& st) {
   j["frames_skipped"] = st.frames_skipped;
   j["seconds"] = st.seconds;
   j["output"] = (p.job.output.dir).string();
-  j["failure"] = st.failure ? nlohmann::json(st.failure->message()) : nlohmann::json(nullptr);
+  j["failure"] = st.failure ? nlohmann::json(failure_line(*st.failure, SettingsIn::render_job)) : nlohmann::json(nullptr);
+  j["failure_kind"] = st.failure ? nlohmann::json(std::string(numerics::name(st.failure->kind))) : nlohmann::json(nullptr);
   return j;
 }
 
@@ -186,7 +189,7 @@ void print_job_line(const PreparedJob& p, const RenderStats& st) {
 
 int report_failure(const std::optional<numerics::Failure>& f) {
   if (!f) return 0;
-  std::fprintf(stderr, "epviz: numerical failure: %s\n", f->message().c_str());
+  std::fprintf(stderr, "epviz: numerical failure: %s\n", failure_line(*f, SettingsIn::render_job).c_str());
   return 3;
 }
 

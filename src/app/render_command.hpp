@@ -1,6 +1,9 @@
 #pragma once
-#include <CLI/CLI.hpp>
 #include <functional>
+
+namespace CLI {
+class App;  // CLI11: included only where a command is defined
+}
 
 namespace epviz::app {
 // `epviz render JOB`: PNG sequences, videos, and galleries of render jobs.

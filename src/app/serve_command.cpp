@@ -1,5 +1,6 @@
 #include "app/serve_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <csignal>
 #include <cstdio>

@@ -1,10 +1,13 @@
 #include "app/simulate_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 #include "app/cli_values.hpp"
+#include "app/failure_advice.hpp"
 #include "io/atomic_file.hpp"
 #include "app/simulation_fields.hpp"
 #include "app/simulation_output.hpp"
@@ -86,7 +89,7 @@ void print_summary(const sim::RunSpec& spec, const sim::RunResult& r, const sim:
   std::printf("%-20s max relative drift  |gamma|^2 %-9s  C0 %-9s  C1 %-9s  extra %s\n", "",
               fmt(d.gamma_norm2).c_str(), fmt(d.area).c_str(), fmt(d.energy).c_str(),
               d.extra ? fmt(*d.extra).c_str() : "-");
-  if (r.failure) std::printf("%-20s FAILED: %s\n", "", r.failure->message().c_str());
+  if (r.failure) std::printf("%-20s FAILED: %s\n", "", failure_line(*r.failure).c_str());
 }
 
 int run_simulate(const RawOptions& raw) {
@@ -125,7 +128,7 @@ int run_simulate(const RawOptions& raw) {
     if (!raw.csv.empty()) csv = samples_csv(spec, result);
     if (result.failure) {
       ++failures;
-      std::fprintf(stderr, "epviz: %s\n", result.failure->message().c_str());
+      std::fprintf(stderr, "epviz: %s\n", failure_line(*result.failure).c_str());
     }
   }
   if (!raw.csv.empty()) io::write_file_atomically(raw.csv, csv);

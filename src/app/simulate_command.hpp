@@ -1,8 +1,11 @@
 #pragma once
 // `epviz simulate`: one run (or every preset with --case all), samples to CSV,
 // a JSON report, and a summary on stdout.
-#include <CLI/CLI.hpp>
 #include <functional>
+
+namespace CLI {
+class App;  // CLI11: included only where a command is defined
+}
 
 namespace epviz::app {
 

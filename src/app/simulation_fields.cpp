@@ -28,6 +28,21 @@ std::string origin_of(const SimulationFields& f, const std::string& field) {
   return "--" + field;
 }
 
+// How the user waives the check: the option on the command line, the key in a job.
+std::string waiver_hint(physics::Waiver w, const std::string& origin) {
+  const bool option = origin.starts_with("--");
+  switch (w) {
+    case physics::Waiver::none: return "";
+    case physics::Waiver::allow_nonphysical:
+      return option ? "; pass --allow-nonphysical to accept it"
+                    : "; set \"allow_nonphysical\": true to accept it";
+    case physics::Waiver::normalize_gamma:
+      return option ? "; pass --normalize-gamma to rescale it"
+                    : "; set \"normalize_gamma\": true to rescale it";
+  }
+  return "";  // not reached: every waiver is listed
+}
+
 }  // namespace
 
 sim::RunSpec resolve(const SimulationFields& f) {
@@ -101,7 +116,8 @@ sim::RunSpec resolve(const SimulationFields& f) {
     spec.initial =
         physics::validate_initial_state(spec.initial, f.normalize_gamma && *f.normalize_gamma);
   } catch (const physics::InvalidInput& e) {
-    throw UsageError(origin_of(f, e.field()) + ": " + e.what());
+    const std::string origin = origin_of(f, e.field());
+    throw UsageError(origin + ": " + e.what() + waiver_hint(e.waiver(), origin));
   }
   if (auto broken = physics::broken_condition(spec.case_id, spec.body, spec.initial))
     throw UsageError(f.case_name.origin + ": " + *broken +

@@ -1,7 +1,9 @@
 #include "app/simulation_output.hpp"
 
 #include <cstdio>
+#include <nlohmann/json.hpp>
 
+#include "app/failure_advice.hpp"
 #include "physics/stereographic.hpp"
 
 namespace epviz::app {
@@ -82,13 +84,16 @@ nlohmann::json run_report(const sim::RunSpec& spec, const sim::RunResult& r,
   d["extra_integral"] = drift.extra ? number_or_null(*drift.extra) : nlohmann::json(nullptr);
   j["max_relative_drift"] = d;
   if (r.failure) {
+    const bool adaptive = sim::is_adaptive(spec.method);
     j["failure"] = {{"t", r.failure->t},
                     {"method", r.failure->method},
-                    {"reason", r.failure->reason},
-                    {"suggestion", r.failure->suggestion},
-                    {"message", r.failure->message()}};
+                    {"detail", r.failure->detail},
+                    {"advice", failure_advice(r.failure->kind, r.failure->method, adaptive)},
+                    {"message", failure_line(*r.failure)}};
+    j["failure_kind"] = std::string(numerics::name(r.failure->kind));
   } else {
     j["failure"] = nullptr;
+    j["failure_kind"] = nullptr;
   }
   return j;
 }

@@ -2,7 +2,7 @@
 // Turning a run into the files users read: the CSV of samples and the JSON report.
 #include <string>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "sim/drift.hpp"
 #include "sim/run_spec.hpp"

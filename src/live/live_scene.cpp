@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "live/failure_advice.hpp"
 #include "numerics/failure.hpp"
 #include "scene/plan.hpp"
 
@@ -75,7 +76,7 @@ void LiveScene::advance_to(double t) {
     frame_ = source_->frame_at_time(t);
   } catch (const numerics::IntegrationError& e) {
     // The last good frame stays on screen with the report; nothing after it is drawn.
-    failure_ = e.failure().message();
+    failure_ = failure_line(e.failure(), sim::is_adaptive(source_->plan().run.method));
     playing_ = false;
     return;
   }

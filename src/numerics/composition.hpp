@@ -84,7 +84,7 @@ class SymmetricComposition {
     }
     sys_.flow(0, pending, tmp_);
     stats_.flow_evals += s * (2 * n_flows - 3) + s + 1;
-    detail::check_accepted(sys_, tmp_, t + h, name_, detail::fixed_step_hint);
+    detail::check_accepted(sys_, tmp_, t + h, name_);
     x = tmp_;
     ++stats_.steps;
   }

@@ -327,8 +327,8 @@ class EmbeddedRk {
 
   double initial_step();
   void prepare_dense() const;
-  [[noreturn]] void fail(std::string reason, std::string suggestion) const {
-    detail::throw_failure(t_, name, std::move(reason), std::move(suggestion));
+  [[noreturn]] void fail(FailureKind kind, std::string detail) const {
+    detail::throw_failure(t_, name, kind, std::move(detail));
   }
   static std::string fmt(const char* f, double v) {
     char buf[96];
@@ -393,8 +393,7 @@ void EmbeddedRk<Sys, Tableau>::step() {
     sys_.rhs(t_, x_, k_[0]);
     ++stats_.rhs_evals;
     if (!k_[0].allFinite() || !x_.allFinite()) [[unlikely]]
-      fail("non-finite state or derivative (NaN or Inf)",
-           "the solution may blow up here; loosen --tol or check the initial state");
+      fail(FailureKind::non_finite, "state or derivative not finite (NaN or Inf)");
   }
   fsal_pending_ = false;
   if (h_ <= 0.0) h_ = initial_step();
@@ -403,14 +402,11 @@ void EmbeddedRk<Sys, Tableau>::step() {
   for (;;) {
     double h = std::min(h_, opts_.h_max);
     if (attempts_ >= opts_.max_steps) [[unlikely]]
-      fail("more than " + std::to_string(opts_.max_steps) + " steps (max_steps)",
-           "loosen --tol or shorten the interval; the problem may be stiff here, try an "
-           "implicit method (gauss4)");
+      fail(FailureKind::step_budget,
+           "more than " + std::to_string(opts_.max_steps) + " steps (the max_steps budget)");
     if (!(h >= 16.0 * std::numeric_limits<double>::epsilon() * std::abs(t_)) || h <= 0.0)
       [[unlikely]]
-      fail(fmt("step size underflow (h = %.3g)", h),
-           "loosen --tol, or the solution may blow up here; for Riccati use chart switching or "
-           "the spinor formulation");
+      fail(FailureKind::step_underflow, fmt("step size %.3g below the round-off limit", h));
     ++attempts_;
 
     stages_and_solution(t_, x_, h);
@@ -460,14 +456,13 @@ void EmbeddedRk<Sys, Tableau>::step() {
     }
     h_ = h * fac;
     if (++consecutive_rejects_ > opts_.max_consecutive_rejects) [[unlikely]] {
+      // Trial states that are not finite even for tiny steps: the solution itself
+      // blows up here, which is what the user needs to hear.
       if (nonfinite_trials > 0)
-        fail(fmt("non-finite trial states (NaN or Inf) even with h = %.3g", h),
-             "the solution may blow up here; loosen --tol, or for Riccati use chart switching "
-             "or the spinor formulation");
-      fail(std::to_string(consecutive_rejects_) +
-               fmt(" consecutive rejected steps (h = %.3g)", h),
-           "loosen --tol, or the solution may blow up here; for Riccati use chart switching or "
-           "the spinor formulation");
+        fail(FailureKind::non_finite,
+             fmt("trial states not finite (NaN or Inf) even with step size %.3g", h));
+      fail(FailureKind::rejections, std::to_string(consecutive_rejects_) +
+                                        fmt(" consecutive rejected steps (last step size %.3g)", h));
     }
   }
 }
@@ -514,7 +509,7 @@ void EmbeddedRk<Sys, Tableau>::step(State& x, double t, double h) {
   sys_.rhs(t, x, k_[0]);
   stages_and_solution(t, x, h);
   stats_.rhs_evals += S;
-  detail::check_accepted(sys_, xnew_, t + h, name, detail::fixed_step_hint);
+  detail::check_accepted(sys_, xnew_, t + h, name);
   x = xnew_;
   ++stats_.steps;
 }

@@ -29,7 +29,7 @@ class Rk4 {
     sys_.rhs(t + h, tmp_, k4_);
     tmp_ = x + (h / 6.0) * (k1_ + 2.0 * (k2_ + k3_) + k4_);
     stats_.rhs_evals += 4;
-    detail::check_accepted(sys_, tmp_, t + h, name, detail::fixed_step_hint);
+    detail::check_accepted(sys_, tmp_, t + h, name);
     x = tmp_;
     ++stats_.steps;
   }

@@ -38,7 +38,7 @@ class StrangSplitting {
     sys_.flow(n_flows - 1, h, tmp_);
     for (int i = n_flows - 2; i >= 0; --i) sys_.flow(i, h2, tmp_);
     stats_.flow_evals += 2 * n_flows - 1;
-    detail::check_accepted(sys_, tmp_, t + h, name, detail::fixed_step_hint);
+    detail::check_accepted(sys_, tmp_, t + h, name);
     x = tmp_;
     ++stats_.steps;
   }

@@ -4,16 +4,16 @@
 
 namespace epviz::numerics::detail {
 
-void throw_failure(double t, const char* method, std::string reason, std::string suggestion) {
-  throw IntegrationError(Failure{t, method, std::move(reason), std::move(suggestion)});
+void throw_failure(double t, const char* method, FailureKind kind, std::string detail) {
+  throw IntegrationError(Failure{t, method, kind, std::move(detail)});
 }
 
-void throw_non_finite(double t, const char* method, const char* hint) {
-  throw_failure(t, method, "non-finite state (NaN or Inf)", hint);
+void throw_non_finite(double t, const char* method) {
+  throw_failure(t, method, FailureKind::non_finite, "state not finite (NaN or Inf)");
 }
 
 void throw_issue(double t, const char* method, const Issue& issue) {
-  throw_failure(t, method, issue.reason, issue.suggestion);
+  throw_failure(t, method, issue.kind, issue.detail);
 }
 
 }  // namespace epviz::numerics::detail

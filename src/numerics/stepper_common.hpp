@@ -14,12 +14,12 @@ namespace epviz::numerics {
 
 namespace detail {
 
-// Throws IntegrationError(Failure{t, method, reason, suggestion}).
-[[noreturn]] void throw_failure(double t, const char* method, std::string reason,
-                                std::string suggestion);
+// Throws IntegrationError(Failure{t, method, kind, detail}).
+[[noreturn]] void throw_failure(double t, const char* method, FailureKind kind,
+                                std::string detail);
 
 // The failure for a non-finite state (NaN or Inf) found at time t.
-[[noreturn]] void throw_non_finite(double t, const char* method, const char* hint);
+[[noreturn]] void throw_non_finite(double t, const char* method);
 
 // The failure for an issue reported by the system's check().
 [[noreturn]] void throw_issue(double t, const char* method, const Issue& issue);
@@ -35,19 +35,14 @@ inline void check_issue(const Sys& sys, const typename Sys::State& x, double t,
 }
 
 // End of an accepted step: the state must be finite and the system's check()
-// must not object. `hint` is the suggestion for a non-finite state.
+// must not object.
 template <class Sys>
 inline void check_accepted(const Sys& sys, const typename Sys::State& x, double t,
-                           const char* method, const char* hint) {
+                           const char* method) {
   if (!x.allFinite()) [[unlikely]]
-    throw_non_finite(t, method, hint);
+    throw_non_finite(t, method);
   check_issue(sys, x, t, method);
 }
-
-// Hint for fixed-step methods that met a non-finite state.
-inline constexpr const char* fixed_step_hint =
-    "reduce --step, or the solution may blow up here; an adaptive method (dop853) finds "
-    "where";
 
 }  // namespace detail
 

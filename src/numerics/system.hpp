@@ -15,8 +15,8 @@
 //     // is still expressed in the chart the system held during that step.
 //     bool regularize(State& x);
 //
-//     // Optional: a reason why the state cannot be trusted (e.g. a Riccati
-//     // pole), checked after every accepted step; std::nullopt when fine.
+//     // Optional: why the state cannot be trusted (e.g. a Riccati pole),
+//     // checked after every accepted step; std::nullopt when fine.
 //     std::optional<Issue> check(const State& x) const;
 //   };
 //
@@ -25,15 +25,18 @@
 #include <optional>
 #include <string>
 
+#include "numerics/failure.hpp"
+
 namespace epviz::numerics {
 
 template <int N>
 using Vec = Eigen::Matrix<double, N, 1>;
 
-// What a system's check() reports.
+// What a system's check() reports: the kind of trouble and the plain fact
+// (the stepper adds its name and the time to make a Failure).
 struct Issue {
-  std::string reason;
-  std::string suggestion;
+  FailureKind kind = FailureKind::chart_pole;
+  std::string detail;
 };
 
 // Work counters every stepper keeps.

@@ -35,7 +35,8 @@ void validate_body(const Body& body, bool allow_nonphysical) {
     if (I[lo] + I[hi] < I[k])
       throw InvalidInput("inertia", "inertia " + vec(I) + " breaks the triangle inequality " +
                                         names[lo] + " + " + names[hi] + " >= " + names[k] +
-                                        " (not a rigid body); pass --allow-nonphysical to accept it");
+                                        " (not a rigid body)",
+                         Waiver::allow_nonphysical);
   }
 }
 
@@ -55,7 +56,8 @@ InitialState validate_initial_state(const InitialState& s, bool normalize) {
     return out;
   }
   throw InvalidInput("gamma", "gamma must be a unit vector (| |gamma| - 1 | <= 1e-9); got |gamma| = " +
-                                  detail::approx(n) + "; pass --normalize-gamma to rescale it");
+                                  detail::approx(n),
+                     Waiver::normalize_gamma);
 }
 
 }  // namespace epviz::physics

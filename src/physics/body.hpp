@@ -22,16 +22,26 @@ struct InitialState {
   Vector3d gamma{0.0, 0.0, 1.0};
 };
 
+// A check the user may waive on purpose; the front ends say how (an option, a
+// job key), physics only says which.
+enum class Waiver {
+  none,
+  allow_nonphysical,  // moments that break the triangle inequalities
+  normalize_gamma,    // a gamma that is not a unit vector, rescaled
+};
+
 // Bad user input. `field` names what the user wrote ("inertia", "gamma", ...)
 // so the CLI and the job loader can name the option or key.
 class InvalidInput : public std::runtime_error {
  public:
-  InvalidInput(std::string field, const std::string& what)
-      : std::runtime_error(what), field_(std::move(field)) {}
+  InvalidInput(std::string field, const std::string& what, Waiver waiver = Waiver::none)
+      : std::runtime_error(what), field_(std::move(field)), waiver_(waiver) {}
   const std::string& field() const noexcept { return field_; }
+  Waiver waiver() const noexcept { return waiver_; }
 
  private:
   std::string field_;
+  Waiver waiver_;
 };
 
 // Throws InvalidInput unless every number is finite, the moments are positive

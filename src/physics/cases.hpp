@@ -10,7 +10,7 @@
 
 namespace epviz::physics {
 
-// `custom` is a body given without --case: no conditions, no extra integral.
+// `custom` is a body given without a named case: no conditions, no extra integral.
 enum class Case { custom, euler, lagrange, kovalevskaya, goryachev_chaplygin, hess, generic };
 
 struct CasePreset {

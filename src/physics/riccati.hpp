@@ -110,8 +110,8 @@ class RiccatiSystem {
     const double r2 = x[3] * x[3] + x[4] * x[4];
     if (!(r2 > pole_radius * pole_radius)) return std::nullopt;
     return numerics::Issue{
-        "Riccati coordinates (a, b) pass a pole near the south pole gamma3 = -1",
-        "enable chart switching or use the spinor formulation"};
+        numerics::FailureKind::chart_pole,
+        "Riccati coordinates (a, b) pass a pole near the south pole gamma3 = -1"};
   }
 
   Chart chart() const { return chart_; }

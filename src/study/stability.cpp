@@ -23,7 +23,7 @@ StepVerdict check_fixed_step(physics::Case c, sim::Method m, double step, double
   if (r.failure) {
     v.ok = false;
     v.failure_t = r.failure->t;
-    v.reason = "failed: " + r.failure->reason;
+    v.reason = "failed: " + r.failure->detail;
     v.error = v.energy_drift = kNaN;
     return v;
   }

@@ -34,7 +34,7 @@ RunRecord run_record(const sim::RunSpec& spec, const TimedRun& t) {
   if (const auto& f = t.result.failure) {
     r.ok = false;
     r.failure_t = f->t;
-    r.failure_reason = f->reason;
+    r.failure_reason = f->detail;
   }
   return r;
 }

@@ -64,6 +64,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"nonpositive_moment", "--inertia 1,-2,3", "--inertia"},
         BadInput{"triangle_inequality", "--inertia 1,1,3", "triangle"},
         BadInput{"non_unit_gamma", "--gamma 0,0,1.1", "--gamma"},
+        // The checks a user may waive say how, in the words of where the value came from.
+        BadInput{"triangle_waiver_option", "--inertia 1,1,3", "; pass --allow-nonphysical to accept it"},
+        BadInput{"gamma_waiver_option", "--gamma 0,0,1.1", "; pass --normalize-gamma to rescale it"},
+        BadInput{"triangle_waiver_job_key", "--job {dir}/job.json", R"(; set "allow_nonphysical": true to accept it)",
+                 R"({"inertia": [1, 1, 3]})"},
         BadInput{"broken_case_condition", "--case kovalevskaya --inertia 2,2,1.5", "--case: kovalevskaya"},
         BadInput{"broken_initial_condition", "--case goryachev-chaplygin --omega 1,1,1", "goryachev-chaplygin"},
         BadInput{"missing_output_dir", "--csv {dir}/no/such/out.csv", "does not exist"},

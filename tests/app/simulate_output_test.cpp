@@ -87,13 +87,47 @@ TEST(SimulateFailure, ReportedWithTimeAndMethod) {
       dir);
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_NE(r.err.find("dop853 failed at t = "), std::string::npos) << r.err;
+  // The advice names what this user can change: the formulation or the chart switch.
+  EXPECT_NE(r.err.find("; use --formulation spinor"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--no-chart-switch"), std::string::npos) << r.err;
   const auto report = nlohmann::json::parse(test::slurp(dir / "f.json"));
   ASSERT_TRUE(report["failure"].is_object());
   EXPECT_EQ(report["failure"]["method"], "dop853");
   EXPECT_GT(report["failure"]["t"].get<double>(), 0.5);
+  EXPECT_EQ(report["failure_kind"], "chart_pole");
+  // The report carries the fact and the advice apart, and the line stderr showed.
+  const auto message = report["failure"]["message"].get<std::string>();
+  const std::string tail = report["failure"]["detail"].get<std::string>() + "; " +
+                           report["failure"]["advice"].get<std::string>();
+  ASSERT_GE(message.size(), tail.size());
+  EXPECT_EQ(message.substr(message.size() - tail.size()), tail);
+  EXPECT_NE(r.err.find("epviz: " + message + "\n"), std::string::npos) << r.err;
   // The samples written stop before the failure and are finite.
   for (const auto& row : lines(test::slurp(dir / "f.csv")))
     EXPECT_EQ(row.find("nan"), std::string::npos) << row;
+}
+
+TEST(SimulateFailure, ImplicitStepTooLargeAdvisesASmallerStep) {
+  test::TempDir dir;
+  const auto r = test::run_epviz("simulate --case lagrange --omega 0,0,50 --method gauss4 --step 5 "
+                                 "--t-end 10 --samples 2 --report-json " + (dir / "f.json").string(),
+                                 dir);
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("epviz: gauss4 failed at t = 0: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("; use a smaller --step"), std::string::npos) << r.err;
+  const auto report = nlohmann::json::parse(test::slurp(dir / "f.json"));
+  EXPECT_EQ(report["failure_kind"], "solver_divergence");
+  EXPECT_EQ(report["failure"]["method"], "gauss4");
+}
+
+TEST(SimulateReport, NoFailureKindWithoutAFailure) {
+  test::TempDir dir;
+  const auto r = test::run_epviz("simulate --case euler --t-end 1 --report-json " + (dir / "ok.json").string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto report = nlohmann::json::parse(test::slurp(dir / "ok.json"));
+  ASSERT_TRUE(report.contains("failure_kind"));
+  EXPECT_TRUE(report["failure_kind"].is_null());
+  EXPECT_TRUE(report["failure"].is_null());
 }
 
 TEST(Cases, ListsEveryPresetWithConditions) {

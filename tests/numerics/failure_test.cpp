@@ -1,8 +1,9 @@
 // Failure detection: every stepper throws IntegrationError with a usable
-// Failure instead of returning a state it cannot trust; regularize() and
-// check() hooks are honoured.
+// Failure (its kind and a plain fact) instead of returning a state it cannot
+// trust; regularize() and check() hooks are honoured.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -37,7 +38,7 @@ Failure failure_of(F&& f) {
 }
 
 template <template <class> class Method>
-void expect_blow_up_detected(const char* name) {
+void expect_blow_up_detected(const char* name, FailureKind kind) {
   AdaptiveOptions o;
   o.rtol = o.atol = 1e-8;
   Method<BlowUp> s({}, o);
@@ -48,8 +49,8 @@ void expect_blow_up_detected(const char* name) {
   EXPECT_EQ(f.method, name);
   // The numerical solution has its own pole, within the accumulated error of 1.
   EXPECT_NEAR(f.t, 1.0, 1e-6);
-  EXPECT_FALSE(f.reason.empty());
-  EXPECT_FALSE(f.suggestion.empty());
+  EXPECT_EQ(f.kind, kind) << f.message();
+  EXPECT_FALSE(f.detail.empty());
   // The last accepted state is still the (huge but finite) solution.
   EXPECT_TRUE(s.state().allFinite());
   EXPECT_GT(s.state()[0], 1e8);
@@ -57,8 +58,8 @@ void expect_blow_up_detected(const char* name) {
 }
 
 TEST(Failure, AdaptiveMethodsStopAtABlowUp) {
-  expect_blow_up_detected<Dop853>("dop853");
-  expect_blow_up_detected<Dopri5>("dopri5");
+  expect_blow_up_detected<Dop853>("dop853", FailureKind::step_underflow);
+  expect_blow_up_detected<Dopri5>("dopri5", FailureKind::step_underflow);
 }
 
 TEST(Failure, StepSizeUnderflowIsNamed) {
@@ -69,9 +70,10 @@ TEST(Failure, StepSizeUnderflowIsNamed) {
   const Failure f = failure_of([&] {
     while (s.t() < 2.0) s.step();
   });
-  EXPECT_TRUE(contains(f.reason, "underflow")) << f.reason;
-  EXPECT_TRUE(contains(f.suggestion, "tol")) << f.suggestion;
+  EXPECT_EQ(f.kind, FailureKind::step_underflow);
+  EXPECT_TRUE(contains(f.detail, "below the round-off limit")) << f.detail;
   EXPECT_TRUE(contains(f.message(), "dop853 failed at t = ")) << f.message();
+  EXPECT_TRUE(contains(f.message(), f.detail)) << f.message();
 }
 
 TEST(Failure, Rk4HugeStepOnABlowUpIsNonFinite) {
@@ -79,8 +81,8 @@ TEST(Failure, Rk4HugeStepOnABlowUpIsNonFinite) {
   Vec<1> x(1.0);
   const Failure f = failure_of([&] { s.step(x, 0.0, 100.0); });
   EXPECT_EQ(f.method, "rk4");
-  EXPECT_TRUE(contains(f.reason, "non-finite")) << f.reason;
-  EXPECT_FALSE(f.suggestion.empty());
+  EXPECT_EQ(f.kind, FailureKind::non_finite);
+  EXPECT_TRUE(contains(f.detail, "not finite")) << f.detail;
   EXPECT_EQ(f.t, 100.0);
   EXPECT_EQ(x[0], 1.0);  // the state is left as it was
 }
@@ -90,7 +92,7 @@ TEST(Failure, FixedStepDop853NonFinite) {
   Vec<1> x(1.0);
   const Failure f = failure_of([&] { s.step(x, 0.0, 100.0); });
   EXPECT_EQ(f.method, "dop853");
-  EXPECT_TRUE(contains(f.reason, "non-finite")) << f.reason;
+  EXPECT_EQ(f.kind, FailureKind::non_finite);
 }
 
 template <template <class> class Method>
@@ -99,8 +101,8 @@ void expect_no_convergence(const char* name) {
   Vec<1> x(1.0);
   const Failure f = failure_of([&] { s.step(x, 0.0, 0.1); });
   EXPECT_EQ(f.method, name);
-  EXPECT_TRUE(contains(f.reason, "did not converge")) << f.reason;
-  EXPECT_TRUE(contains(f.suggestion, "--step")) << f.suggestion;
+  EXPECT_EQ(f.kind, FailureKind::solver_divergence);
+  EXPECT_TRUE(contains(f.detail, "did not converge")) << f.detail;
   EXPECT_EQ(x[0], 1.0);
   // With a small enough step the same stepper works (h lambda = -0.1).
   s.step(x, 0.0, 1e-4);
@@ -118,7 +120,8 @@ TEST(Failure, GaussIterationLimitIsAnOption) {
   ImplicitMidpoint<Linear1> s(Linear1{-9.0}, ImplicitOptions{3});
   Vec<1> x(1.0);
   const Failure f = failure_of([&] { s.step(x, 0.0, 0.1); });
-  EXPECT_TRUE(contains(f.reason, "did not converge in 3 iterations")) << f.reason;
+  EXPECT_EQ(f.kind, FailureKind::solver_divergence);
+  EXPECT_TRUE(contains(f.detail, "did not converge in 3 iterations")) << f.detail;
   EXPECT_EQ(s.stats().solver_iterations, 3);
   ImplicitMidpoint<Linear1> ok(Linear1{-9.0});
   ok.step(x, 0.0, 0.1);
@@ -133,7 +136,7 @@ struct Checked {
   void rhs(double, const State&, State& dx) const { dx[0] = 1.0; }
   void flow(int, double h, State& x) const { x[0] += h; }
   std::optional<Issue> check(const State& x) const {
-    if (x[0] > 1.55) return Issue{"near the pole", "switch charts"};
+    if (x[0] > 1.55) return Issue{FailureKind::chart_pole, "near the pole"};
     return std::nullopt;
   }
 };
@@ -146,8 +149,8 @@ void expect_issue_reported_fixed(Stepper s) {
     for (int i = 0; i < 100; ++i, t += 0.1) s.step(x, t, 0.1);
   });
   EXPECT_EQ(f.method, Stepper::name);
-  EXPECT_EQ(f.reason, "near the pole");
-  EXPECT_EQ(f.suggestion, "switch charts");
+  EXPECT_EQ(f.kind, FailureKind::chart_pole);
+  EXPECT_EQ(f.detail, "near the pole");
   EXPECT_NEAR(f.t, 1.6, 1e-12);
   EXPECT_NEAR(x[0], 1.5, 1e-12);  // the last trusted state
 }
@@ -168,8 +171,8 @@ TEST(Failure, SystemCheckIssueIsReported) {
     while (s.t() < 10) s.step();
   });
   EXPECT_EQ(f.method, "dop853");
-  EXPECT_EQ(f.reason, "near the pole");
-  EXPECT_EQ(f.suggestion, "switch charts");
+  EXPECT_EQ(f.kind, FailureKind::chart_pole);
+  EXPECT_EQ(f.detail, "near the pole");
   EXPECT_GT(f.t, 1.5);
   EXPECT_LE(s.state()[0], 1.55);
   EXPECT_GT(s.state()[0], 1.4);
@@ -191,7 +194,9 @@ TEST(Failure, TooManyConsecutiveRejections) {
   s.init(0.0, Vec<1>(0.0));
   const Failure f = failure_of([&] { s.step(); });
   EXPECT_EQ(f.method, "dopri5");
-  EXPECT_TRUE(contains(f.reason, "non-finite")) << f.reason;
+  // Every trial was NaN: the solution itself is not finite, whatever the step.
+  EXPECT_EQ(f.kind, FailureKind::non_finite);
+  EXPECT_TRUE(contains(f.detail, "not finite")) << f.detail;
   EXPECT_EQ(s.stats().rejected_steps, 6);
   EXPECT_EQ(s.stats().steps, 0);
   EXPECT_EQ(f.t, 0.0);
@@ -205,7 +210,8 @@ TEST(Failure, TooManyConsecutiveRejectionsFinite) {
   Dop853<Linear1> s(Linear1{1.0}, o);
   s.init(0.0, Vec<1>(1.0));
   const Failure f = failure_of([&] { s.step(); });
-  EXPECT_TRUE(contains(f.reason, "consecutive rejected steps")) << f.reason;
+  EXPECT_EQ(f.kind, FailureKind::rejections);
+  EXPECT_TRUE(contains(f.detail, "3 consecutive rejected steps")) << f.detail;
   EXPECT_EQ(s.stats().rejected_steps, 3);
 }
 
@@ -218,7 +224,8 @@ TEST(Failure, MaxStepsExceeded) {
   const Failure f = failure_of([&] {
     while (s.t() < 1.0) s.step();
   });
-  EXPECT_TRUE(contains(f.reason, "max_steps")) << f.reason;
+  EXPECT_EQ(f.kind, FailureKind::step_budget);
+  EXPECT_TRUE(contains(f.detail, "more than 10 steps")) << f.detail;
   EXPECT_EQ(s.stats().steps, 10);
   EXPECT_NEAR(f.t, 0.1, 1e-12);
 }
@@ -227,7 +234,8 @@ TEST(Failure, NonFiniteInitialState) {
   Dop853<Linear1> s(Linear1{-1.0});
   s.init(0.0, Vec<1>(std::numeric_limits<double>::infinity()));
   const Failure f = failure_of([&] { s.step(); });
-  EXPECT_TRUE(contains(f.reason, "non-finite")) << f.reason;
+  EXPECT_EQ(f.kind, FailureKind::non_finite);
+  EXPECT_TRUE(contains(f.detail, "not finite")) << f.detail;
 }
 
 // Splitting with a sub-flow that overflows.
@@ -243,7 +251,105 @@ TEST(Failure, SplittingNonFinite) {
   Vec<1> x(1.0);
   const Failure f = failure_of([&] { s.step(x, 0.0, 1.0); });
   EXPECT_EQ(f.method, "splitting");
-  EXPECT_TRUE(contains(f.reason, "non-finite")) << f.reason;
+  EXPECT_EQ(f.kind, FailureKind::non_finite);
+}
+
+// ---- Failures are data: a kind with a stable name, and a fact without advice.
+
+TEST(FailureKind, NamesAreDistinctSnakeCase) {
+  std::vector<std::string> seen;
+  for (FailureKind k : kFailureKinds) {
+    const std::string n(name(k));
+    ASSERT_FALSE(n.empty());
+    for (char c : n) EXPECT_TRUE((c >= 'a' && c <= 'z') || c == '_') << n;
+    for (const auto& other : seen) EXPECT_NE(n, other);
+    seen.push_back(n);
+  }
+  // The list holds every enumerator once (they are numbered from 0 in order).
+  for (std::size_t i = 0; i < kFailureKinds.size(); ++i)
+    EXPECT_EQ(static_cast<std::size_t>(kFailureKinds[i]), i);
+  EXPECT_EQ(name(FailureKind::step_underflow), "step_underflow");
+  EXPECT_EQ(name(FailureKind::chart_pole), "chart_pole");
+}
+
+// Every failure a stepper can raise, provoked on the small test systems.
+std::vector<Failure> provoked_failures() {
+  std::vector<Failure> all;
+  {  // non_finite: a fixed step far too large for an exponential blow-up
+    Rk4<ExpBlowUp> s({});
+    Vec<1> x(1.0);
+    all.push_back(failure_of([&] { s.step(x, 0.0, 100.0); }));
+  }
+  {  // non_finite: NaN derivative everywhere but at the start (adaptive)
+    AdaptiveOptions o;
+    o.max_consecutive_rejects = 5;
+    Dopri5<NanAfterStart> s({}, o);
+    s.init(0.0, Vec<1>(0.0));
+    all.push_back(failure_of([&] { s.step(); }));
+  }
+  {  // non_finite: an infinite initial state (adaptive)
+    Dop853<Linear1> s(Linear1{-1.0});
+    s.init(0.0, Vec<1>(std::numeric_limits<double>::infinity()));
+    all.push_back(failure_of([&] { s.step(); }));
+  }
+  {  // step_underflow: y' = y^2 runs into its pole at t = 1
+    AdaptiveOptions o;
+    o.rtol = o.atol = 1e-8;
+    Dop853<BlowUp> s({}, o);
+    s.init(0.0, Vec<1>(1.0));
+    all.push_back(failure_of([&] {
+      while (s.t() < 2.0) s.step();
+    }));
+  }
+  {  // step_budget
+    AdaptiveOptions o;
+    o.max_steps = 10;
+    o.h_max = 0.01;
+    Dopri5<Linear1> s(Linear1{-1.0}, o);
+    s.init(0.0, Vec<1>(1.0));
+    all.push_back(failure_of([&] {
+      while (s.t() < 1.0) s.step();
+    }));
+  }
+  {  // rejections
+    AdaptiveOptions o;
+    o.max_consecutive_rejects = 2;
+    o.h_init = 10.0;
+    Dop853<Linear1> s(Linear1{1.0}, o);
+    s.init(0.0, Vec<1>(1.0));
+    all.push_back(failure_of([&] { s.step(); }));
+  }
+  {  // solver_divergence
+    Gauss4<Linear1> s(Linear1{-1000.0});
+    Vec<1> x(1.0);
+    all.push_back(failure_of([&] { s.step(x, 0.0, 0.1); }));
+  }
+  {  // a system's check(): the stepper passes the issue's kind through
+    Rk4<Checked> s({});
+    Vec<1> x(0.0);
+    double t = 0;
+    all.push_back(failure_of([&] {
+      for (int i = 0; i < 100; ++i, t += 0.1) s.step(x, t, 0.1);
+    }));
+  }
+  return all;
+}
+
+TEST(Failure, TextNamesNoCommandLineFlag) {
+  std::vector<FailureKind> kinds;
+  for (const Failure& f : provoked_failures()) {
+    kinds.push_back(f.kind);
+    EXPECT_FALSE(f.detail.empty()) << name(f.kind);
+    EXPECT_FALSE(contains(f.detail, "--")) << f.detail;
+    EXPECT_FALSE(contains(f.message(), "--")) << f.message();
+    EXPECT_FALSE(contains(f.message(), ";")) << "no advice appended here: " << f.message();
+  }
+  // Every kind a stepper raises was provoked. lost_motion is not raised by a
+  // stepper (a finite solution far from the truth is a study's verdict).
+  for (FailureKind k : kFailureKinds) {
+    if (k == FailureKind::lost_motion) continue;
+    EXPECT_NE(std::find(kinds.begin(), kinds.end(), k), kinds.end()) << name(k);
+  }
 }
 
 // ---- regularize(): called at the start of every step; a remap drops FSAL.

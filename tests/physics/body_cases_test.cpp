@@ -50,8 +50,7 @@ TEST(ValidateBody, TriangleInequalityAndOverride) {
   {
     const auto [field, msg] = error_of([&] { validate_body(Body{Vector3d(1, 1, 3), {}, 1}, false); });
     EXPECT_EQ(field, "inertia");
-    EXPECT_EQ(msg, "inertia (1, 1, 3) breaks the triangle inequality I1 + I2 >= I3 (not a rigid body); "
-                   "pass --allow-nonphysical to accept it");
+    EXPECT_EQ(msg, "inertia (1, 1, 3) breaks the triangle inequality I1 + I2 >= I3 (not a rigid body)");
   }
   {
     const auto [field, msg] = error_of([&] { validate_body(Body{Vector3d(5, 1, 3), {}, 1}, false); });
@@ -86,8 +85,7 @@ TEST(ValidateInitialState, GammaNormAndNormalize) {
   const InitialState off{Vector3d(1, 2, 3), Vector3d(0, 0, 1.02)};
   const auto [field, msg] = error_of([&] { validate_initial_state(off, false); });
   EXPECT_EQ(field, "gamma");
-  EXPECT_EQ(msg, "gamma must be a unit vector (| |gamma| - 1 | <= 1e-9); got |gamma| = 1.02; "
-                 "pass --normalize-gamma to rescale it");
+  EXPECT_EQ(msg, "gamma must be a unit vector (| |gamma| - 1 | <= 1e-9); got |gamma| = 1.02");
   const InitialState fixed = validate_initial_state(InitialState{ok.omega, Vector3d(3, 0, 4)}, true);
   EXPECT_NEAR(fixed.gamma.norm(), 1.0, 1e-15);
   EXPECT_NEAR(fixed.gamma.x(), 0.6, 1e-15);
