@@ -11,7 +11,7 @@
 #include "app/render_job.hpp"
 #include "app/usage_error.hpp"
 #include "live/live_session.hpp"
-#include "render/data_dir.hpp"
+#include "io/data_dir.hpp"
 #include "render/gl_context.hpp"
 #include "serve/server.hpp"
 
@@ -48,7 +48,7 @@ live::LiveSetup setup_of_single_job(const fs::path& file) {
 // (the same title, view, camera and trail as the rendered videos), else the
 // built-in preset.
 live::LiveSetup preset_from_jobs(physics::Case c) {
-  const fs::path file = render::find_data_path("render_jobs/" + physics::case_name(c) + ".json");
+  const fs::path file = io::find_data_path("render_jobs/" + physics::case_name(c) + ".json");
   try {
     if (!file.empty() && fs::is_regular_file(file)) return setup_of_single_job(file);
   } catch (const std::exception& e) {
@@ -68,7 +68,7 @@ int run_serve(const ServeOptions& o) {
     so.image_format = serve::ImageFormat::png;
   else
     throw UsageError("--image: unknown format '" + o.image + "' (allowed: jpeg, png)");
-  so.page = render::find_data_path("assets/serve.html");
+  so.page = io::find_data_path("assets/serve.html");
   if (so.page.empty()) {
     std::string searched;
     for (const auto& dir : render::data_search_path()) searched += " " + (dir / "assets").string();

@@ -8,7 +8,7 @@
 #include <system_error>
 #include <vector>
 
-#include "render/data_dir.hpp"
+#include "io/data_dir.hpp"
 #include "render/gl.hpp"
 #include "render/imgui_context_scope.hpp"
 #include "render/imgui_gl_renderer.hpp"
@@ -20,7 +20,7 @@ namespace {
 // if the project has one, then a common system font, else ImGui's own.
 std::filesystem::path default_font_file() {
     std::vector<std::filesystem::path> candidates;
-    if (auto shipped = find_data_path("assets/fonts/overlay.ttf"); !shipped.empty()) candidates.push_back(shipped);
+    if (auto shipped = io::find_data_path("assets/fonts/overlay.ttf"); !shipped.empty()) candidates.push_back(shipped);
     candidates.emplace_back("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf");
     for (const auto& candidate : candidates) {
         std::error_code error;

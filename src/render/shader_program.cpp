@@ -1,6 +1,6 @@
 #include "render/shader_program.hpp"
 
-#include "render/data_dir.hpp"
+#include "io/data_dir.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -70,7 +70,7 @@ std::vector<std::filesystem::path> shader_search_path() {
     if (auto dir = executable_directory(); !dir.empty()) path.push_back(dir / "shaders");
     if (const char* env = std::getenv("EPVIZ_SHADER_DIR"); env != nullptr && *env != '\0')
         path.emplace_back(env);
-for (const auto& dir : data_search_path()) path.push_back(dir / "shaders");
+for (const auto& dir : io::data_search_path()) path.push_back(dir / "shaders");
     return path;
 }
 

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "io/data_dir.hpp"
 #include "io/subprocess.hpp"
 
 namespace epviz::study::peers {
@@ -29,7 +30,8 @@ nlohmann::json vec(const Eigen::Vector3d& v) {
 
 std::string scipy_driver_path() {
   if (const char* env = std::getenv("EPVIZ_SCIPY_DRIVER"); env && *env) return env;
-  return EPVIZ_SCIPY_DRIVER;  // the source tree's bench/peers/scipy_driver.py (set by CMake)
+  // Installed as share/epviz/bench/peers/, in the source tree as bench/peers/.
+  return io::find_data_path("bench/peers/scipy_driver.py").string();
 }
 
 ScipyResults run_scipy_peers(const physics::Body& body, const physics::InitialState& initial,
@@ -38,8 +40,10 @@ ScipyResults run_scipy_peers(const physics::Body& body, const physics::InitialSt
   if (access(kPython, X_OK) != 0)
     return all_with(n, PeerStatus::skipped, std::string(kPython) + " not found");
   const std::string script = scipy_driver_path();
-  if (!std::filesystem::exists(script))
-    return all_with(n, PeerStatus::skipped, "SciPy driver not found: " + script);
+  if (script.empty() || !std::filesystem::exists(script))
+    return all_with(n, PeerStatus::skipped,
+                    "SciPy driver not found: " +
+                        (script.empty() ? "bench/peers/scipy_driver.py in the data directories" : script));
   nlohmann::json problem = {{"inertia", vec(body.inertia)}, {"com", vec(body.com)},
                             {"weight", body.weight},        {"omega0", vec(initial.omega)},
                             {"gamma0", vec(initial.gamma)}, {"t_end", t_end},

@@ -10,7 +10,8 @@
 namespace epviz::study::peers {
 
 // Path of the driver script: $EPVIZ_SCIPY_DRIVER if set, else
-// <source tree>/bench/peers/scipy_driver.py.
+// bench/peers/scipy_driver.py in the data directories (io/data_dir.hpp); empty
+// when none has it.
 std::string scipy_driver_path();
 
 // Both SciPy methods at every tolerance: results[i] for tolerances[i] of

@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-namespace epviz::render {
+namespace epviz::io {
 
 std::vector<std::filesystem::path> data_search_path();
 
@@ -19,4 +19,4 @@ std::vector<std::filesystem::path> data_search_path();
 // "assets/serve.html"), as a full path; empty when none has it.
 std::filesystem::path find_data_path(std::string_view relative);
 
-}  // namespace epviz::render
+}  // namespace epviz::io

@@ -1,9 +1,9 @@
-#include "render/data_dir.hpp"
+#include "io/data_dir.hpp"
 
 #include <cstdlib>
 #include <system_error>
 
-namespace epviz::render {
+namespace epviz::io {
 
 std::vector<std::filesystem::path> data_search_path() {
   std::vector<std::filesystem::path> path;
@@ -26,4 +26,4 @@ std::filesystem::path find_data_path(std::string_view relative) {
   return {};
 }
 
-}  // namespace epviz::render
+}  // namespace epviz::io
