@@ -167,7 +167,9 @@ void work_precision_ratio(benchmark::State& state) {
   const double target = std::pow(10.0, -double(state.range(0)));
   const auto& body = bench_case().body;
   auto axis = [&] { return numerics::StrangSplitting<DirectSystem>(DirectSystem(body)); };
-  auto exact = [&] { return numerics::Composition4<physics::ExactSplitSystem>(physics::ExactSplitSystem(body)); };
+  auto exact = [&] {
+    return numerics::Composition4<physics::ExactSplitSystem>(physics::ExactSplitSystem(body));
+  };
   const long ns = steps_for(axis, target), n4 = steps_for(exact, target);
   if (ns < 0 || n4 < 0) {
     state.SkipWithError("target error not reached");
@@ -189,7 +191,12 @@ void work_precision_ratio(benchmark::State& state) {
   state.counters["steps_exact4"] = double(n4);
   state.counters["ratio"] = t_axis / t_exact;
 }
-BENCHMARK(work_precision_ratio)->Name("wp/kovalevskaya/splitting-vs-exact-split4")
-    ->Arg(6)->Arg(8)->Arg(10)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(work_precision_ratio)
+    ->Name("wp/kovalevskaya/splitting-vs-exact-split4")
+    ->Arg(6)
+    ->Arg(8)
+    ->Arg(10)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -23,7 +23,8 @@ namespace {
 using namespace epviz;
 
 std::vector<scene::Frame> frames(int width, int height, int count) {
-  const auto run = sim::preset_run(physics::Case::kovalevskaya, sim::Method::dop853, sim::Formulation::direct, 40, 200);
+  const auto run = sim::preset_run(physics::Case::kovalevskaya, sim::Method::dop853,
+                                   sim::Formulation::direct, 40, 200);
   scene::SceneSettings s;
   s.width = width;
   s.height = height;
@@ -55,7 +56,8 @@ void paint_frames(benchmark::State& state, const std::string& backend) {
     const auto& img = painter.paint(fs[i++ % fs.size()]);
     benchmark::DoNotOptimize(img.pixels.data());
   }
-  state.counters["frames/s"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["frames/s"] =
+      benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
 }
 
 // One rendered frame, for the encoders.
@@ -83,16 +85,31 @@ void mp4_encode(benchmark::State& state) {
   for (auto _ : state) video.write_frame(img.pixels.data());
   video.finish();
   std::filesystem::remove(path);
-  state.counters["frames/s"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["frames/s"] =
+      benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
 }
 
-BENCHMARK(png_encode)->Name("png_encode_1280x720/level_filter")->ArgsProduct({{1, 4, 6}, {0, -1}})
+BENCHMARK(png_encode)
+    ->Name("png_encode_1280x720/level_filter")
+    ->ArgsProduct({{1, 4, 6}, {0, -1}})
     ->Unit(benchmark::kMillisecond);
-BENCHMARK(mp4_encode)->Name("mp4_encode_1280x720")->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(mp4_encode)
+    ->Name("mp4_encode_1280x720")
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
 
-BENCHMARK_CAPTURE(paint_frames, egl, std::string("egl"))->Name("render_only_1280x720_egl/msaa")->Arg(0)->Arg(4)
-    ->UseRealTime()->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(paint_frames, osmesa, std::string("osmesa"))->Name("render_only_1280x720_osmesa/msaa")->Arg(0)
-    ->Arg(4)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(paint_frames, egl, std::string("egl"))
+    ->Name("render_only_1280x720_egl/msaa")
+    ->Arg(0)
+    ->Arg(4)
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(paint_frames, osmesa, std::string("osmesa"))
+    ->Name("render_only_1280x720_osmesa/msaa")
+    ->Arg(0)
+    ->Arg(4)
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -58,7 +58,8 @@ std::vector<physics::Case> parse_cases(const std::string& list) {
     if (!c || *c == physics::Case::custom) {
       std::string names;
       for (const auto& p : physics::case_presets()) names += (names.empty() ? "" : ", ") + p.name;
-      throw UsageError("--cases: unknown case '" + item + "' (expected a comma-separated list of " + names + ")");
+      throw UsageError("--cases: unknown case '" + item + "' (expected a comma-separated list of " +
+                       names + ")");
     }
     cases.push_back(*c);
   }
@@ -69,15 +70,18 @@ std::vector<physics::Case> parse_cases(const std::string& list) {
 void prepare_outputs(const BenchRequest& request) {
   if (!request.json.empty()) {
     const auto dir = fs::absolute(request.json).parent_path();
-    if (!fs::is_directory(dir)) throw UsageError("--json: directory '" + dir.string() + "' does not exist");
-    if (fs::is_directory(request.json)) throw UsageError("--json: '" + request.json + "' is a directory");
+    if (!fs::is_directory(dir))
+      throw UsageError("--json: directory '" + dir.string() + "' does not exist");
+    if (fs::is_directory(request.json))
+      throw UsageError("--json: '" + request.json + "' is a directory");
   }
   if (!request.out.empty()) {
     if (fs::exists(request.out) && !fs::is_directory(request.out))
       throw UsageError("--out: '" + request.out + "' exists and is not a directory");
     std::error_code ec;
     fs::create_directories(request.out, ec);
-    if (ec) throw UsageError("--out: cannot create directory '" + request.out + "': " + ec.message());
+    if (ec)
+      throw UsageError("--out: cannot create directory '" + request.out + "': " + ec.message());
   }
 }
 
@@ -89,7 +93,8 @@ std::vector<StudyRow> run_studies(const StudyOptions& opts) {
   append(rows, work_precision_study(opts));
   std::fprintf(stderr, "epviz bench: peers (Boost.Odeint, GSL, SciPy where available)...\n");
   auto peer_study = peers::peer_work_precision_study(opts);
-  for (const auto& line : peer_study.skipped) std::fprintf(stderr, "epviz bench: %s\n", line.c_str());
+  for (const auto& line : peer_study.skipped)
+    std::fprintf(stderr, "epviz bench: %s\n", line.c_str());
   append(rows, std::move(peer_study.rows));
   append(rows, peers::equal_error_ratios(rows_of<WorkPrecisionRow>(rows), {1e-6, 1e-8, 1e-10}));
   std::fprintf(stderr, "epviz bench: invariant drift...\n");
@@ -118,7 +123,8 @@ TextColumn<Row> number(std::string header, T Row::*field) {
 }
 template <class Row>
 TextColumn<Row> flag(std::string header, bool Row::*field) {
-  return {std::move(header), [field](const Row& r) { return std::string(r.*field ? "yes" : "no"); }};
+  return {std::move(header),
+          [field](const Row& r) { return std::string(r.*field ? "yes" : "no"); }};
 }
 template <class Row>
 TextColumn<Row> run_text(std::string header, std::string RunRecord::*field) {
@@ -135,17 +141,20 @@ TextColumn<Row> run_status(std::string header) {
 
 void print_work_precision_tables(const std::vector<StudyRow>& rows) {
   using R = WorkPrecisionRow;
-  TextTable<R> table{"", {run_text<R>("impl", &RunRecord::impl), run_text<R>("method", &RunRecord::method),
-                          run_text<R>("formulation", &RunRecord::formulation), run_number<R>("tol", &RunRecord::tol),
-                          run_number<R>("step", &RunRecord::step), number("error", &R::error),
-                          run_number<R>("rhs_evals", &RunRecord::rhs_evals),
-                          run_number<R>("flow_evals", &RunRecord::flow_evals),
-                          run_number<R>("cpu_ms", &RunRecord::cpu_ms), run_status<R>("status")}};
+  TextTable<R> table{
+      "",
+      {run_text<R>("impl", &RunRecord::impl), run_text<R>("method", &RunRecord::method),
+       run_text<R>("formulation", &RunRecord::formulation), run_number<R>("tol", &RunRecord::tol),
+       run_number<R>("step", &RunRecord::step), number("error", &R::error),
+       run_number<R>("rhs_evals", &RunRecord::rhs_evals),
+       run_number<R>("flow_evals", &RunRecord::flow_evals),
+       run_number<R>("cpu_ms", &RunRecord::cpu_ms), run_status<R>("status")}};
   const auto runs = rows_of<R>(rows);
   for (const auto* ref : rows_of<ReferenceRow>(rows)) {
-    table.title = "work-precision: " + ref->case_name + " (t_end " + cell_number(ref->t_end) +
-                  "; error = |dOmega|_2 + |dgamma|_2 vs Gauss6 Richardson, self-check vs DOP853 1e-14: " +
-                  cell_number(ref->self_check) + ")";
+    table.title =
+        "work-precision: " + ref->case_name + " (t_end " + cell_number(ref->t_end) +
+        "; error = |dOmega|_2 + |dgamma|_2 vs Gauss6 Richardson, self-check vs DOP853 1e-14: " +
+        cell_number(ref->self_check) + ")";
     std::vector<const R*> of_case;
     std::copy_if(runs.begin(), runs.end(), std::back_inserter(of_case),
                  [&](const R* r) { return r->run.case_name == ref->case_name; });
@@ -155,39 +164,47 @@ void print_work_precision_tables(const std::vector<StudyRow>& rows) {
 
 void print_peer_table(const std::vector<StudyRow>& rows) {
   using R = PeerRatioRow;
-  print_table(TextTable<R>{"peers: CPU time against epviz dop853 at equal achieved error (log-log interpolation; "
-                           "ratio > 1: epviz is faster)",
-                           {text("case", &R::case_name), text("impl", &R::impl), text("method", &R::method),
-                            number("error", &R::error), number("peer_ms", &R::peer_cpu_ms),
-                            number("epviz_ms", &R::epviz_dop853_cpu_ms), number("ratio", &R::ratio)}},
-              rows_of<R>(rows));
+  print_table(
+      TextTable<R>{
+          "peers: CPU time against epviz dop853 at equal achieved error (log-log interpolation; "
+          "ratio > 1: epviz is faster)",
+          {text("case", &R::case_name), text("impl", &R::impl), text("method", &R::method),
+           number("error", &R::error), number("peer_ms", &R::peer_cpu_ms),
+           number("epviz_ms", &R::epviz_dop853_cpu_ms), number("ratio", &R::ratio)}},
+      rows_of<R>(rows));
 }
 
 void print_invariant_tables(const std::vector<StudyRow>& rows) {
   {
     using R = DriftRow;
-    print_table(TextTable<R>{"invariant drift (max relative, direct formulation, equal evaluations per time unit)",
-                             {run_text<R>("case", &RunRecord::case_name), run_text<R>("method", &RunRecord::method),
-                              run_number<R>("tol", &RunRecord::tol), run_number<R>("step", &RunRecord::step),
-                              run_number<R>("t_end", &RunRecord::t_end),
-                              run_number<R>("rhs_evals", &RunRecord::rhs_evals),
-                              run_number<R>("cpu_ms", &RunRecord::cpu_ms), number("|gamma|^2", &R::drift_gamma_norm2),
-                              number("C0", &R::drift_C0), number("C1", &R::drift_C1),
-                              number("extra", &R::drift_extra)}},
-                rows_of<R>(rows));
+    print_table(
+        TextTable<R>{
+            "invariant drift (max relative, direct formulation, equal evaluations per time unit)",
+            {run_text<R>("case", &RunRecord::case_name), run_text<R>("method", &RunRecord::method),
+             run_number<R>("tol", &RunRecord::tol), run_number<R>("step", &RunRecord::step),
+             run_number<R>("t_end", &RunRecord::t_end),
+             run_number<R>("rhs_evals", &RunRecord::rhs_evals),
+             run_number<R>("cpu_ms", &RunRecord::cpu_ms),
+             number("|gamma|^2", &R::drift_gamma_norm2), number("C0", &R::drift_C0),
+             number("C1", &R::drift_C1), number("extra", &R::drift_extra)}},
+        rows_of<R>(rows));
   }
   using R = InvariantCostRow;
   const auto cost = rows_of<R>(rows);
   char title[160];
-  std::snprintf(title, sizeof title,
-                "invariant cost: cheapest run keeping C1 and the 4th integral within %g over T = %g "
-                "(kovalevskaya, direct)",
-                kInvariantCostTarget, cost.empty() ? 0.0 : cost[0]->run.t_end);
+  std::snprintf(
+      title, sizeof title,
+      "invariant cost: cheapest run keeping C1 and the 4th integral within %g over T = %g "
+      "(kovalevskaya, direct)",
+      kInvariantCostTarget, cost.empty() ? 0.0 : cost[0]->run.t_end);
   print_table(TextTable<R>{title,
-                           {run_text<R>("method", &RunRecord::method), run_number<R>("tol", &RunRecord::tol),
-                            run_number<R>("step", &RunRecord::step), flag("reached", &R::reached),
+                           {run_text<R>("method", &RunRecord::method),
+                            run_number<R>("tol", &RunRecord::tol),
+                            run_number<R>("step", &RunRecord::step),
+                            flag("reached", &R::reached),
                             {"cost", [](const R& r) { return cell_number(double(r.run.cost())); }},
-                            run_number<R>("cpu_ms", &RunRecord::cpu_ms), number("C1", &R::drift_C1),
+                            run_number<R>("cpu_ms", &RunRecord::cpu_ms),
+                            number("C1", &R::drift_C1),
                             number("extra", &R::drift_extra)}},
               cost);
 }
@@ -195,52 +212,65 @@ void print_invariant_tables(const std::vector<StudyRow>& rows) {
 void print_stability_tables(const std::vector<StudyRow>& rows) {
   {
     using R = MaxStepRow;
-    print_table(
-        TextTable<R>{"stability 1: largest fixed step before blow-up or loss of shape (error > 0.1 or energy drift > 10%)",
-                     {text("case", &R::case_name), text("method", &R::method), number("max_step", &R::max_step),
-                      number("h/period", &R::max_step_over_period), number("failing", &R::failing_step),
-                      text("failure at the failing step", &R::failure_reason)}},
-        rows_of<R>(rows));
+    print_table(TextTable<R>{"stability 1: largest fixed step before blow-up or loss of shape "
+                             "(error > 0.1 or energy drift > 10%)",
+                             {text("case", &R::case_name), text("method", &R::method),
+                              number("max_step", &R::max_step),
+                              number("h/period", &R::max_step_over_period),
+                              number("failing", &R::failing_step),
+                              text("failure at the failing step", &R::failure_reason)}},
+                rows_of<R>(rows));
   }
   {
     using R = PolePassageRow;
-    print_table(TextTable<R>{"stability 2: south-pole passage, dop853 at equal tolerance",
-                             {text("variant", &R::variant), run_status<R>("status"),
-                              run_number<R>("fail_t", &RunRecord::failure_t),
-                              {"steps", [](const R& r) { return cell_number(r.run.steps ? double(*r.run.steps) : NAN); }},
-                              number("switches", &R::chart_switches), number("error", &R::error),
-                              run_text<R>("reason", &RunRecord::failure_reason)}},
-                rows_of<R>(rows));
+    print_table(
+        TextTable<R>{
+            "stability 2: south-pole passage, dop853 at equal tolerance",
+            {text("variant", &R::variant),
+             run_status<R>("status"),
+             run_number<R>("fail_t", &RunRecord::failure_t),
+             {"steps",
+              [](const R& r) { return cell_number(r.run.steps ? double(*r.run.steps) : NAN); }},
+             number("switches", &R::chart_switches),
+             number("error", &R::error),
+             run_text<R>("reason", &RunRecord::failure_reason)}},
+        rows_of<R>(rows));
   }
   {
     using R = SeparatrixRow;
-    print_table(TextTable<R>{"stability 3: Euler case near the separatrix, first flip of Omega_2",
-                             {run_text<R>("method", &RunRecord::method), run_number<R>("tol", &RunRecord::tol),
-                              run_number<R>("step", &RunRecord::step), number("flip_t", &R::flip_time),
-                              number("ref_flip_t", &R::reference_flip_time), number("|dt|", &R::flip_time_error),
-                              number("flips", &R::flips), number("ref", &R::reference_flips),
-                              number("|dt| last", &R::last_flip_time_error)}},
-                rows_of<R>(rows));
+    print_table(
+        TextTable<R>{
+            "stability 3: Euler case near the separatrix, first flip of Omega_2",
+            {run_text<R>("method", &RunRecord::method), run_number<R>("tol", &RunRecord::tol),
+             run_number<R>("step", &RunRecord::step), number("flip_t", &R::flip_time),
+             number("ref_flip_t", &R::reference_flip_time), number("|dt|", &R::flip_time_error),
+             number("flips", &R::flips), number("ref", &R::reference_flips),
+             number("|dt| last", &R::last_flip_time_error)}},
+        rows_of<R>(rows));
   }
   {
     using R = SleepingTopRow;
-    print_table(TextTable<R>{"stability 4: fast sleeping top (Omega3 = 50): cheapest run with gamma error < 1e-3",
-                             {run_text<R>("method", &RunRecord::method),
-                              run_text<R>("formulation", &RunRecord::formulation),
-                              run_number<R>("tol", &RunRecord::tol), run_number<R>("step", &RunRecord::step),
-                              flag("reached", &R::reached), number("gamma_err", &R::gamma_error),
-                              run_number<R>("rhs_evals", &RunRecord::rhs_evals),
-                              run_number<R>("cpu_ms", &RunRecord::cpu_ms)}},
-                rows_of<R>(rows));
+    print_table(
+        TextTable<R>{
+            "stability 4: fast sleeping top (Omega3 = 50): cheapest run with gamma error < 1e-3",
+            {run_text<R>("method", &RunRecord::method),
+             run_text<R>("formulation", &RunRecord::formulation),
+             run_number<R>("tol", &RunRecord::tol), run_number<R>("step", &RunRecord::step),
+             flag("reached", &R::reached), number("gamma_err", &R::gamma_error),
+             run_number<R>("rhs_evals", &RunRecord::rhs_evals),
+             run_number<R>("cpu_ms", &RunRecord::cpu_ms)}},
+        rows_of<R>(rows));
   }
   using R = ChaosRow;
-  print_table(TextTable<R>{"stability 5: generic body from a strongly chaotic state (Lyapunov time ~2), time of "
-                           "separation > 1e-3 from the reference",
-                           {run_text<R>("method", &RunRecord::method), run_number<R>("tol", &RunRecord::tol),
-                            run_number<R>("step", &RunRecord::step), flag("separated", &R::separated),
-                            number("sep_time", &R::separation_time), run_number<R>("t_end", &RunRecord::t_end),
-                            run_number<R>("cpu_ms", &RunRecord::cpu_ms)}},
-              rows_of<R>(rows));
+  print_table(
+      TextTable<R>{
+          "stability 5: generic body from a strongly chaotic state (Lyapunov time ~2), time of "
+          "separation > 1e-3 from the reference",
+          {run_text<R>("method", &RunRecord::method), run_number<R>("tol", &RunRecord::tol),
+           run_number<R>("step", &RunRecord::step), flag("separated", &R::separated),
+           number("sep_time", &R::separation_time), run_number<R>("t_end", &RunRecord::t_end),
+           run_number<R>("cpu_ms", &RunRecord::cpu_ms)}},
+      rows_of<R>(rows));
 }
 
 // --- Stage 4: the JSON document and the charts --------------------------------
@@ -272,10 +302,12 @@ nlohmann::json bench_document(const std::vector<StudyRow>& rows, bool quick, dou
 
 #ifdef EPVIZ_HAVE_RENDER
 // Draws the bench's figures with epviz's own offscreen renderer, one PNG each.
-std::size_t write_figures(const std::vector<StudyRow>& rows, const fs::path& out_dir, const std::string& gl) {
+std::size_t write_figures(const std::vector<StudyRow>& rows, const fs::path& out_dir,
+                          const std::string& gl) {
   const auto figures = bench_figures(rows);
   if (figures.empty()) return 0;
-  auto context = render::make_gl_context(gl.empty() ? render::gl_backend_from_environment() : gl, 16, 16);
+  auto context =
+      render::make_gl_context(gl.empty() ? render::gl_backend_from_environment() : gl, 16, 16);
   for (const auto& figure : figures) {
     const auto image = paint::paint_figure(*context, figure);
     io::write_png_rgba(out_dir / figure.file_name, image.width, image.height, image.pixels);
@@ -317,11 +349,15 @@ int run_bench(const BenchRequest& request) {
 
 std::function<int()> add_bench_command(CLI::App& app) {
   auto request = std::make_shared<BenchRequest>();
-  auto* cmd = app.add_subcommand("bench", "Work-precision, invariant drift and stability studies of the methods");
+  auto* cmd = app.add_subcommand(
+      "bench", "Work-precision, invariant drift and stability studies of the methods");
   cmd->add_flag("--quick", request->quick, "a short study for CI (well under a minute)");
   cmd->add_option("--json", request->json, "write every row and the metadata to this JSON file");
-  cmd->add_option("--out", request->out, "create this directory and write bench.json and the charts (PNG) there");
-  cmd->add_option("--gl", request->gl, "offscreen GL backend for the charts: auto, egl or osmesa (default: $EPVIZ_GL or auto)");
+  cmd->add_option("--out", request->out,
+                  "create this directory and write bench.json and the charts (PNG) there");
+  cmd->add_option(
+      "--gl", request->gl,
+      "offscreen GL backend for the charts: auto, egl or osmesa (default: $EPVIZ_GL or auto)");
   cmd->add_option("--cases", request->cases,
                   "comma-separated presets for the work-precision and drift studies (default all)");
   return [request] { return run_bench(*request); };

@@ -38,7 +38,8 @@ int list_cases(bool json) {
   for (const auto& p : physics::case_presets()) {
     std::printf("%s\n  %s\n", p.name.c_str(), p.summary.c_str());
     std::printf("  conditions:     %s\n", p.conditions.c_str());
-    std::printf("  4th integral:   %s\n", p.extra_integral.empty() ? "none" : p.extra_integral.c_str());
+    std::printf("  4th integral:   %s\n",
+                p.extra_integral.empty() ? "none" : p.extra_integral.c_str());
     std::printf("  inertia %s  com %s  weight %.6g\n", vec(p.body.inertia).c_str(),
                 vec(p.body.com).c_str(), p.body.weight);
     std::printf("  omega0  %s  gamma0 %s\n\n", vec(p.initial.omega).c_str(),

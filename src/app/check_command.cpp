@@ -596,7 +596,8 @@ std::function<int()> add_check_command(CLI::App& app) {
   cmd->add_option("--max-differing", o->max_differing,
                   "pixel: percentage of pixels allowed to differ (default 0.5)");
   cmd->add_option("-j,--jobs-in-parallel", o->workers, "check this many jobs at once (default 1)");
-  cmd->add_option("--gl", o->gl, "offscreen GL backend: auto, egl or osmesa (default: $EPVIZ_GL or auto)");
+  cmd->add_option("--gl", o->gl,
+                  "offscreen GL backend: auto, egl or osmesa (default: $EPVIZ_GL or auto)");
   return [o] { return run_check(*o); };
 }
 

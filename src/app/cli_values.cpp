@@ -30,8 +30,8 @@ long parse_integer(const std::string& option, const std::string& text, long min_
   const char* end = text.data() + text.size();
   auto [ptr, ec] = std::from_chars(text.data(), end, x);
   if (text.empty() || ec != std::errc() || ptr != end || x < min_value || x > max_value)
-    throw UsageError(option + ": expected an integer from " + std::to_string(min_value) +
-                     " to " + std::to_string(max_value) + ", got '" + text + "'");
+    throw UsageError(option + ": expected an integer from " + std::to_string(min_value) + " to " +
+                     std::to_string(max_value) + ", got '" + text + "'");
   return x;
 }
 

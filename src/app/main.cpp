@@ -17,7 +17,9 @@
 #include "app/usage_error.hpp"
 
 int main(int argc, char** argv) {
-  CLI::App app{"epviz: the heavy rigid body about a fixed point (Euler-Poisson), simulated and rendered offscreen"};
+  CLI::App app{
+      "epviz: the heavy rigid body about a fixed point (Euler-Poisson), simulated and rendered "
+      "offscreen"};
   app.require_subcommand(1);
   // An option given twice takes its last value, so a command line can override
   // what a wrapper script put before it.

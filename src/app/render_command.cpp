@@ -46,7 +46,8 @@ struct PreparedJob {
 std::optional<OutputFormat> format_option(const RenderOptions& o) {
   if (o.format.empty()) return std::nullopt;
   auto f = output_format_from_name(o.format);
-  if (!f) throw UsageError("--format: unknown format '" + o.format + "' (allowed: png, mp4, webm, gif)");
+  if (!f)
+    throw UsageError("--format: unknown format '" + o.format + "' (allowed: png, mp4, webm, gif)");
   return f;
 }
 
@@ -59,15 +60,17 @@ PreparedJob prepare(RenderJob job, const RenderOptions& o) {
     throw UsageError(job.file.string() + ": video needs an even width and height, got " +
                      std::to_string(job.scene.width) + "x" + std::to_string(job.scene.height));
   if (job.output.format != OutputFormat::png && !io::ffmpeg_available())
-    throw UsageError("--format " + std::string(output_format_name(job.output.format)) +
-                     ": ffmpeg not found on PATH; install the Debian package ffmpeg (scripts/setup.sh does)");
+    throw UsageError(
+        "--format " + std::string(output_format_name(job.output.format)) +
+        ": ffmpeg not found on PATH; install the Debian package ffmpeg (scripts/setup.sh does)");
   if (o.resume && job.output.format != OutputFormat::png)
     throw UsageError("--resume: applies to PNG sequences only (a video is written whole)");
 
   PreparedJob p;
   p.plan = plan_job(job);
   try {
-    p.range = o.frames.empty() ? io::all_frames(p.plan.frames) : io::parse_frame_range(o.frames, p.plan.frames);
+    p.range = o.frames.empty() ? io::all_frames(p.plan.frames)
+                               : io::parse_frame_range(o.frames, p.plan.frames);
   } catch (const io::FrameRangeError& e) {
     throw UsageError(e.what());
   }
@@ -90,7 +93,9 @@ std::unique_ptr<render::GlContext> open_context(const RenderOptions& o) {
 }
 
 io::ProgressMode progress_mode(const RenderOptions& o) {
-  return o.quiet ? io::ProgressMode::off : o.progress ? io::ProgressMode::on : io::ProgressMode::automatic;
+  return o.quiet      ? io::ProgressMode::off
+         : o.progress ? io::ProgressMode::on
+                      : io::ProgressMode::automatic;
 }
 
 struct RenderStats {
@@ -102,8 +107,8 @@ struct RenderStats {
 
 // Renders the prepared job's frame range to its output. Frames before the
 // range are integrated through but not drawn.
-RenderStats render_frames(const PreparedJob& p, paint::FramePainter& painter, const RenderOptions& o,
-                          bool write_output = true) {
+RenderStats render_frames(const PreparedJob& p, paint::FramePainter& painter,
+                          const RenderOptions& o, bool write_output = true) {
   RenderStats stats;
   const auto& job = p.job;
   const auto& s = job.scene;
@@ -117,8 +122,8 @@ RenderStats render_frames(const PreparedJob& p, paint::FramePainter& painter, co
   } else if (write_output) {
     const auto fmt = *io::parse_video_format(output_format_name(job.output.format));
     video = std::make_unique<io::VideoWriter>(
-        job.output.dir / (job.output.name + std::string(io::video_format_extension(fmt))), fmt, s.width, s.height,
-        s.fps);
+        job.output.dir / (job.output.name + std::string(io::video_format_extension(fmt))), fmt,
+        s.width, s.height, s.fps);
   }
   io::ProgressOptions po;
   po.mode = progress_mode(o);
@@ -147,7 +152,8 @@ RenderStats render_frames(const PreparedJob& p, paint::FramePainter& painter, co
   }
   progress.finish();
   if (pngs) pngs->close();
-  if (video && !stats.failure) video->finish();  // a failed video is not kept (its destructor removes it)
+  if (video && !stats.failure)
+    video->finish();  // a failed video is not kept (its destructor removes it)
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return stats;
 }
@@ -166,8 +172,10 @@ nlohmann::json job_report(const PreparedJob& p, const RenderStats& st) {
   j["frames_skipped"] = st.frames_skipped;
   j["seconds"] = st.seconds;
   j["output"] = (p.job.output.dir).string();
-  j["failure"] = st.failure ? nlohmann::json(failure_line(*st.failure, SettingsIn::render_job)) : nlohmann::json(nullptr);
-  j["failure_kind"] = st.failure ? nlohmann::json(std::string(numerics::name(st.failure->kind))) : nlohmann::json(nullptr);
+  j["failure"] = st.failure ? nlohmann::json(failure_line(*st.failure, SettingsIn::render_job))
+                            : nlohmann::json(nullptr);
+  j["failure_kind"] = st.failure ? nlohmann::json(std::string(numerics::name(st.failure->kind)))
+                                 : nlohmann::json(nullptr);
   return j;
 }
 
@@ -180,16 +188,18 @@ void add_gl_report(nlohmann::json& j, const render::GlContext& context) {
 }
 
 void print_job_line(const PreparedJob& p, const RenderStats& st) {
-  std::printf("%s: %d frames %dx%d in %.2f s (%.1f frames/s), %s %s, %s -> %s\n", p.job.file.string().c_str(),
-              st.frames_drawn, p.job.scene.width, p.job.scene.height, st.seconds,
-              st.seconds > 0 ? st.frames_drawn / st.seconds : 0.0, std::string(sim::name(p.plan.run.method)).c_str(),
-              p.plan.accuracy_note.c_str(), std::string(sim::name(p.plan.run.formulation)).c_str(),
+  std::printf("%s: %d frames %dx%d in %.2f s (%.1f frames/s), %s %s, %s -> %s\n",
+              p.job.file.string().c_str(), st.frames_drawn, p.job.scene.width, p.job.scene.height,
+              st.seconds, st.seconds > 0 ? st.frames_drawn / st.seconds : 0.0,
+              std::string(sim::name(p.plan.run.method)).c_str(), p.plan.accuracy_note.c_str(),
+              std::string(sim::name(p.plan.run.formulation)).c_str(),
               p.job.output.dir.string().c_str());
 }
 
 int report_failure(const std::optional<numerics::Failure>& f) {
   if (!f) return 0;
-  std::fprintf(stderr, "epviz: numerical failure: %s\n", failure_line(*f, SettingsIn::render_job).c_str());
+  std::fprintf(stderr, "epviz: numerical failure: %s\n",
+               failure_line(*f, SettingsIn::render_job).c_str());
   return 3;
 }
 
@@ -208,7 +218,8 @@ int render_single(RenderJob job, const RenderOptions& o) {
 }
 
 int render_gallery(GalleryJob g, const RenderOptions& o) {
-  if (!o.frames.empty()) throw UsageError("--frames: a gallery renders whole jobs; give --frames to a single job");
+  if (!o.frames.empty())
+    throw UsageError("--frames: a gallery renders whole jobs; give --frames to a single job");
   if (!o.out.empty()) g.dir = o.out;
   if (auto f = format_option(o)) g.videos = *f == OutputFormat::png ? std::nullopt : f;
   // Check every job before rendering any.
@@ -242,8 +253,11 @@ int render_gallery(GalleryJob g, const RenderOptions& o) {
   for (const auto& p : stills) {
     auto st = render_frames(p, painter, o, /*write_output=*/false);
     failures += report_failure(st.failure) != 0;
-    tiles.push_back(st.kept ? std::move(*st.kept) : render::RgbaImage{g.tile_width, g.tile_height,
-                                                                         std::vector<std::uint8_t>(std::size_t(g.tile_width) * g.tile_height * 4, 0)});
+    tiles.push_back(st.kept
+                        ? std::move(*st.kept)
+                        : render::RgbaImage{g.tile_width, g.tile_height,
+                                            std::vector<std::uint8_t>(
+                                                std::size_t(g.tile_width) * g.tile_height * 4, 0)});
   }
   std::vector<std::span<const std::uint8_t>> spans;
   for (const auto& t : tiles) spans.emplace_back(t.pixels);
@@ -272,7 +286,8 @@ int render_gallery(GalleryJob g, const RenderOptions& o) {
 int run_render(const RenderOptions& o) {
   if (!o.report_json.empty()) {
     const auto dir = fs::absolute(o.report_json).parent_path();
-    if (!fs::is_directory(dir)) throw UsageError("--report-json: directory '" + dir.string() + "' does not exist");
+    if (!fs::is_directory(dir))
+      throw UsageError("--report-json: directory '" + dir.string() + "' does not exist");
   }
   auto loaded = load_render_job(o.job);
   if (loaded.bench) {
@@ -293,15 +308,18 @@ int run_render(const RenderOptions& o) {
 
 std::function<int()> add_render_command(CLI::App& app) {
   auto o = std::make_shared<RenderOptions>();
-  auto* cmd = app.add_subcommand("render", "Render a job (render_jobs/*.json) to PNG frames, a video, or a gallery");
+  auto* cmd = app.add_subcommand(
+      "render", "Render a job (render_jobs/*.json) to PNG frames, a video, or a gallery");
   cmd->add_option("job", o->job, "render job file (JSON)")->required();
   cmd->add_option("--out", o->out, "output directory (overrides the job's output.dir)");
   cmd->add_option("--frames", o->frames, "frame range A:B (inclusive), A:, :B or N");
   cmd->add_option("--width", o->width, "frame width in pixels");
   cmd->add_option("--height", o->height, "frame height in pixels");
   cmd->add_option("--format", o->format, "png|mp4|webm|gif");
-  cmd->add_option("--gl", o->gl, "offscreen GL backend: auto, egl or osmesa (default: $EPVIZ_GL or auto)");
-  cmd->add_option("--report-json", o->report_json, "write what was rendered (tolerance chosen, timings) as JSON");
+  cmd->add_option("--gl", o->gl,
+                  "offscreen GL backend: auto, egl or osmesa (default: $EPVIZ_GL or auto)");
+  cmd->add_option("--report-json", o->report_json,
+                  "write what was rendered (tolerance chosen, timings) as JSON");
   cmd->add_flag("--resume", o->resume, "PNG: skip frames already written completely");
   cmd->add_flag("--quiet", o->quiet, "no progress line");
   cmd->add_flag("--progress", o->progress, "progress line even when stderr is not a terminal");

@@ -54,10 +54,12 @@ LoadedJob load_render_job(const std::filesystem::path& path) {
     g.file = path;
     io::ObjectReader r(j, path.string());
     const auto* list = r.raw("jobs");
-    if (!list->is_array() || list->empty()) r.fail("jobs", "expected a non-empty array of job file names");
+    if (!list->is_array() || list->empty())
+      r.fail("jobs", "expected a non-empty array of job file names");
     for (std::size_t i = 0; i < list->size(); ++i) {
       const auto& item = (*list)[i];
-      if (!item.is_string()) r.fail("jobs", "item " + std::to_string(i) + ": expected a job file name");
+      if (!item.is_string())
+        r.fail("jobs", "item " + std::to_string(i) + ": expected a job file name");
       const auto sub = path.parent_path() / item.get<std::string>();
       g.jobs.push_back(read_single(io::read_json_file(sub), sub));
     }

@@ -31,7 +31,7 @@ struct GalleryJob {
   std::filesystem::path file;
   std::vector<RenderJob> jobs;
   int tile_width = 640, tile_height = 360, columns = 3;
-  double at = 0.6;  // which frame to tile, as a fraction of each run
+  double at = 0.6;                     // which frame to tile, as a fraction of each run
   std::optional<OutputFormat> videos;  // a video per job in this format (none: stills only)
   std::filesystem::path dir = "out/gallery";
 };

@@ -10,8 +10,8 @@
 #include "app/cli_values.hpp"
 #include "app/render_job.hpp"
 #include "app/usage_error.hpp"
-#include "live/live_session.hpp"
 #include "io/data_dir.hpp"
+#include "live/live_session.hpp"
 #include "render/gl_context.hpp"
 #include "serve/server.hpp"
 
@@ -72,7 +72,8 @@ int run_serve(const ServeOptions& o) {
   if (so.page.empty()) {
     std::string searched;
     for (const auto& dir : render::data_search_path()) searched += " " + (dir / "assets").string();
-    throw UsageError("the page serve.html is missing; searched:" + searched + " (set EPVIZ_DATA_DIR)");
+    throw UsageError("the page serve.html is missing; searched:" + searched +
+                     " (set EPVIZ_DATA_DIR)");
   }
   so.record_path = o.record;
   so.log = [](const std::string& line) { std::fprintf(stderr, "epviz serve: %s\n", line.c_str()); };
@@ -82,17 +83,19 @@ int run_serve(const ServeOptions& o) {
   if (std::find(backends.begin(), backends.end(), backend) == backends.end()) {
     std::string allowed;
     for (const auto& name : backends) allowed += (allowed.empty() ? "" : ", ") + name;
-    throw UsageError(std::string(o.gl.empty() ? "EPVIZ_GL" : "--gl") + ": unknown backend '" + backend +
-                     "' (allowed: " + allowed + ")");
+    throw UsageError(std::string(o.gl.empty() ? "EPVIZ_GL" : "--gl") + ": unknown backend '" +
+                     backend + "' (allowed: " + allowed + ")");
   }
 
   live::SessionOptions session;
-  session.initial = o.job.empty() ? preset_from_jobs(physics::Case::kovalevskaya) : setup_of_single_job(o.job);
+  session.initial =
+      o.job.empty() ? preset_from_jobs(physics::Case::kovalevskaya) : setup_of_single_job(o.job);
   session.presets = preset_from_jobs;
   session.save_dir = o.save_dir;
   session.start_playing = o.play;
   try {
-    live::LiveScene check(session.initial);  // a job the scene cannot run is an error now, not per connection
+    live::LiveScene check(
+        session.initial);  // a job the scene cannot run is an error now, not per connection
   } catch (const std::exception& e) {
     throw UsageError((o.job.empty() ? std::string("default scene") : o.job) + ": " + e.what());
   }
@@ -101,15 +104,19 @@ int run_serve(const ServeOptions& o) {
   std::unique_ptr<render::GlContext> gl;
   serve::Server server(
       so, [&] { gl = render::make_gl_context(backend, 16, 16); },
-      [&]() -> std::unique_ptr<serve::Session> { return std::make_unique<live::LiveSession>(*gl, session); });
+      [&]() -> std::unique_ptr<serve::Session> {
+        return std::make_unique<live::LiveSession>(*gl, session);
+      });
   server.start();
   if (!is_loopback(o.bind))
-    std::fprintf(stderr,
-                 "epviz serve: warning: listening on %s: anyone who can reach this address can use the "
-                 "server (and write files to --save-dir if given)\n",
-                 o.bind.c_str());
+    std::fprintf(
+        stderr,
+        "epviz serve: warning: listening on %s: anyone who can reach this address can use the "
+        "server (and write files to --save-dir if given)\n",
+        o.bind.c_str());
   const std::string host = o.bind.find(':') != std::string::npos ? "[" + o.bind + "]" : o.bind;
-  std::printf("epviz serve: http://%s:%u/  (Ctrl+C to stop)\n", host.c_str(), unsigned(server.port()));
+  std::printf("epviz serve: http://%s:%u/  (Ctrl+C to stop)\n", host.c_str(),
+              unsigned(server.port()));
   std::fflush(stdout);
 
   g_server = &server;
@@ -118,8 +125,8 @@ int run_serve(const ServeOptions& o) {
   server.wait();
   g_server = nullptr;
   const serve::ServerStats stats = server.stats();
-  std::fprintf(stderr, "epviz serve: stopped after %ld connections, %ld frames sent\n", stats.connections_accepted,
-               stats.frames_sent);
+  std::fprintf(stderr, "epviz serve: stopped after %ld connections, %ld frames sent\n",
+               stats.connections_accepted, stats.frames_sent);
   return 0;
 }
 
@@ -127,17 +134,22 @@ int run_serve(const ServeOptions& o) {
 
 std::function<int()> add_serve_command(CLI::App& app) {
   auto o = std::make_shared<ServeOptions>();
-  CLI::App* cmd = app.add_subcommand("serve", "Serve the renderer live to a web browser (one scene per tab)");
+  CLI::App* cmd =
+      app.add_subcommand("serve", "Serve the renderer live to a web browser (one scene per tab)");
   cmd->add_option("job", o->job, "render job to start from (default: the Kovalevskaya top)");
   cmd->add_option("--port", o->port, "TCP port (0: any free port)")->capture_default_str();
-  cmd->add_option("--bind", o->bind, "address to listen on; other than loopback is reachable from the network")
+  cmd->add_option("--bind", o->bind,
+                  "address to listen on; other than loopback is reachable from the network")
       ->capture_default_str();
-  cmd->add_option("--gl", o->gl, "offscreen GL backend: auto, egl or osmesa (default: $EPVIZ_GL or auto)");
+  cmd->add_option("--gl", o->gl,
+                  "offscreen GL backend: auto, egl or osmesa (default: $EPVIZ_GL or auto)");
   cmd->add_option("--image", o->image, "frame encoding: jpeg or png")->capture_default_str();
   cmd->add_option("--quality", o->quality, "JPEG quality 1..100")->capture_default_str();
-  cmd->add_option("--save-dir", o->save_dir, "also write saved frames and jobs here (default: browser downloads only)");
+  cmd->add_option("--save-dir", o->save_dir,
+                  "also write saved frames and jobs here (default: browser downloads only)");
   cmd->add_flag("--play", o->play, "start playing");
-  cmd->add_option("--record", o->record, "record the first connection's events (replayed by the tests)");
+  cmd->add_option("--record", o->record,
+                  "record the first connection's events (replayed by the tests)");
   return [o] { return run_serve(*o); };
 }
 

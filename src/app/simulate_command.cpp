@@ -8,10 +8,10 @@
 
 #include "app/cli_values.hpp"
 #include "app/failure_advice.hpp"
-#include "io/atomic_file.hpp"
 #include "app/simulation_fields.hpp"
 #include "app/simulation_output.hpp"
 #include "app/usage_error.hpp"
+#include "io/atomic_file.hpp"
 #include "physics/cases.hpp"
 
 namespace epviz::app {
@@ -80,10 +80,11 @@ std::string fmt(double x, const char* f = "%.3g") {
 }
 
 void print_summary(const sim::RunSpec& spec, const sim::RunResult& r, const sim::Drifts& d) {
-  std::string accuracy = sim::is_adaptive(spec.method) ? "tol " + fmt(spec.tol)
-                                                      : "step " + fmt(r.effective_step);
+  std::string accuracy =
+      sim::is_adaptive(spec.method) ? "tol " + fmt(spec.tol) : "step " + fmt(r.effective_step);
   std::printf("%-20s %-8s %-9s %-12s steps %8ld  rhs %9ld  rejected %5ld  cpu %8.4f s\n",
-              physics::case_name(spec.case_id).c_str(), std::string(sim::name(spec.formulation)).c_str(),
+              physics::case_name(spec.case_id).c_str(),
+              std::string(sim::name(spec.formulation)).c_str(),
               std::string(sim::name(spec.method)).c_str(), accuracy.c_str(), r.stats.steps,
               r.stats.rhs_evals, r.stats.rejected_steps, r.cpu_seconds);
   std::printf("%-20s max relative drift  |gamma|^2 %-9s  C0 %-9s  C1 %-9s  extra %s\n", "",
@@ -134,7 +135,7 @@ int run_simulate(const RawOptions& raw) {
   if (!raw.csv.empty()) io::write_file_atomically(raw.csv, csv);
   if (!raw.report_json.empty())
     io::write_file_atomically(raw.report_json,
-                      (specs.size() == 1 ? reports[0] : reports).dump(2) + "\n");
+                              (specs.size() == 1 ? reports[0] : reports).dump(2) + "\n");
   return failures ? 3 : 0;
 }
 
@@ -142,8 +143,10 @@ int run_simulate(const RawOptions& raw) {
 
 std::function<int()> add_simulate_command(CLI::App& app) {
   auto raw = std::make_shared<RawOptions>();
-  auto* cmd = app.add_subcommand("simulate", "Integrate one body (or every preset) and write samples");
-  cmd->add_option("--job", raw->job, "JSON job file with the same fields (options given here override it)");
+  auto* cmd =
+      app.add_subcommand("simulate", "Integrate one body (or every preset) and write samples");
+  cmd->add_option("--job", raw->job,
+                  "JSON job file with the same fields (options given here override it)");
   cmd->add_option("--case", raw->case_name,
                   "euler|lagrange|kovalevskaya|goryachev-chaplygin|hess|generic, or all");
   cmd->add_option("--inertia", raw->inertia, "principal moments I1,I2,I3");
@@ -153,8 +156,10 @@ std::function<int()> add_simulate_command(CLI::App& app) {
   cmd->add_option("--gamma", raw->gamma, "initial unit vertical G1,G2,G3 (body axes)");
   cmd->add_option("--formulation", raw->formulation,
                   sim::names_joined(sim::all_formulations()) + " (default direct)");
-  cmd->add_option("--method", raw->method, sim::names_joined(sim::all_methods()) + " (default dop853)");
-  cmd->add_option("--tol", raw->tol, "relative and absolute tolerance of adaptive methods (default 1e-10)");
+  cmd->add_option("--method", raw->method,
+                  sim::names_joined(sim::all_methods()) + " (default dop853)");
+  cmd->add_option("--tol", raw->tol,
+                  "relative and absolute tolerance of adaptive methods (default 1e-10)");
   cmd->add_option("--step", raw->step, "largest step of fixed-step methods (default 0.01)");
   cmd->add_option("--t-end", raw->t_end, "final time (default 20)");
   cmd->add_option("--samples", raw->samples, "N: write N+1 equally spaced samples (default 200)");

@@ -97,7 +97,8 @@ sim::RunSpec resolve(const SimulationFields& f) {
     if (f.tol)
       throw UsageError(f.tol.origin + ": method " + m +
                        " has a fixed step and takes --step, not a tolerance "
-                       "(adaptive methods: " + sim::names_joined(sim::adaptive_methods(), ", ") + ")");
+                       "(adaptive methods: " +
+                       sim::names_joined(sim::adaptive_methods(), ", ") + ")");
     if (f.step) spec.step = *f.step;
   }
   if (f.chart_switch) {

@@ -29,18 +29,29 @@ std::string samples_csv(const sim::RunSpec& spec, const sim::RunResult& result) 
   sim::InvariantMonitor monitor(spec.body, spec.case_id, spec.initial);
   for (const auto& s : result.samples) {
     put(out, s.t);
-    for (int i = 0; i < 3; ++i) { out += ','; put(out, s.omega[i]); }
-    for (int i = 0; i < 3; ++i) { out += ','; put(out, s.gamma[i]); }
+    for (int i = 0; i < 3; ++i) {
+      out += ',';
+      put(out, s.omega[i]);
+    }
+    for (int i = 0; i < 3; ++i) {
+      out += ',';
+      put(out, s.gamma[i]);
+    }
     if (auto ab = physics::stereographic(s.gamma)) {
-      out += ','; put(out, (*ab)[0]);
-      out += ','; put(out, (*ab)[1]);
+      out += ',';
+      put(out, (*ab)[0]);
+      out += ',';
+      put(out, (*ab)[1]);
     } else {
       out += ",,";
     }
     const auto inv = monitor.at(s);
-    out += ','; put(out, inv.energy);
-    out += ','; put(out, inv.area);
-    out += ','; put(out, s.gamma.norm() - 1.0);
+    out += ',';
+    put(out, inv.energy);
+    out += ',';
+    put(out, inv.area);
+    out += ',';
+    put(out, s.gamma.norm() - 1.0);
     out += ',';
     if (inv.extra) put(out, *inv.extra);
     out += '\n';
@@ -67,9 +78,8 @@ nlohmann::json run_report(const sim::RunSpec& spec, const sim::RunResult& r,
   j["body"] = {{"inertia", {spec.body.inertia[0], spec.body.inertia[1], spec.body.inertia[2]}},
                {"com", {spec.body.com[0], spec.body.com[1], spec.body.com[2]}},
                {"weight", spec.body.weight}};
-  j["initial"] = {
-      {"omega", {spec.initial.omega[0], spec.initial.omega[1], spec.initial.omega[2]}},
-      {"gamma", {spec.initial.gamma[0], spec.initial.gamma[1], spec.initial.gamma[2]}}};
+  j["initial"] = {{"omega", {spec.initial.omega[0], spec.initial.omega[1], spec.initial.omega[2]}},
+                  {"gamma", {spec.initial.gamma[0], spec.initial.gamma[1], spec.initial.gamma[2]}}};
   j["t_end"] = spec.t_end;
   j["samples"] = spec.samples;
   j["samples_written"] = r.samples.size();

@@ -13,8 +13,8 @@ namespace epviz::io {
 
 // Thrown for any failure to write; the message names the file and the cause.
 class FileWriteError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 // The temporary name used while `target` is being written: "<target>.tmp-<pid>".
@@ -25,29 +25,29 @@ std::filesystem::path temporary_path_for(const std::filesystem::path& target);
 // without commit() (an exception, an early return) the temporary is removed.
 // Not for two writers of the same target in one process at the same time.
 class AtomicFile {
-public:
-    // `sync`: fsync before the rename, for durability across power loss. Off by
-    // default: atomic visibility needs only the rename, and fsync per frame is slow.
-    explicit AtomicFile(std::filesystem::path target, bool sync = false);
-    ~AtomicFile();
-    AtomicFile(const AtomicFile&) = delete;
-    AtomicFile& operator=(const AtomicFile&) = delete;
+ public:
+  // `sync`: fsync before the rename, for durability across power loss. Off by
+  // default: atomic visibility needs only the rename, and fsync per frame is slow.
+  explicit AtomicFile(std::filesystem::path target, bool sync = false);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
 
-    void write(std::span<const std::byte> data);
-    void write(std::string_view text);
-    // Closes the temporary and renames it over the target.
-    void commit();
+  void write(std::span<const std::byte> data);
+  void write(std::string_view text);
+  // Closes the temporary and renames it over the target.
+  void commit();
 
-    const std::filesystem::path& target() const { return target_; }
+  const std::filesystem::path& target() const { return target_; }
 
-private:
-    void discard() noexcept;
+ private:
+  void discard() noexcept;
 
-    std::filesystem::path target_;
-    std::filesystem::path temporary_;
-    int fd_ = -1;
-    bool sync_ = false;
-    bool committed_ = false;
+  std::filesystem::path target_;
+  std::filesystem::path temporary_;
+  int fd_ = -1;
+  bool sync_ = false;
+  bool committed_ = false;
 };
 
 // Writes a whole buffer to `target` atomically.

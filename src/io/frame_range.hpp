@@ -14,23 +14,23 @@ namespace epviz::io {
 // Thrown for a malformed or unusable range; the message names --frames and
 // says what is allowed.
 class FrameRangeError : public std::invalid_argument {
-public:
-    using std::invalid_argument::invalid_argument;
+ public:
+  using std::invalid_argument::invalid_argument;
 };
 
 // What was written, before the job's frame count is known; an absent end means open.
 struct FrameRangeSpec {
-    std::optional<int> first;
-    std::optional<int> last;
+  std::optional<int> first;
+  std::optional<int> last;
 };
 
 // Frames first..last, both inclusive.
 struct FrameRange {
-    int first = 0;
-    int last = -1;
-    int count() const { return last - first + 1; }
-    bool contains(int frame) const { return frame >= first && frame <= last; }
-    bool operator==(const FrameRange&) const = default;
+  int first = 0;
+  int last = -1;
+  int count() const { return last - first + 1; }
+  bool contains(int frame) const { return frame >= first && frame <= last; }
+  bool operator==(const FrameRange&) const = default;
 };
 
 // Syntax only. Throws FrameRangeError for anything but the four forms.

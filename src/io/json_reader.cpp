@@ -20,7 +20,12 @@ nlohmann::json read_json_file(const std::filesystem::path& path) {
     const std::string s = text.str();
     std::size_t line = 1, col = 1;
     for (std::size_t i = 0; i + 1 < e.byte && i < s.size(); ++i) {
-      if (s[i] == '\n') { ++line; col = 1; } else { ++col; }
+      if (s[i] == '\n') {
+        ++line;
+        col = 1;
+      } else {
+        ++col;
+      }
     }
     throw JobError(path.string() + ":" + std::to_string(line) + ":" + std::to_string(col) +
                    ": not valid JSON");
@@ -70,8 +75,7 @@ std::optional<double> ObjectReader::positive_number(const std::string& key) {
 std::optional<long> ObjectReader::integer(const std::string& key, long min_value, long max_value) {
   const auto* v = get(key);
   if (!v) return std::nullopt;
-  if (!v->is_number_integer())
-    fail(key, "expected an integer, got " + v->dump());
+  if (!v->is_number_integer()) fail(key, "expected an integer, got " + v->dump());
   const long x = v->get<long>();
   if (x < min_value || x > max_value)
     fail(key, "expected an integer from " + std::to_string(min_value) + " to " +

@@ -42,7 +42,8 @@ class ObjectReader {
   std::optional<bool> boolean(const std::string& key);
   std::optional<std::string> string(const std::string& key);
   // A string from a closed set of values.
-  std::optional<std::string> choice(const std::string& key, const std::vector<std::string>& allowed);
+  std::optional<std::string> choice(const std::string& key,
+                                    const std::vector<std::string>& allowed);
   std::optional<std::array<double, 3>> vec3(const std::string& key);
   std::optional<ObjectReader> object(const std::string& key);
 

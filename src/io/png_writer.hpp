@@ -23,8 +23,8 @@ namespace epviz::io {
 // depends on the level; the per-row filter search is what costs. Rendered
 // frames are mostly flat colour, so "none" loses only ~4 % in size.
 struct PngOptions {
-    int compression_level = 1;  // stb zlib level, 1 (fast) .. 9 (small)
-    int filter = 0;             // PNG row filter 0..4 for every row; -1 lets stb try all per row
+  int compression_level = 1;  // stb zlib level, 1 (fast) .. 9 (small)
+  int filter = 0;             // PNG row filter 0..4 for every row; -1 lets stb try all per row
 };
 
 // A PNG in memory. `rgba` holds `height` top-down rows of `width` RGBA8 pixels.
@@ -37,50 +37,50 @@ void write_png_rgba(const std::filesystem::path& path, int width, int height,
                     std::span<const std::uint8_t> rgba, const PngOptions& options = {});
 
 struct AsyncPngWriterOptions {
-    int threads = 2;       // encoder threads
-    int max_queued = 4;    // frames waiting to be encoded; submit() blocks beyond this
-    PngOptions png;
+  int threads = 2;     // encoder threads
+  int max_queued = 4;  // frames waiting to be encoded; submit() blocks beyond this
+  PngOptions png;
 };
 
 // Encodes and writes frames on worker threads. submit() takes the pixels by
 // value (move them in) and blocks while the queue is full. The first error a
 // worker meets is rethrown by the next submit(), wait_idle() or close().
 class AsyncPngWriter {
-public:
-    explicit AsyncPngWriter(AsyncPngWriterOptions options = {});
-    ~AsyncPngWriter();  // finishes queued frames; errors are swallowed here, call close() to see them
-    AsyncPngWriter(const AsyncPngWriter&) = delete;
-    AsyncPngWriter& operator=(const AsyncPngWriter&) = delete;
+ public:
+  explicit AsyncPngWriter(AsyncPngWriterOptions options = {});
+  ~AsyncPngWriter();  // finishes queued frames; errors are swallowed here, call close() to see them
+  AsyncPngWriter(const AsyncPngWriter&) = delete;
+  AsyncPngWriter& operator=(const AsyncPngWriter&) = delete;
 
-    void submit(std::filesystem::path path, int width, int height, std::vector<std::uint8_t> rgba);
-    // Blocks until every submitted frame is on disk.
-    void wait_idle();
-    // Finishes the queue and stops the workers; idempotent.
-    void close();
+  void submit(std::filesystem::path path, int width, int height, std::vector<std::uint8_t> rgba);
+  // Blocks until every submitted frame is on disk.
+  void wait_idle();
+  // Finishes the queue and stops the workers; idempotent.
+  void close();
 
-    std::size_t frames_written() const;
+  std::size_t frames_written() const;
 
-private:
-    struct Job {
-        std::filesystem::path path;
-        int width = 0;
-        int height = 0;
-        std::vector<std::uint8_t> rgba;
-    };
-    void worker_loop();
-    void rethrow_error_locked();
+ private:
+  struct Job {
+    std::filesystem::path path;
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> rgba;
+  };
+  void worker_loop();
+  void rethrow_error_locked();
 
-    AsyncPngWriterOptions options_;
-    mutable std::mutex mutex_;
-    std::condition_variable work_ready_;
-    std::condition_variable space_free_;
-    std::condition_variable idle_;
-    std::deque<Job> queue_;
-    std::vector<std::thread> workers_;
-    int busy_ = 0;
-    bool stopping_ = false;
-    std::size_t written_ = 0;
-    std::exception_ptr error_;
+  AsyncPngWriterOptions options_;
+  mutable std::mutex mutex_;
+  std::condition_variable work_ready_;
+  std::condition_variable space_free_;
+  std::condition_variable idle_;
+  std::deque<Job> queue_;
+  std::vector<std::thread> workers_;
+  int busy_ = 0;
+  bool stopping_ = false;
+  std::size_t written_ = 0;
+  std::exception_ptr error_;
 };
 
 }  // namespace epviz::io

@@ -45,8 +45,8 @@ namespace epviz::io::detail {
 int& png_compression_level() { return stbi_write_png_compression_level; }
 int& png_force_filter() { return stbi_write_force_png_filter; }
 
-int png_to_func(void (*write)(void* context, void* data, int size), void* context, int width, int height,
-                const std::uint8_t* rgba, int stride_bytes) {
+int png_to_func(void (*write)(void* context, void* data, int size), void* context, int width,
+                int height, const std::uint8_t* rgba, int stride_bytes) {
   return stbi_write_png_to_func(write, context, width, height, 4, rgba, stride_bytes);
 }
 

@@ -69,14 +69,14 @@ bool video_format_needs_even_size(VideoFormat format);
 // Thrown when ffmpeg is missing, cannot be started, or fails; the message names
 // the output file and, when ffmpeg itself failed, quotes its stderr.
 class VideoError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 struct VideoOptions {
-    std::string ffmpeg = "ffmpeg";  // program name (searched on PATH) or a path
-    int crf = -1;                   // quality; -1: the format's default (x264 23, vp9 35)
-    std::string x264_preset = "superfast";
+  std::string ffmpeg = "ffmpeg";  // program name (searched on PATH) or a path
+  int crf = -1;                   // quality; -1: the format's default (x264 23, vp9 35)
+  std::string x264_preset = "superfast";
 };
 
 // Whether `program` (default "ffmpeg") can be found on PATH and executed.
@@ -89,54 +89,54 @@ std::vector<std::string> ffmpeg_arguments(VideoFormat format, int width, int hei
                                           const VideoOptions& options = {});
 
 class VideoWriter {
-public:
-    // Starts ffmpeg. Throws std::invalid_argument for a non-positive or (mp4,
-    // webm) odd size or a non-positive fps, VideoError if the target's directory
-    // does not exist or is not writable, or if ffmpeg is not found on PATH
-    // ("ffmpeg not found on PATH: install the Debian package ffmpeg
-    // (scripts/setup.sh does)") or cannot be started.
-    VideoWriter(std::filesystem::path target, VideoFormat format, int width, int height, double fps,
-                VideoOptions options = {});
-    // Without a successful finish(): kills ffmpeg and removes the temporary.
-    ~VideoWriter();
-    VideoWriter(const VideoWriter&) = delete;
-    VideoWriter& operator=(const VideoWriter&) = delete;
+ public:
+  // Starts ffmpeg. Throws std::invalid_argument for a non-positive or (mp4,
+  // webm) odd size or a non-positive fps, VideoError if the target's directory
+  // does not exist or is not writable, or if ffmpeg is not found on PATH
+  // ("ffmpeg not found on PATH: install the Debian package ffmpeg
+  // (scripts/setup.sh does)") or cannot be started.
+  VideoWriter(std::filesystem::path target, VideoFormat format, int width, int height, double fps,
+              VideoOptions options = {});
+  // Without a successful finish(): kills ffmpeg and removes the temporary.
+  ~VideoWriter();
+  VideoWriter(const VideoWriter&) = delete;
+  VideoWriter& operator=(const VideoWriter&) = delete;
 
-    // One frame of height top-down rows of width RGBA8 pixels (width*height*4
-    // bytes). Blocks while ffmpeg is busy. Throws VideoError (with ffmpeg's
-    // stderr) if ffmpeg has exited; the temporary is then removed.
-    void write_frame(const std::uint8_t* rgba);
-    // The same with a size check (std::invalid_argument if the size is wrong).
-    void write_frame(std::span<const std::uint8_t> rgba);
+  // One frame of height top-down rows of width RGBA8 pixels (width*height*4
+  // bytes). Blocks while ffmpeg is busy. Throws VideoError (with ffmpeg's
+  // stderr) if ffmpeg has exited; the temporary is then removed.
+  void write_frame(const std::uint8_t* rgba);
+  // The same with a size check (std::invalid_argument if the size is wrong).
+  void write_frame(std::span<const std::uint8_t> rgba);
 
-    // Closes ffmpeg's input, waits for it, and renames the temporary over the
-    // target. Throws VideoError if no frame was written or ffmpeg failed (then
-    // nothing is left under either name). Idempotent after success.
-    void finish();
+  // Closes ffmpeg's input, waits for it, and renames the temporary over the
+  // target. Throws VideoError if no frame was written or ffmpeg failed (then
+  // nothing is left under either name). Idempotent after success.
+  void finish();
 
-    const std::filesystem::path& target() const { return target_; }
-    const std::filesystem::path& temporary() const { return temporary_; }
-    VideoFormat format() const { return format_; }
-    int width() const { return width_; }
-    int height() const { return height_; }
-    std::size_t frames_written() const { return frames_; }
+  const std::filesystem::path& target() const { return target_; }
+  const std::filesystem::path& temporary() const { return temporary_; }
+  VideoFormat format() const { return format_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+  std::size_t frames_written() const { return frames_; }
 
-private:
-    void abort() noexcept;            // kill, reap, remove the temporary
-    ExitStatus wait_for_exit() noexcept;  // closes ffmpeg's input and reaps it
-    std::string ffmpeg_stderr() const;
-    [[noreturn]] void fail(const std::string& what);
+ private:
+  void abort() noexcept;                // kill, reap, remove the temporary
+  ExitStatus wait_for_exit() noexcept;  // closes ffmpeg's input and reaps it
+  std::string ffmpeg_stderr() const;
+  [[noreturn]] void fail(const std::string& what);
 
-    std::filesystem::path target_;
-    std::filesystem::path temporary_;
-    VideoFormat format_;
-    int width_ = 0;
-    int height_ = 0;
-    std::size_t frame_bytes_ = 0;
-    std::size_t frames_ = 0;
-    std::unique_ptr<Subprocess> ffmpeg_;  // null once reaped
-    int stderr_fd_ = -1;  // unlinked temporary holding ffmpeg's stderr
-    bool finished_ = false;
+  std::filesystem::path target_;
+  std::filesystem::path temporary_;
+  VideoFormat format_;
+  int width_ = 0;
+  int height_ = 0;
+  std::size_t frame_bytes_ = 0;
+  std::size_t frames_ = 0;
+  std::unique_ptr<Subprocess> ffmpeg_;  // null once reaped
+  int stderr_fd_ = -1;                  // unlinked temporary holding ffmpeg's stderr
+  bool finished_ = false;
 };
 
 }  // namespace epviz::io

@@ -5,7 +5,8 @@
 
 namespace epviz::live {
 
-scene::CameraSettings orbit_by_drag(scene::CameraSettings c, float dx_px, float dy_px, float view_height_px) {
+scene::CameraSettings orbit_by_drag(scene::CameraSettings c, float dx_px, float dy_px,
+                                    float view_height_px) {
   const double deg_per_px = 180.0 / std::max(1.0f, view_height_px);
   // Dragging right turns the scene right: the camera moves the other way.
   c.azimuth_deg = std::remainder(c.azimuth_deg - dx_px * deg_per_px, 360.0);

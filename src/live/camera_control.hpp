@@ -5,7 +5,8 @@
 
 namespace epviz::live {
 
-scene::CameraSettings orbit_by_drag(scene::CameraSettings camera, float dx_px, float dy_px, float view_height_px);
+scene::CameraSettings orbit_by_drag(scene::CameraSettings camera, float dx_px, float dy_px,
+                                    float view_height_px);
 // Positive notches (wheel up) zoom in.
 scene::CameraSettings zoom_by_wheel(scene::CameraSettings camera, float notches);
 

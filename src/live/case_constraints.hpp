@@ -16,7 +16,8 @@ enum class Edited { inertia_1, inertia_2, inertia_3, com, weight, omega, gamma }
 // value where the conditions allow it. Custom and generic bodies are returned
 // unchanged. For Hess the moments must already be ordered I1 > I2 > I3 (the
 // panel reports the break otherwise: no ordering is invented).
-void enforce_case(physics::Case c, Edited edited, physics::Body& body, physics::InitialState& initial);
+void enforce_case(physics::Case c, Edited edited, physics::Body& body,
+                  physics::InitialState& initial);
 
 // The case's conditions in one line for the panel ("I1 = I2 = 2 I3, centre of
 // mass on axis 1").

@@ -21,12 +21,14 @@ const ImVec4 kErrorColour = to_imgui(kTheme.drift_bad);
 const ImVec4 kGoodColour = to_imgui(kTheme.drift_ok);
 const ImVec4 kWarnColour = to_imgui(kTheme.drift_warn);
 
-bool drag_double(const char* label, double* v, double speed, double lo, double hi, const char* format = "%.4g") {
+bool drag_double(const char* label, double* v, double speed, double lo, double hi,
+                 const char* format = "%.4g") {
   return ImGui::DragScalar(label, ImGuiDataType_Double, v, float(speed), &lo, &hi, format);
 }
 
 bool log_slider(const char* label, double* v, double lo, double hi, const char* format) {
-  return ImGui::SliderScalar(label, ImGuiDataType_Double, v, &lo, &hi, format, ImGuiSliderFlags_Logarithmic);
+  return ImGui::SliderScalar(label, ImGuiDataType_Double, v, &lo, &hi, format,
+                             ImGuiSliderFlags_Logarithmic);
 }
 
 // A new run of `setup` in which the edited body keeps its case when it can:
@@ -37,7 +39,9 @@ LiveSetup edited_body(LiveSetup s, physics::Case chosen, Edited what) {
     enforce_case(chosen, what, s.run.body, s.run.initial);
     s.run.case_id = chosen;
   } else {
-    s.run.case_id = physics::broken_condition(chosen, s.run.body, s.run.initial) ? physics::Case::custom : chosen;
+    s.run.case_id = physics::broken_condition(chosen, s.run.body, s.run.initial)
+                        ? physics::Case::custom
+                        : chosen;
   }
   return s;
 }
@@ -50,7 +54,10 @@ struct PlotData {
 float drift_log10(void* data, int index) {
   const auto* d = static_cast<const PlotData*>(data);
   const sim::Drifts& x = (*d->history)[std::size_t(index)].drift;
-  const double v = d->which == 0 ? x.gamma_norm2 : d->which == 1 ? x.area : d->which == 2 ? x.energy : x.extra.value_or(0.0);
+  const double v = d->which == 0   ? x.gamma_norm2
+                   : d->which == 1 ? x.area
+                   : d->which == 2 ? x.energy
+                                   : x.extra.value_or(0.0);
   // Round-off level at the bottom; a non-finite drift pins the top.
   if (!std::isfinite(v)) return 0.0f;
   return float(std::log10(std::max(std::abs(v), 1e-17)));
@@ -81,7 +88,8 @@ PanelActions ControlPanel::draw(const LiveScene& scene, const render::Viewport& 
   const float font = ImGui::GetFontSize();
   const float width = std::min(24.0f * font, float(area.width) - 16.0f);
   ImGui::SetNextWindowPos(ImVec2(float(area.x) + 8.0f, float(area.y) + 8.0f), ImGuiCond_Always);
-  ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, std::max(80.0f, float(area.height) - 16.0f)));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f),
+                                      ImVec2(width, std::max(80.0f, float(area.height) - 16.0f)));
   ImGui::SetNextWindowBgAlpha(0.82f);
   const bool open = ImGui::Begin("epviz", nullptr,
                                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
@@ -90,7 +98,8 @@ PanelActions ControlPanel::draw(const LiveScene& scene, const render::Viewport& 
     ImGui::PushItemWidth(-9.0f * font);  // room for the labels on the right
     draw_playback(scene, out);
     auto header = [&](const char* title, const char* name, bool open_at_start) {
-      const bool shown = ImGui::CollapsingHeader(title, open_at_start ? ImGuiTreeNodeFlags_DefaultOpen : 0);
+      const bool shown =
+          ImGui::CollapsingHeader(title, open_at_start ? ImGuiTreeNodeFlags_DefaultOpen : 0);
       note_item(name);
       return shown;
     };
@@ -111,12 +120,14 @@ PanelActions ControlPanel::draw(const LiveScene& scene, const render::Viewport& 
 
 void ControlPanel::draw_playback(const LiveScene& scene, PanelActions& out) {
   const LiveSetup& s = scene.setup();
-  ImGui::TextColored(to_imgui(kTheme.title), "%s",
-                     s.scene.title.empty() ? scene::case_title(s.run.case_id).c_str() : s.scene.title.c_str());
+  ImGui::TextColored(
+      to_imgui(kTheme.title), "%s",
+      s.scene.title.empty() ? scene::case_title(s.run.case_id).c_str() : s.scene.title.c_str());
   ImGui::Text("t = %.3f   %s, %s", scene.time(), std::string(sim::name(s.run.method)).c_str(),
               scene.accuracy_note().c_str());
   const float button_w = 5.5f * ImGui::GetFontSize();
-  if (ImGui::Button(scene.playing() ? "Pause" : "Play", ImVec2(button_w, 0))) out.toggle_play = true;
+  if (ImGui::Button(scene.playing() ? "Pause" : "Play", ImVec2(button_w, 0)))
+    out.toggle_play = true;
   note_item("play");
   ImGui::SameLine();
   if (ImGui::Button("Step", ImVec2(button_w, 0))) out.step = true;
@@ -153,7 +164,8 @@ void ControlPanel::draw_playback(const LiveScene& scene, PanelActions& out) {
 void ControlPanel::draw_case_and_body(const LiveScene& scene, PanelActions& out) {
   const LiveSetup& s = scene.setup();
   const physics::Case current = s.run.case_id;
-  const std::string preview = current == physics::Case::custom ? "custom body" : physics::case_name(current);
+  const std::string preview =
+      current == physics::Case::custom ? "custom body" : physics::case_name(current);
   if (ImGui::BeginCombo("case", preview.c_str())) {
     for (const auto& p : physics::case_presets()) {
       if (ImGui::Selectable(p.name.c_str(), p.id == current)) out.load_case = p.id;
@@ -189,17 +201,18 @@ void ControlPanel::draw_case_and_body(const LiveScene& scene, PanelActions& out)
   note_item("I2");
   if (drag_double("I3", &I[2], 0.01, 0.01, 100.0)) edited(Edited::inertia_3);
   note_item("I3");
-  if (ImGui::DragScalarN("centre of mass", ImGuiDataType_Double, e.run.body.com.data(), 3, 0.01f, nullptr, nullptr,
-                         "%.4g"))
+  if (ImGui::DragScalarN("centre of mass", ImGuiDataType_Double, e.run.body.com.data(), 3, 0.01f,
+                         nullptr, nullptr, "%.4g"))
     edited(Edited::com);
-  if (ImGui::InputDouble("weight P", &e.run.body.weight, 0.1, 1.0, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue))
+  if (ImGui::InputDouble("weight P", &e.run.body.weight, 0.1, 1.0, "%.4g",
+                         ImGuiInputTextFlags_EnterReturnsTrue))
     edited(Edited::weight);
   note_item("weight");
-  if (ImGui::DragScalarN("omega(0)", ImGuiDataType_Double, e.run.initial.omega.data(), 3, 0.01f, nullptr, nullptr,
-                         "%.4g"))
+  if (ImGui::DragScalarN("omega(0)", ImGuiDataType_Double, e.run.initial.omega.data(), 3, 0.01f,
+                         nullptr, nullptr, "%.4g"))
     edited(Edited::omega);
-  if (ImGui::DragScalarN("gamma(0)", ImGuiDataType_Double, e.run.initial.gamma.data(), 3, 0.01f, nullptr, nullptr,
-                         "%.4g")) {
+  if (ImGui::DragScalarN("gamma(0)", ImGuiDataType_Double, e.run.initial.gamma.data(), 3, 0.01f,
+                         nullptr, nullptr, "%.4g")) {
     // gamma is a unit vector: the edit sets its direction.
     const double n = e.run.initial.gamma.norm();
     if (n > 1e-9) e.run.initial.gamma /= n;
@@ -249,7 +262,8 @@ void ControlPanel::draw_integrator(const LiveScene& scene, PanelActions& out) {
   } else if (log_slider("step", &e.run.step, 1e-4, 0.5, "%.2e")) {
     out.rerun = e;
   }
-  if (s.run.formulation == sim::Formulation::riccati && ImGui::Checkbox("chart switch", &e.run.chart_switch))
+  if (s.run.formulation == sim::Formulation::riccati &&
+      ImGui::Checkbox("chart switch", &e.run.chart_switch))
     out.rerun = e;
 }
 
@@ -301,8 +315,8 @@ void ControlPanel::draw_drift(const LiveScene& scene) {
     std::snprintf(overlay, sizeof overlay, "%.1e (max %.1e)", v, m);
     PlotData data{&history, i};
     ImGui::PushStyleColor(ImGuiCol_PlotLines, to_imgui(kTheme.drift_colour(m)));
-    ImGui::PlotLines(i < 3 ? names[i] : extra_name.c_str(), drift_log10, &data, int(history.size()), 0, overlay,
-                     -17.0f, 0.0f, ImVec2(0, 2.4f * ImGui::GetFontSize()));
+    ImGui::PlotLines(i < 3 ? names[i] : extra_name.c_str(), drift_log10, &data, int(history.size()),
+                     0, overlay, -17.0f, 0.0f, ImVec2(0, 2.4f * ImGui::GetFontSize()));
     ImGui::PopStyleColor();
   }
 }
@@ -312,7 +326,8 @@ void ControlPanel::draw_save() {
   std::snprintf(name, sizeof name, "%s", save_name_.c_str());
   if (ImGui::InputText("file name", name, sizeof name)) {
     std::string n = name;
-    n.erase(std::remove_if(n.begin(), n.end(), [](char c) { return c == '/' || c == '\\'; }), n.end());
+    n.erase(std::remove_if(n.begin(), n.end(), [](char c) { return c == '/' || c == '\\'; }),
+            n.end());
     if (!n.empty()) save_name_ = n;
   }
   note_item("file_name");

@@ -17,8 +17,8 @@ struct PanelActions {
   bool step = false;
   bool restart = false;
   std::optional<physics::Case> load_case;  // the case combo: that preset's setup
-  std::optional<LiveSetup> rerun;           // edits that need a new run from t = 0
-  std::optional<LiveSetup> view;            // edits of layers, camera, speed, trail: no new run
+  std::optional<LiveSetup> rerun;          // edits that need a new run from t = 0
+  std::optional<LiveSetup> view;           // edits of layers, camera, speed, trail: no new run
   bool save_frame = false;
   bool save_job = false;
 };

@@ -14,7 +14,8 @@ job::JobDocument job_document(const LiveSetup& setup, const std::string& name, d
   const std::string from = "the live setup";
   job::JobDocument d;
   auto& sim = d.simulation;
-  if (run.case_id != physics::Case::custom) sim.case_name.set(physics::case_name(run.case_id), from);
+  if (run.case_id != physics::Case::custom)
+    sim.case_name.set(physics::case_name(run.case_id), from);
   sim.inertia.set(vec(run.body.inertia), from);
   sim.com.set(vec(run.body.com), from);
   sim.weight.set(run.body.weight, from);

@@ -19,7 +19,8 @@ constexpr double kMaxFrameSeconds = 0.1;
 constexpr int kSettleFrames = 3;
 
 bool inside(const render::Viewport& v, float x, float y) {
-  return x >= float(v.x) && y >= float(v.y) && x < float(v.x + v.width) && y < float(v.y + v.height);
+  return x >= float(v.x) && y >= float(v.y) && x < float(v.x + v.width) &&
+         y < float(v.y + v.height);
 }
 
 }  // namespace
@@ -49,13 +50,15 @@ void LiveSession::resize(int width, int height) {
 void LiveSession::input(const render::InputEvent& event) { gui_input_.push(event); }
 
 bool LiveSession::wants_frame() const {
-  return painter_ && (settle_frames_ > 0 || gui_input_.pending() || scene_.playing() || save_frame_pending_);
+  return painter_ &&
+         (settle_frames_ > 0 || gui_input_.pending() || scene_.playing() || save_frame_pending_);
 }
 
 double LiveSession::wall_seconds_since_last_frame() {
   if (options_.fixed_clock) return kFixedFrameSeconds;
   const auto now = std::chrono::steady_clock::now();
-  const double dt = last_frame_ ? std::chrono::duration<double>(now - *last_frame_).count() : kFixedFrameSeconds;
+  const double dt =
+      last_frame_ ? std::chrono::duration<double>(now - *last_frame_).count() : kFixedFrameSeconds;
   last_frame_ = now;
   return std::clamp(dt, 1e-4, kMaxFrameSeconds);
 }
@@ -98,14 +101,14 @@ void LiveSession::observe(const render::InputEvent& e) {
     case Kind::focus:
       if (!e.down) drag_.reset();
       break;
-    case Kind::text:
-      break;
+    case Kind::text: break;
   }
 }
 
 const render::RgbaImage& LiveSession::render() {
   if (!painter_) resize(1280, 720);
-  if (save_frame_pending_) save_frame();  // before the picture with the panels: the painter reuses its image
+  if (save_frame_pending_)
+    save_frame();  // before the picture with the panels: the painter reuses its image
 
   const double dt = wall_seconds_since_last_frame();
   render::ImGuiOverlay& gui = painter_->gui();
@@ -118,21 +121,25 @@ const render::RgbaImage& LiveSession::render() {
   const int panel_px = panel_.occupied_width();
   const int reserved = panel_px > 0 && width_ - panel_px >= width_ / 2 ? panel_px : 0;
   painter_->set_reserved_left(reserved);
-  const paint::Layout layout = paint::layout_for(frame.layers, frame.overlay, width_, height_, reserved);
-  view_3d_ = layout.view_3d ? *layout.view_3d : render::Viewport{reserved, 0, width_ - reserved, height_};
+  const paint::Layout layout =
+      paint::layout_for(frame.layers, frame.overlay, width_, height_, reserved);
+  view_3d_ =
+      layout.view_3d ? *layout.view_3d : render::Viewport{reserved, 0, width_ - reserved, height_};
 
   PanelActions actions;
-  const render::RgbaImage& image =
-      painter_->paint(frame, [&] { actions = panel_.draw(scene_, render::Viewport{0, 0, width_, height_}); });
-  if (panel_.occupied_width() != panel_px) settle_frames_ = kSettleFrames;  // lay the scene out again
+  const render::RgbaImage& image = painter_->paint(frame, [&] {
+    actions = panel_.draw(scene_, render::Viewport{0, 0, width_, height_});
+  });
+  if (panel_.occupied_width() != panel_px)
+    settle_frames_ = kSettleFrames;  // lay the scene out again
   if (settle_frames_ > 0) --settle_frames_;
   apply(actions);
   return image;
 }
 
 void LiveSession::apply(const PanelActions& a) {
-  const bool any = a.toggle_play || a.step || a.restart || a.load_case || a.rerun || a.view || a.save_frame ||
-                   a.save_job;
+  const bool any = a.toggle_play || a.step || a.restart || a.load_case || a.rerun || a.view ||
+                   a.save_frame || a.save_job;
   if (!any) return;
   settle_frames_ = kSettleFrames;
   if (a.toggle_play) scene_.set_playing(!scene_.playing());
@@ -169,7 +176,8 @@ void LiveSession::deliver(serve::Download d) {
     const auto path = options_.save_dir / d.name;
     try {
       std::filesystem::create_directories(options_.save_dir);
-      io::write_file_atomically(path, std::span(reinterpret_cast<const std::byte*>(d.bytes.data()), d.bytes.size()));
+      io::write_file_atomically(
+          path, std::span(reinterpret_cast<const std::byte*>(d.bytes.data()), d.bytes.size()));
       note = "saved " + path.string();
     } catch (const std::exception& e) {
       note = std::string("could not save: ") + e.what();
@@ -192,7 +200,8 @@ void LiveSession::save_frame() {
 
 void LiveSession::save_job() {
   const std::string text = render_job_json(scene_.setup(), panel_.save_name());
-  deliver({panel_.save_name() + ".json", "application/json", std::vector<std::uint8_t>(text.begin(), text.end())});
+  deliver({panel_.save_name() + ".json", "application/json",
+           std::vector<std::uint8_t>(text.begin(), text.end())});
 }
 
 std::vector<serve::Download> LiveSession::take_downloads() { return std::exchange(downloads_, {}); }

@@ -53,7 +53,8 @@ class LiveSession : public serve::Session {
   bool dragging() const { return drag_.has_value(); }
 
  private:
-  void observe(const render::InputEvent& e);  // the scene's own use of input: orbit, zoom, shortcuts
+  void observe(
+      const render::InputEvent& e);  // the scene's own use of input: orbit, zoom, shortcuts
   void apply(const PanelActions& a);
   void rerun(const LiveSetup& s);
   void save_frame();
@@ -70,7 +71,7 @@ class LiveSession : public serve::Session {
   int width_ = 0, height_ = 0;
   render::Viewport view_3d_;
   std::optional<std::pair<float, float>> drag_;  // last pointer position of an orbit drag
-  int settle_frames_ = 1;      // frames still to draw after a change (ImGui needs one or two to settle)
+  int settle_frames_ = 1;  // frames still to draw after a change (ImGui needs one or two to settle)
   bool save_frame_pending_ = false;
   std::vector<serve::Download> downloads_;
   std::vector<std::string> notices_;

@@ -6,7 +6,8 @@ LiveSetup preset_setup(physics::Case c) {
   scene::SceneSettings scene;
   scene.trail_length = 20.0;
   scene.duration = 10.0;
-  return setup_from_job(sim::preset_run(c, sim::Method::dop853, sim::Formulation::direct, 40.0, 1), scene);
+  return setup_from_job(sim::preset_run(c, sim::Method::dop853, sim::Formulation::direct, 40.0, 1),
+                        scene);
 }
 
 LiveSetup setup_from_job(const sim::RunSpec& run, const scene::SceneSettings& scene) {

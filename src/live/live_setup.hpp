@@ -11,8 +11,8 @@ namespace epviz::live {
 struct LiveSetup {
   sim::RunSpec run;
   scene::SceneSettings scene;
-  double speed = 4.0;         // simulation time units per second of wall-clock time
-  bool stay_in_case = true;   // edits keep the case's defining conditions
+  double speed = 4.0;        // simulation time units per second of wall-clock time
+  bool stay_in_case = true;  // edits keep the case's defining conditions
 };
 
 // Case `c`'s preset body and state with the settings of its render job in

@@ -51,7 +51,7 @@ struct Suzuki5 {
 };
 
 template <class Sys, class Scheme>
-  requires SplittableSystem<Sys>
+requires SplittableSystem<Sys>
 class SymmetricComposition {
  public:
   using System = Sys;

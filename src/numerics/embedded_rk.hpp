@@ -276,8 +276,8 @@ class EmbeddedRk {
   // Stages I... from base point (t, x) with step h.
   template <std::size_t... I>
   [[gnu::always_inline]] inline void stages_from([[maybe_unused]] double t, const State& x,
-                                                 [[maybe_unused]] double h, Stages& k,
-                                                 State& tmp, std::index_sequence<I...>) const {
+                                                 [[maybe_unused]] double h, Stages& k, State& tmp,
+                                                 std::index_sequence<I...>) const {
     (stage<I>(t, x, h, k, tmp), ...);
   }
   // Stages 1 .. S-1 and x_new (into xnew_) from (t, x) with k_[0] set; leaves
@@ -293,8 +293,8 @@ class EmbeddedRk {
     using Arr = Eigen::Array<double, D, 1>;
     Arr inv_sk;
     for (int i = 0; i < D; ++i)
-      inv_sk[i] = 1.0 / (opts_.atol + opts_.rtol * std::max(std::abs(x_.coeff(i)),
-                                                             std::abs(xnew_.coeff(i))));
+      inv_sk[i] = 1.0 / (opts_.atol +
+                         opts_.rtol * std::max(std::abs(x_.coeff(i)), std::abs(xnew_.coeff(i))));
     constexpr double n = double(D);
     if constexpr (Tableau::two_estimators) {
       // 3rd-order estimator as b-sum minus the (sparse) embedded weights bhh.
@@ -405,7 +405,7 @@ void EmbeddedRk<Sys, Tableau>::step() {
       fail(FailureKind::step_budget,
            "more than " + std::to_string(opts_.max_steps) + " steps (the max_steps budget)");
     if (!(h >= 16.0 * std::numeric_limits<double>::epsilon() * std::abs(t_)) || h <= 0.0)
-      [[unlikely]]
+        [[unlikely]]
       fail(FailureKind::step_underflow, fmt("step size %.3g below the round-off limit", h));
     ++attempts_;
 
@@ -461,8 +461,9 @@ void EmbeddedRk<Sys, Tableau>::step() {
       if (nonfinite_trials > 0)
         fail(FailureKind::non_finite,
              fmt("trial states not finite (NaN or Inf) even with step size %.3g", h));
-      fail(FailureKind::rejections, std::to_string(consecutive_rejects_) +
-                                        fmt(" consecutive rejected steps (last step size %.3g)", h));
+      fail(FailureKind::rejections,
+           std::to_string(consecutive_rejects_) +
+               fmt(" consecutive rejected steps (last step size %.3g)", h));
     }
   }
 }

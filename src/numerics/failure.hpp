@@ -25,8 +25,8 @@ enum class FailureKind {
 
 // Every kind, for tests and listings (keep in step with the enum).
 inline constexpr std::array<FailureKind, 7> kFailureKinds{
-    FailureKind::non_finite,        FailureKind::step_underflow, FailureKind::step_budget,
-    FailureKind::rejections,        FailureKind::solver_divergence, FailureKind::lost_motion,
+    FailureKind::non_finite, FailureKind::step_underflow,    FailureKind::step_budget,
+    FailureKind::rejections, FailureKind::solver_divergence, FailureKind::lost_motion,
     FailureKind::chart_pole,
 };
 

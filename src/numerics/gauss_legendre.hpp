@@ -120,7 +120,8 @@ class GaussLegendre {
       return v;
     };
     for (int i = 0; i < Stages; ++i)
-      for (int j = 0; j < Stages; ++j) w_[i][j] = basis(j + 1, 1.0 + T::c[i] * r) - basis(j + 1, 1.0);
+      for (int j = 0; j < Stages; ++j)
+        w_[i][j] = basis(j + 1, 1.0 + T::c[i] * r) - basis(j + 1, 1.0);
     w_ratio_ = r;
   }
 
@@ -206,8 +207,8 @@ void GaussLegendre<Sys, Stages>::step(State& x, double t, double h) {
     // constant is well below 1: with this step it does not.
     char fact[128];
     std::snprintf(fact, sizeof fact,
-                  "implicit stage equations did not converge in %d iterations (step size %.3g)",
-                  it, h);
+                  "implicit stage equations did not converge in %d iterations (step size %.3g)", it,
+                  h);
     detail::throw_failure(t, name, FailureKind::solver_divergence, fact);
   }
 

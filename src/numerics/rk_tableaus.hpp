@@ -23,7 +23,7 @@ namespace epviz::numerics {
 // output of order 4.
 struct Dopri5Tableau {
   static constexpr const char* name = "dopri5";
-  static constexpr int order = 5;          // order of the propagated solution
+  static constexpr int order = 5;  // order of the propagated solution
   static constexpr int dense_order = 4;
   static constexpr int stages = 6;
   static constexpr int extra_stages = 0;
@@ -89,7 +89,7 @@ struct Dop853Tableau {
   static constexpr int total = stages + 1 + extra_stages;  // 16
   static constexpr bool two_estimators = true;
   static constexpr double error_exponent = 1.0 / 8.0;
-  static constexpr double default_beta = 0.0;  // Hairer's dop853 default: no PI term
+  static constexpr double default_beta = 0.0;   // Hairer's dop853 default: no PI term
   static constexpr double beta_coupling = 0.2;  // exponent 1/8 - 0.2 beta (as in DOP853)
   static constexpr double default_fac_min = 1.0 / 3.0;
   static constexpr double default_fac_max = 6.0;

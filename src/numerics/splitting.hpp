@@ -15,7 +15,7 @@
 namespace epviz::numerics {
 
 template <class Sys>
-  requires SplittableSystem<Sys>
+requires SplittableSystem<Sys>
 class StrangSplitting {
  public:
   using System = Sys;

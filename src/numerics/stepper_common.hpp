@@ -15,8 +15,7 @@ namespace epviz::numerics {
 namespace detail {
 
 // Throws IntegrationError(Failure{t, method, kind, detail}).
-[[noreturn]] void throw_failure(double t, const char* method, FailureKind kind,
-                                std::string detail);
+[[noreturn]] void throw_failure(double t, const char* method, FailureKind kind, std::string detail);
 
 // The failure for a non-finite state (NaN or Inf) found at time t.
 [[noreturn]] void throw_non_finite(double t, const char* method);

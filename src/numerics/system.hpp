@@ -41,9 +41,9 @@ struct Issue {
 
 // Work counters every stepper keeps.
 struct Stats {
-  long steps = 0;           // accepted steps
-  long rejected_steps = 0;  // adaptive methods only
-  long rhs_evals = 0;       // right-hand side evaluations
+  long steps = 0;              // accepted steps
+  long rejected_steps = 0;     // adaptive methods only
+  long rhs_evals = 0;          // right-hand side evaluations
   long solver_iterations = 0;  // implicit methods: total fixed-point/Newton iterations
   long flow_evals = 0;         // splitting methods: exact sub-flow evaluations
 };
@@ -59,7 +59,9 @@ namespace detail {
 
 template <class Sys>
 bool regularize(Sys& sys, typename Sys::State& x) {
-  if constexpr (requires { { sys.regularize(x) } -> std::convertible_to<bool>; })
+  if constexpr (requires {
+                  { sys.regularize(x) } -> std::convertible_to<bool>;
+                })
     return sys.regularize(x);
   else
     return false;

@@ -24,7 +24,9 @@ const glm::vec4 kGrid{0.0f, 0.0f, 0.0f, 0.10f};
 const glm::vec4 kGridMinor{0.0f, 0.0f, 0.0f, 0.045f};
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-float estimate_width(const std::string& s, float font_px) { return float(s.size()) * font_px * 0.58f; }
+float estimate_width(const std::string& s, float font_px) {
+  return float(s.size()) * font_px * 0.58f;
+}
 
 // A value on an axis in plotted units (log10 on a log axis); NaN when it cannot be shown.
 double axis_value(double v, bool log_axis) {
@@ -79,12 +81,14 @@ std::vector<Tick> axis_ticks(double lo, double hi, bool log_axis, int max_labels
   if (log_axis) {
     const int first = int(std::ceil(lo - 1e-9)), last = int(std::floor(hi + 1e-9));
     const int decades = last - first;
-    const int step = std::max(1, int(std::ceil(double(decades) / double(std::max(1, max_labels - 1)))));
+    const int step =
+        std::max(1, int(std::ceil(double(decades) / double(std::max(1, max_labels - 1)))));
     for (int e = first; e <= last; ++e) {
       const bool labelled = (e - first) % step == 0;
       ticks.push_back({double(e), labelled ? decade_label(e) : std::string(), true});
       if (step == 1 && decades <= 8 && e < last)
-        for (int m = 2; m <= 9; ++m) ticks.push_back({double(e) + std::log10(double(m)), {}, false});
+        for (int m = 2; m <= 9; ++m)
+          ticks.push_back({double(e) + std::log10(double(m)), {}, false});
     }
     return ticks;
   }
@@ -135,7 +139,8 @@ void add_shape(DrawList& list, glm::vec2 c, MarkerShape shape, float r, const gl
   }
   std::vector<render::ColouredVertex> tris;
   for (std::size_t i = 1; i + 1 < poly.size(); ++i)
-    for (const glm::vec2& p : {poly[0], poly[i], poly[i + 1]}) tris.push_back({glm::vec3(p, 0.0f), fill});
+    for (const glm::vec2& p : {poly[0], poly[i], poly[i + 1]})
+      tris.push_back({glm::vec3(p, 0.0f), fill});
   list.add_triangles(tris);
   std::vector<glm::vec3> ring;
   for (const auto& p : poly) ring.emplace_back(p, 0.0f);
@@ -196,8 +201,9 @@ glm::vec4 series_colour(std::size_t index) {
 }
 
 MarkerShape series_marker(std::size_t index) {
-  static const std::array<MarkerShape, 5> shapes{MarkerShape::circle, MarkerShape::square, MarkerShape::triangle_up,
-                                                 MarkerShape::diamond, MarkerShape::triangle_down};
+  static const std::array<MarkerShape, 5> shapes{MarkerShape::circle, MarkerShape::square,
+                                                 MarkerShape::triangle_up, MarkerShape::diamond,
+                                                 MarkerShape::triangle_down};
   // Shapes cycle on a different period from colours, so pairs stay distinct.
   return shapes[index % shapes.size()];
 }
@@ -218,7 +224,8 @@ glm::vec2 ChartLayout::to_pixel(double x, double y) const {
   if (std::isnan(ax) || std::isnan(ay)) return {NAN, NAN};
   const double fx = (ax - range.x_min) / (range.x_max - range.x_min);
   const double fy = (ay - range.y_min) / (range.y_max - range.y_min);
-  return {float(plot_area.x + fx * plot_area.width), float(plot_area.y + (1.0 - fy) * plot_area.height)};
+  return {float(plot_area.x + fx * plot_area.width),
+          float(plot_area.y + (1.0 - fy) * plot_area.height)};
 }
 
 ChartLayout chart_layout(const ChartSpec& spec, int width, int height, float font_px) {
@@ -240,17 +247,20 @@ ChartLayout chart_layout(const ChartSpec& spec, int width, int height, float fon
   // Margins: y tick labels on the left, x tick labels and the x label below,
   // title and the y label (written horizontally above the axis) on top.
   float widest_y = 0.0f;
-  for (const auto& t : axis_ticks(sy.lo, sy.hi, spec.log_y, 8)) widest_y = std::max(widest_y, estimate_width(t.label, font_px));
+  for (const auto& t : axis_ticks(sy.lo, sy.hi, spec.log_y, 8))
+    widest_y = std::max(widest_y, estimate_width(t.label, font_px));
   const float line = font_px * 1.35f;
   const int left = int(std::ceil(widest_y + font_px * 1.6f));
   const int top = int(std::ceil(font_px * 0.8f + (spec.title.empty() ? 0.0f : line * 1.3f) +
                                 (spec.y_label.empty() ? 0.0f : line)));
-  const int bottom = int(std::ceil(font_px * 0.9f + line + (spec.x_label.empty() ? 0.0f : line * 1.1f)));
+  const int bottom =
+      int(std::ceil(font_px * 0.9f + line + (spec.x_label.empty() ? 0.0f : line * 1.1f)));
   int right = int(std::ceil(font_px * 1.5f));
 
   // Legend: one row per series, a line sample with its marker, then the name.
   float widest_name = 0.0f;
-  for (const auto& s : spec.series) widest_name = std::max(widest_name, estimate_width(s.name, font_px));
+  for (const auto& s : spec.series)
+    widest_name = std::max(widest_name, estimate_width(s.name, font_px));
   const int legend_w = int(std::ceil(font_px * 3.6f + widest_name + font_px * 0.8f));
   const int legend_h = int(std::ceil(line * float(spec.series.size()) + font_px * 0.8f));
   l.plot_area = {left, top, width - left - right, height - top - bottom};
@@ -279,7 +289,8 @@ ChartLayout chart_layout(const ChartSpec& spec, int width, int height, float fon
   return l;
 }
 
-render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec, const ChartOptions& requested) {
+render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec,
+                              const ChartOptions& requested) {
   context.make_current();
   // Keep the requested font size, but grow the picture downwards when a long
   // legend (many series) would not fit beside the plot: nothing is cut off.
@@ -300,8 +311,11 @@ render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec,
 
   renderer.begin_frame(kPaper);
   DrawList axes;
-  const float x0 = float(a.x), x1 = float(a.x + a.width), y0 = float(a.y), y1 = float(a.y + a.height);
-  auto px_x = [&](double v) { return float(a.x + (v - l.range.x_min) / (l.range.x_max - l.range.x_min) * a.width); };
+  const float x0 = float(a.x), x1 = float(a.x + a.width), y0 = float(a.y),
+              y1 = float(a.y + a.height);
+  auto px_x = [&](double v) {
+    return float(a.x + (v - l.range.x_min) / (l.range.x_max - l.range.x_min) * a.width);
+  };
   auto px_y = [&](double v) {
     return float(a.y + (1.0 - (v - l.range.y_min) / (l.range.y_max - l.range.y_min)) * a.height);
   };
@@ -323,15 +337,19 @@ render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec,
     const float len = t.major ? tick : tick * 0.55f;
     axes.add_line({x0, y, 0}, {x0 + len, y, 0}, kFrame, 1.0f);
     axes.add_line({x1, y, 0}, {x1 - len, y, 0}, kFrame, 1.0f);
-    if (!t.label.empty()) axes.add_text(label({x0 - font_px * 0.45f, y}, t.label, TextAnchor::right));
+    if (!t.label.empty())
+      axes.add_text(label({x0 - font_px * 0.45f, y}, t.label, TextAnchor::right));
   }
   const std::vector<glm::vec3> frame{{x0, y0, 0}, {x1, y0, 0}, {x1, y1, 0}, {x0, y1, 0}};
   axes.add_polyline(frame, kFrame, 1.25f, true);
   if (!spec.title.empty())
-    axes.add_text(label({float(options.width) * 0.5f, font_px * 0.6f}, spec.title, TextAnchor::top));
-  if (!spec.y_label.empty()) axes.add_text(label({x0, y0 - font_px * 0.5f}, spec.y_label, TextAnchor::bottom_left));
+    axes.add_text(
+        label({float(options.width) * 0.5f, font_px * 0.6f}, spec.title, TextAnchor::top));
+  if (!spec.y_label.empty())
+    axes.add_text(label({x0, y0 - font_px * 0.5f}, spec.y_label, TextAnchor::bottom_left));
   if (!spec.x_label.empty())
-    axes.add_text(label({(x0 + x1) * 0.5f, y1 + font_px * 0.45f + line}, spec.x_label, TextAnchor::top));
+    axes.add_text(
+        label({(x0 + x1) * 0.5f, y1 + font_px * 0.45f + line}, spec.x_label, TextAnchor::top));
   renderer.draw_2d(axes);
 
   // Data, clipped to the plot area: lines first, then all markers on top.
@@ -360,12 +378,14 @@ render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec,
       const std::size_t every = s.points.size() / 12 + 1;
       for (std::size_t k = every / 2; k < s.points.size(); k += every) {
         const glm::vec2 q = l.to_pixel(s.points[k].x, s.points[k].y);
-        if (!std::isnan(q.x) && !std::isnan(q.y)) add_shape(markers, q, series_marker(i), marker_r, colour);
+        if (!std::isnan(q.x) && !std::isnan(q.y))
+          add_shape(markers, q, series_marker(i), marker_r, colour);
       }
     }
   }
   renderer.draw_2d(lines, &a);
-  const Viewport marker_clip = a.inset(-int(marker_r) - 2, -int(marker_r) - 2, -int(marker_r) - 2, -int(marker_r) - 2);
+  const Viewport marker_clip =
+      a.inset(-int(marker_r) - 2, -int(marker_r) - 2, -int(marker_r) - 2, -int(marker_r) - 2);
   renderer.draw_2d(markers, &marker_clip);
 
   if (!spec.series.empty()) {
@@ -390,20 +410,24 @@ render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec,
   return renderer.finish_frame();
 }
 
-render::RgbaImage paint_table(render::GlContext& context, const TableSpec& spec, const ChartOptions& options) {
+render::RgbaImage paint_table(render::GlContext& context, const TableSpec& spec,
+                              const ChartOptions& options) {
   context.make_current();
   render::Renderer renderer(context, renderer_options(options));
   const float font_px = chart_font_px(options);
   const float line = font_px * 1.5f;
   std::size_t columns = spec.header.size();
   for (const auto& r : spec.rows) columns = std::max(columns, r.size());
-  auto cell = [](const std::vector<std::string>& row, std::size_t c) { return c < row.size() ? row[c] : std::string(); };
+  auto cell = [](const std::vector<std::string>& row, std::size_t c) {
+    return c < row.size() ? row[c] : std::string();
+  };
 
   // Column widths from the longest cell, scaled down together if the table is too wide.
   std::vector<float> widths(columns, 0.0f);
   for (std::size_t c = 0; c < columns; ++c) {
     widths[c] = estimate_width(cell(spec.header, c), font_px);
-    for (const auto& r : spec.rows) widths[c] = std::max(widths[c], estimate_width(cell(r, c), font_px));
+    for (const auto& r : spec.rows)
+      widths[c] = std::max(widths[c], estimate_width(cell(r, c), font_px));
     widths[c] += font_px * 1.2f;
   }
   const float margin = font_px * 1.5f;
@@ -427,7 +451,8 @@ render::RgbaImage paint_table(render::GlContext& context, const TableSpec& spec,
   auto write_row = [&](const std::vector<std::string>& row, float top, const glm::vec4& colour) {
     float x = left;
     for (std::size_t c = 0; c < columns; ++c) {
-      list.add_text(label({x + font_px * 0.4f, top + line * 0.5f}, cell(row, c), TextAnchor::left, colour));
+      list.add_text(
+          label({x + font_px * 0.4f, top + line * 0.5f}, cell(row, c), TextAnchor::left, colour));
       x += widths[c];
     }
   };
@@ -440,7 +465,8 @@ render::RgbaImage paint_table(render::GlContext& context, const TableSpec& spec,
   std::size_t shown = 0;
   for (const auto& r : spec.rows) {
     if (y + line > bottom_limit - line) break;
-    if (shown % 2 == 1) list.add_rect({left, y}, {left + total, y + line}, {0.0f, 0.0f, 0.0f, 0.04f});
+    if (shown % 2 == 1)
+      list.add_rect({left, y}, {left + total, y + line}, {0.0f, 0.0f, 0.0f, 0.04f});
     write_row(r, y, kInk);
     y += line;
     ++shown;
@@ -449,14 +475,17 @@ render::RgbaImage paint_table(render::GlContext& context, const TableSpec& spec,
   if (shown < spec.rows.size()) {
     char more[64];
     std::snprintf(more, sizeof more, "(%zu more rows not shown)", spec.rows.size() - shown);
-    list.add_text(label({left, y + font_px * 0.4f}, more, TextAnchor::top_left, {0.4f, 0.4f, 0.4f, 1.0f}));
+    list.add_text(
+        label({left, y + font_px * 0.4f}, more, TextAnchor::top_left, {0.4f, 0.4f, 0.4f, 1.0f}));
   }
   renderer.draw_2d(list);
   return renderer.finish_frame();
 }
 
-render::RgbaImage paint_figure(render::GlContext& context, const Figure& figure, const ChartOptions& options) {
-  if (const auto* chart = std::get_if<ChartSpec>(&figure.content)) return paint_chart(context, *chart, options);
+render::RgbaImage paint_figure(render::GlContext& context, const Figure& figure,
+                               const ChartOptions& options) {
+  if (const auto* chart = std::get_if<ChartSpec>(&figure.content))
+    return paint_chart(context, *chart, options);
   const auto& table = std::get<TableSpec>(figure.content);
   ChartOptions o = options;
   // Tall enough for every row: the title, the header, the rules and the

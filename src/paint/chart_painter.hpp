@@ -49,8 +49,8 @@ struct ChartLayout {
   render::DataRange range;
   bool log_x = false;
   bool log_y = false;
-  bool legend_outside = false;        // the legend sits right of the plot
-  render::Viewport legend;            // the legend's box in image pixels
+  bool legend_outside = false;  // the legend sits right of the plot
+  render::Viewport legend;      // the legend's box in image pixels
   // Image pixel of a data point (given unlogged); NaN for points a log axis cannot show.
   glm::vec2 to_pixel(double x, double y) const;
 };
@@ -63,9 +63,12 @@ float chart_font_px(const ChartOptions& options);
 std::string decade_label(int exponent);
 
 // Renders a chart or table figure; `context` must be current (any size).
-render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec, const ChartOptions& options = {});
-render::RgbaImage paint_table(render::GlContext& context, const TableSpec& spec, const ChartOptions& options = {});
+render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec,
+                              const ChartOptions& options = {});
+render::RgbaImage paint_table(render::GlContext& context, const TableSpec& spec,
+                              const ChartOptions& options = {});
 // Either of the two; a table is drawn taller than options.height when its rows need it.
-render::RgbaImage paint_figure(render::GlContext& context, const Figure& figure, const ChartOptions& options = {});
+render::RgbaImage paint_figure(render::GlContext& context, const Figure& figure,
+                               const ChartOptions& options = {});
 
 }  // namespace epviz::paint

@@ -40,7 +40,9 @@ const render::ColourMap& time_map() {
 }
 // Newest points bright and opaque, old ones darker and fading out; the map's
 // top is cut where the theme's background would swallow it.
-glm::vec4 age_colour(float age, float top) { return time_map()((1.0f - age) * top, 0.25f + 0.75f * (1.0f - age)); }
+glm::vec4 age_colour(float age, float top) {
+  return time_map()((1.0f - age) * top, 0.25f + 0.75f * (1.0f - age));
+}
 
 render::Viewport to_viewport(const scene::Rect& r) { return {r.x, r.y, r.width, r.height}; }
 std::optional<render::Viewport> to_viewport(const std::optional<scene::Rect>& r) {
@@ -50,7 +52,7 @@ std::optional<render::Viewport> to_viewport(const std::optional<scene::Rect>& r)
 Layout layout_from(const scene::LayoutRequest& q) {
   const scene::FrameLayout f = scene::frame_layout(q);
   return {to_viewport(f.view_3d), to_viewport(f.panel_column), to_viewport(f.plot_area),
-          f.overlay_in_column, f.sphere_px_per_unit, f.plane_px_per_unit};
+          f.overlay_in_column,    f.sphere_px_per_unit,        f.plane_px_per_unit};
 }
 
 }  // namespace
@@ -63,8 +65,8 @@ Layout layout_for(const scene::Frame& f, int width, int height, int reserved_lef
   return layout_from(scene::layout_request(f, width, height, reserved_left));
 }
 
-Layout layout_for(const scene::Layers& layers, const scene::OverlayText& overlay, int width, int height,
-                  int reserved_left) {
+Layout layout_for(const scene::Layers& layers, const scene::OverlayText& overlay, int width,
+                  int height, int reserved_left) {
   scene::Frame f;
   f.layers = layers;
   f.overlay = overlay;
@@ -75,12 +77,13 @@ render::Camera camera_for(const scene::Frame& f, const render::Viewport& view) {
   // The unit sphere (and its pole labels) fits the narrower side of the view at
   // the frame's distance; a distance of 3.4 radii frames it with a small margin.
   const float aspect = view.aspect();
-  return render::Camera::orbit(glm::vec3(0.0f), scene::camera_distance_for(f.camera.distance, aspect),
-                               float(f.camera.azimuth_deg), float(f.camera.elevation_deg), scene::kFovDegrees,
-                               aspect);
+  return render::Camera::orbit(
+      glm::vec3(0.0f), scene::camera_distance_for(f.camera.distance, aspect),
+      float(f.camera.azimuth_deg), float(f.camera.elevation_deg), scene::kFovDegrees, aspect);
 }
 
-FramePainter::FramePainter(render::GlContext& context, int width, int height, PainterOptions options)
+FramePainter::FramePainter(render::GlContext& context, int width, int height,
+                           PainterOptions options)
     : context_(context), options_(options) {
   context_.make_current();
   render::RendererOptions ro;
@@ -114,14 +117,16 @@ void FramePainter::draw_body(DrawList& list, const scene::Frame& f, float px) {
   }
   const glm::mat4 rot = glm::mat4_cast(to_glm(f.body_rotation));
   const glm::vec3 com = to_glm(f.body.centre_of_mass);
-  list.add_mesh(*box_, rot * glm::translate(glm::mat4(1.0f), com), {to_glm(f.colours.body), 0.35f, 40.0f, 0.0f});
+  list.add_mesh(*box_, rot * glm::translate(glm::mat4(1.0f), com),
+                {to_glm(f.colours.body), 0.35f, 40.0f, 0.0f});
   const scene::Theme& ink = ink_for(f);
 
   // Box edges, slightly darker than the faces, so the orientation reads even
   // where two faces are lit alike.
   const glm::vec3 h = to_glm(f.body.half_extents);
   const float dark = ink.body_edge_factor;
-  const glm::vec4 edge{f.colours.body[0] * dark, f.colours.body[1] * dark, f.colours.body[2] * dark, 1.0f};
+  const glm::vec4 edge{f.colours.body[0] * dark, f.colours.body[1] * dark, f.colours.body[2] * dark,
+                       1.0f};
   auto corner = [&](int i) {
     const glm::vec3 c(i & 1 ? h.x : -h.x, i & 2 ? h.y : -h.y, i & 4 ? h.z : -h.z);
     return glm::vec3(rot * glm::vec4(com + c * 1.002f, 1.0f));
@@ -137,15 +142,19 @@ void FramePainter::draw_body(DrawList& list, const scene::Frame& f, float px) {
   for (int i = 0; i < 3; ++i) {
     glm::vec3 axis(0.0f);
     axis[i] = 1.0f;
-    const glm::mat4 model = rot * render::rotation_from_z_to(axis) * glm::scale(glm::mat4(1.0f), glm::vec3(length));
+    const glm::mat4 model =
+        rot * render::rotation_from_z_to(axis) * glm::scale(glm::mat4(1.0f), glm::vec3(length));
     list.add_mesh(arrow_, model, {to_glm(ink.axes[i]), 0.3f, 32.0f, 0.0f});
-    list.add_text({glm::vec3(rot * glm::vec4(axis * (length + 0.08f), 1.0f)), names[i], label_colour, TextAnchor::centre});
+    list.add_text({glm::vec3(rot * glm::vec4(axis * (length + 0.08f), 1.0f)), names[i],
+                   label_colour, TextAnchor::centre});
   }
   // The fixed point, and the centre of mass where it is not the fixed point.
-  list.add_marker({glm::vec3(0.0f), to_glm(ink.fixed_point_fill), to_glm(ink.fixed_point_edge), 4.0f * px, 1.2f * px});
+  list.add_marker({glm::vec3(0.0f), to_glm(ink.fixed_point_fill), to_glm(ink.fixed_point_edge),
+                   4.0f * px, 1.2f * px});
   if (glm::length(com) > 1e-4f) {
     const glm::vec3 c = glm::vec3(rot * glm::vec4(com, 1.0f));
-    list.add_marker({c, to_glm(ink.centre_of_mass_fill), to_glm(ink.centre_of_mass_edge), 4.0f * px, 1.2f * px});
+    list.add_marker({c, to_glm(ink.centre_of_mass_fill), to_glm(ink.centre_of_mass_edge), 4.0f * px,
+                     1.2f * px});
   }
 }
 
@@ -161,17 +170,19 @@ void FramePainter::draw_sphere(DrawList& list, const scene::Frame& f, float px) 
 
   std::vector<render::LineVertex> trail;
   trail.reserve(f.trail.size());
-  for (const auto& p : f.trail) trail.push_back({to_glm(p.p), age_colour(p.age, ink.trail_map_top)});
+  for (const auto& p : f.trail)
+    trail.push_back({to_glm(p.p), age_colour(p.age, ink.trail_map_top)});
   if (trail.size() >= 2) list.add_polyline(trail, 2.2f * px);
-  list.add_marker({to_glm(f.current), to_glm(f.colours.marker), to_glm(ink.marker_edge), 5.0f * px, 1.3f * px});
+  list.add_marker(
+      {to_glm(f.current), to_glm(f.colours.marker), to_glm(ink.marker_edge), 5.0f * px, 1.3f * px});
 
   const glm::vec4 text = to_glm(ink.pole_label);
   list.add_text({{0, 0, 1.1f}, "N", text, TextAnchor::bottom});
   list.add_text({{0, 0, -1.1f}, "S", text, TextAnchor::top});
 }
 
-void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& column, const render::Viewport& area,
-                              float px) {
+void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& column,
+                              const render::Viewport& area, float px) {
   const double e = f.plane_extent;
   const render::Panel2D plot(area, {-e, e, -e, e}, true);
   const scene::Theme& ink = ink_for(f);
@@ -186,7 +197,8 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
   style.min_tick_spacing_px = 34.0f * px;
   DrawList flat;
   plot.draw_axes(flat, style);
-  plot.draw_circle(flat, {0.0, 0.0}, 1.0, {style.text.r, style.text.g, style.text.b, 0.85f}, 1.3f * px);
+  plot.draw_circle(flat, {0.0, 0.0}, 1.0, {style.text.r, style.text.g, style.text.b, 0.85f},
+                   1.3f * px);
   plot.draw_text(flat, {0.0, -1.0}, {{}, "equator", style.text, TextAnchor::top, {0, 2 * px}});
 
   // The path, in runs that do not join across a pass through infinity.
@@ -218,8 +230,11 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
         any_exit = true;
         break;
       case scene::PlaneMark::Kind::through_infinity:
-        plot.draw_marker(flat, at, {{}, {0, 0, 0, 0}, to_glm(ink.infinity_mark), 6.0f * px, 2.0f * px});
-        plot.draw_text(flat, at, {{}, "inf", to_glm(ink.infinity_label), TextAnchor::centre, {0.0f, -11.0f * px}});
+        plot.draw_marker(flat, at,
+                         {{}, {0, 0, 0, 0}, to_glm(ink.infinity_mark), 6.0f * px, 2.0f * px});
+        plot.draw_text(
+            flat, at,
+            {{}, "inf", to_glm(ink.infinity_label), TextAnchor::centre, {0.0f, -11.0f * px}});
         any_infinity = true;
         break;
     }
@@ -228,17 +243,26 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
     plot.draw_marker(flat, {f.plane_current->x(), f.plane_current->y()},
                      {{}, to_glm(f.colours.marker), to_glm(ink.marker_edge), 4.5f * px, 1.2f * px});
 
-  plot.draw_text(flat, {0.0, e}, {{}, area.width >= 200 ? "Riccati plane (a, b)" : "(a, b) plane", style.text,
-                                   TextAnchor::bottom, {0, -6 * px}});
-  plot.draw_text(flat, {e, 0.0}, {{}, "a", style.text, TextAnchor::bottom_right, {-3 * px, -2 * px}});
+  plot.draw_text(flat, {0.0, e},
+                 {{},
+                  area.width >= 200 ? "Riccati plane (a, b)" : "(a, b) plane",
+                  style.text,
+                  TextAnchor::bottom,
+                  {0, -6 * px}});
+  plot.draw_text(flat, {e, 0.0},
+                 {{}, "a", style.text, TextAnchor::bottom_right, {-3 * px, -2 * px}});
   plot.draw_text(flat, {0.0, e}, {{}, "b", style.text, TextAnchor::top_left, {4 * px, 2 * px}});
   // A legend for the marks that appear, under the plot.
   std::string legend;
   if (any_exit) legend += "hollow: leaves, dot: re-enters";
-  if (any_infinity) legend += std::string(legend.empty() ? "" : "   ") + "inf: through the south pole";
+  if (any_infinity)
+    legend += std::string(legend.empty() ? "" : "   ") + "inf: through the south pole";
   if (!legend.empty() && column.width >= 360)
-    flat.add_text({{float(column.x + column.width / 2), float(column.y + column.height - 4 * px), 0}, legend,
-                   style.text, TextAnchor::bottom});
+    flat.add_text(
+        {{float(column.x + column.width / 2), float(column.y + column.height - 4 * px), 0},
+         legend,
+         style.text,
+         TextAnchor::bottom});
   renderer_->draw_2d(flat);
 }
 
@@ -248,7 +272,7 @@ void FramePainter::draw_info_window(const scene::Frame& f, const Layout& layout,
   const render::Viewport where = layout.overlay_in_column ? *layout.panel_column
                                  : layout.view_3d         ? *layout.view_3d
                                  : layout.panel_column    ? *layout.panel_column
-                                                          : render::Viewport{0, 0, width(), height()};
+                                                       : render::Viewport{0, 0, width(), height()};
   const scene::Theme& ink = ink_for(f);
   {
     // The window's size is computed from this frame's text: ImGui's auto-fit
@@ -268,27 +292,32 @@ void FramePainter::draw_info_window(const scene::Frame& f, const Layout& layout,
     // grows to the left instead of being cut at the image's edge. Over the 3D
     // view: at its top left corner, away from the panel.
     if (layout.overlay_in_column)
-      ImGui::SetNextWindowPos(ImVec2(float(where.x + where.width) - 6 * px, float(where.y) + 6 * px),
-                              ImGuiCond_Always, ImVec2(1.0f, 0.0f));
+      ImGui::SetNextWindowPos(
+          ImVec2(float(where.x + where.width) - 6 * px, float(where.y) + 6 * px), ImGuiCond_Always,
+          ImVec2(1.0f, 0.0f));
     else
-      ImGui::SetNextWindowPos(ImVec2(float(where.x) + 6 * px, float(where.y) + 6 * px), ImGuiCond_Always);
+      ImGui::SetNextWindowPos(ImVec2(float(where.x) + 6 * px, float(where.y) + 6 * px),
+                              ImGuiCond_Always);
     // More see-through where it floats over the 3D view (small pictures).
-    ImGui::SetNextWindowBgAlpha(layout.overlay_in_column || !layout.view_3d ? ink.overlay_alpha_in_column
-                                                                            : ink.overlay_alpha_floating);
+    ImGui::SetNextWindowBgAlpha(layout.overlay_in_column || !layout.view_3d
+                                    ? ink.overlay_alpha_in_column
+                                    : ink.overlay_alpha_floating);
     // The overlay's ImGui context has ImGui's dark colours; a light theme
     // lends its window ImGui's light ones.
     int pushed = 0;
     if (ink.light_gui) {
       ImGuiStyle light;
       ImGui::StyleColorsLight(&light);
-      for (ImGuiCol c : {ImGuiCol_WindowBg, ImGuiCol_Border, ImGuiCol_Text, ImGuiCol_TextDisabled, ImGuiCol_Separator}) {
+      for (ImGuiCol c : {ImGuiCol_WindowBg, ImGuiCol_Border, ImGuiCol_Text, ImGuiCol_TextDisabled,
+                         ImGuiCol_Separator}) {
         ImGui::PushStyleColor(c, light.Colors[c]);
         ++pushed;
       }
     }
     ImGui::Begin("overlay", nullptr,
-                 ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
-                     ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoScrollbar);
+                 ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoTitleBar |
+                     ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoScrollbar);
     ImGui::TextColored(to_imgui(ink.title), "%s", f.overlay.title.c_str());
     for (int i = 0; i < shown; ++i) ImGui::TextUnformatted(f.overlay.lines[std::size_t(i)].c_str());
     if (!f.overlay.drifts.empty()) {
@@ -306,10 +335,12 @@ void FramePainter::draw_info_window(const scene::Frame& f, const Layout& layout,
   }
 }
 
-const render::RgbaImage& FramePainter::paint(const scene::Frame& f, const std::function<void()>& extra_ui) {
+const render::RgbaImage& FramePainter::paint(const scene::Frame& f,
+                                             const std::function<void()>& extra_ui) {
   context_.make_current();
   const int w = renderer_->width(), h = renderer_->height();
-  const float px = std::max(1.0f, float(h) / 360.0f);  // line widths and marks scale with the picture
+  const float px =
+      std::max(1.0f, float(h) / 360.0f);  // line widths and marks scale with the picture
   const Layout layout = layout_for(f, w, h, reserved_left_);
 
   renderer_->begin_frame(to_glm(f.colours.background));
@@ -321,12 +352,16 @@ const render::RgbaImage& FramePainter::paint(const scene::Frame& f, const std::f
     if (f.layers.sphere && !f.trail_label.empty()) {
       DrawList caption;
       const glm::vec4 text = to_glm(ink_for(f).trail_caption);
-      caption.add_text({{float(layout.view_3d->x) + 8 * px, float(layout.view_3d->y + layout.view_3d->height) - 6 * px, 0},
-                        "trail: " + f.trail_label, text, TextAnchor::bottom_left});
+      caption.add_text({{float(layout.view_3d->x) + 8 * px,
+                         float(layout.view_3d->y + layout.view_3d->height) - 6 * px, 0},
+                        "trail: " + f.trail_label,
+                        text,
+                        TextAnchor::bottom_left});
       renderer_->draw_2d(caption);
     }
   }
-  if (layout.panel_column && f.layers.riccati) draw_plane(f, *layout.panel_column, *layout.plot_area, px);
+  if (layout.panel_column && f.layers.riccati)
+    draw_plane(f, *layout.panel_column, *layout.plot_area, px);
   if (f.layers.overlay || extra_ui)
     renderer_->draw_overlay([&] {
       if (f.layers.overlay) draw_info_window(f, layout, px);

@@ -39,8 +39,8 @@ struct Layout {
 // edge are kept free (the interactive panels sit there); the layout fills the rest.
 Layout layout_for(const scene::Frame& frame, int width, int height, int reserved_left = 0);
 // The rectangles only (the pixel scales as for the default camera and panel extent).
-Layout layout_for(const scene::Layers& layers, const scene::OverlayText& overlay, int width, int height,
-                  int reserved_left = 0);
+Layout layout_for(const scene::Layers& layers, const scene::OverlayText& overlay, int width,
+                  int height, int reserved_left = 0);
 // How many of the overlay's lines fit a picture of this height.
 int overlay_lines_shown(const scene::OverlayText& overlay, int height);
 // The camera the painter uses for the 3D view of `frame`.
@@ -60,14 +60,16 @@ class FramePainter {
 
   // The frame's picture; valid until the next call. `extra_ui` (interactive
   // panels) runs inside the same ImGui frame as the overlay layer.
-  const render::RgbaImage& paint(const scene::Frame& frame, const std::function<void()>& extra_ui = {});
+  const render::RgbaImage& paint(const scene::Frame& frame,
+                                 const std::function<void()>& extra_ui = {});
   // The ImGui overlay, for feeding it input and its clock.
   render::ImGuiOverlay& gui();
 
  private:
   void draw_body(render::DrawList& list, const scene::Frame& f, float px);
   void draw_sphere(render::DrawList& list, const scene::Frame& f, float px) const;
-  void draw_plane(const scene::Frame& f, const render::Viewport& column, const render::Viewport& area, float px);
+  void draw_plane(const scene::Frame& f, const render::Viewport& column,
+                  const render::Viewport& area, float px);
   void draw_info_window(const scene::Frame& f, const Layout& layout, float px);
 
   render::GlContext& context_;

@@ -13,15 +13,12 @@ namespace {
 
 bool finite(const Vector3d& v) { return v.allFinite(); }
 
-
-
 }  // namespace
 
 void validate_body(const Body& body, bool allow_nonphysical) {
   const Vector3d& I = body.inertia;
   if (!finite(I) || !(I.minCoeff() > 0.0))
-    throw InvalidInput("inertia",
-                       "inertia must be three positive finite numbers; got " + vec(I));
+    throw InvalidInput("inertia", "inertia must be three positive finite numbers; got " + vec(I));
   if (!finite(body.com))
     throw InvalidInput("com", "centre of mass must be three finite numbers; got " + vec(body.com));
   if (!std::isfinite(body.weight) || body.weight < 0.0)
@@ -33,9 +30,9 @@ void validate_body(const Body& body, bool allow_nonphysical) {
     const int i = (k + 1) % 3, j = (k + 2) % 3;
     const int lo = i < j ? i : j, hi = i < j ? j : i;
     if (I[lo] + I[hi] < I[k])
-      throw InvalidInput("inertia", "inertia " + vec(I) + " breaks the triangle inequality " +
-                                        names[lo] + " + " + names[hi] + " >= " + names[k] +
-                                        " (not a rigid body)",
+      throw InvalidInput("inertia",
+                         "inertia " + vec(I) + " breaks the triangle inequality " + names[lo] +
+                             " + " + names[hi] + " >= " + names[k] + " (not a rigid body)",
                          Waiver::allow_nonphysical);
   }
 }
@@ -55,9 +52,10 @@ InitialState validate_initial_state(const InitialState& s, bool normalize) {
     out.gamma = s.gamma / n;
     return out;
   }
-  throw InvalidInput("gamma", "gamma must be a unit vector (| |gamma| - 1 | <= 1e-9); got |gamma| = " +
-                                  detail::approx(n),
-                     Waiver::normalize_gamma);
+  throw InvalidInput(
+      "gamma",
+      "gamma must be a unit vector (| |gamma| - 1 | <= 1e-9); got |gamma| = " + detail::approx(n),
+      Waiver::normalize_gamma);
 }
 
 }  // namespace epviz::physics

@@ -47,7 +47,8 @@ std::vector<CasePreset> make_presets() {
     p.name = "euler";
     p.title = "Euler top (torque-free)";
     p.integral_symbol = "|L|^2";
-    p.summary = "torque-free body spun near its intermediate axis: periodic flips (tennis racket effect)";
+    p.summary =
+        "torque-free body spun near its intermediate axis: periodic flips (tennis racket effect)";
     p.conditions = "r = 0 or P = 0";
     p.extra_integral = "|L|^2 = (I1 Omega1)^2 + (I2 Omega2)^2 + (I3 Omega3)^2";
     p.body = {Vector3d(1, 2, 3), Vector3d(0, 0, 0), 1.0};
@@ -87,7 +88,8 @@ std::vector<CasePreset> make_presets() {
     p.name = "goryachev-chaplygin";
     p.title = "Goryachev-Chaplygin top";
     p.integral_symbol = "G";
-    p.summary = "Goryachev-Chaplygin top on the zero level of the area integral: quasi-periodic motion";
+    p.summary =
+        "Goryachev-Chaplygin top on the zero level of the area integral: quasi-periodic motion";
     p.conditions = "I1 = I2 = 4 I3, b0 = c0 = 0, initial C0 = 0";
     p.extra_integral = "G = Omega3 (Omega1^2 + Omega2^2) - (P a0 / I3) Omega1 gamma3";
     p.body = {Vector3d(4, 4, 1), Vector3d(1, 0, 0), 1.0};
@@ -104,7 +106,9 @@ std::vector<CasePreset> make_presets() {
     p.name = "hess";
     p.title = "Hess top";
     p.integral_symbol = "H";
-    p.summary = "Hess motion: on the invariant relation H = 0 the body swings like a pendulum about its lowest position";
+    p.summary =
+        "Hess motion: on the invariant relation H = 0 the body swings like a pendulum about its "
+        "lowest position";
     p.conditions =
         "I1 > I2 > I3, b0 = 0, c0 = +-a0 sqrt(I1 (I2 - I3)) / sqrt(I3 (I1 - I2)), initial H = 0";
     p.extra_integral = "H = I1 a0 Omega1 + I3 c0 Omega3 (invariant relation H = 0)";
@@ -160,10 +164,9 @@ std::string case_name(Case c) {
 }
 
 std::optional<Case> case_from_name(std::string_view name) {
-  static constexpr Case all[] = {Case::custom,       Case::euler,
-                                 Case::lagrange,     Case::kovalevskaya,
-                                 Case::goryachev_chaplygin, Case::hess,
-                                 Case::generic};
+  static constexpr Case all[] = {
+      Case::custom, Case::euler,  Case::lagrange, Case::kovalevskaya, Case::goryachev_chaplygin,
+      Case::hess,   Case::generic};
   for (Case c : all)
     if (name == case_name(c)) return c;
   if (name == "goryachev_chaplygin") return Case::goryachev_chaplygin;
@@ -177,8 +180,7 @@ std::optional<std::string> broken_condition(Case c, const Body& body, const Init
   const std::string n = case_name(c);
   switch (c) {
     case Case::custom:
-    case Case::generic:
-      return std::nullopt;
+    case Case::generic: return std::nullopt;
     case Case::euler:
       if (P == 0.0 || std::abs(P) * r.norm() <= kTol) return std::nullopt;
       return n + " needs r = 0 or P = 0 (|P r| <= 1e-12); got r = " + vec(r) + ", P = " + num(P);
@@ -201,8 +203,10 @@ std::optional<std::string> broken_condition(Case c, const Body& body, const Init
       const double c0 = area(body, s);
       const double scale = I.cwiseProduct(s.omega).norm() * s.gamma.norm();
       if (!negligible(c0, scale))
-        return n + " needs the initial area integral C0 = I1 Omega1 gamma1 + I2 Omega2 gamma2 + "
-                   "I3 Omega3 gamma3 = 0; got C0 = " + approx(c0);
+        return n +
+               " needs the initial area integral C0 = I1 Omega1 gamma1 + I2 Omega2 gamma2 + "
+               "I3 Omega3 gamma3 = 0; got C0 = " +
+               approx(c0);
       return std::nullopt;
     }
     case Case::hess: {
@@ -228,12 +232,9 @@ std::optional<double> extra_integral(Case c, const Body& body, const Vector3d& w
   const double P = body.weight, a0 = body.com.x(), c0 = body.com.z();
   switch (c) {
     case Case::custom:
-    case Case::generic:
-      return std::nullopt;
-    case Case::euler:
-      return I.cwiseProduct(w).squaredNorm();
-    case Case::lagrange:
-      return w.z();
+    case Case::generic: return std::nullopt;
+    case Case::euler: return I.cwiseProduct(w).squaredNorm();
+    case Case::lagrange: return w.z();
     case Case::kovalevskaya: {
       const double k = P * a0 / I.z();
       const double x = w.x() * w.x() - w.y() * w.y() - k * g.x();
@@ -242,8 +243,7 @@ std::optional<double> extra_integral(Case c, const Body& body, const Vector3d& w
     }
     case Case::goryachev_chaplygin:
       return w.z() * (w.x() * w.x() + w.y() * w.y()) - P * a0 / I.z() * w.x() * g.z();
-    case Case::hess:
-      return I.x() * a0 * w.x() + I.z() * c0 * w.z();
+    case Case::hess: return I.x() * a0 * w.x() + I.z() * c0 * w.z();
   }
   return std::nullopt;
 }

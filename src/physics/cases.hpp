@@ -15,20 +15,21 @@ enum class Case { custom, euler, lagrange, kovalevskaya, goryachev_chaplygin, he
 
 struct CasePreset {
   Case id;
-  std::string name;        // "euler", "lagrange", "kovalevskaya", "goryachev-chaplygin", "hess", "generic"
-  std::string_view title;  // what a picture calls it: "Kovalevskaya top"
-  std::string summary;     // one line: what motion it shows
-  std::string conditions;  // human-readable defining conditions
-  std::string extra_integral;  // formula of the fourth integral ("" for generic)
+  std::string
+      name;  // "euler", "lagrange", "kovalevskaya", "goryachev-chaplygin", "hess", "generic"
+  std::string_view title;            // what a picture calls it: "Kovalevskaya top"
+  std::string summary;               // one line: what motion it shows
+  std::string conditions;            // human-readable defining conditions
+  std::string extra_integral;        // formula of the fourth integral ("" for generic)
   std::string_view integral_symbol;  // its short name in overlays ("K"; "" for generic)
   Body body;
-  InitialState initial;    // satisfies the conditions (and is chaotic for generic)
+  InitialState initial;  // satisfies the conditions (and is chaotic for generic)
 };
 
 const std::vector<CasePreset>& case_presets();
-const CasePreset& preset(Case c);                        // throws std::out_of_range for custom
+const CasePreset& preset(Case c);  // throws std::out_of_range for custom
 std::optional<Case> case_from_name(std::string_view name);
-std::string case_name(Case c);                          // "custom" for Case::custom
+std::string case_name(Case c);  // "custom" for Case::custom
 
 // The first defining condition of `c` that (body, initial) breaks, written for a
 // user ("kovalevskaya needs I1 = I2 = 2 I3; got I = (2, 2, 1.5)"), or nullopt.

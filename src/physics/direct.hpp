@@ -11,8 +11,10 @@ namespace epviz::physics {
 
 // The Euler equations (1.1): Omega' = I^-1 ((I Omega) x Omega + gamma x (P r)).
 // Shared by every formulation; `inv_inertia` = 1/I_i, `pr` = P r.
-[[gnu::always_inline]] inline Vector3d euler_omega_dot(const Vector3d& inertia, const Vector3d& inv_inertia,
-                                const Vector3d& pr, const Vector3d& w, const Vector3d& g) {
+[[gnu::always_inline]] inline Vector3d euler_omega_dot(const Vector3d& inertia,
+                                                       const Vector3d& inv_inertia,
+                                                       const Vector3d& pr, const Vector3d& w,
+                                                       const Vector3d& g) {
   return Vector3d(((inertia.y() - inertia.z()) * w.y() * w.z() + g.y() * pr.z() - g.z() * pr.y()) *
                       inv_inertia.x(),
                   ((inertia.z() - inertia.x()) * w.z() * w.x() + g.z() * pr.x() - g.x() * pr.z()) *
@@ -64,8 +66,8 @@ class DirectSystem {
       x[2] += h * (g.x() * pr_.y() - g.y() * pr_.x()) * inv_inertia_.z();
       return;
     }
-    const int k = i - 1;            // the rotation axis
-    const int j1 = (k + 1) % 3;     // (j1, j2, k) is a cyclic order
+    const int k = i - 1;         // the rotation axis
+    const int j1 = (k + 1) % 3;  // (j1, j2, k) is a cyclic order
     const int j2 = (k + 2) % 3;
     const double angle = -x[k] * h;
     const double c = std::cos(angle), s = std::sin(angle);

@@ -27,7 +27,8 @@ int parity(int i, int j, int l) { return ((j - i + 3) % 3 == 1 && (l - j + 3) % 
 
 EulerClosedForm::EulerClosedForm(const Eigen::Vector3d& I, const Eigen::Vector3d& w0) {
   if (!I.allFinite() || !(I.minCoeff() > 0.0) || !w0.allFinite())
-    throw std::invalid_argument("EulerClosedForm: moments must be positive and finite, omega finite");
+    throw std::invalid_argument(
+        "EulerClosedForm: moments must be positive and finite, omega finite");
   const double scale = I.cwiseAbs().maxCoeff();
   for (int i = 0; i < 3; ++i)
     for (int j = i + 1; j < 3; ++j)
@@ -47,9 +48,13 @@ EulerClosedForm::EulerClosedForm(const Eigen::Vector3d& I, const Eigen::Vector3d
         "EulerClosedForm: the motion lies on the separatrix (M^2 = 2 E I_mid)");
   // Roles 1, 2, 3 of docs/math.md §2.4: 3 = the axis Omega keeps its sign on.
   if (gap > 0.0) {
-    ax_[0] = order[0]; ax_[1] = order[1]; ax_[2] = order[2];
+    ax_[0] = order[0];
+    ax_[1] = order[1];
+    ax_[2] = order[2];
   } else {
-    ax_[0] = order[2]; ax_[1] = order[1]; ax_[2] = order[0];
+    ax_[0] = order[2];
+    ax_[1] = order[1];
+    ax_[2] = order[0];
   }
   const double I1 = I[ax_[0]], I2 = I[ax_[1]], I3 = I[ax_[2]];
   // Every ratio below is of two quantities of the same sign in either regime;
@@ -86,8 +91,6 @@ Eigen::Vector3d EulerClosedForm::omega(double t) const {
   return w;
 }
 
-double EulerClosedForm::period() const {
-  return 4.0 * boost::math::ellint_1(k_) / lambda_;
-}
+double EulerClosedForm::period() const { return 4.0 * boost::math::ellint_1(k_) / lambda_; }
 
 }  // namespace epviz::physics

@@ -17,14 +17,14 @@ class EulerClosedForm {
   // Omega(t) with Omega(0) = omega0.
   Eigen::Vector3d omega(double t) const;
 
-  double modulus() const { return k_; }      // k (m = k^2)
+  double modulus() const { return k_; }         // k (m = k^2)
   double frequency() const { return lambda_; }  // lambda: tau = lambda t + tau0
-  double period() const;                      // period of Omega(t): 4 K(k) / lambda
+  double period() const;                        // period of Omega(t): 4 K(k) / lambda
   int dominant_axis() const { return ax_[2]; }  // 0-based axis Omega never crosses zero on
 
  private:
-  int ax_[3];            // body axes playing the roles 1, 2, 3 of docs/math.md §2.4
-  double amp_[3];        // A1, nu A2, s3 A3 (signs included)
+  int ax_[3];      // body axes playing the roles 1, 2, 3 of docs/math.md §2.4
+  double amp_[3];  // A1, nu A2, s3 A3 (signs included)
   double k_ = 0.0;
   double lambda_ = 0.0;
   double tau0_ = 0.0;

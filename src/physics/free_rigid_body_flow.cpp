@@ -53,12 +53,16 @@ FreeRigidBodyFlow::FreeRigidBodyFlow(const Vector3d& inertia) : inertia_(inertia
     throw std::invalid_argument("FreeRigidBodyFlow: the moments must be positive and finite");
   const double scale = inertia.maxCoeff();
   auto eq = [&](int i, int j) { return std::abs(inertia[i] - inertia[j]) <= 1e-12 * scale; };
-  if (eq(0, 1)) sym_axis_ = 2;
-  else if (eq(1, 2)) sym_axis_ = 0;
-  else if (eq(0, 2)) sym_axis_ = 1;
+  if (eq(0, 1))
+    sym_axis_ = 2;
+  else if (eq(1, 2))
+    sym_axis_ = 0;
+  else if (eq(0, 2))
+    sym_axis_ = 1;
 }
 
-FreeRigidBodyFlow::Path FreeRigidBodyFlow::advance(double h, Vector3d& omega, Vector3d& gamma) const {
+FreeRigidBodyFlow::Path FreeRigidBodyFlow::advance(double h, Vector3d& omega,
+                                                   Vector3d& gamma) const {
   const int zeros = int(omega[0] == 0.0) + int(omega[1] == 0.0) + int(omega[2] == 0.0);
   if (zeros == 3 || h == 0.0) return Path::rest;
   if (zeros == 2) {
@@ -104,7 +108,8 @@ FreeRigidBodyFlow::Path FreeRigidBodyFlow::symmetric(double h, int s, Vector3d& 
 // third kind, Boost's ellint_3(k, n, phi)):
 //   psi(h) = 2T h/|M| + eps c2 c3/(c1 |M|) [r lambda h + (1 - r)(Pi(n; am tau1) - Pi(n; am tau0))].
 // e3 x m never vanishes (M1 and M2 are never zero together), so A is smooth.
-FreeRigidBodyFlow::Path FreeRigidBodyFlow::elliptic(double h, Vector3d& omega, Vector3d& gamma) const {
+FreeRigidBodyFlow::Path FreeRigidBodyFlow::elliptic(double h, Vector3d& omega,
+                                                    Vector3d& gamma) const {
   const Vector3d& I = inertia_;
   const Vector3d w = omega;
   int o[3] = {0, 1, 2};  // ascending moments
@@ -172,7 +177,8 @@ FreeRigidBodyFlow::Path FreeRigidBodyFlow::elliptic(double h, Vector3d& omega, V
 // On (or within separatrix_tol of) the separatrix the elliptic modulus is 1 and
 // the period infinite: integrate the free body (Omega' = I^-1 (I Omega x Omega),
 // gamma' = gamma x Omega) by classical RK4 with |Omega| dt <= 4e-4.
-FreeRigidBodyFlow::Path FreeRigidBodyFlow::separatrix(double h, Vector3d& omega, Vector3d& gamma) const {
+FreeRigidBodyFlow::Path FreeRigidBodyFlow::separatrix(double h, Vector3d& omega,
+                                                      Vector3d& gamma) const {
   using V6 = Eigen::Matrix<double, 6, 1>;
   const Vector3d I = inertia_;
   auto f = [&](const V6& x) {

@@ -22,8 +22,7 @@ double extra_terms(Case c, const Body& body, const Vector3d& w, const Vector3d& 
   const Vector3d& I = body.inertia;
   const double P = body.weight, a0 = body.com.x(), c0 = body.com.z();
   switch (c) {
-    case Case::euler:
-      return I.cwiseProduct(w).squaredNorm();
+    case Case::euler: return I.cwiseProduct(w).squaredNorm();
     case Case::lagrange:
       // Omega3 alone: measured against |Omega| so that Omega3 = 0 still has a scale.
       return w.norm();
@@ -36,11 +35,9 @@ double extra_terms(Case c, const Body& body, const Vector3d& w, const Vector3d& 
     case Case::goryachev_chaplygin:
       return std::abs(w.z()) * (w.x() * w.x() + w.y() * w.y()) +
              std::abs(P * a0 / I.z() * w.x() * g.z());
-    case Case::hess:
-      return std::abs(I.x() * a0 * w.x()) + std::abs(I.z() * c0 * w.z());
+    case Case::hess: return std::abs(I.x() * a0 * w.x()) + std::abs(I.z() * c0 * w.z());
     case Case::custom:
-    case Case::generic:
-      break;
+    case Case::generic: break;
   }
   return 0.0;
 }
@@ -57,9 +54,8 @@ Invariants invariant_scales(const Body& body, Case c, const Vector3d& omega0,
   Invariants s;
   s.gamma_norm2 = 1.0;
   s.area = positive(std::max(std::abs(v.area), m.norm() * gamma0.norm()));
-  s.energy = positive(std::max(std::abs(v.energy), 0.5 * m.dot(omega0) +
-                                                       body.weight * body.com.norm() *
-                                                           gamma0.norm()));
+  s.energy = positive(std::max(
+      std::abs(v.energy), 0.5 * m.dot(omega0) + body.weight * body.com.norm() * gamma0.norm()));
   if (v.extra)
     s.extra = positive(std::max(std::abs(*v.extra), extra_terms(c, body, omega0, gamma0)));
   return s;

@@ -9,9 +9,9 @@
 namespace epviz::physics {
 
 struct Invariants {
-  double gamma_norm2 = 0.0;  // |gamma|^2
-  double area = 0.0;         // C0 = sum I_i Omega_i gamma_i
-  double energy = 0.0;       // C1 = 1/2 sum I_i Omega_i^2 + P r.gamma
+  double gamma_norm2 = 0.0;     // |gamma|^2
+  double area = 0.0;            // C0 = sum I_i Omega_i gamma_i
+  double energy = 0.0;          // C1 = 1/2 sum I_i Omega_i^2 + P r.gamma
   std::optional<double> extra;  // the case's fourth integral
 };
 

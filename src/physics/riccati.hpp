@@ -74,7 +74,9 @@ class RiccatiSystem {
   Vector3d omega(const State& x) const { return x.head<3>(); }
 
   // Unit vertical of the state in the current chart.
-  [[gnu::always_inline]] Vector3d gamma(const State& x) const { return gamma_in(chart_, x[3], x[4]); }
+  [[gnu::always_inline]] Vector3d gamma(const State& x) const {
+    return gamma_in(chart_, x[3], x[4]);
+  }
 
   [[gnu::always_inline]] static Vector3d gamma_in(Chart chart, double a, double b) {
     if (chart == Chart::north) return from_stereographic(a, b);

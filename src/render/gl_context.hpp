@@ -14,29 +14,29 @@ namespace epviz::render {
 // A backend that cannot run here: its library is missing (the message names the
 // Debian package to install) or it cannot create a 3.3 core context.
 class GlUnavailable : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 class GlContext {
-public:
-    virtual ~GlContext() = default;
-    // Makes this context current on the calling thread.
-    virtual void make_current() = 0;
-    // Changes the size of the default surface; makes the context current.
-    virtual void resize(int width, int height) = 0;
-    virtual int width() const = 0;
-    virtual int height() const = 0;
-    // "egl" or "osmesa": the name make_gl_context() accepts for this backend.
-    virtual std::string_view backend() const = 0;
-    // How the backend reached the driver: "device" or "surfaceless" for EGL,
-    // "" for OSMesa.
-    virtual std::string platform() const { return {}; }
-    // GL_RENDERER and GL_VERSION, for logs and bug reports.
-    std::string renderer() const;
-    std::string version() const;
-    // "<renderer>, OpenGL <version>".
-    std::string describe() const;
+ public:
+  virtual ~GlContext() = default;
+  // Makes this context current on the calling thread.
+  virtual void make_current() = 0;
+  // Changes the size of the default surface; makes the context current.
+  virtual void resize(int width, int height) = 0;
+  virtual int width() const = 0;
+  virtual int height() const = 0;
+  // "egl" or "osmesa": the name make_gl_context() accepts for this backend.
+  virtual std::string_view backend() const = 0;
+  // How the backend reached the driver: "device" or "surfaceless" for EGL,
+  // "" for OSMesa.
+  virtual std::string platform() const { return {}; }
+  // GL_RENDERER and GL_VERSION, for logs and bug reports.
+  std::string renderer() const;
+  std::string version() const;
+  // "<renderer>, OpenGL <version>".
+  std::string describe() const;
 };
 
 // The names make_gl_context() accepts: "auto" (EGL, then OSMesa), "egl", "osmesa".

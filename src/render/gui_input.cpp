@@ -19,11 +19,21 @@ struct NamedKey {
   ImGuiKey_ key;
 };
 constexpr NamedKey kNamedKeys[] = {
-    {"Tab", ImGuiKey_Tab},           {"ArrowLeft", ImGuiKey_LeftArrow}, {"ArrowRight", ImGuiKey_RightArrow},
-    {"ArrowUp", ImGuiKey_UpArrow},   {"ArrowDown", ImGuiKey_DownArrow}, {"PageUp", ImGuiKey_PageUp},
-    {"PageDown", ImGuiKey_PageDown}, {"Home", ImGuiKey_Home},           {"End", ImGuiKey_End},
-    {"Insert", ImGuiKey_Insert},     {"Delete", ImGuiKey_Delete},       {"Backspace", ImGuiKey_Backspace},
-    {" ", ImGuiKey_Space},           {"Enter", ImGuiKey_Enter},         {"Escape", ImGuiKey_Escape},
+    {"Tab", ImGuiKey_Tab},
+    {"ArrowLeft", ImGuiKey_LeftArrow},
+    {"ArrowRight", ImGuiKey_RightArrow},
+    {"ArrowUp", ImGuiKey_UpArrow},
+    {"ArrowDown", ImGuiKey_DownArrow},
+    {"PageUp", ImGuiKey_PageUp},
+    {"PageDown", ImGuiKey_PageDown},
+    {"Home", ImGuiKey_Home},
+    {"End", ImGuiKey_End},
+    {"Insert", ImGuiKey_Insert},
+    {"Delete", ImGuiKey_Delete},
+    {"Backspace", ImGuiKey_Backspace},
+    {" ", ImGuiKey_Space},
+    {"Enter", ImGuiKey_Enter},
+    {"Escape", ImGuiKey_Escape},
 };
 
 void set_modifiers(ImGuiIO& io, const InputEvent& e) {
@@ -91,8 +101,7 @@ bool fits_this_frame(const InputEvent& e, const FrameChanges& changed, const ImG
       return index < 0 || !changed.keys[std::size_t(index)];
     }
     case InputEvent::Kind::text:
-    case InputEvent::Kind::focus:
-      return true;
+    case InputEvent::Kind::focus: return true;
   }
   return true;
 }
@@ -124,12 +133,8 @@ void apply_one(ImGuiIO& io, const InputEvent& e, FrameChanges& changed) {
       changed.keys.set(std::size_t(index));
       break;
     }
-    case InputEvent::Kind::text:
-      io.AddInputCharactersUTF8(e.text.c_str());
-      break;
-    case InputEvent::Kind::focus:
-      io.AddFocusEvent(e.down);
-      break;
+    case InputEvent::Kind::text: io.AddInputCharactersUTF8(e.text.c_str()); break;
+    case InputEvent::Kind::focus: io.AddFocusEvent(e.down); break;
   }
 }
 

@@ -19,113 +19,116 @@ namespace {
 // The font the overlay uses when the caller names none: one shipped in assets/
 // if the project has one, then a common system font, else ImGui's own.
 std::filesystem::path default_font_file() {
-    std::vector<std::filesystem::path> candidates;
-    if (auto shipped = io::find_data_path("assets/fonts/overlay.ttf"); !shipped.empty()) candidates.push_back(shipped);
-    candidates.emplace_back("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf");
-    for (const auto& candidate : candidates) {
-        std::error_code error;
-        if (std::filesystem::is_regular_file(candidate, error)) return candidate;
-    }
-    return {};
+  std::vector<std::filesystem::path> candidates;
+  if (auto shipped = io::find_data_path("assets/fonts/overlay.ttf"); !shipped.empty())
+    candidates.push_back(shipped);
+  candidates.emplace_back("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf");
+  for (const auto& candidate : candidates) {
+    std::error_code error;
+    if (std::filesystem::is_regular_file(candidate, error)) return candidate;
+  }
+  return {};
 }
 
-ImU32 to_imgui_colour(const glm::vec4& c) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, c.a)); }
-
+ImU32 to_imgui_colour(const glm::vec4& c) {
+  return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, c.a));
+}
 
 }  // namespace
 
 glm::vec2 anchored_top_left(const glm::vec2& point, const glm::vec2& size, TextAnchor anchor) {
-    const int index = static_cast<int>(anchor);
-    const float fx = static_cast<float>(index % 3) * 0.5f;  // 0 left, 0.5 centre, 1 right
-    const float fy = static_cast<float>(index / 3) * 0.5f;  // 0 top, 0.5 middle, 1 bottom
-    return {point.x - fx * size.x, point.y - fy * size.y};
+  const int index = static_cast<int>(anchor);
+  const float fx = static_cast<float>(index % 3) * 0.5f;  // 0 left, 0.5 centre, 1 right
+  const float fy = static_cast<float>(index / 3) * 0.5f;  // 0 top, 0.5 middle, 1 bottom
+  return {point.x - fx * size.x, point.y - fy * size.y};
 }
 
 ImGuiOverlay::ImGuiOverlay(const OverlayOptions& options) : options_(options) {
-    IMGUI_CHECKVERSION();
-    context_ = ImGui::CreateContext();
-    ImGuiContextScope scope(context_);
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;  // no imgui.ini: a render must not depend on or leave state
-    io.LogFilename = nullptr;
-    if (options.light_style)
-        ImGui::StyleColorsLight();
-    else
-        ImGui::StyleColorsDark();
-    ImGui::GetStyle().WindowRounding = 4.0f;
+  IMGUI_CHECKVERSION();
+  context_ = ImGui::CreateContext();
+  ImGuiContextScope scope(context_);
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // no imgui.ini: a render must not depend on or leave state
+  io.LogFilename = nullptr;
+  if (options.light_style)
+    ImGui::StyleColorsLight();
+  else
+    ImGui::StyleColorsDark();
+  ImGui::GetStyle().WindowRounding = 4.0f;
 
-    std::filesystem::path file = options.builtin_font ? std::filesystem::path() : options.font_file;
-    if (!options.builtin_font && file.empty()) file = default_font_file();
-    if (!file.empty()) {
-        font_ = io.Fonts->AddFontFromFileTTF(file.c_str(), options.font_size_px);
-        if (font_ == nullptr && !options.font_file.empty())
-            throw std::runtime_error("cannot load overlay font '" + file.string() + "'");
-        if (font_ != nullptr) font_source_ = file.string();
-    }
-    if (font_ == nullptr) {
-        font_ = io.Fonts->AddFontDefault();
-        font_source_ = "builtin";
-    }
-    try {
-        gl_renderer_ = std::make_unique<ImGuiGlRenderer>();
-    } catch (...) {
-        ImGui::DestroyContext(context_);
-        throw;
-    }
+  std::filesystem::path file = options.builtin_font ? std::filesystem::path() : options.font_file;
+  if (!options.builtin_font && file.empty()) file = default_font_file();
+  if (!file.empty()) {
+    font_ = io.Fonts->AddFontFromFileTTF(file.c_str(), options.font_size_px);
+    if (font_ == nullptr && !options.font_file.empty())
+      throw std::runtime_error("cannot load overlay font '" + file.string() + "'");
+    if (font_ != nullptr) font_source_ = file.string();
+  }
+  if (font_ == nullptr) {
+    font_ = io.Fonts->AddFontDefault();
+    font_source_ = "builtin";
+  }
+  try {
+    gl_renderer_ = std::make_unique<ImGuiGlRenderer>();
+  } catch (...) {
+    ImGui::DestroyContext(context_);
+    throw;
+  }
 }
 
 ImGuiOverlay::~ImGuiOverlay() {
-    ImGuiContextScope scope(context_);
-    gl_renderer_.reset();  // needs the ImGui context alive
-    ImGui::DestroyContext(context_);
+  ImGuiContextScope scope(context_);
+  gl_renderer_.reset();  // needs the ImGui context alive
+  ImGui::DestroyContext(context_);
 }
 
 void ImGuiOverlay::begin(int width, int height) {
-    ImGuiIO& io = ImGui::GetIO();
-    io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
-    io.DisplayFramebufferScale = ImVec2(1.0f, 1.0f);
-    io.DeltaTime = options_.delta_time_s;
-    ImGui::NewFrame();
+  ImGuiIO& io = ImGui::GetIO();
+  io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
+  io.DisplayFramebufferScale = ImVec2(1.0f, 1.0f);
+  io.DeltaTime = options_.delta_time_s;
+  ImGui::NewFrame();
 }
 
 void ImGuiOverlay::warm_up(int width, int height, const std::function<void()>& build_ui) {
-    ImGuiContextScope scope(context_);
-    begin(width, height);
-    if (build_ui) build_ui();
-    ImGui::EndFrame();
-    warmed_up_ = true;
+  ImGuiContextScope scope(context_);
+  begin(width, height);
+  if (build_ui) build_ui();
+  ImGui::EndFrame();
+  warmed_up_ = true;
 }
 
 void ImGuiOverlay::add_labels(std::span<const PlacedLabel> labels) {
-    // Behind every window: a label of the scene must not print over the overlay's text.
-    ImDrawList* draw = ImGui::GetBackgroundDrawList();
-    ImFont* font = ImGui::GetFont();
-    const float size = ImGui::GetFontSize();
-    for (const auto& placed : labels) {
-        const TextLabel& label = *placed.label;
-        const ImVec2 extent = font->CalcTextSizeA(size, FLT_MAX, 0.0f, label.text.c_str());
-        const glm::vec2 top_left =
-            anchored_top_left(placed.pixel + label.offset_px, glm::vec2(extent.x, extent.y), label.anchor);
-        // Whole pixels keep bitmap-like glyphs crisp.
-        const ImVec2 at(std::round(top_left.x), std::round(top_left.y));
-        if (label.background.a > 0.0f) {
-            const float pad = 3.0f;
-            draw->AddRectFilled(ImVec2(at.x - pad, at.y - pad + 1.0f), ImVec2(at.x + extent.x + pad, at.y + extent.y + pad - 1.0f),
-                                to_imgui_colour(label.background), 3.0f);
-        }
-        draw->AddText(font, size, at, to_imgui_colour(label.colour), label.text.c_str());
+  // Behind every window: a label of the scene must not print over the overlay's text.
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();
+  ImFont* font = ImGui::GetFont();
+  const float size = ImGui::GetFontSize();
+  for (const auto& placed : labels) {
+    const TextLabel& label = *placed.label;
+    const ImVec2 extent = font->CalcTextSizeA(size, FLT_MAX, 0.0f, label.text.c_str());
+    const glm::vec2 top_left = anchored_top_left(placed.pixel + label.offset_px,
+                                                 glm::vec2(extent.x, extent.y), label.anchor);
+    // Whole pixels keep bitmap-like glyphs crisp.
+    const ImVec2 at(std::round(top_left.x), std::round(top_left.y));
+    if (label.background.a > 0.0f) {
+      const float pad = 3.0f;
+      draw->AddRectFilled(ImVec2(at.x - pad, at.y - pad + 1.0f),
+                          ImVec2(at.x + extent.x + pad, at.y + extent.y + pad - 1.0f),
+                          to_imgui_colour(label.background), 3.0f);
     }
+    draw->AddText(font, size, at, to_imgui_colour(label.colour), label.text.c_str());
+  }
 }
 
 void ImGuiOverlay::draw_frame(int width, int height, const std::function<void()>& build_ui,
                               std::span<const PlacedLabel> labels) {
-    if (!warmed_up_) warm_up(width, height, build_ui);
-    ImGuiContextScope scope(context_);
-    begin(width, height);
-    if (build_ui) build_ui();
-    add_labels(labels);
-    ImGui::Render();
-    gl_renderer_->render(*ImGui::GetDrawData(), width, height);
+  if (!warmed_up_) warm_up(width, height, build_ui);
+  ImGuiContextScope scope(context_);
+  begin(width, height);
+  if (build_ui) build_ui();
+  add_labels(labels);
+  ImGui::Render();
+  gl_renderer_->render(*ImGui::GetDrawData(), width, height);
 }
 
 }  // namespace epviz::render

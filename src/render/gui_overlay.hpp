@@ -18,57 +18,57 @@ namespace epviz::render {
 class ImGuiGlRenderer;
 
 struct OverlayOptions {
-    // Font file (TTF/OTF). Empty: the first of assets/fonts/overlay.ttf and the
-    // system's DejaVu Sans that exists, else ImGui's built-in font.
-    std::filesystem::path font_file;
-    // Force ImGui's built-in bitmap font (13 px); snapshot tests use it so that
-    // they do not depend on which fonts a machine has.
-    bool builtin_font = false;
-    float font_size_px = 16.0f;
-    bool light_style = false;   // ImGui's light colours instead of dark
-    float delta_time_s = 1.0f / 30.0f;
+  // Font file (TTF/OTF). Empty: the first of assets/fonts/overlay.ttf and the
+  // system's DejaVu Sans that exists, else ImGui's built-in font.
+  std::filesystem::path font_file;
+  // Force ImGui's built-in bitmap font (13 px); snapshot tests use it so that
+  // they do not depend on which fonts a machine has.
+  bool builtin_font = false;
+  float font_size_px = 16.0f;
+  bool light_style = false;  // ImGui's light colours instead of dark
+  float delta_time_s = 1.0f / 30.0f;
 };
 
 // A label already placed in image pixels (top-left origin).
 struct PlacedLabel {
-    glm::vec2 pixel;
-    const TextLabel* label;
+  glm::vec2 pixel;
+  const TextLabel* label;
 };
 
 class ImGuiOverlay {
-public:
-    explicit ImGuiOverlay(const OverlayOptions& options = {});  // needs a current GL context
-    ~ImGuiOverlay();
-    ImGuiOverlay(const ImGuiOverlay&) = delete;
-    ImGuiOverlay& operator=(const ImGuiOverlay&) = delete;
+ public:
+  explicit ImGuiOverlay(const OverlayOptions& options = {});  // needs a current GL context
+  ~ImGuiOverlay();
+  ImGuiOverlay(const ImGuiOverlay&) = delete;
+  ImGuiOverlay& operator=(const ImGuiOverlay&) = delete;
 
-    // One ImGui frame of width x height: calls `build_ui` (ImGui::Begin()... may
-    // be used inside), adds `labels` on the foreground draw list and draws into
-    // the bound framebuffer. The first call runs a hidden warm-up frame first,
-    // because ImGui does not draw a new window on the frame it appears.
-    void draw_frame(int width, int height, const std::function<void()>& build_ui,
-                    std::span<const PlacedLabel> labels = {});
-    // Runs `build_ui` in a frame that is not drawn (windows get their size).
-    void warm_up(int width, int height, const std::function<void()>& build_ui);
+  // One ImGui frame of width x height: calls `build_ui` (ImGui::Begin()... may
+  // be used inside), adds `labels` on the foreground draw list and draws into
+  // the bound framebuffer. The first call runs a hidden warm-up frame first,
+  // because ImGui does not draw a new window on the frame it appears.
+  void draw_frame(int width, int height, const std::function<void()>& build_ui,
+                  std::span<const PlacedLabel> labels = {});
+  // Runs `build_ui` in a frame that is not drawn (windows get their size).
+  void warm_up(int width, int height, const std::function<void()>& build_ui);
 
-    // The font in use, and where it came from ("builtin" or a path).
-    ImFont* font() const { return font_; }
-    const std::string& font_source() const { return font_source_; }
-    ImGuiContext* context() const { return context_; }
-    // The time step ImGui is told for the next frames (interactive use passes
-    // the wall-clock time between frames; renders keep the fixed one).
-    void set_delta_time(float seconds) { options_.delta_time_s = seconds; }
+  // The font in use, and where it came from ("builtin" or a path).
+  ImFont* font() const { return font_; }
+  const std::string& font_source() const { return font_source_; }
+  ImGuiContext* context() const { return context_; }
+  // The time step ImGui is told for the next frames (interactive use passes
+  // the wall-clock time between frames; renders keep the fixed one).
+  void set_delta_time(float seconds) { options_.delta_time_s = seconds; }
 
-private:
-    void begin(int width, int height);
-    void add_labels(std::span<const PlacedLabel> labels);
+ private:
+  void begin(int width, int height);
+  void add_labels(std::span<const PlacedLabel> labels);
 
-    ImGuiContext* context_ = nullptr;
-    ImFont* font_ = nullptr;
-    std::string font_source_;
-    std::unique_ptr<ImGuiGlRenderer> gl_renderer_;
-    OverlayOptions options_;
-    bool warmed_up_ = false;
+  ImGuiContext* context_ = nullptr;
+  ImFont* font_ = nullptr;
+  std::string font_source_;
+  std::unique_ptr<ImGuiGlRenderer> gl_renderer_;
+  OverlayOptions options_;
+  bool warmed_up_ = false;
 };
 
 // The top-left corner at which a box of `size` must start so that its

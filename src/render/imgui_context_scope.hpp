@@ -7,16 +7,16 @@
 namespace epviz::render {
 
 class ImGuiContextScope {
-public:
-    explicit ImGuiContextScope(ImGuiContext* context) : previous_(ImGui::GetCurrentContext()) {
-        ImGui::SetCurrentContext(context);
-    }
-    ~ImGuiContextScope() { ImGui::SetCurrentContext(previous_); }
-    ImGuiContextScope(const ImGuiContextScope&) = delete;
-    ImGuiContextScope& operator=(const ImGuiContextScope&) = delete;
+ public:
+  explicit ImGuiContextScope(ImGuiContext* context) : previous_(ImGui::GetCurrentContext()) {
+    ImGui::SetCurrentContext(context);
+  }
+  ~ImGuiContextScope() { ImGui::SetCurrentContext(previous_); }
+  ImGuiContextScope(const ImGuiContextScope&) = delete;
+  ImGuiContextScope& operator=(const ImGuiContextScope&) = delete;
 
-private:
-    ImGuiContext* previous_;
+ private:
+  ImGuiContext* previous_;
 };
 
 }  // namespace epviz::render

@@ -10,24 +10,24 @@ struct ImDrawData;
 namespace epviz::render {
 
 class ImGuiGlRenderer {
-public:
-    // Uses the current ImGui context: builds its font atlas into a texture and
-    // stores the texture id in it. Needs a current GL context.
-    ImGuiGlRenderer();
-    ~ImGuiGlRenderer();
-    ImGuiGlRenderer(const ImGuiGlRenderer&) = delete;
-    ImGuiGlRenderer& operator=(const ImGuiGlRenderer&) = delete;
+ public:
+  // Uses the current ImGui context: builds its font atlas into a texture and
+  // stores the texture id in it. Needs a current GL context.
+  ImGuiGlRenderer();
+  ~ImGuiGlRenderer();
+  ImGuiGlRenderer(const ImGuiGlRenderer&) = delete;
+  ImGuiGlRenderer& operator=(const ImGuiGlRenderer&) = delete;
 
-    // Draws into the bound framebuffer of framebuffer_width x framebuffer_height
-    // pixels; leaves blending on and depth testing off.
-    void render(const ImDrawData& draw_data, int framebuffer_width, int framebuffer_height);
+  // Draws into the bound framebuffer of framebuffer_width x framebuffer_height
+  // pixels; leaves blending on and depth testing off.
+  void render(const ImDrawData& draw_data, int framebuffer_width, int framebuffer_height);
 
-private:
-    ShaderProgram program_;
-    GLuint vao_ = 0;
-    GLuint vertex_buffer_ = 0;
-    GLuint index_buffer_ = 0;
-    GLuint font_texture_ = 0;
+ private:
+  ShaderProgram program_;
+  GLuint vao_ = 0;
+  GLuint vertex_buffer_ = 0;
+  GLuint index_buffer_ = 0;
+  GLuint font_texture_ = 0;
 };
 
 }  // namespace epviz::render

@@ -19,14 +19,14 @@ struct InputEvent {
     focus,         // down: the page gained (true) or lost (false) focus
   };
   Kind kind = Kind::mouse_move;
-  float x = 0.0f, y = 0.0f;            // frame pixels, origin at the top-left corner
-  int button = 0;                      // 0 left, 1 right, 2 middle
+  float x = 0.0f, y = 0.0f;  // frame pixels, origin at the top-left corner
+  int button = 0;            // 0 left, 1 right, 2 middle
   bool down = false;
   float wheel_x = 0.0f, wheel_y = 0.0f;  // in notches; positive: up / right (ImGui's sign)
-  std::string key;                     // "a", "Enter", "ArrowLeft", " ", "Control", ...
+  std::string key;                       // "a", "Enter", "ArrowLeft", " ", "Control", ...
   bool ctrl = false, shift = false, alt = false, super = false;
   std::string text;
-  std::uint64_t seq = 0;               // the client's sequence number (for latency), 0 if none
+  std::uint64_t seq = 0;  // the client's sequence number (for latency), 0 if none
 };
 
 }  // namespace epviz::render

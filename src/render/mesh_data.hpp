@@ -11,13 +11,14 @@
 namespace epviz::render {
 
 struct MeshData {
-    std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;       // one per position, unit length
-    std::vector<std::uint32_t> indices;   // triangles, counter-clockwise seen from outside
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;      // one per position, unit length
+  std::vector<std::uint32_t> indices;  // triangles, counter-clockwise seen from outside
 };
 
 // Appends `part` transformed by `transform` (normals by its inverse transpose).
-void append_mesh(MeshData& mesh, const MeshData& part, const glm::mat4& transform = glm::mat4(1.0f));
+void append_mesh(MeshData& mesh, const MeshData& part,
+                 const glm::mat4& transform = glm::mat4(1.0f));
 
 // Sphere of `radius` about the origin; `slices` around the z axis, `stacks` from pole to pole.
 MeshData make_uv_sphere(float radius = 1.0f, int slices = 48, int stacks = 24);

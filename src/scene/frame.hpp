@@ -66,12 +66,12 @@ struct PlaneMark {
 
 // The body drawn as the uniform box with the same principal moments.
 struct BodyShape {
-  Eigen::Vector3f half_extents;  // along body axes 1, 2, 3, scaled to fit the sphere
+  Eigen::Vector3f half_extents;    // along body axes 1, 2, 3, scaled to fit the sphere
   Eigen::Vector3f centre_of_mass;  // body axes, same scale; zero when r = 0
 };
 
 struct OverlayText {
-  std::string title;                 // e.g. "Kovalevskaya top"
+  std::string title;  // e.g. "Kovalevskaya top"
   // Time, method and tolerance, formulation, parameters: most important first,
   // so that a small picture can show only the first few.
   std::vector<std::string> lines;
@@ -104,7 +104,8 @@ struct Frame {
   float plane_extent = 2.5f;
   std::vector<PlanePoint> plane_path;
   std::vector<PlaneMark> plane_marks;
-  std::optional<Eigen::Vector2f> plane_current;  // empty when gamma is at the south pole or off the panel
+  std::optional<Eigen::Vector2f>
+      plane_current;  // empty when gamma is at the south pole or off the panel
 
   OverlayText overlay;
 };

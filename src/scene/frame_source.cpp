@@ -48,9 +48,9 @@ void FrameSource::take(const sim::Sample& s) {
 
   HistoryPoint p;
   p.t = s.t;
-  const Eigen::Vector3d on_sphere =
-      settings_.view == View::space && s.attitude ? Eigen::Vector3d(*s.attitude * Eigen::Vector3d::UnitZ())
-                                                  : s.gamma;
+  const Eigen::Vector3d on_sphere = settings_.view == View::space && s.attitude
+                                        ? Eigen::Vector3d(*s.attitude * Eigen::Vector3d::UnitZ())
+                                        : s.gamma;
   p.sphere = on_sphere.cast<float>();
   if (auto ab = physics::stereographic(s.gamma)) p.plane = ab->cast<float>();
   p.gamma3 = float(s.gamma.z());
@@ -132,13 +132,15 @@ Frame FrameSource::compose(int index) const {
   f.overlay.lines.push_back(std::string(sim::name(run.formulation)) + " formulation");
   std::snprintf(line, sizeof line, "I = %s", fmt3(run.body.inertia).c_str());
   f.overlay.lines.emplace_back(line);
-  std::snprintf(line, sizeof line, "r = %s   P = %.4g", fmt3(run.body.com).c_str(), run.body.weight);
+  std::snprintf(line, sizeof line, "r = %s   P = %.4g", fmt3(run.body.com).c_str(),
+                run.body.weight);
   f.overlay.lines.emplace_back(line);
   assert(int(f.overlay.lines.size()) == kOverlayLines);
   f.overlay.drifts = {{"|gamma|^2", max_drift_.gamma_norm2},
                       {"C0 (area)", max_drift_.area},
                       {"C1 (energy)", max_drift_.energy}};
-  if (max_drift_.extra) f.overlay.drifts.emplace_back(extra_integral_symbol(run.case_id), *max_drift_.extra);
+  if (max_drift_.extra)
+    f.overlay.drifts.emplace_back(extra_integral_symbol(run.case_id), *max_drift_.extra);
   return f;
 }
 

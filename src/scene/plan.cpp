@@ -53,9 +53,10 @@ ScenePlan plan_scene(sim::RunSpec run, const SceneSettings& s) {
   const bool needs_attitude = s.view == View::space;
   if (needs_attitude) {
     if (s.formulation_given && run.formulation != sim::Formulation::spinor)
-      throw PlanError("view 'space' draws the body turning in space and needs its attitude, which only "
-                      "formulation spinor integrates; got formulation " +
-                      std::string(sim::name(run.formulation)));
+      throw PlanError(
+          "view 'space' draws the body turning in space and needs its attitude, which only "
+          "formulation spinor integrates; got formulation " +
+          std::string(sim::name(run.formulation)));
     run.formulation = sim::Formulation::spinor;
   } else if (!s.formulation_given) {
     // gamma alone: the 6-dimensional direct state is the least the scene needs

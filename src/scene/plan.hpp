@@ -16,12 +16,13 @@ class PlanError : public std::invalid_argument {
 };
 
 struct ScenePlan {
-  sim::RunSpec run;          // samples = (frames - 1) * substeps_per_frame (at least 1 frame interval)
+  sim::RunSpec run;  // samples = (frames - 1) * substeps_per_frame (at least 1 frame interval)
   int frames = 1;
-  int samples_per_frame = 8; // trail samples between two frames
-  std::string accuracy_note; // how the tolerance or step was chosen, for the report and overlay
-  bool open_ended = false;   // interactive: no last frame; run.t_end only sets the sample spacing's horizon
-  FrameLayout layout;        // the picture the frames are drawn into (the tolerance follows it)
+  int samples_per_frame = 8;  // trail samples between two frames
+  std::string accuracy_note;  // how the tolerance or step was chosen, for the report and overlay
+  bool open_ended =
+      false;  // interactive: no last frame; run.t_end only sets the sample spacing's horizon
+  FrameLayout layout;  // the picture the frames are drawn into (the tolerance follows it)
   // Pixels per unit of gamma on the sphere and of (a, b) on the plane that the
   // trails are decimated for (see trail_pixel_scales).
   double trail_sphere_px = 0.0, trail_plane_px = 0.0;

@@ -19,7 +19,8 @@ template <class AgeFn>
 PlanePath build_plane_path(const std::deque<HistoryPoint>& history, float extent, AgeFn age);
 
 // Where the segment p -> q crosses the border of [-e, e]^2 (p inside, q outside).
-Eigen::Vector2f border_crossing(const Eigen::Vector2f& inside, const Eigen::Vector2f& outside, float e);
+Eigen::Vector2f border_crossing(const Eigen::Vector2f& inside, const Eigen::Vector2f& outside,
+                                float e);
 
 bool inside_panel(const Eigen::Vector2f& p, float e);
 
@@ -45,11 +46,14 @@ PlanePath build_plane_path(const std::deque<HistoryPoint>& history, float extent
         path.marks.push_back({from.normalized() * extent, PlaneMark::Kind::through_infinity, a});
       }
       if (prev->plane && !pt.break_before) {
-        const bool in_prev = inside_panel(*prev->plane, extent), in_now = inside_panel(pt.ab, extent);
+        const bool in_prev = inside_panel(*prev->plane, extent),
+                   in_now = inside_panel(pt.ab, extent);
         if (in_prev && !in_now)
-          path.marks.push_back({border_crossing(*prev->plane, pt.ab, extent), PlaneMark::Kind::leaves_panel, a});
+          path.marks.push_back(
+              {border_crossing(*prev->plane, pt.ab, extent), PlaneMark::Kind::leaves_panel, a});
         else if (!in_prev && in_now)
-          path.marks.push_back({border_crossing(pt.ab, *prev->plane, extent), PlaneMark::Kind::enters_panel, a});
+          path.marks.push_back(
+              {border_crossing(pt.ab, *prev->plane, extent), PlaneMark::Kind::enters_panel, a});
       }
     }
     path.points.push_back(pt);

@@ -13,14 +13,14 @@ struct SceneSettings {
   int width = 1280;
   int height = 720;
   double fps = 30.0;
-  double duration = 10.0;      // seconds of video; the run's t_end is spread over them
-  double trail_length = 0.0;   // simulation time the trail covers; 0: the whole run
-  float plane_extent = 2.5f;   // the Riccati panel shows [-extent, extent]^2
-  bool auto_tolerance = true;  // derive the tolerance from the resolution
+  double duration = 10.0;          // seconds of video; the run's t_end is spread over them
+  double trail_length = 0.0;       // simulation time the trail covers; 0: the whole run
+  float plane_extent = 2.5f;       // the Riccati panel shows [-extent, extent]^2
+  bool auto_tolerance = true;      // derive the tolerance from the resolution
   bool formulation_given = false;  // the job chose the formulation itself
-  std::string title;           // overrides the case's title when not empty
+  std::string title;               // overrides the case's title when not empty
 
-  int frame_count() const;     // round(fps * duration), at least 1
+  int frame_count() const;  // round(fps * duration), at least 1
 };
 
 }  // namespace epviz::scene

@@ -28,7 +28,8 @@ TrailHistory::TrailHistory(double sphere_px_per_unit, double plane_px_per_unit, 
       tolerance_px_(tolerance_px),
       max_gap_px_(max_gap_px) {}
 
-double TrailHistory::deviation_px(const HistoryPoint& from, const HistoryPoint& mid, const HistoryPoint& to) const {
+double TrailHistory::deviation_px(const HistoryPoint& from, const HistoryPoint& mid,
+                                  const HistoryPoint& to) const {
   double d = segment_distance(from.sphere, mid.sphere, to.sphere) * sphere_px_;
   if (from.plane && mid.plane && to.plane)
     d = std::max(d, segment_distance(*from.plane, *mid.plane, *to.plane) * plane_px_);
@@ -49,9 +50,11 @@ void TrailHistory::offer(const HistoryPoint& p) {
   if (held_) {
     const HistoryPoint& last = points_.back();
     // A change of plane visibility (to or from the south pole) is always kept.
-    bool keep = held_->plane.has_value() != last.plane.has_value() || p.plane.has_value() != held_->plane.has_value() ||
-                span_px(last, p) > max_gap_px_ || skipped_.size() >= kMaxSkipped;
-    if (skipped_.empty() || span_px(skipped_.back(), *held_) > kNegligiblePx) skipped_.push_back(*held_);
+    bool keep = held_->plane.has_value() != last.plane.has_value() ||
+                p.plane.has_value() != held_->plane.has_value() || span_px(last, p) > max_gap_px_ ||
+                skipped_.size() >= kMaxSkipped;
+    if (skipped_.empty() || span_px(skipped_.back(), *held_) > kNegligiblePx)
+      skipped_.push_back(*held_);
     for (std::size_t i = 0; !keep && i < skipped_.size(); ++i)
       keep = deviation_px(last, skipped_[i], p) > tolerance_px_;
     if (keep) {

@@ -3,8 +3,8 @@
 // them apart, and only over the trail's time window, so memory is bounded by
 // the picture, not by the number of frames.
 #include <deque>
-#include <vector>
 #include <optional>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -12,9 +12,9 @@ namespace epviz::scene {
 
 struct HistoryPoint {
   double t;
-  Eigen::Vector3f sphere;               // the point drawn on the sphere
-  std::optional<Eigen::Vector2f> plane; // (a, b); empty at the south pole
-  float gamma3;                         // to tell a pass through infinity
+  Eigen::Vector3f sphere;                // the point drawn on the sphere
+  std::optional<Eigen::Vector2f> plane;  // (a, b); empty at the south pole
+  float gamma3;                          // to tell a pass through infinity
 };
 
 class TrailHistory {
@@ -36,7 +36,8 @@ class TrailHistory {
 
  private:
   // How far (pixels) `mid` lies from the straight line from `from` to `to`.
-  double deviation_px(const HistoryPoint& from, const HistoryPoint& mid, const HistoryPoint& to) const;
+  double deviation_px(const HistoryPoint& from, const HistoryPoint& mid,
+                      const HistoryPoint& to) const;
   double span_px(const HistoryPoint& a, const HistoryPoint& b) const;
 
   double sphere_px_, plane_px_, tolerance_px_, max_gap_px_;

@@ -50,8 +50,9 @@ void HttpSession::read_request() {
   parser_->header_limit(header_limit);
   parser_->body_limit(body_limit);
   stream_.expires_after(request_timeout);
-  http::async_read(stream_, buffer_, *parser_,
-                   [self = shared_from_this()](beast::error_code ec, std::size_t) { self->on_request(ec); });
+  http::async_read(
+      stream_, buffer_, *parser_,
+      [self = shared_from_this()](beast::error_code ec, std::size_t) { self->on_request(ec); });
 }
 
 void HttpSession::on_request(beast::error_code ec) {
@@ -66,15 +67,18 @@ void HttpSession::on_request(beast::error_code ec) {
   const std::string path = path_of(request);
   if (websocket::is_upgrade(request)) {
     if (path == "/ws") return upgrade(std::move(request));
-    return respond(request, http::status::not_found, "text/plain", "no WebSocket at " + path + "; use /ws\n");
+    return respond(request, http::status::not_found, "text/plain",
+                   "no WebSocket at " + path + "; use /ws\n");
   }
   if (request.method() != http::verb::get)
     return respond(request, http::status::method_not_allowed, "text/plain", "only GET is served\n");
-  if (path != "/") return respond(request, http::status::not_found, "text/plain", "not found: " + path + "\n");
+  if (path != "/")
+    return respond(request, http::status::not_found, "text/plain", "not found: " + path + "\n");
   std::optional<std::string> page = read_file(context_.options.page);
   if (!page) {
     context_.log("cannot read the page " + context_.options.page.string());
-    return respond(request, http::status::internal_server_error, "text/plain", "the page file cannot be read\n");
+    return respond(request, http::status::internal_server_error, "text/plain",
+                   "the page file cannot be read\n");
   }
   respond(request, http::status::ok, "text/html; charset=utf-8", std::move(*page));
 }
@@ -82,9 +86,11 @@ void HttpSession::on_request(beast::error_code ec) {
 void HttpSession::upgrade(Request request) {
   const int limit = context_.options.max_clients;
   if (context_.stopping)
-    return respond(request, http::status::service_unavailable, "text/plain", "the server is stopping\n");
+    return respond(request, http::status::service_unavailable, "text/plain",
+                   "the server is stopping\n");
   if (context_.websocket_clients >= limit) {
-    context_.log("refused a connection: " + std::to_string(limit) + " clients already connected (max_clients)");
+    context_.log("refused a connection: " + std::to_string(limit) +
+                 " clients already connected (max_clients)");
     return respond(request, http::status::service_unavailable, "text/plain",
                    "too many clients: this server takes at most " + std::to_string(limit) +
                        " connections at a time; close another tab and reload\n");
@@ -98,7 +104,8 @@ void HttpSession::upgrade(Request request) {
   connection->start(std::move(request));
 }
 
-void HttpSession::respond(const Request& request, http::status status, const char* content_type, std::string body) {
+void HttpSession::respond(const Request& request, http::status status, const char* content_type,
+                          std::string body) {
   auto response = std::make_shared<Response>(status, request.version());
   response->set(http::field::server, "epviz");
   response->set(http::field::content_type, content_type);
@@ -109,12 +116,13 @@ void HttpSession::respond(const Request& request, http::status status, const cha
   response->body() = std::move(body);
   response->prepare_payload();
   stream_.expires_after(request_timeout);
-  http::async_write(stream_, *response, [self = shared_from_this(), response](beast::error_code ec, std::size_t) {
-    if (ec) return;
-    if (response->keep_alive()) return self->read_request();
-    beast::error_code ignored;
-    self->stream_.socket().shutdown(boost::asio::ip::tcp::socket::shutdown_send, ignored);
-  });
+  http::async_write(
+      stream_, *response, [self = shared_from_this(), response](beast::error_code ec, std::size_t) {
+        if (ec) return;
+        if (response->keep_alive()) return self->read_request();
+        beast::error_code ignored;
+        self->stream_.socket().shutdown(boost::asio::ip::tcp::socket::shutdown_send, ignored);
+      });
 }
 
 }  // namespace epviz::serve

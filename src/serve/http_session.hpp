@@ -25,7 +25,8 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   void read_request();
   void on_request(boost::beast::error_code ec);
   void upgrade(Request request);
-  void respond(const Request& request, boost::beast::http::status status, const char* content_type, std::string body);
+  void respond(const Request& request, boost::beast::http::status status, const char* content_type,
+               std::string body);
 
   boost::beast::tcp_stream stream_;
   boost::beast::flat_buffer buffer_;

@@ -4,7 +4,8 @@
 
 namespace epviz::serve {
 
-ImageEncoder::ImageEncoder(ImageFormat format, int jpeg_quality) : format_(format), jpeg_quality_(jpeg_quality) {}
+ImageEncoder::ImageEncoder(ImageFormat format, int jpeg_quality)
+    : format_(format), jpeg_quality_(jpeg_quality) {}
 
 EncodedImage ImageEncoder::encode(const render::RgbaImage& image) {
   if (format_ == ImageFormat::png)

@@ -22,10 +22,11 @@ class JpegEncoder {
   // dropped). 4:2:0 chroma subsampling; quality 1..100. Throws
   // std::invalid_argument for a size that does not match the buffer or a bad
   // quality, std::runtime_error when TurboJPEG fails.
-  std::vector<std::uint8_t> encode(int width, int height, std::span<const std::uint8_t> rgba, int quality);
+  std::vector<std::uint8_t> encode(int width, int height, std::span<const std::uint8_t> rgba,
+                                   int quality);
 
  private:
-  void* handle_ = nullptr;          // tjhandle
+  void* handle_ = nullptr;           // tjhandle
   unsigned char* buffer_ = nullptr;  // tjAlloc'd, big enough for the largest frame so far
   unsigned long capacity_ = 0;
 };

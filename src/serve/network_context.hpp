@@ -15,7 +15,8 @@ namespace epviz::serve {
 class WebSocketConnection;
 
 struct NetworkContext {
-  NetworkContext(const ServerOptions& options, const ServerLog& log, ServerCounters& counters, RenderHub& hub)
+  NetworkContext(const ServerOptions& options, const ServerLog& log, ServerCounters& counters,
+                 RenderHub& hub)
       : options(options), log(log), counters(counters), hub(hub) {}
 
   const ServerOptions& options;

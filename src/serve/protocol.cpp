@@ -74,18 +74,21 @@ class Fields {
   }
 
  private:
-  std::int64_t integer_value(const char* name, const json& value, std::int64_t lo, std::int64_t hi) const {
+  std::int64_t integer_value(const char* name, const json& value, std::int64_t lo,
+                             std::int64_t hi) const {
     // 3.0 is a float to nlohmann; a page that sends it has a bug worth hearing about.
     if (!value.is_number_integer())
       fail(name, "must be an integer, got " + std::string(value.type_name()) + " " + quote(value));
-    const bool too_big = value.is_number_unsigned() &&
-                         value.get<std::uint64_t>() > static_cast<std::uint64_t>(hi);
+    const bool too_big =
+        value.is_number_unsigned() && value.get<std::uint64_t>() > static_cast<std::uint64_t>(hi);
     if (too_big || value.get<std::int64_t>() < lo || value.get<std::int64_t>() > hi)
-      fail(name, "must be " + std::to_string(lo) + ".." + std::to_string(hi) + ", got " + quote(value));
+      fail(name,
+           "must be " + std::to_string(lo) + ".." + std::to_string(hi) + ", got " + quote(value));
     return value.get<std::int64_t>();
   }
   bool boolean_value(const char* name, const json& value) const {
-    if (!value.is_boolean()) fail(name, "must be true or false, got " + std::string(value.type_name()));
+    if (!value.is_boolean())
+      fail(name, "must be true or false, got " + std::string(value.type_name()));
     return value.get<bool>();
   }
 
@@ -153,7 +156,9 @@ ClientMessage parse_object(const json& message) {
 
 // The header as JSON text; strings a session made up (notices, file names)
 // may hold invalid UTF-8, which is replaced rather than thrown on.
-std::string dump(const json& header) { return header.dump(-1, ' ', false, json::error_handler_t::replace); }
+std::string dump(const json& header) {
+  return header.dump(-1, ' ', false, json::error_handler_t::replace);
+}
 
 }  // namespace
 
@@ -171,9 +176,11 @@ std::string encode_client_message(const ClientMessage& message) {
       case Kind::mouse_button:
         j = {{"type", "button"}, {"x", e.x}, {"y", e.y}, {"button", e.button}, {"down", e.down}};
         break;
-      case Kind::wheel: j = {{"type", "wheel"}, {"x", e.x}, {"y", e.y}, {"dx", e.wheel_x}, {"dy", e.wheel_y}}; break;
+      case Kind::wheel:
+        j = {{"type", "wheel"}, {"x", e.x}, {"y", e.y}, {"dx", e.wheel_x}, {"dy", e.wheel_y}};
+        break;
       case Kind::key:
-        j = {{"type", "key"}, {"key", e.key}, {"down", e.down}, {"ctrl", e.ctrl},
+        j = {{"type", "key"},    {"key", e.key}, {"down", e.down}, {"ctrl", e.ctrl},
              {"shift", e.shift}, {"alt", e.alt}, {"meta", e.super}};
         break;
       case Kind::text: j = {{"type", "text"}, {"text", e.text}}; break;
@@ -188,25 +195,34 @@ ClientMessage parse_client_message(std::string_view text) {
   json message = json::parse(text.begin(), text.end(), nullptr, /*allow_exceptions=*/false);
   if (message.is_discarded()) throw ProtocolError("", "message is not valid JSON");
   if (!message.is_object())
-    throw ProtocolError("", "message must be a JSON object, got " + std::string(message.type_name()));
+    throw ProtocolError("",
+                        "message must be a JSON object, got " + std::string(message.type_name()));
   return parse_object(message);
 }
 
-std::vector<std::uint8_t> encode_server_message(const json& header, std::span<const std::uint8_t> payload) {
+std::vector<std::uint8_t> encode_server_message(const json& header,
+                                                std::span<const std::uint8_t> payload) {
   const std::string text = dump(header);
   const auto n = static_cast<std::uint32_t>(text.size());
   std::vector<std::uint8_t> bytes;
   bytes.reserve(4 + text.size() + payload.size());
-  for (int shift = 0; shift < 32; shift += 8) bytes.push_back(static_cast<std::uint8_t>(n >> shift));
+  for (int shift = 0; shift < 32; shift += 8)
+    bytes.push_back(static_cast<std::uint8_t>(n >> shift));
   bytes.insert(bytes.end(), text.begin(), text.end());
   bytes.insert(bytes.end(), payload.begin(), payload.end());
   return bytes;
 }
 
-std::vector<std::uint8_t> encode_frame_message(const FrameInfo& info, std::span<const std::uint8_t> image) {
-  json header = {{"kind", "frame"},         {"frame", info.frame},         {"seq", info.seq},
-                 {"width", info.width},     {"height", info.height},       {"mime", info.mime},
-                 {"render_ms", info.render_ms}, {"encode_ms", info.encode_ms}};
+std::vector<std::uint8_t> encode_frame_message(const FrameInfo& info,
+                                               std::span<const std::uint8_t> image) {
+  json header = {{"kind", "frame"},
+                 {"frame", info.frame},
+                 {"seq", info.seq},
+                 {"width", info.width},
+                 {"height", info.height},
+                 {"mime", info.mime},
+                 {"render_ms", info.render_ms},
+                 {"encode_ms", info.encode_ms}};
   // A session's own JSON: parsed so that a malformed one is dropped, not sent.
   if (!info.controls_json.empty()) {
     json controls = json::parse(info.controls_json, nullptr, /*allow_exceptions=*/false);
@@ -217,8 +233,10 @@ std::vector<std::uint8_t> encode_frame_message(const FrameInfo& info, std::span<
 
 std::vector<std::uint8_t> encode_file_message(const Download& download) {
   std::string name = download.name;
-  if (const auto slash = name.find_last_of("/\\"); slash != std::string::npos) name.erase(0, slash + 1);
-  return encode_server_message({{"kind", "file"}, {"name", name}, {"mime", download.mime}}, download.bytes);
+  if (const auto slash = name.find_last_of("/\\"); slash != std::string::npos)
+    name.erase(0, slash + 1);
+  return encode_server_message({{"kind", "file"}, {"name", name}, {"mime", download.mime}},
+                               download.bytes);
 }
 
 std::vector<std::uint8_t> encode_notice_message(std::string_view text) {
@@ -226,15 +244,18 @@ std::vector<std::uint8_t> encode_notice_message(std::string_view text) {
 }
 
 ServerMessage decode_server_message(std::span<const std::uint8_t> bytes) {
-  if (bytes.size() < 4) throw ProtocolError("", "server message shorter than its 4-byte header length");
+  if (bytes.size() < 4)
+    throw ProtocolError("", "server message shorter than its 4-byte header length");
   std::uint32_t n = 0;
   for (int i = 3; i >= 0; --i) n = (n << 8) | bytes[static_cast<std::size_t>(i)];
   if (n > bytes.size() - 4)
-    throw ProtocolError("", "server message header length " + std::to_string(n) + " exceeds the message");
+    throw ProtocolError(
+        "", "server message header length " + std::to_string(n) + " exceeds the message");
   const auto header_bytes = bytes.subspan(4, n);
   ServerMessage message;
   message.header = json::parse(header_bytes.begin(), header_bytes.end(), nullptr, false);
-  if (!message.header.is_object()) throw ProtocolError("", "server message header is not a JSON object");
+  if (!message.header.is_object())
+    throw ProtocolError("", "server message header is not a JSON object");
   message.payload.assign(bytes.begin() + 4 + n, bytes.end());
   return message;
 }

@@ -46,11 +46,11 @@ class ProtocolError : public std::runtime_error {
 // clamps sizes further (ServerOptions::max_width); these only reject values
 // no real page sends, so a bug or an attacker is told so instead of being
 // silently clamped.
-inline constexpr int max_view_pixels = 16384;          // resize width/height: 1 .. this
-inline constexpr double max_abs_position = 1.0e6;      // x, y (may be negative: drags leave the view)
-inline constexpr double max_abs_wheel = 1.0e4;         // dx, dy in notches
-inline constexpr std::size_t max_text_bytes = 64;      // `text`
-inline constexpr std::size_t max_key_bytes = 32;       // `key` (longest DOM key names are ~20)
+inline constexpr int max_view_pixels = 16384;      // resize width/height: 1 .. this
+inline constexpr double max_abs_position = 1.0e6;  // x, y (may be negative: drags leave the view)
+inline constexpr double max_abs_wheel = 1.0e4;     // dx, dy in notches
+inline constexpr std::size_t max_text_bytes = 64;  // `text`
+inline constexpr std::size_t max_key_bytes = 32;   // `key` (longest DOM key names are ~20)
 
 // Parses one page → server text message; throws ProtocolError.
 ClientMessage parse_client_message(std::string_view text);
@@ -63,16 +63,17 @@ std::vector<std::uint8_t> encode_server_message(const nlohmann::json& header,
                                                 std::span<const std::uint8_t> payload = {});
 
 struct FrameInfo {
-  std::int64_t frame = 0;   // 1, 2, ... per connection
-  std::uint64_t seq = 0;    // last input seq applied before rendering, 0 if none
+  std::int64_t frame = 0;  // 1, 2, ... per connection
+  std::uint64_t seq = 0;   // last input seq applied before rendering, 0 if none
   int width = 0;
   int height = 0;
-  std::string mime;         // "image/jpeg" or "image/png"
+  std::string mime;  // "image/jpeg" or "image/png"
   double render_ms = 0.0;
   double encode_ms = 0.0;
   std::string controls_json;  // the session's named control rectangles (a JSON object), or ""
 };
-std::vector<std::uint8_t> encode_frame_message(const FrameInfo& info, std::span<const std::uint8_t> image);
+std::vector<std::uint8_t> encode_frame_message(const FrameInfo& info,
+                                               std::span<const std::uint8_t> image);
 // Directories in download.name are dropped: the page only needs a file name.
 std::vector<std::uint8_t> encode_file_message(const Download& download);
 std::vector<std::uint8_t> encode_notice_message(std::string_view text);

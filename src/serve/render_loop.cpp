@@ -50,7 +50,8 @@ void RenderLoop::run() {
         recording_taken_ = true;
         recording_.open(options_.record_path, std::ios::trunc);
         client.recorded = bool(recording_);
-        log_((client.recorded ? "recording connection to " : "cannot record to ") + options_.record_path.string());
+        log_((client.recorded ? "recording connection to " : "cannot record to ") +
+             options_.record_path.string());
       }
       clients_.push_back(std::move(client));
     }
@@ -87,14 +88,15 @@ bool RenderLoop::serve(Client& client) {
       send_frame(client);
       rendered = true;
     }
-    for (const Download& download : client.session->take_downloads()) send(client, encode_file_message(download));
-    for (const std::string& notice : client.session->take_notices()) send(client, encode_notice_message(notice));
+    for (const Download& download : client.session->take_downloads())
+      send(client, encode_file_message(download));
+    for (const std::string& notice : client.session->take_notices())
+      send(client, encode_notice_message(notice));
     return rendered;
   } catch (...) {
     // A failing session ends its own connection, never the server.
     log_(connection_name(link.id) + ": session failed: " + describe_current_exception());
-    if (auto outlet = link.outlet.lock())
-      outlet->close(close_internal_error, "session failed");
+    if (auto outlet = link.outlet.lock()) outlet->close(close_internal_error, "session failed");
     client.finished = true;
     return false;
   }
@@ -111,8 +113,10 @@ void RenderLoop::apply(Client& client, const ClientMessage& message) {
       [&](const auto& m) {
         using T = std::decay_t<decltype(m)>;
         if constexpr (std::is_same_v<T, Resize>) {
-          const int width = std::clamp(m.width, min_view_pixels, std::max(min_view_pixels, options_.max_width));
-          const int height = std::clamp(m.height, min_view_pixels, std::max(min_view_pixels, options_.max_height));
+          const int width =
+              std::clamp(m.width, min_view_pixels, std::max(min_view_pixels, options_.max_width));
+          const int height =
+              std::clamp(m.height, min_view_pixels, std::max(min_view_pixels, options_.max_height));
           // Recorded as the session gets it (clamped), so a replay makes the same calls.
           record(client, encode_client_message(Resize{width, height}));
           client.session->resize(width, height);

@@ -17,8 +17,8 @@ namespace epviz::serve {
 
 class RenderLoop {
  public:
-  RenderLoop(const ServerOptions& options, RenderHub& hub, SessionFactory make_session, const ServerLog& log,
-             ServerCounters& counters);
+  RenderLoop(const ServerOptions& options, RenderHub& hub, SessionFactory make_session,
+             const ServerLog& log, ServerCounters& counters);
   ~RenderLoop();
   RenderLoop(const RenderLoop&) = delete;
   RenderLoop& operator=(const RenderLoop&) = delete;

@@ -81,7 +81,8 @@ struct Server::Impl {
   std::thread render_thread;
   unsigned short bound_port = 0;
 
-  std::mutex lifecycle_mutex;  // start/stop; held through stop so a second caller waits for the first
+  std::mutex
+      lifecycle_mutex;  // start/stop; held through stop so a second caller waits for the first
   std::condition_variable stopped;
   State state = State::created;
   std::atomic<bool> stop_requested{false};
@@ -94,14 +95,17 @@ void Server::Impl::start() {
   const std::string where = address_text(options.bind, options.port);
   boost::system::error_code ec;
   tcp::resolver resolver(*io);
-  const auto endpoints = resolver.resolve(options.bind, std::to_string(options.port),
-                                          tcp::resolver::passive | tcp::resolver::numeric_service, ec);
+  const auto endpoints =
+      resolver.resolve(options.bind, std::to_string(options.port),
+                       tcp::resolver::passive | tcp::resolver::numeric_service, ec);
   if (ec || endpoints.empty())
-    throw std::runtime_error("cannot listen on " + where + ": " + (ec ? ec.message() : "no such address"));
+    throw std::runtime_error("cannot listen on " + where + ": " +
+                             (ec ? ec.message() : "no such address"));
   const tcp::endpoint endpoint = endpoints.begin()->endpoint();
   acceptor.emplace(*io);
   auto fail_if = [&](const char* step) {
-    if (ec) throw std::runtime_error("cannot listen on " + where + ": " + step + ": " + ec.message());
+    if (ec)
+      throw std::runtime_error("cannot listen on " + where + ": " + step + ": " + ec.message());
   };
   acceptor->open(endpoint.protocol(), ec);
   fail_if("open");
@@ -157,19 +161,20 @@ void Server::Impl::start() {
 }
 
 void Server::Impl::accept_next() {
-  acceptor->async_accept(net::make_strand(*io), [this](boost::system::error_code ec, tcp::socket socket) {
-    if (ec == net::error::operation_aborted || !acceptor->is_open()) return;
-    if (!ec) {
-      std::make_shared<HttpSession>(std::move(socket), network)->start();
-      return accept_next();
-    }
-    // Out of file descriptors, typically: wait a little instead of spinning.
-    log(std::string("accept failed: ") + ec.message());
-    retry_timer.emplace(*io, std::chrono::milliseconds(100));
-    retry_timer->async_wait([this](boost::system::error_code wait_ec) {
-      if (!wait_ec && acceptor->is_open()) accept_next();
-    });
-  });
+  acceptor->async_accept(net::make_strand(*io),
+                         [this](boost::system::error_code ec, tcp::socket socket) {
+                           if (ec == net::error::operation_aborted || !acceptor->is_open()) return;
+                           if (!ec) {
+                             std::make_shared<HttpSession>(std::move(socket), network)->start();
+                             return accept_next();
+                           }
+                           // Out of file descriptors, typically: wait a little instead of spinning.
+                           log(std::string("accept failed: ") + ec.message());
+                           retry_timer.emplace(*io, std::chrono::milliseconds(100));
+                           retry_timer->async_wait([this](boost::system::error_code wait_ec) {
+                             if (!wait_ec && acceptor->is_open()) accept_next();
+                           });
+                         });
 }
 
 void Server::Impl::begin_shutdown() {
@@ -212,8 +217,10 @@ void Server::Impl::stop() {
   stopped.notify_all();
 }
 
-Server::Server(ServerOptions options, std::function<void()> render_thread_init, SessionFactory make_session)
-    : impl_(std::make_unique<Impl>(std::move(options), std::move(render_thread_init), std::move(make_session))) {}
+Server::Server(ServerOptions options, std::function<void()> render_thread_init,
+               SessionFactory make_session)
+    : impl_(std::make_unique<Impl>(std::move(options), std::move(render_thread_init),
+                                   std::move(make_session))) {}
 
 Server::~Server() { stop(); }
 
@@ -241,7 +248,8 @@ void Server::wait() {
 
 ServerStats Server::stats() const {
   const ServerCounters& c = impl_->counters;
-  return {c.connections_accepted.load(), c.connections_open.load(), c.frames_sent.load(), c.protocol_errors.load()};
+  return {c.connections_accepted.load(), c.connections_open.load(), c.frames_sent.load(),
+          c.protocol_errors.load()};
 }
 
 }  // namespace epviz::serve

@@ -17,11 +17,11 @@ enum class ImageFormat { jpeg, png };
 
 struct ServerOptions {
   std::string bind = "127.0.0.1";
-  unsigned short port = 8080;            // 0: any free port (see Server::port())
-  std::filesystem::path page;            // the HTML file served at "/"
+  unsigned short port = 8080;                 // 0: any free port (see Server::port())
+  std::filesystem::path page;                 // the HTML file served at "/"
   std::size_t max_message_bytes = 64 * 1024;  // larger client messages close that connection
-  int max_frames_in_flight = 2;          // frames sent but not yet acknowledged, per connection
-  int max_clients = 16;                  // further connections are refused with a reason
+  int max_frames_in_flight = 2;             // frames sent but not yet acknowledged, per connection
+  int max_clients = 16;                     // further connections are refused with a reason
   int max_width = 3840, max_height = 2160;  // resize requests are clamped to these
   ImageFormat image_format = ImageFormat::jpeg;
   int jpeg_quality = 85;
@@ -44,7 +44,8 @@ class Server {
  public:
   // `render_thread_init` runs first on the render thread (create the GL
   // context there); `make_session` then runs there for each connection.
-  Server(ServerOptions options, std::function<void()> render_thread_init, SessionFactory make_session);
+  Server(ServerOptions options, std::function<void()> render_thread_init,
+         SessionFactory make_session);
   ~Server();  // stops
   Server(const Server&) = delete;
   Server& operator=(const Server&) = delete;

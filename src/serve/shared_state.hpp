@@ -33,10 +33,10 @@ class ServerLog {
 
 // WebSocket close codes the server sends (RFC 6455, 7.4.1), here so that code
 // without Beast (the render loop) can name them.
-inline constexpr std::uint16_t close_going_away = 1001;     // the server is stopping
-inline constexpr std::uint16_t close_policy_error = 1008;   // a malformed message
-inline constexpr std::uint16_t close_too_big = 1009;        // a message over max_message_bytes
-inline constexpr std::uint16_t close_internal_error = 1011; // the session failed
+inline constexpr std::uint16_t close_going_away = 1001;      // the server is stopping
+inline constexpr std::uint16_t close_policy_error = 1008;    // a malformed message
+inline constexpr std::uint16_t close_too_big = 1009;         // a message over max_message_bytes
+inline constexpr std::uint16_t close_internal_error = 1011;  // the session failed
 
 // How log lines name a connection, the same from both threads.
 inline std::string connection_name(long id) { return "connection #" + std::to_string(id); }
@@ -54,7 +54,7 @@ class ConnectionOutlet {
  public:
   virtual ~ConnectionOutlet() = default;
   virtual void send(std::vector<std::uint8_t> message) = 0;  // one binary WebSocket message
-  virtual void resume_reading() = 0;                          // the inbox has room again
+  virtual void resume_reading() = 0;                         // the inbox has room again
   virtual void close(std::uint16_t code, std::string reason) = 0;
 };
 
@@ -66,7 +66,8 @@ class ConnectionLink {
   // page flooding events cannot grow the server's memory without bound.
   static constexpr std::size_t inbox_limit = 1024;
 
-  ConnectionLink(long id, std::weak_ptr<ConnectionOutlet> outlet) : id(id), outlet(std::move(outlet)) {}
+  ConnectionLink(long id, std::weak_ptr<ConnectionOutlet> outlet)
+      : id(id), outlet(std::move(outlet)) {}
 
   const long id;
   const std::weak_ptr<ConnectionOutlet> outlet;  // expired once the network side is gone
@@ -105,7 +106,7 @@ class RenderHub {
  private:
   std::mutex mutex_;
   std::condition_variable wake_;
-  bool dirty_ = false;     // set by any event, cleared by wait_for_work: no wake-up is lost
+  bool dirty_ = false;  // set by any event, cleared by wait_for_work: no wake-up is lost
   bool stopping_ = false;
   std::vector<std::shared_ptr<ConnectionLink>> new_links_;
 };

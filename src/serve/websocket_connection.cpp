@@ -34,7 +34,10 @@ std::string peer_of(beast::tcp_stream& stream) {
 }  // namespace
 
 WebSocketConnection::WebSocketConnection(beast::tcp_stream stream, NetworkContext& context, long id)
-    : ws_(std::move(stream)), context_(context), id_(id), peer_(peer_of(beast::get_lowest_layer(ws_))) {}
+    : ws_(std::move(stream)),
+      context_(context),
+      id_(id),
+      peer_(peer_of(beast::get_lowest_layer(ws_))) {}
 
 WebSocketConnection::~WebSocketConnection() {
   // Only reached without finish() when Server::stop ends the connections
@@ -66,7 +69,8 @@ void WebSocketConnection::start(http::request<http::string_body> request) {
   // One WebSocket frame per message: a frame for the page is written in one
   // go instead of in write-buffer-sized pieces.
   ws_.auto_fragment(false);
-  ws_.async_accept(upgrade_request_, beast::bind_front_handler(&WebSocketConnection::on_accept, shared_from_this()));
+  ws_.async_accept(upgrade_request_,
+                   beast::bind_front_handler(&WebSocketConnection::on_accept, shared_from_this()));
 }
 
 void WebSocketConnection::on_accept(beast::error_code ec) {
@@ -97,8 +101,9 @@ void WebSocketConnection::read_next() {
   reading_ = true;
   // Never more than one byte past the limit: that byte is how we know.
   const std::size_t limit = context_.options.max_message_bytes + 1 - buffer_.size();
-  ws_.async_read_some(buffer_, limit,
-                      [self = shared_from_this()](beast::error_code ec, std::size_t) { self->on_read(ec); });
+  ws_.async_read_some(
+      buffer_, limit,
+      [self = shared_from_this()](beast::error_code ec, std::size_t) { self->on_read(ec); });
 }
 
 void WebSocketConnection::on_read(beast::error_code ec) {
@@ -108,7 +113,8 @@ void WebSocketConnection::on_read(beast::error_code ec) {
     finish("closed by the page (" + std::to_string(static_cast<int>(ws_.reason().code)) + ")");
   } else if (ec == net::error::operation_aborted) {
     finish("");  // we closed the socket ourselves
-  } else if (ec && ec.category() == websocket::make_error_code(websocket::error::closed).category()) {
+  } else if (ec &&
+             ec.category() == websocket::make_error_code(websocket::error::closed).category()) {
     // Beast failed the connection itself (invalid UTF-8 in a text message, a bad frame).
     ++context_.counters.protocol_errors;
     finish("WebSocket protocol violation: " + ec.message());
@@ -162,11 +168,12 @@ void WebSocketConnection::protocol_error(const std::string& problem) {
 }
 
 void WebSocketConnection::send(std::vector<std::uint8_t> message) {
-  net::post(ws_.get_executor(), [self = shared_from_this(), message = std::move(message)]() mutable {
-    if (self->closing_ || self->finished_) return;
-    self->outbox_.push_back(std::move(message));
-    self->write_next();
-  });
+  net::post(ws_.get_executor(),
+            [self = shared_from_this(), message = std::move(message)]() mutable {
+              if (self->closing_ || self->finished_) return;
+              self->outbox_.push_back(std::move(message));
+              self->write_next();
+            });
 }
 
 void WebSocketConnection::resume_reading() {
@@ -187,21 +194,25 @@ void WebSocketConnection::write_next() {
   if (writing_ || outbox_.empty() || closing_ || finished_) return;
   writing_ = true;
   ws_.binary(true);
-  ws_.async_write(net::buffer(outbox_.front()), [self = shared_from_this()](beast::error_code ec, std::size_t) {
-    self->writing_ = false;
-    self->outbox_.pop_front();
-    if (ec) {
-      self->finish(ec == net::error::operation_aborted ? "" : "connection lost while writing: " + ec.message());
-      return;
-    }
-    self->write_next();
-  });
+  ws_.async_write(net::buffer(outbox_.front()),
+                  [self = shared_from_this()](beast::error_code ec, std::size_t) {
+                    self->writing_ = false;
+                    self->outbox_.pop_front();
+                    if (ec) {
+                      self->finish(ec == net::error::operation_aborted
+                                       ? ""
+                                       : "connection lost while writing: " + ec.message());
+                      return;
+                    }
+                    self->write_next();
+                  });
 }
 
 void WebSocketConnection::start_close(std::uint16_t code, std::string reason) {
   if (closing_ || finished_ || !link_) return;
   closing_ = true;
-  ws_.async_close(websocket::close_reason(static_cast<websocket::close_code>(code), close_reason_text(std::move(reason))),
+  ws_.async_close(websocket::close_reason(static_cast<websocket::close_code>(code),
+                                          close_reason_text(std::move(reason))),
                   [self = shared_from_this()](beast::error_code) { self->finish(""); });
 }
 
@@ -226,7 +237,8 @@ void WebSocketConnection::finish(const std::string& why) {
   // write failed, say), so the last handler runs and frees it.
   beast::error_code ignored;
   beast::get_lowest_layer(ws_).socket().close(ignored);
-  if (context_.stopping && context_.connections.empty() && context_.on_all_closed) context_.on_all_closed();
+  if (context_.stopping && context_.connections.empty() && context_.on_all_closed)
+    context_.on_all_closed();
 }
 
 }  // namespace epviz::serve

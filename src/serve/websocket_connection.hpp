@@ -18,7 +18,8 @@
 
 namespace epviz::serve {
 
-class WebSocketConnection : public ConnectionOutlet, public std::enable_shared_from_this<WebSocketConnection> {
+class WebSocketConnection : public ConnectionOutlet,
+                            public std::enable_shared_from_this<WebSocketConnection> {
  public:
   // `context.websocket_clients` already counts this connection; finishing releases it.
   WebSocketConnection(boost::beast::tcp_stream stream, NetworkContext& context, long id);

@@ -35,7 +35,9 @@ Drifts InvariantMonitor::no_drift() const {
 
 void InvariantMonitor::worsen(Drifts& worst, const Sample& s) const {
   const Drifts d = relative_drift(at(s));
-  auto keep = [](double& w, double v) { if (!(v <= w)) w = v; };  // NaN wins
+  auto keep = [](double& w, double v) {
+    if (!(v <= w)) w = v;
+  };  // NaN wins
   keep(worst.gamma_norm2, d.gamma_norm2);
   keep(worst.area, d.area);
   keep(worst.energy, d.energy);

@@ -19,7 +19,8 @@ struct Drifts {
 class InvariantMonitor {
  public:
   // The reference values are those of the initial state of the run.
-  InvariantMonitor(const physics::Body& body, physics::Case c, const physics::InitialState& initial);
+  InvariantMonitor(const physics::Body& body, physics::Case c,
+                   const physics::InitialState& initial);
 
   physics::Invariants at(const Sample& s) const;
   Drifts relative_drift(const physics::Invariants& now) const;

@@ -8,21 +8,31 @@
 namespace epviz::sim {
 
 enum class Formulation { direct, riccati, spinor };
-enum class Method { rk4, dopri5, dop853, midpoint, gauss4, gauss6, splitting, exact_split2, exact_split4 };
+enum class Method {
+  rk4,
+  dopri5,
+  dop853,
+  midpoint,
+  gauss4,
+  gauss6,
+  splitting,
+  exact_split2,
+  exact_split4
+};
 
 struct FormulationInfo {
   Formulation formulation;
   std::string_view name;
-  int dimension;            // state size integrated
+  int dimension;  // state size integrated
   std::string_view help;
 };
 
 struct MethodInfo {
   Method method;
   std::string_view name;
-  int order;                // classical order of the global error
-  bool adaptive;            // step chosen by an error estimate (uses tol, dense output)
-  bool needs_direct;        // its sub-flows are exact only in the direct formulation
+  int order;                    // classical order of the global error
+  bool adaptive;                // step chosen by an error estimate (uses tol, dense output)
+  bool needs_direct;            // its sub-flows are exact only in the direct formulation
   std::string_view why_direct;  // what those sub-flows are (when needs_direct)
   std::string_view help;
 };
@@ -38,10 +48,14 @@ inline constexpr std::array<MethodInfo, 9> kMethodTable{{
     {Method::rk4, "rk4", 4, false, false, "", "classical Runge-Kutta, fixed step"},
     {Method::dopri5, "dopri5", 5, true, false, "", "Dormand-Prince 5(4), adaptive, dense output"},
     {Method::dop853, "dop853", 8, true, false, "", "Hairer's DOP853, adaptive, dense output"},
-    {Method::midpoint, "midpoint", 2, false, false, "", "implicit midpoint (Gauss 1), fixed step, symplectic"},
-    {Method::gauss4, "gauss4", 4, false, false, "", "Gauss-Legendre 2 stages, fixed step, symplectic"},
-    {Method::gauss6, "gauss6", 6, false, false, "", "Gauss-Legendre 3 stages, fixed step, symplectic"},
-    {Method::splitting, "splitting", 2, false, true, "its sub-flows are exact rotations of (I Omega, gamma)",
+    {Method::midpoint, "midpoint", 2, false, false, "",
+     "implicit midpoint (Gauss 1), fixed step, symplectic"},
+    {Method::gauss4, "gauss4", 4, false, false, "",
+     "Gauss-Legendre 2 stages, fixed step, symplectic"},
+    {Method::gauss6, "gauss6", 6, false, false, "",
+     "Gauss-Legendre 3 stages, fixed step, symplectic"},
+    {Method::splitting, "splitting", 2, false, true,
+     "its sub-flows are exact rotations of (I Omega, gamma)",
      "axis-by-axis Lie-Poisson splitting (Strang), fixed step"},
     {Method::exact_split2, "exact-split2", 2, false, true,
      "its sub-flows are the gravity kick and the exact free rigid body flow of (Omega, gamma)",
@@ -66,6 +80,7 @@ constexpr bool tables_in_enum_order() {
   return true;
 }
 }  // namespace detail
-static_assert(detail::tables_in_enum_order(), "method and formulation tables must list the enums in order");
+static_assert(detail::tables_in_enum_order(),
+              "method and formulation tables must list the enums in order");
 
 }  // namespace epviz::sim

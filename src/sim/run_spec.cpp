@@ -72,8 +72,8 @@ std::string names_joined(const std::vector<Formulation>& formulations, std::stri
 
 std::optional<std::string> incompatibility(Method m, Formulation f) {
   if (!info(m).needs_direct || f == Formulation::direct) return std::nullopt;
-  return "method " + std::string(name(m)) + " needs formulation direct (" + std::string(info(m).why_direct) +
-         "); got formulation " + std::string(name(f));
+  return "method " + std::string(name(m)) + " needs formulation direct (" +
+         std::string(info(m).why_direct) + "); got formulation " + std::string(name(f));
 }
 
 RunSpec preset_run(physics::Case c, Method m, Formulation f, double t_end, int samples) {

@@ -12,7 +12,6 @@
 
 namespace epviz::sim {
 
-
 std::string_view name(Formulation f);
 std::string_view name(Method m);
 std::optional<Formulation> formulation_from_name(std::string_view s);
@@ -36,10 +35,11 @@ struct RunSpec {
   physics::InitialState initial;
   Formulation formulation = Formulation::direct;
   Method method = Method::dop853;
-  double tol = 1e-10;   // adaptive methods: relative and absolute tolerance
-  double step = 1e-2;   // fixed-step methods: largest step; shortened so that it divides the sample spacing
+  double tol = 1e-10;  // adaptive methods: relative and absolute tolerance
+  double step =
+      1e-2;  // fixed-step methods: largest step; shortened so that it divides the sample spacing
   double t_end = 20.0;
-  int samples = 200;    // samples + 1 equally spaced output times from 0 to t_end
+  int samples = 200;         // samples + 1 equally spaced output times from 0 to t_end
   bool chart_switch = true;  // Riccati only: Moebius chart switch near the south pole
 };
 

@@ -16,8 +16,8 @@ namespace epviz::study {
 // pole. Found by integrating the direct formulation backwards from the passage
 // with DOP853 at tolerance 1e-14.
 physics::InitialState pole_passage_initial_state(const physics::Body& body,
-                                                 const Eigen::Vector3d& omega_pass,
-                                                 double t_pass, double distance);
+                                                 const Eigen::Vector3d& omega_pass, double t_pass,
+                                                 double distance);
 
 // DOP853 at tol 1e-10 on the generic body through a passage 1e-7 from the
 // south pole, in each formulation (Riccati with and without the chart switch).

@@ -20,7 +20,7 @@ double fastest_period(const physics::InitialState& s);
 
 struct Reference {
   std::vector<sim::Sample> samples;  // at output_times(t_end, samples)
-  double step = 0.0;            // the coarse Gauss6 step h (the fine one is h / 2)
+  double step = 0.0;                 // the coarse Gauss6 step h (the fine one is h / 2)
   // Max over the samples of state_error(Richardson, DOP853 at tol 1e-14): the
   // two independent references' disagreement.
   double self_check = 0.0;

@@ -2,8 +2,8 @@
 // JSON file whose rows are complete and finite where they should be.
 #include <gtest/gtest.h>
 
-#include <nlohmann/json.hpp>
 #include <stb/stb_image.h>
+#include <nlohmann/json.hpp>
 #include <set>
 
 #include "cli_runner.hpp"
@@ -36,7 +36,8 @@ TEST(BenchCommand, QuickRunWritesCompleteRows) {
   TempDir dir;
   const auto json_path = dir / "bench.json";
   const auto out = dir / "charts";
-  const auto r = run_epviz("bench --quick --json " + json_path.string() + " --out " + out.string(), dir);
+  const auto r =
+      run_epviz("bench --quick --json " + json_path.string() + " --out " + out.string(), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("work-precision: kovalevskaya"), std::string::npos);
   EXPECT_NE(r.out.find("stability 2"), std::string::npos);
@@ -50,12 +51,14 @@ TEST(BenchCommand, QuickRunWritesCompleteRows) {
   // Per case, the references agree to well below the smallest resolved error (checked on each reference row).
   EXPECT_LT(meta.at("reference").at("max_self_check").get<double>(), 1e-11);
 
-  const std::vector<std::string> run_fields{"impl", "case", "formulation", "method", "accuracy", "tol", "step",
-                                            "t_end", "steps", "rhs_evals", "flow_evals", "cpu_ms", "repeats",
-                                            "status", "failure_t", "failure_reason"};
+  const std::vector<std::string> run_fields{
+      "impl",    "case",   "formulation", "method",        "accuracy",   "tol",
+      "step",    "t_end",  "steps",       "rhs_evals",     "flow_evals", "cpu_ms",
+      "repeats", "status", "failure_t",   "failure_reason"};
   const std::map<std::string, std::vector<std::string>> extra{
       {"work_precision", {"error"}},
-      {"drift", {"drift_gamma_norm2", "drift_C0", "drift_C1", "drift_extra", "budget_evals_per_time"}},
+      {"drift",
+       {"drift_gamma_norm2", "drift_C0", "drift_C1", "drift_extra", "budget_evals_per_time"}},
       {"invariant_cost", {"target", "drift_C1", "drift_extra", "reached", "cost"}},
       {"stability_pole", {"variant", "error", "chart_switches", "failure_method"}},
       {"stability_separatrix", {"flip_time", "reference_flip_time", "flip_time_error"}},
@@ -67,20 +70,24 @@ TEST(BenchCommand, QuickRunWritesCompleteRows) {
     const std::string study = row.at("study");
     ++count[study];
     if (study == "reference") {
-      for (const char* k : {"case", "method", "check_method", "step", "self_check", "smallest_error", "t_end"})
+      for (const char* k :
+           {"case", "method", "check_method", "step", "self_check", "smallest_error", "t_end"})
         ASSERT_TRUE(row.contains(k)) << k;
       EXPECT_TRUE(is_number(row["self_check"]));
-      EXPECT_LT(row["self_check"].get<double>() * 10.0, row["smallest_error"].get<double>()) << row["case"];
+      EXPECT_LT(row["self_check"].get<double>() * 10.0, row["smallest_error"].get<double>())
+          << row["case"];
       continue;
     }
     if (study == "peer_ratio") {
-      for (const char* k : {"case", "impl", "method", "error", "peer_cpu_ms", "epviz_dop853_cpu_ms", "ratio"})
+      for (const char* k :
+           {"case", "impl", "method", "error", "peer_cpu_ms", "epviz_dop853_cpu_ms", "ratio"})
         ASSERT_TRUE(row.contains(k)) << k;
       EXPECT_TRUE(is_number(row["ratio"])) << row.dump();
       continue;
     }
     if (study == "stability_max_step") {
-      for (const char* k : {"case", "method", "max_step", "max_step_over_period", "failing_step", "failure_reason"})
+      for (const char* k :
+           {"case", "method", "max_step", "max_step_over_period", "failing_step", "failure_reason"})
         ASSERT_TRUE(row.contains(k)) << k;
       EXPECT_TRUE(is_number(row["max_step"])) << row.dump();
       continue;
@@ -134,7 +141,8 @@ TEST(BenchCommand, QuickRunWritesCompleteRows) {
 
   // The charts, drawn by epviz itself: present and not blank (a white page with
   // dark ink: axes, labels and series).
-  for (const char* name : {"work_precision_kovalevskaya.png", "drift_kovalevskaya.png", "stability.png"}) {
+  for (const char* name :
+       {"work_precision_kovalevskaya.png", "drift_kovalevskaya.png", "stability.png"}) {
     const auto png = out / name;
     ASSERT_TRUE(std::filesystem::exists(png)) << png;
     int w = 0, h = 0, n = 0;
@@ -154,8 +162,9 @@ TEST(BenchCommand, QuickRunWritesCompleteRows) {
   }
   EXPECT_EQ(count["reference"], 6);
   EXPECT_GE(count["invariant_cost"], 9);
-  for (const char* s : {"work_precision", "drift", "invariant_cost", "stability_max_step", "stability_pole", "stability_separatrix",
-                        "stability_sleeping_top", "stability_chaos"})
+  for (const char* s :
+       {"work_precision", "drift", "invariant_cost", "stability_max_step", "stability_pole",
+        "stability_separatrix", "stability_sleeping_top", "stability_chaos"})
     EXPECT_GT(count[s], 0) << s;
 }
 

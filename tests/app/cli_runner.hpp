@@ -2,13 +2,13 @@
 // Runs the built epviz binary and captures its exit code, stdout and stderr.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace epviz::test {
 
@@ -29,8 +29,9 @@ class TempDir {
  public:
   TempDir() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = std::filesystem::temp_directory_path() /
-            ("epviz-test-" + std::to_string(::getpid()) + "-" + info->test_suite_name() + "-" + info->name());
+    path_ =
+        std::filesystem::temp_directory_path() / ("epviz-test-" + std::to_string(::getpid()) + "-" +
+                                                  info->test_suite_name() + "-" + info->name());
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
   }
@@ -48,7 +49,8 @@ class TempDir {
 // `args` is appended to the binary path as shell words.
 inline CliResult run_epviz(const std::string& args, const TempDir& dir) {
   const auto out = dir / ".stdout", err = dir / ".stderr";
-  const std::string cmd = std::string(EPVIZ_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string() + " </dev/null";
+  const std::string cmd = std::string(EPVIZ_BINARY) + " " + args + " >" + out.string() + " 2>" +
+                          err.string() + " </dev/null";
   const int status = std::system(cmd.c_str());
   CliResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -24,7 +24,8 @@ std::vector<std::string> flags_in(const std::string& text) {
   std::vector<std::string> out;
   for (std::size_t at = text.find("--"); at != std::string::npos; at = text.find("--", at + 2)) {
     std::size_t end = at + 2;
-    while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '-'))
+    while (end < text.size() &&
+           (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '-'))
       ++end;
     out.push_back(text.substr(at, end - at));
   }
@@ -33,7 +34,8 @@ std::vector<std::string> flags_in(const std::string& text) {
 
 void expect_sentence(const std::string& s) {
   ASSERT_GT(s.size(), 10u) << s;
-  EXPECT_TRUE(std::islower(static_cast<unsigned char>(s.front()))) << "continues the line after '; ': " << s;
+  EXPECT_TRUE(std::islower(static_cast<unsigned char>(s.front())))
+      << "continues the line after '; ': " << s;
   EXPECT_EQ(s.back(), '.') << s;
   EXPECT_EQ(s.find(".."), std::string::npos) << s;
   EXPECT_EQ(s.find("  "), std::string::npos) << s;
@@ -45,7 +47,8 @@ struct Method {
   const char* name;
   bool adaptive;
 };
-constexpr Method kMethods[] = {{"dop853", true}, {"dopri5", true}, {"rk4", false}, {"gauss4", false}};
+constexpr Method kMethods[] = {
+    {"dop853", true}, {"dopri5", true}, {"rk4", false}, {"gauss4", false}};
 
 TEST(FailureAdvice, EveryKindNamesAnOptionOfSimulate) {
   test::TempDir dir;
@@ -59,7 +62,8 @@ TEST(FailureAdvice, EveryKindNamesAnOptionOfSimulate) {
       const auto flags = flags_in(a);
       ASSERT_FALSE(flags.empty());
       for (const auto& f : flags) {
-        EXPECT_NE(help.out.find(f), std::string::npos) << f << " is not an option of epviz simulate";
+        EXPECT_NE(help.out.find(f), std::string::npos)
+            << f << " is not an option of epviz simulate";
         // What `epviz simulate` would refuse for this method (bad_input_test).
         if (k != FailureKind::chart_pole) {
           EXPECT_NE(f, m.adaptive ? "--step" : "--tol");
@@ -97,7 +101,8 @@ TEST(FailureAdvice, RenderJobsNameJobKeysNotOptions) {
 }
 
 TEST(FailureAdvice, LineIsMessageThenAdvice) {
-  const numerics::Failure f{2.5, "gauss4", FailureKind::solver_divergence, "stage equations diverged"};
+  const numerics::Failure f{2.5, "gauss4", FailureKind::solver_divergence,
+                            "stage equations diverged"};
   const std::string line = app::failure_line(f);
   EXPECT_EQ(line, "gauss4 failed at t = 2.5: stage equations diverged; " +
                       failure_advice(FailureKind::solver_divergence, "gauss4", false));

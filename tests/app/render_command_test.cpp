@@ -15,11 +15,15 @@ namespace fs = std::filesystem;
 // A small, fast job: 160x120, 6 frames.
 nlohmann::json small_job(const fs::path& out) {
   return {{"simulation", {{"case", "lagrange"}, {"t_end", 2.0}}},
-          {"width", 160}, {"height", 120}, {"fps", 3}, {"duration", 2},
+          {"width", 160},
+          {"height", 120},
+          {"fps", 3},
+          {"duration", 2},
           {"output", {{"dir", out.string()}, {"format", "png"}}}};
 }
 
-fs::path write_job(const test::TempDir& dir, const nlohmann::json& j, const std::string& name = "job.json") {
+fs::path write_job(const test::TempDir& dir, const nlohmann::json& j,
+                   const std::string& name = "job.json") {
   std::ofstream(dir / name) << j.dump(2);
   return dir / name;
 }
@@ -50,25 +54,51 @@ TEST_P(RenderRejects, WithOneLineExitTwoAndNoOutput) {
 INSTANTIATE_TEST_SUITE_P(
     JobErrors, RenderRejects,
     ::testing::Values(
-        BadJob{"unknown_key", [](auto& j) { j["colour"] = "red"; }, "", "job.json: key 'colour': unknown key"},
-        BadJob{"unknown_nested_key", [](auto& j) { j["layers"] = {{"bodies", true}}; }, "",
-               "key 'layers.bodies': unknown key"},
-        BadJob{"bad_view", [](auto& j) { j["view"] = "top"; }, "", "key 'view': 'top' is not one of: body, space"},
-        BadJob{"bad_colour", [](auto& j) { j["colours"] = {{"body", "orange"}}; }, "", "key 'colours.body': expected a colour"},
-        BadJob{"bad_theme", [](auto& j) { j["theme"] = "sepia"; }, "", "key 'theme': 'sepia' is not one of: dark, light"},
-        BadJob{"missing_simulation", [](auto& j) { j.erase("simulation"); }, "", "key 'simulation': missing"},
-        BadJob{"bad_case", [](auto& j) { j["simulation"]["case"] = "top"; }, "", "key 'simulation.case': unknown case"},
-        BadJob{"bad_tol", [](auto& j) { j["simulation"]["tol"] = "fine"; }, "", "key 'simulation.tol': expected a number"},
-        BadJob{"space_needs_spinor", [](auto& j) { j["view"] = "space"; j["simulation"]["formulation"] = "direct"; }, "",
-               "needs its attitude"},
-        BadJob{"odd_video_size", [](auto& j) { j["output"]["format"] = "mp4"; j["width"] = 161; }, "", "even width and height"},
+        BadJob{"unknown_key", [](auto& j) { j["colour"] = "red"; }, "",
+               "job.json: key 'colour': unknown key"},
+        BadJob{"unknown_nested_key",
+               [](auto& j) {
+                 j["layers"] = {{"bodies", true}};
+               },
+               "", "key 'layers.bodies': unknown key"},
+        BadJob{"bad_view", [](auto& j) { j["view"] = "top"; }, "",
+               "key 'view': 'top' is not one of: body, space"},
+        BadJob{"bad_colour",
+               [](auto& j) {
+                 j["colours"] = {{"body", "orange"}};
+               },
+               "", "key 'colours.body': expected a colour"},
+        BadJob{"bad_theme", [](auto& j) { j["theme"] = "sepia"; }, "",
+               "key 'theme': 'sepia' is not one of: dark, light"},
+        BadJob{"missing_simulation", [](auto& j) { j.erase("simulation"); }, "",
+               "key 'simulation': missing"},
+        BadJob{"bad_case", [](auto& j) { j["simulation"]["case"] = "top"; }, "",
+               "key 'simulation.case': unknown case"},
+        BadJob{"bad_tol", [](auto& j) { j["simulation"]["tol"] = "fine"; }, "",
+               "key 'simulation.tol': expected a number"},
+        BadJob{"space_needs_spinor",
+               [](auto& j) {
+                 j["view"] = "space";
+                 j["simulation"]["formulation"] = "direct";
+               },
+               "", "needs its attitude"},
+        BadJob{"odd_video_size",
+               [](auto& j) {
+                 j["output"]["format"] = "mp4";
+                 j["width"] = 161;
+               },
+               "", "even width and height"},
         BadJob{"bad_format_option", [](auto&) {}, "--format avi", "--format: unknown format 'avi'"},
         BadJob{"frames_out_of_range", [](auto&) {}, "--frames 3:99", "--frames"},
         BadJob{"unknown_gl", [](auto&) {}, "--gl vulkan", "unknown GL backend 'vulkan'"},
-        BadJob{"resume_video", [](auto& j) { j["output"]["format"] = "mp4"; }, "--resume", "--resume: applies to PNG"},
-        BadJob{"all_layers_off", [](auto& j) {
-                 j["layers"] = {{"body", false}, {"sphere", false}, {"riccati", false}, {"overlay", false}}; }, "",
-               "nothing to draw"}),
+        BadJob{"resume_video", [](auto& j) { j["output"]["format"] = "mp4"; }, "--resume",
+               "--resume: applies to PNG"},
+        BadJob{"all_layers_off",
+               [](auto& j) {
+                 j["layers"] = {
+                     {"body", false}, {"sphere", false}, {"riccati", false}, {"overlay", false}};
+               },
+               "", "nothing to draw"}),
     [](const auto& info) { return info.param.name; });
 
 TEST(Render, MissingJobFileIsNamed) {
@@ -126,9 +156,10 @@ TEST(Render, Mp4IsPlayableWithTheExpectedFramesAndSize) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto mp4 = dir / "video" / "clip.mp4";
   ASSERT_TRUE(fs::exists(mp4));
-  const std::string probe = "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
-                            "stream=nb_read_frames,width,height -of json " + mp4.string() + " > " +
-                            (dir / "probe.json").string();
+  const std::string probe =
+      "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+      "stream=nb_read_frames,width,height -of json " +
+      mp4.string() + " > " + (dir / "probe.json").string();
   ASSERT_EQ(std::system(probe.c_str()), 0);
   const auto p = nlohmann::json::parse(test::slurp(dir / "probe.json"));
   EXPECT_EQ(p["streams"][0]["nb_read_frames"], "6");
@@ -141,15 +172,16 @@ TEST(Render, NumericalFailureStopsWithTimeAndMethodAndKeepsNoVideo) {
   // Riccati chart alone cannot follow it.
   test::TempDir dir;
   auto j = small_job(dir / "video");
-  j["simulation"] = {{"case", "euler"}, {"omega", {1, 0, 0}}, {"gamma", {0, 0.6, 0.8}}, {"formulation", "riccati"},
-                     {"chart_switch", false}, {"t_end", 6.0}};
+  j["simulation"] = {{"case", "euler"},          {"omega", {1, 0, 0}},    {"gamma", {0, 0.6, 0.8}},
+                     {"formulation", "riccati"}, {"chart_switch", false}, {"t_end", 6.0}};
   j["output"]["format"] = "mp4";
   j["output"]["name"] = "clip";
   const auto r = test::run_epviz("render " + write_job(dir, j).string(), dir);
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_NE(r.err.find("dop853 failed at t = "), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "video" / "clip.mp4"));
-  for (const auto& e : fs::directory_iterator(dir / "video")) ADD_FAILURE() << "left behind: " << e.path();
+  for (const auto& e : fs::directory_iterator(dir / "video"))
+    ADD_FAILURE() << "left behind: " << e.path();
 }
 
 TEST(Render, BenchFiguresJobRunsTheStudyAndDrawsItsCharts) {

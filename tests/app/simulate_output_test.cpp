@@ -29,14 +29,16 @@ std::vector<std::string> fields(const std::string& line) {
 
 TEST(SimulateCsv, HeaderRowsAndInvariants) {
   test::TempDir dir;
-  const auto r = test::run_epviz("simulate --case kovalevskaya --t-end 5 --samples 50 --tol 1e-11 --csv " +
-                                     (dir / "k.csv").string() + " --report-json " + (dir / "k.json").string(),
-                                 dir);
+  const auto r =
+      test::run_epviz("simulate --case kovalevskaya --t-end 5 --samples 50 --tol 1e-11 --csv " +
+                          (dir / "k.csv").string() + " --report-json " + (dir / "k.json").string(),
+                      dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto rows = lines(test::slurp(dir / "k.csv"));
   ASSERT_EQ(rows.size(), 52u);
   EXPECT_EQ(rows[0],
-            "t,omega1,omega2,omega3,gamma1,gamma2,gamma3,a,b,energy,area,gamma_norm_error,extra_integral");
+            "t,omega1,omega2,omega3,gamma1,gamma2,gamma3,a,b,energy,area,gamma_norm_error,extra_"
+            "integral");
   const auto first = fields(rows[1]), last = fields(rows.back());
   ASSERT_EQ(first.size(), 13u);
   ASSERT_EQ(last.size(), 13u);
@@ -51,17 +53,20 @@ TEST(SimulateCsv, HeaderRowsAndInvariants) {
   EXPECT_NEAR(std::stod(first[12]), std::stod(last[12]), 1e-8);
 
   const auto report = nlohmann::json::parse(test::slurp(dir / "k.json"));
-  for (const char* key : {"steps", "rhs_evals", "rejected_steps", "cpu_seconds", "max_relative_drift", "failure"})
+  for (const char* key :
+       {"steps", "rhs_evals", "rejected_steps", "cpu_seconds", "max_relative_drift", "failure"})
     EXPECT_TRUE(report.contains(key)) << key;
   EXPECT_TRUE(report["failure"].is_null());
   EXPECT_GT(report["steps"].get<long>(), 0);
-  EXPECT_GE(report["rhs_evals"].get<long>(), 12 * report["steps"].get<long>());  // DOP853: 12 stages per step
+  EXPECT_GE(report["rhs_evals"].get<long>(),
+            12 * report["steps"].get<long>());  // DOP853: 12 stages per step
   EXPECT_LT(report["max_relative_drift"]["extra_integral"].get<double>(), 1e-8);
 }
 
 TEST(SimulateCsv, GenericHasEmptyExtraIntegral) {
   test::TempDir dir;
-  const auto r = test::run_epviz("simulate --case generic --t-end 1 --samples 4 --csv " + (dir / "g.csv").string(), dir);
+  const auto r = test::run_epviz(
+      "simulate --case generic --t-end 1 --samples 4 --csv " + (dir / "g.csv").string(), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto rows = lines(test::slurp(dir / "g.csv"));
   ASSERT_EQ(rows.size(), 6u);
@@ -72,7 +77,8 @@ TEST(SimulateCsv, AllCasesPrintsEveryPreset) {
   test::TempDir dir;
   const auto r = test::run_epviz("simulate --case all --t-end 2", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const char* c : {"euler", "lagrange", "kovalevskaya", "goryachev-chaplygin", "hess", "generic"})
+  for (const char* c :
+       {"euler", "lagrange", "kovalevskaya", "goryachev-chaplygin", "hess", "generic"})
     EXPECT_NE(r.out.find(c), std::string::npos) << c;
 }
 
@@ -82,8 +88,8 @@ TEST(SimulateFailure, ReportedWithTimeAndMethod) {
   test::TempDir dir;
   const auto r = test::run_epviz(
       "simulate --case euler --omega 1,0,0 --gamma 0,0.6,0.8 "
-      "--formulation riccati --no-chart-switch --t-end 6 --report-json " + (dir / "f.json").string() +
-          " --csv " + (dir / "f.csv").string(),
+      "--formulation riccati --no-chart-switch --t-end 6 --report-json " +
+          (dir / "f.json").string() + " --csv " + (dir / "f.csv").string(),
       dir);
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_NE(r.err.find("dop853 failed at t = "), std::string::npos) << r.err;
@@ -109,9 +115,11 @@ TEST(SimulateFailure, ReportedWithTimeAndMethod) {
 
 TEST(SimulateFailure, ImplicitStepTooLargeAdvisesASmallerStep) {
   test::TempDir dir;
-  const auto r = test::run_epviz("simulate --case lagrange --omega 0,0,50 --method gauss4 --step 5 "
-                                 "--t-end 10 --samples 2 --report-json " + (dir / "f.json").string(),
-                                 dir);
+  const auto r = test::run_epviz(
+      "simulate --case lagrange --omega 0,0,50 --method gauss4 --step 5 "
+      "--t-end 10 --samples 2 --report-json " +
+          (dir / "f.json").string(),
+      dir);
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_NE(r.err.find("epviz: gauss4 failed at t = 0: "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("; use a smaller --step"), std::string::npos) << r.err;
@@ -122,7 +130,8 @@ TEST(SimulateFailure, ImplicitStepTooLargeAdvisesASmallerStep) {
 
 TEST(SimulateReport, NoFailureKindWithoutAFailure) {
   test::TempDir dir;
-  const auto r = test::run_epviz("simulate --case euler --t-end 1 --report-json " + (dir / "ok.json").string(), dir);
+  const auto r = test::run_epviz(
+      "simulate --case euler --t-end 1 --report-json " + (dir / "ok.json").string(), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto report = nlohmann::json::parse(test::slurp(dir / "ok.json"));
   ASSERT_TRUE(report.contains("failure_kind"));

@@ -20,8 +20,8 @@ TEST_P(StayInCase, EveryEditEndsInsideTheCaseKeepingTheEditedValue) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> factor(0.7, 1.4), shift(-0.5, 0.5);
   for (int trial = 0; trial < 50; ++trial) {
-    for (Edited what : {Edited::inertia_1, Edited::inertia_2, Edited::inertia_3, Edited::com, Edited::weight,
-                        Edited::omega, Edited::gamma}) {
+    for (Edited what : {Edited::inertia_1, Edited::inertia_2, Edited::inertia_3, Edited::com,
+                        Edited::weight, Edited::omega, Edited::gamma}) {
       physics::Body body = p.body;
       physics::InitialState s = p.initial;
       double kept = 0.0;
@@ -29,13 +29,20 @@ TEST_P(StayInCase, EveryEditEndsInsideTheCaseKeepingTheEditedValue) {
         case Edited::inertia_1: kept = body.inertia.x() *= factor(rng); break;
         case Edited::inertia_2: kept = body.inertia.y() *= factor(rng); break;
         case Edited::inertia_3: kept = body.inertia.z() *= factor(rng); break;
-        case Edited::com: body.com += Eigen::Vector3d(shift(rng), shift(rng), shift(rng)); kept = body.com.x(); break;
+        case Edited::com:
+          body.com += Eigen::Vector3d(shift(rng), shift(rng), shift(rng));
+          kept = body.com.x();
+          break;
         case Edited::weight: kept = body.weight *= factor(rng); break;
         case Edited::omega: s.omega += Eigen::Vector3d(shift(rng), shift(rng), shift(rng)); break;
-        case Edited::gamma: s.gamma = (s.gamma + Eigen::Vector3d(shift(rng), shift(rng), shift(rng))).normalized(); break;
+        case Edited::gamma:
+          s.gamma = (s.gamma + Eigen::Vector3d(shift(rng), shift(rng), shift(rng))).normalized();
+          break;
       }
       // Hess needs ordered moments; an edit that breaks the order is reported, not repaired.
-      if (c == Case::hess && !(body.inertia.x() > body.inertia.y() && body.inertia.y() > body.inertia.z())) continue;
+      if (c == Case::hess &&
+          !(body.inertia.x() > body.inertia.y() && body.inertia.y() > body.inertia.z()))
+        continue;
       const physics::InitialState before = s;
       enforce_case(c, what, body, s);
       const auto broken = physics::broken_condition(c, body, s);
@@ -62,11 +69,12 @@ TEST_P(StayInCase, EveryEditEndsInsideTheCaseKeepingTheEditedValue) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, StayInCase,
-                         ::testing::Values(Case::euler, Case::lagrange, Case::kovalevskaya, Case::goryachev_chaplygin,
-                                           Case::hess),
+                         ::testing::Values(Case::euler, Case::lagrange, Case::kovalevskaya,
+                                           Case::goryachev_chaplygin, Case::hess),
                          [](const auto& info) {
                            std::string n = physics::case_name(info.param);
-                           for (char& ch : n) if (ch == '-') ch = '_';
+                           for (char& ch : n)
+                             if (ch == '-') ch = '_';
                            return n;
                          });
 

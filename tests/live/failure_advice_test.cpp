@@ -14,8 +14,8 @@ using numerics::FailureKind;
 
 TEST(LiveFailureAdvice, EveryKindNamesAPanelControl) {
   // The Integrator panel's controls and the Case and body panel.
-  const char* const controls[] = {"tolerance", "step", "method", "formulation", "chart switch",
-                                  "Case and body"};
+  const char* const controls[] = {"tolerance",   "step",         "method",
+                                  "formulation", "chart switch", "Case and body"};
   for (FailureKind k : numerics::kFailureKinds) {
     for (bool adaptive : {true, false}) {
       const std::string a = failure_advice(k, adaptive);
@@ -39,9 +39,8 @@ TEST(LiveFailureAdvice, EveryKindNamesAPanelControl) {
 
 TEST(LiveFailureAdvice, LineIsMessageThenAdvice) {
   const numerics::Failure f{3.25, "rk4", FailureKind::non_finite, "state not finite (NaN or Inf)"};
-  EXPECT_EQ(failure_line(f, false),
-            "rk4 failed at t = 3.25: state not finite (NaN or Inf); " +
-                failure_advice(FailureKind::non_finite, false));
+  EXPECT_EQ(failure_line(f, false), "rk4 failed at t = 3.25: state not finite (NaN or Inf); " +
+                                        failure_advice(FailureKind::non_finite, false));
   EXPECT_NE(failure_advice(FailureKind::chart_pole, true).find("spinor"), std::string::npos);
 }
 

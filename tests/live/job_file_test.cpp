@@ -21,8 +21,11 @@ TEST(JobFile, EpvizRenderAcceptsTheSavedSetupOfEveryCase) {
     s.scene.camera.azimuth_deg = 80.0;
     const auto file = dir / (p.name + ".json");
     std::ofstream(file) << render_job_json(s, p.name, 2.0);
-    const auto r = test::run_epviz("render " + file.string() + " --frames 0 --format png --width 160 --height 90 "
-                                   "--quiet --out " + (dir / p.name).string(), dir);
+    const auto r = test::run_epviz("render " + file.string() +
+                                       " --frames 0 --format png --width 160 --height 90 "
+                                       "--quiet --out " +
+                                       (dir / p.name).string(),
+                                   dir);
     EXPECT_EQ(r.exit_code, 0) << p.name << ": " << r.err;
     bool png_written = false;
     if (std::filesystem::is_directory(dir / p.name))
@@ -55,7 +58,8 @@ void expect_same(const job::Given<T>& written, const job::Given<T>& read, const 
 
 // Setups that between them use every key the writer can write.
 std::vector<LiveSetup> varied_setups() {
-  std::vector<LiveSetup> setups{preset_setup(physics::Case::lagrange)};  // adaptive, tolerance "auto"
+  std::vector<LiveSetup> setups{
+      preset_setup(physics::Case::lagrange)};  // adaptive, tolerance "auto"
   LiveSetup a = preset_setup(physics::Case::kovalevskaya);
   a.scene.auto_tolerance = false;
   a.run.tol = 3e-9;
@@ -71,7 +75,8 @@ std::vector<LiveSetup> varied_setups() {
   a.scene.width = 640;
   a.scene.height = 480;
   setups.push_back(a);
-  LiveSetup b = preset_setup(physics::Case::generic);  // a fixed step, the Riccati chart switch, a custom body
+  LiveSetup b = preset_setup(
+      physics::Case::generic);  // a fixed step, the Riccati chart switch, a custom body
   b.run.case_id = physics::Case::custom;
   b.run.method = sim::Method::rk4;
   b.run.step = 0.0125;
@@ -118,7 +123,8 @@ TEST(JobFile, EveryWrittenFieldIsReadBackEqual) {
     EXPECT_EQ(wc.layers.riccati, rc.layers.riccati);
     EXPECT_EQ(wc.layers.overlay, rc.layers.overlay);
     // Colours are written with 8 bits a channel: the same bytes come back.
-    for (auto m : {&scene::Colours::background, &scene::Colours::body, &scene::Colours::sphere, &scene::Colours::marker})
+    for (auto m : {&scene::Colours::background, &scene::Colours::body, &scene::Colours::sphere,
+                   &scene::Colours::marker})
       EXPECT_EQ(job::hex_colour(wc.colours.*m), job::hex_colour(rc.colours.*m));
     EXPECT_EQ(wc.trail_length, rc.trail_length);
     EXPECT_EQ(wc.plane_extent, rc.plane_extent);
@@ -135,7 +141,8 @@ TEST(JobFile, EveryWrittenFieldIsReadBackEqual) {
   }
 }
 
-void expect_listed(const nlohmann::json& object, const std::string& prefix, const std::vector<std::string>& listed) {
+void expect_listed(const nlohmann::json& object, const std::string& prefix,
+                   const std::vector<std::string>& listed) {
   for (const auto& [key, value] : object.items()) {
     const std::string path = prefix + key;
     EXPECT_NE(std::find(listed.begin(), listed.end(), path), listed.end()) << path;

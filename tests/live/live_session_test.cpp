@@ -99,12 +99,14 @@ TEST(LiveSession, DragInTheViewOrbitsAndWheelZooms) {
   SessionDriver d(starting_with(physics::Case::kovalevskaya));
   const auto cam0 = d.session->scene().setup().scene.camera;
   const auto& v = d.session->view_3d();
-  const float x = float(v.x + v.width) - 60.0f, y = float(v.y + v.height) / 2.0f;  // clear of the panel
+  const float x = float(v.x + v.width) - 60.0f,
+              y = float(v.y + v.height) / 2.0f;  // clear of the panel
   ASSERT_FALSE(d.session->panel().contains(x, y));
   const auto before = d.last_hash;
   d.drag(x, y, -80.0f, 30.0f);
   const auto cam1 = d.session->scene().setup().scene.camera;
-  EXPECT_GT(cam1.azimuth_deg, cam0.azimuth_deg + 10.0);  // dragging left turns the camera the other way
+  EXPECT_GT(cam1.azimuth_deg,
+            cam0.azimuth_deg + 10.0);  // dragging left turns the camera the other way
   EXPECT_GT(cam1.elevation_deg, cam0.elevation_deg + 3.0);
   EXPECT_NE(d.last_hash, before);
   d.wheel(x, y, 2.0f);

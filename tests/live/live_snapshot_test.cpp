@@ -28,7 +28,8 @@ TEST(LiveSnapshot, CaseComboOpen) {
   SessionDriver d(o);
   d.click("case");
   const auto& img = d.session->render();
-  EXPECT_TRUE(epviz::testing::matches_snapshot("live_case_combo", img.width, img.height, img.pixels));
+  EXPECT_TRUE(
+      epviz::testing::matches_snapshot("live_case_combo", img.width, img.height, img.pixels));
 }
 
 }  // namespace

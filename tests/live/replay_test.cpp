@@ -41,7 +41,9 @@ TEST(Replay, ARecordedBrowserSessionPicksTheCaseEditsTheBodyAndPlays) {
   std::stringstream head;
   std::string line;
   std::getline(recording, line);  // resize
-  head << line << "\n" << R"({"type":"render"})" << "\n";
+  head << line << "\n"
+       << R"({"type":"render"})"
+       << "\n";
   replay(session, head);
   const auto first = testing::image_hash(session.render());
   const auto view = session.view_3d();
@@ -53,8 +55,10 @@ TEST(Replay, ARecordedBrowserSessionPicksTheCaseEditsTheBodyAndPlays) {
   const auto& setup = session.scene().setup();
   EXPECT_EQ(setup.run.case_id, physics::Case::kovalevskaya) << "the combo pick did not land";
   const double I3 = setup.run.body.inertia.z();
-  EXPECT_GT(I3, physics::preset(physics::Case::kovalevskaya).body.inertia.z() + 0.2) << "the slider drag did not land";
-  EXPECT_FALSE(physics::broken_condition(physics::Case::kovalevskaya, setup.run.body, setup.run.initial));
+  EXPECT_GT(I3, physics::preset(physics::Case::kovalevskaya).body.inertia.z() + 0.2)
+      << "the slider drag did not land";
+  EXPECT_FALSE(
+      physics::broken_condition(physics::Case::kovalevskaya, setup.run.body, setup.run.initial));
   EXPECT_TRUE(session.scene().playing()) << "Play did not land";
   EXPECT_GT(session.scene().time(), 0.0);
 
@@ -72,7 +76,10 @@ TEST(Replay, ALineThatIsNotAPageMessageIsReportedWithItsNumber) {
   o.fixed_clock = true;
   o.builtin_font = true;
   LiveSession session(testing::shared_gl(), o);
-  std::stringstream bad(R"({"type":"resize","width":320,"height":200})" "\n" R"({"type":"jump"})" "\n");
+  std::stringstream bad(R"({"type":"resize","width":320,"height":200})"
+                        "\n"
+                        R"({"type":"jump"})"
+                        "\n");
   try {
     replay(session, bad);
     FAIL() << "no error";

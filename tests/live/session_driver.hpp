@@ -14,7 +14,8 @@
 namespace epviz::live::testing {
 
 inline render::GlContext& shared_gl() {
-  static std::unique_ptr<render::GlContext> gl = render::make_gl_context(render::gl_backend_from_environment(), 64, 64);
+  static std::unique_ptr<render::GlContext> gl =
+      render::make_gl_context(render::gl_backend_from_environment(), 64, 64);
   return *gl;
 }
 
@@ -38,7 +39,8 @@ class SessionDriver {
   // Renders frames until the session wants none (at most `max_frames`; a
   // playing scene always wants one); returns the hash of the last picture.
   std::uint64_t settle(int max_frames = 12) {
-    for (int i = 0; i < max_frames && session->wants_frame(); ++i) last_hash = image_hash(session->render());
+    for (int i = 0; i < max_frames && session->wants_frame(); ++i)
+      last_hash = image_hash(session->render());
     return last_hash;
   }
   std::uint64_t frames(int n) {
@@ -55,7 +57,9 @@ class SessionDriver {
     }
     return it->second;
   }
-  bool has_control(const std::string& name) const { return session->panel().controls().count(name) > 0; }
+  bool has_control(const std::string& name) const {
+    return session->panel().controls().count(name) > 0;
+  }
 
   void send(render::InputEvent e) { session->input(std::move(e)); }
   void move(float x, float y) {
@@ -84,7 +88,8 @@ class SessionDriver {
   void drag(float x0, float y0, float dx, float dy, int steps = 8) {
     move(x0, y0);
     button(x0, y0, true);
-    for (int i = 1; i <= steps; ++i) move(x0 + dx * float(i) / float(steps), y0 + dy * float(i) / float(steps));
+    for (int i = 1; i <= steps; ++i)
+      move(x0 + dx * float(i) / float(steps), y0 + dy * float(i) / float(steps));
     button(x0 + dx, y0 + dy, false);
     settle(40);
   }

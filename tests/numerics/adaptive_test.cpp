@@ -49,19 +49,21 @@ void expect_dense_order(const Sys& sys, Exact exact, double t0, double h0, int h
   const auto p = observed_orders(errors);
   const int expected = Method<Sys>::dense_order + 1;
   for (std::size_t i = 0; i < p.size(); ++i)
-    EXPECT_NEAR(p[i], expected, 0.2) << Method<Sys>::name << " local dense error " << errors[i]
-                                     << " -> " << errors[i + 1];
+    EXPECT_NEAR(p[i], expected, 0.2)
+        << Method<Sys>::name << " local dense error " << errors[i] << " -> " << errors[i + 1];
 }
 
 TEST(DenseOutput, Dopri5InterpolantHasOrder4) {
   const Kepler k{0.5};
-  expect_dense_order<Dopri5>(k, [&](double t) { return k.exact(t); }, 3.0, 0.4, 3);
+  expect_dense_order<Dopri5>(
+      k, [&](double t) { return k.exact(t); }, 3.0, 0.4, 3);
   expect_dense_order<Dopri5>(DecayingRotation{}, DecayingRotation::exact, 0.0, 0.2, 3);
 }
 
 TEST(DenseOutput, Dop853InterpolantHasOrder7) {
   const Kepler k{0.5};
-  expect_dense_order<Dop853>(k, [&](double t) { return k.exact(t); }, 3.0, 0.8, 2);
+  expect_dense_order<Dop853>(
+      k, [&](double t) { return k.exact(t); }, 3.0, 0.8, 2);
   expect_dense_order<Dop853>(DecayingRotation{}, DecayingRotation::exact, 0.0, 0.8, 3);
 }
 
@@ -162,7 +164,9 @@ struct Counted : Base {
 struct Kink {
   static constexpr int dim = 1;
   using State = Vec<1>;
-  void rhs(double t, const State&, State& dx) const { dx[0] = t < 1.0 ? 0.0 : 100.0 * (t - 1.0) * (t - 1.0) + 100.0; }
+  void rhs(double t, const State&, State& dx) const {
+    dx[0] = t < 1.0 ? 0.0 : 100.0 * (t - 1.0) * (t - 1.0) + 100.0;
+  }
   static double exact(double t) {
     const double s = std::max(t - 1.0, 0.0);
     return 100.0 * s + 100.0 / 3.0 * s * s * s;

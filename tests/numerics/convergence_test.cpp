@@ -60,19 +60,23 @@ TEST(Convergence, Rk4) {
 // has not.
 TEST(Convergence, Dopri5FixedStep) {
   const Kepler k{0.2};
-  expect_order(Dopri5<Kepler>(k), [&](double t) { return k.exact(t); }, 3.0, 80, 3, "kepler");
-  expect_order(Dopri5<ExpSin>({}), [](double t) { return ExpSin::exact(t); }, 10.0, 200, 3,
-               "exp(sin)");
+  expect_order(
+      Dopri5<Kepler>(k), [&](double t) { return k.exact(t); }, 3.0, 80, 3, "kepler");
+  expect_order(
+      Dopri5<ExpSin>({}), [](double t) { return ExpSin::exact(t); }, 10.0, 200, 3, "exp(sin)");
 }
 
 // Order 8 leaves a narrow window between the pre-asymptotic regime and
 // round-off: several problems, short studies each.
 TEST(Convergence, Dop853FixedStep) {
-  expect_order(Dop853<DecayingRotation>({}), [](double t) { return DecayingRotation::exact(t); },
-               10.0, 20, 3, "decaying rotation");
+  expect_order(
+      Dop853<DecayingRotation>({}), [](double t) { return DecayingRotation::exact(t); }, 10.0, 20,
+      3, "decaying rotation");
   const Kepler k5{0.5}, k7{0.7};
-  expect_order(Dop853<Kepler>(k5), [&](double t) { return k5.exact(t); }, 3.0, 24, 1, "kepler e=.5");
-  expect_order(Dop853<Kepler>(k7), [&](double t) { return k7.exact(t); }, 1.0, 24, 1, "kepler e=.7");
+  expect_order(
+      Dop853<Kepler>(k5), [&](double t) { return k5.exact(t); }, 3.0, 24, 1, "kepler e=.5");
+  expect_order(
+      Dop853<Kepler>(k7), [&](double t) { return k7.exact(t); }, 1.0, 24, 1, "kepler e=.7");
 }
 
 TEST(Convergence, ImplicitMidpoint) {
@@ -93,8 +97,9 @@ TEST(Convergence, Gauss6) {
 TEST(Convergence, StrangSplitting) {
   expect_order(StrangSplitting<Kepler>(kepler()), kepler_exact, 2.0, 100, 3, "kepler");
   Oscillator osc{1.3};
-  expect_order(StrangSplitting<Oscillator>(osc), [&](double t) { return osc.exact(t); }, 3.0, 20, 3,
-               "oscillator");
+  expect_order(
+      StrangSplitting<Oscillator>(osc), [&](double t) { return osc.exact(t); }, 3.0, 20, 3,
+      "oscillator");
 }
 
 }  // namespace

@@ -22,7 +22,9 @@ using testing::BlowUp;
 using testing::ExpBlowUp;
 using testing::Linear1;
 
-bool contains(const std::string& s, const std::string& what) { return s.find(what) != std::string::npos; }
+bool contains(const std::string& s, const std::string& what) {
+  return s.find(what) != std::string::npos;
+}
 
 // Runs f, which must throw IntegrationError; returns its Failure.
 template <class F>
@@ -400,8 +402,8 @@ void expect_fsal_dropped_on_remap() {
   const long per_attempt = std::string(Method<Halving>::name) == "dop853" ? 11 : 6;
   const long fsal_on_accept = std::string(Method<Halving>::name) == "dop853" ? st.steps : 0;
   const long dense_extra = std::string(Method<Halving>::name) == "dop853" ? 3 : 0;
-  EXPECT_EQ(st.rhs_evals,
-            2 + per_attempt * (st.steps + st.rejected_steps) + fsal_on_accept + sys.halvings + dense_extra);
+  EXPECT_EQ(st.rhs_evals, 2 + per_attempt * (st.steps + st.rejected_steps) + fsal_on_accept +
+                              sys.halvings + dense_extra);
   EXPECT_EQ(st.rhs_evals, sys.rhs_calls);
 }
 

@@ -118,8 +118,8 @@ TEST(Splitting, AppliesTheSymmetricComposition) {
   StrangSplitting<Recorder> s(Recorder{&log});
   Vec<1> x(0.0);
   s.step(x, 0.0, 0.5);
-  const std::vector<std::pair<int, double>> expected = {
-      {0, 0.25}, {1, 0.25}, {2, 0.25}, {3, 0.5}, {2, 0.25}, {1, 0.25}, {0, 0.25}};
+  const std::vector<std::pair<int, double>> expected = {{0, 0.25}, {1, 0.25}, {2, 0.25}, {3, 0.5},
+                                                        {2, 0.25}, {1, 0.25}, {0, 0.25}};
   EXPECT_EQ(log, expected);
   EXPECT_EQ(s.stats().flow_evals, 7);
   EXPECT_EQ(s.stats().steps, 1);

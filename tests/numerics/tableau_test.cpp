@@ -45,7 +45,8 @@ void expect_second_level(int q) {
       for (int i = 0; i < T::stages; ++i)
         for (int j = 0; j < i; ++j)
           s += T::b[i] * std::pow(T::c[i], m) * T::a[i][j] * std::pow(T::c[j], l);
-      EXPECT_NEAR(s, 1.0 / ((l + 1.0) * (l + m + 2.0)), 1e-13) << T::name << " l=" << l << " m=" << m;
+      EXPECT_NEAR(s, 1.0 / ((l + 1.0) * (l + m + 2.0)), 1e-13)
+          << T::name << " l=" << l << " m=" << m;
     }
 }
 

@@ -132,7 +132,9 @@ struct HeavyTop {
     return x;
   }
   double gamma2(const State& x) const { return x.tail<3>().squaredNorm(); }
-  double area(const State& x) const { return I1 * x[0] * x[3] + I2 * x[1] * x[4] + I3 * x[2] * x[5]; }
+  double area(const State& x) const {
+    return I1 * x[0] * x[3] + I2 * x[1] * x[4] + I3 * x[2] * x[5];
+  }
   double energy(const State& x) const {
     return 0.5 * (I1 * x[0] * x[0] + I2 * x[1] * x[1] + I3 * x[2] * x[2]) +
            P * (a0 * x[3] + b0 * x[4] + c0 * x[5]);
@@ -164,7 +166,8 @@ struct Linear1 {
 // Observed orders log2(e(h) / e(h/2)) for the errors e of a step-halving study.
 inline std::vector<double> observed_orders(const std::vector<double>& errors) {
   std::vector<double> p;
-  for (std::size_t i = 0; i + 1 < errors.size(); ++i) p.push_back(std::log2(errors[i] / errors[i + 1]));
+  for (std::size_t i = 0; i + 1 < errors.size(); ++i)
+    p.push_back(std::log2(errors[i] / errors[i + 1]));
   return p;
 }
 

@@ -11,13 +11,15 @@
 namespace epviz {
 namespace {
 
-constexpr paint::ChartOptions kSmall{.width = 480, .height = 300, .msaa_samples = 0, .builtin_font = true};
+constexpr paint::ChartOptions kSmall{
+    .width = 480, .height = 300, .msaa_samples = 0, .builtin_font = true};
 
 chart::Figure work_precision_figure() {
   chart::ChartSpec spec{"Work-precision: euler", "CPU time [ms]", "error at t_end", true, true, {}};
   for (const char* method : {"rk4", "dop853"}) {
     chart::ChartSeries s{method, {}};
-    for (int k = 0; k < 3; ++k) s.points.push_back({0.01 * (k + 1), std::pow(10.0, -3.0 - 2.0 * k)});
+    for (int k = 0; k < 3; ++k)
+      s.points.push_back({0.01 * (k + 1), std::pow(10.0, -3.0 - 2.0 * k)});
     spec.series.push_back(s);
   }
   return {"work_precision_euler.png", spec};
@@ -25,7 +27,8 @@ chart::Figure work_precision_figure() {
 
 chart::Figure table_figure(int rows) {
   chart::TableSpec t{"Stability studies", {"study", "case", "method", "result"}, {}};
-  for (int i = 0; i < rows; ++i) t.rows.push_back({"max_step", "kovalevskaya", "rk4", "max step 0.33"});
+  for (int i = 0; i < rows; ++i)
+    t.rows.push_back({"max_step", "kovalevskaya", "rk4", "max step 0.33"});
   return {"stability.png", t};
 }
 

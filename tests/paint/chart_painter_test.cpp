@@ -30,7 +30,9 @@ paint::ChartSpec two_series() {
   return s;
 }
 
-paint::ChartOptions test_options() { return {.width = W, .height = H, .msaa_samples = 4, .builtin_font = true}; }
+paint::ChartOptions test_options() {
+  return {.width = W, .height = H, .msaa_samples = 4, .builtin_font = true};
+}
 
 // Whether a pixel near `at` (within r) is close to `colour`.
 bool colour_near(const render::RgbaImage& img, glm::vec2 at, const glm::vec4& colour, int r = 3) {
@@ -43,7 +45,8 @@ bool colour_near(const render::RgbaImage& img, glm::vec2 at, const glm::vec4& co
   return false;
 }
 
-int colour_count(const render::RgbaImage& img, const render::Viewport& box, const glm::vec4& colour) {
+int colour_count(const render::RgbaImage& img, const render::Viewport& box,
+                 const glm::vec4& colour) {
   int n = 0;
   for (int y = std::max(0, box.y); y < std::min(img.height, box.y + box.height); ++y)
     for (int x = std::max(0, box.x); x < std::min(img.width, box.x + box.width); ++x)

@@ -19,12 +19,14 @@ namespace et = epviz::testing;
 constexpr int W = 320, H = 240;
 
 paint::FramePainter& painter() {
-  static paint::FramePainter p(et::shared_gl_context(), W, H, {.msaa_samples = 4, .builtin_font = true});
+  static paint::FramePainter p(et::shared_gl_context(), W, H,
+                               {.msaa_samples = 4, .builtin_font = true});
   return p;
 }
 
 // A frame of the given case at 60 % of a short run, as `epviz render` builds it.
-scene::Frame case_frame(physics::Case c, scene::View view = scene::View::body, scene::Layers layers = {}) {
+scene::Frame case_frame(physics::Case c, scene::View view = scene::View::body,
+                        scene::Layers layers = {}) {
   const auto run = sim::preset_run(c, sim::Method::dop853, sim::Formulation::direct, 12.0, 200);
   scene::SceneSettings s;
   s.width = W;
@@ -37,12 +39,16 @@ scene::Frame case_frame(physics::Case c, scene::View view = scene::View::body, s
   return source.frame(18);
 }
 
-glm::vec4 px(const render::RgbaImage& img, glm::vec2 at) { return et::pixel_colour(img, int(at.x), int(at.y)); }
+glm::vec4 px(const render::RgbaImage& img, glm::vec2 at) {
+  return et::pixel_colour(img, int(at.x), int(at.y));
+}
 glm::vec4 background_of(const scene::Frame& f) {
   return {f.colours.background[0], f.colours.background[1], f.colours.background[2], 1};
 }
 
-scene::Layers only(bool body, bool sphere, bool riccati, bool overlay) { return {body, sphere, riccati, overlay}; }
+scene::Layers only(bool body, bool sphere, bool riccati, bool overlay) {
+  return {body, sphere, riccati, overlay};
+}
 
 struct Named {
   std::string name;
@@ -64,22 +70,28 @@ TEST_P(PainterSnapshot, MatchesTheReviewedGolden) {
 
 INSTANTIATE_TEST_SUITE_P(
     CasesAndLayers, PainterSnapshot,
-    ::testing::Values(Named{"euler", physics::Case::euler, scene::View::space, {}},
-                      Named{"lagrange", physics::Case::lagrange, scene::View::space, {}},
-                      Named{"kovalevskaya", physics::Case::kovalevskaya, scene::View::body, {}},
-                      Named{"goryachev_chaplygin", physics::Case::goryachev_chaplygin, scene::View::body, {}},
-                      Named{"hess", physics::Case::hess, scene::View::body, {}},
-                      Named{"generic", physics::Case::generic, scene::View::body, {}},
-                      Named{"layer_body", physics::Case::kovalevskaya, scene::View::body, only(true, false, false, false)},
-                      Named{"layer_sphere", physics::Case::kovalevskaya, scene::View::body, only(false, true, false, false)},
-                      Named{"layer_riccati", physics::Case::kovalevskaya, scene::View::body, only(false, false, true, false)},
-                      Named{"layer_overlay", physics::Case::kovalevskaya, scene::View::body, only(false, false, false, true)}),
+    ::testing::Values(
+        Named{"euler", physics::Case::euler, scene::View::space, {}},
+        Named{"lagrange", physics::Case::lagrange, scene::View::space, {}},
+        Named{"kovalevskaya", physics::Case::kovalevskaya, scene::View::body, {}},
+        Named{"goryachev_chaplygin", physics::Case::goryachev_chaplygin, scene::View::body, {}},
+        Named{"hess", physics::Case::hess, scene::View::body, {}},
+        Named{"generic", physics::Case::generic, scene::View::body, {}},
+        Named{"layer_body", physics::Case::kovalevskaya, scene::View::body,
+              only(true, false, false, false)},
+        Named{"layer_sphere", physics::Case::kovalevskaya, scene::View::body,
+              only(false, true, false, false)},
+        Named{"layer_riccati", physics::Case::kovalevskaya, scene::View::body,
+              only(false, false, true, false)},
+        Named{"layer_overlay", physics::Case::kovalevskaya, scene::View::body,
+              only(false, false, false, true)}),
     [](const auto& info) { return info.param.name; });
 
 // The plan picks the tolerance and the trail's decimation from the same layout
 // the painter draws into, and its pixel scales are those of the real camera and plot.
 TEST(Painter, PlanAndPainterShareOneLayout) {
-  const auto run = sim::preset_run(physics::Case::lagrange, sim::Method::dop853, sim::Formulation::direct, 12.0, 200);
+  const auto run = sim::preset_run(physics::Case::lagrange, sim::Method::dop853,
+                                   sim::Formulation::direct, 12.0, 200);
   for (auto [w, h] : {std::pair{W, H}, std::pair{1280, 720}}) {
     scene::SceneSettings s;
     s.width = w;
@@ -99,15 +111,19 @@ TEST(Painter, PlanAndPainterShareOneLayout) {
     const auto up = render::project_to_pixel(cam, *layout.view_3d, {0, 0, 1e-3f});
     ASSERT_TRUE(centre && up);
     const double cos_elevation = std::cos(s.camera.elevation_deg * M_PI / 180);
-    EXPECT_NEAR(glm::length(glm::vec2(*up) - glm::vec2(*centre)) / 1e-3 / cos_elevation, layout.sphere_px_per_unit,
-                0.01 * layout.sphere_px_per_unit);
-    const render::Panel2D plot(*layout.plot_area, {-f.plane_extent, f.plane_extent, -f.plane_extent, f.plane_extent}, true);
-    EXPECT_NEAR(glm::length(plot.to_pixel({1, 0}) - plot.to_pixel({0, 0})), layout.plane_px_per_unit, 1e-3);
+    EXPECT_NEAR(glm::length(glm::vec2(*up) - glm::vec2(*centre)) / 1e-3 / cos_elevation,
+                layout.sphere_px_per_unit, 0.01 * layout.sphere_px_per_unit);
+    const render::Panel2D plot(*layout.plot_area,
+                               {-f.plane_extent, f.plane_extent, -f.plane_extent, f.plane_extent},
+                               true);
+    EXPECT_NEAR(glm::length(plot.to_pixel({1, 0}) - plot.to_pixel({0, 0})),
+                layout.plane_px_per_unit, 1e-3);
   }
 }
 
 TEST(Painter, SphereLayerDrawsTheCurrentPointWithTheMarkerColour) {
-  const auto f = case_frame(physics::Case::kovalevskaya, scene::View::body, only(false, true, false, false));
+  const auto f =
+      case_frame(physics::Case::kovalevskaya, scene::View::body, only(false, true, false, false));
   const auto& img = painter().paint(f);
   const auto layout = paint::layout_for(f.layers, f.overlay, W, H);
   ASSERT_TRUE(layout.view_3d);
@@ -119,11 +135,13 @@ TEST(Painter, SphereLayerDrawsTheCurrentPointWithTheMarkerColour) {
 }
 
 TEST(Painter, BodyLayerShowsTheBoxAtItsCentreOfMass) {
-  const auto f = case_frame(physics::Case::lagrange, scene::View::body, only(true, false, false, false));
+  const auto f =
+      case_frame(physics::Case::lagrange, scene::View::body, only(true, false, false, false));
   const auto& img = painter().paint(f);
   const auto layout = paint::layout_for(f.layers, f.overlay, W, H);
   const Eigen::Vector3f c = f.body.centre_of_mass;
-  const auto at = render::project_to_pixel(paint::camera_for(f, *layout.view_3d), *layout.view_3d, {c.x(), c.y(), c.z() + 0.05f});
+  const auto at = render::project_to_pixel(paint::camera_for(f, *layout.view_3d), *layout.view_3d,
+                                           {c.x(), c.y(), c.z() + 0.05f});
   ASSERT_TRUE(at);
   const glm::vec4 p = px(img, *at);
   // The body's warm colour, lit: red clearly above blue, and not background.
@@ -132,19 +150,23 @@ TEST(Painter, BodyLayerShowsTheBoxAtItsCentreOfMass) {
 }
 
 TEST(Painter, SwitchedOffLayersLeaveBackground) {
-  const auto f = case_frame(physics::Case::kovalevskaya, scene::View::body, only(false, false, true, false));
+  const auto f =
+      case_frame(physics::Case::kovalevskaya, scene::View::body, only(false, false, true, false));
   const auto& img = painter().paint(f);
   // Only the panel: the left and right borders and corners are background.
   for (glm::vec2 at : {glm::vec2(2, 2), glm::vec2(W - 3, H - 3), glm::vec2(2, H / 2)})
-    EXPECT_LT(et::max_channel_difference(px(img, at), background_of(f)), 0.02f) << at.x << "," << at.y;
+    EXPECT_LT(et::max_channel_difference(px(img, at), background_of(f)), 0.02f)
+        << at.x << "," << at.y;
 }
 
 TEST(Painter, RiccatiPanelShowsTheUnitCircle) {
-  const auto f = case_frame(physics::Case::kovalevskaya, scene::View::body, only(false, false, true, false));
+  const auto f =
+      case_frame(physics::Case::kovalevskaya, scene::View::body, only(false, false, true, false));
   const auto& img = painter().paint(f);
   const auto layout = paint::layout_for(f.layers, f.overlay, W, H);
   ASSERT_TRUE(layout.plot_area);
-  const render::Panel2D plot(*layout.plot_area, {-f.plane_extent, f.plane_extent, -f.plane_extent, f.plane_extent}, true);
+  const render::Panel2D plot(
+      *layout.plot_area, {-f.plane_extent, f.plane_extent, -f.plane_extent, f.plane_extent}, true);
   int bright = 0;
   for (int k = 0; k < 16; ++k) {
     const double a = 2 * M_PI * (k + 0.5) / 16;
@@ -154,11 +176,14 @@ TEST(Painter, RiccatiPanelShowsTheUnitCircle) {
 }
 
 TEST(Painter, PassThroughInfinityIsMarked) {
-  auto f = case_frame(physics::Case::kovalevskaya, scene::View::body, only(false, false, true, false));
-  f.plane_marks.push_back({Eigen::Vector2f(f.plane_extent, 0.0f), scene::PlaneMark::Kind::through_infinity, 0.2f});
+  auto f =
+      case_frame(physics::Case::kovalevskaya, scene::View::body, only(false, false, true, false));
+  f.plane_marks.push_back(
+      {Eigen::Vector2f(f.plane_extent, 0.0f), scene::PlaneMark::Kind::through_infinity, 0.2f});
   const auto& img = painter().paint(f);
   const auto layout = paint::layout_for(f.layers, f.overlay, W, H);
-  const render::Panel2D plot(*layout.plot_area, {-f.plane_extent, f.plane_extent, -f.plane_extent, f.plane_extent}, true);
+  const render::Panel2D plot(
+      *layout.plot_area, {-f.plane_extent, f.plane_extent, -f.plane_extent, f.plane_extent}, true);
   const glm::vec2 at = plot.to_pixel({f.plane_extent, 0.0});
   int red = 0;
   for (int dx = -7; dx <= 7; ++dx)
@@ -172,7 +197,8 @@ TEST(Painter, PassThroughInfinityIsMarked) {
 // The light theme (no golden: its pictures are looked at, not pinned): a
 // light page with the body, sphere, panel and overlay drawn dark on it.
 TEST(Painter, LightThemeDrawsDarkOnALightPage) {
-  const auto run = sim::preset_run(physics::Case::kovalevskaya, sim::Method::dop853, sim::Formulation::direct, 12.0, 200);
+  const auto run = sim::preset_run(physics::Case::kovalevskaya, sim::Method::dop853,
+                                   sim::Formulation::direct, 12.0, 200);
   scene::SceneSettings s;
   s.width = W;
   s.height = H;
@@ -193,11 +219,13 @@ TEST(Painter, LightThemeDrawsDarkOnALightPage) {
   EXPECT_GT(light, W * H / 2);   // mostly page
   EXPECT_GT(dark, W * H / 200);  // and lines and text on it
   for (glm::vec2 at : {glm::vec2(2, 2), glm::vec2(W - 3, H - 3)})
-    EXPECT_LT(et::max_channel_difference(px(img, at), background_of(f)), 0.02f) << at.x << "," << at.y;
+    EXPECT_LT(et::max_channel_difference(px(img, at), background_of(f)), 0.02f)
+        << at.x << "," << at.y;
 }
 
 TEST(Painter, OverlayAloneDrawsTextAndNothingElse) {
-  const auto f = case_frame(physics::Case::kovalevskaya, scene::View::body, only(false, false, false, true));
+  const auto f =
+      case_frame(physics::Case::kovalevskaya, scene::View::body, only(false, false, false, true));
   const auto& img = painter().paint(f);
   int text = 0, elsewhere = 0;
   for (int y = 0; y < H; ++y)

@@ -29,35 +29,48 @@ std::pair<std::string, std::string> error_of(F&& f) {
   return {"", "(no exception)"};
 }
 
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+bool contains(const std::string& s, const std::string& part) {
+  return s.find(part) != std::string::npos;
+}
 
 TEST(ValidateBody, AcceptsAPhysicalBody) {
   EXPECT_NO_THROW(validate_body(Body{}, false));
-  EXPECT_NO_THROW(validate_body(Body{Vector3d(1, 1, 2), Vector3d(1, 2, 3), 0.0}, false));  // flat disc
+  EXPECT_NO_THROW(
+      validate_body(Body{Vector3d(1, 1, 2), Vector3d(1, 2, 3), 0.0}, false));  // flat disc
 }
 
 TEST(ValidateBody, RejectsBadMoments) {
-  for (const Vector3d& I : {Vector3d(1, -2, 3), Vector3d(0, 2, 3), Vector3d(1, kNaN, 3), Vector3d(kInf, 2, 3)}) {
+  for (const Vector3d& I :
+       {Vector3d(1, -2, 3), Vector3d(0, 2, 3), Vector3d(1, kNaN, 3), Vector3d(kInf, 2, 3)}) {
     const auto [field, msg] = error_of([&] { validate_body(Body{I, Vector3d::Zero(), 1}, true); });
     EXPECT_EQ(field, "inertia") << msg;
     EXPECT_TRUE(contains(msg, "inertia must be three positive finite numbers; got (")) << msg;
   }
-  const auto [field, msg] = error_of([&] { validate_body(Body{Vector3d(1, -2, 3), {}, 1}, false); });
+  const auto [field, msg] = error_of([&] {
+    validate_body(Body{Vector3d(1, -2, 3), {}, 1}, false);
+  });
   EXPECT_EQ(msg, "inertia must be three positive finite numbers; got (1, -2, 3)");
 }
 
 TEST(ValidateBody, TriangleInequalityAndOverride) {
   {
-    const auto [field, msg] = error_of([&] { validate_body(Body{Vector3d(1, 1, 3), {}, 1}, false); });
+    const auto [field, msg] = error_of([&] {
+      validate_body(Body{Vector3d(1, 1, 3), {}, 1}, false);
+    });
     EXPECT_EQ(field, "inertia");
-    EXPECT_EQ(msg, "inertia (1, 1, 3) breaks the triangle inequality I1 + I2 >= I3 (not a rigid body)");
+    EXPECT_EQ(msg,
+              "inertia (1, 1, 3) breaks the triangle inequality I1 + I2 >= I3 (not a rigid body)");
   }
   {
-    const auto [field, msg] = error_of([&] { validate_body(Body{Vector3d(5, 1, 3), {}, 1}, false); });
+    const auto [field, msg] = error_of([&] {
+      validate_body(Body{Vector3d(5, 1, 3), {}, 1}, false);
+    });
     EXPECT_TRUE(contains(msg, "I2 + I3 >= I1")) << msg;
   }
   {
-    const auto [field, msg] = error_of([&] { validate_body(Body{Vector3d(1, 4.5, 3), {}, 1}, false); });
+    const auto [field, msg] = error_of([&] {
+      validate_body(Body{Vector3d(1, 4.5, 3), {}, 1}, false);
+    });
     EXPECT_TRUE(contains(msg, "I1 + I3 >= I2")) << msg;
   }
   EXPECT_NO_THROW(validate_body(Body{Vector3d(1, 1, 3), {}, 1}, true));
@@ -65,7 +78,9 @@ TEST(ValidateBody, TriangleInequalityAndOverride) {
 }
 
 TEST(ValidateBody, RejectsBadComAndWeight) {
-  auto [field, msg] = error_of([&] { validate_body(Body{Vector3d(1, 2, 3), Vector3d(0, kNaN, 0), 1}, false); });
+  auto [field, msg] = error_of([&] {
+    validate_body(Body{Vector3d(1, 2, 3), Vector3d(0, kNaN, 0), 1}, false);
+  });
   EXPECT_EQ(field, "com");
   EXPECT_TRUE(contains(msg, "finite")) << msg;
   std::tie(field, msg) = error_of([&] { validate_body(Body{Vector3d(1, 2, 3), {}, -1}, false); });
@@ -86,27 +101,34 @@ TEST(ValidateInitialState, GammaNormAndNormalize) {
   const auto [field, msg] = error_of([&] { validate_initial_state(off, false); });
   EXPECT_EQ(field, "gamma");
   EXPECT_EQ(msg, "gamma must be a unit vector (| |gamma| - 1 | <= 1e-9); got |gamma| = 1.02");
-  const InitialState fixed = validate_initial_state(InitialState{ok.omega, Vector3d(3, 0, 4)}, true);
+  const InitialState fixed =
+      validate_initial_state(InitialState{ok.omega, Vector3d(3, 0, 4)}, true);
   EXPECT_NEAR(fixed.gamma.norm(), 1.0, 1e-15);
   EXPECT_NEAR(fixed.gamma.x(), 0.6, 1e-15);
   EXPECT_EQ(fixed.omega, ok.omega);
-  const auto zero = error_of([&] { validate_initial_state(InitialState{ok.omega, Vector3d::Zero()}, true); });
+  const auto zero = error_of([&] {
+    validate_initial_state(InitialState{ok.omega, Vector3d::Zero()}, true);
+  });
   EXPECT_EQ(zero.first, "gamma");
   EXPECT_TRUE(contains(zero.second, "zero")) << zero.second;
 }
 
 TEST(ValidateInitialState, RejectsNonFinite) {
-  auto [field, msg] = error_of([&] { validate_initial_state(InitialState{Vector3d(1, kNaN, 0), Vector3d::UnitZ()}, true); });
+  auto [field, msg] = error_of([&] {
+    validate_initial_state(InitialState{Vector3d(1, kNaN, 0), Vector3d::UnitZ()}, true);
+  });
   EXPECT_EQ(field, "omega");
   EXPECT_TRUE(contains(msg, "finite")) << msg;
-  std::tie(field, msg) = error_of([&] { validate_initial_state(InitialState{Vector3d::Zero(), Vector3d(kInf, 0, 1)}, true); });
+  std::tie(field, msg) = error_of([&] {
+    validate_initial_state(InitialState{Vector3d::Zero(), Vector3d(kInf, 0, 1)}, true);
+  });
   EXPECT_EQ(field, "gamma");
   EXPECT_TRUE(contains(msg, "finite")) << msg;
 }
 
 TEST(Cases, NamesRoundTrip) {
-  for (Case c : {Case::custom, Case::euler, Case::lagrange, Case::kovalevskaya, Case::goryachev_chaplygin,
-                 Case::hess, Case::generic})
+  for (Case c : {Case::custom, Case::euler, Case::lagrange, Case::kovalevskaya,
+                 Case::goryachev_chaplygin, Case::hess, Case::generic})
     EXPECT_EQ(case_from_name(case_name(c)), c) << case_name(c);
   EXPECT_EQ(case_name(Case::goryachev_chaplygin), "goryachev-chaplygin");
   EXPECT_EQ(case_from_name("nope"), std::nullopt);
@@ -130,7 +152,8 @@ TEST(Cases, PresetsAreValidAndSatisfyTheirConditions) {
     EXPECT_NEAR(p.initial.gamma.norm(), 1.0, 1e-15) << p.name;
     EXPECT_EQ(broken_condition(p.id, p.body, p.initial), std::nullopt)
         << p.name << ": " << broken_condition(p.id, p.body, p.initial).value_or("");
-    EXPECT_EQ(extra_integral(p.id, p.body, p.initial.omega, p.initial.gamma).has_value(), p.id != Case::generic);
+    EXPECT_EQ(extra_integral(p.id, p.body, p.initial.omega, p.initial.gamma).has_value(),
+              p.id != Case::generic);
     EXPECT_GT(p.initial.omega.norm(), 0.0) << p.name;
     EXPECT_GT(p.body.weight, 0.0) << p.name;
   }
@@ -203,14 +226,18 @@ TEST(Cases, GenericPresetIsChaotic) {
 }
 
 TEST(Cases, BrokenConditionsNameTheCondition) {
-  const auto broken = [](Case c, Body b, InitialState s) { return broken_condition(c, b, s).value_or("(none)"); };
+  const auto broken = [](Case c, Body b, InitialState s) {
+    return broken_condition(c, b, s).value_or("(none)");
+  };
   const CasePreset& kov = preset(Case::kovalevskaya);
   Body b = kov.body;
   b.inertia.z() = 1.5;
-  EXPECT_EQ(broken(Case::kovalevskaya, b, kov.initial), "kovalevskaya needs I1 = I2 = 2 I3; got I = (2, 2, 1.5)");
+  EXPECT_EQ(broken(Case::kovalevskaya, b, kov.initial),
+            "kovalevskaya needs I1 = I2 = 2 I3; got I = (2, 2, 1.5)");
   b = kov.body;
   b.com.z() = 0.2;
-  EXPECT_TRUE(contains(broken(Case::kovalevskaya, b, kov.initial), "c0 = 0")) << broken(Case::kovalevskaya, b, kov.initial);
+  EXPECT_TRUE(contains(broken(Case::kovalevskaya, b, kov.initial), "c0 = 0"))
+      << broken(Case::kovalevskaya, b, kov.initial);
   b.com = Vector3d(1, 0.1, 0);
   EXPECT_TRUE(contains(broken(Case::kovalevskaya, b, kov.initial), "b0 = 0"));
   // Relative tolerance 1e-12.
@@ -223,8 +250,9 @@ TEST(Cases, BrokenConditionsNameTheCondition) {
   const CasePreset& lag = preset(Case::lagrange);
   b = lag.body;
   b.com.x() = 0.1;
-  EXPECT_EQ(broken(Case::lagrange, b, lag.initial),
-            "lagrange needs a0 = b0 = 0 (centre of mass on the symmetry axis); got r = (0.1, 0, 1)");
+  EXPECT_EQ(
+      broken(Case::lagrange, b, lag.initial),
+      "lagrange needs a0 = b0 = 0 (centre of mass on the symmetry axis); got r = (0.1, 0, 1)");
   b = lag.body;
   b.inertia.y() = 2.5;
   EXPECT_EQ(broken(Case::lagrange, b, lag.initial), "lagrange needs I1 = I2; got I = (2, 2.5, 1)");
@@ -232,18 +260,21 @@ TEST(Cases, BrokenConditionsNameTheCondition) {
   const CasePreset& eu = preset(Case::euler);
   b = eu.body;
   b.com = Vector3d(0, 0, 0.5);
-  EXPECT_TRUE(contains(broken(Case::euler, b, eu.initial), "euler needs r = 0 or P = 0")) << broken(Case::euler, b, eu.initial);
+  EXPECT_TRUE(contains(broken(Case::euler, b, eu.initial), "euler needs r = 0 or P = 0"))
+      << broken(Case::euler, b, eu.initial);
   b.weight = 0;
   EXPECT_EQ(broken_condition(Case::euler, b, eu.initial), std::nullopt);
 
   const CasePreset& gc = preset(Case::goryachev_chaplygin);
   InitialState s = gc.initial;
   s.omega.z() += 0.1;
-  EXPECT_TRUE(contains(broken(Case::goryachev_chaplygin, gc.body, s), "goryachev-chaplygin needs the initial area integral C0"))
+  EXPECT_TRUE(contains(broken(Case::goryachev_chaplygin, gc.body, s),
+                       "goryachev-chaplygin needs the initial area integral C0"))
       << broken(Case::goryachev_chaplygin, gc.body, s);
   b = gc.body;
   b.inertia = Vector3d(4, 4, 2);
-  EXPECT_EQ(broken(Case::goryachev_chaplygin, b, gc.initial), "goryachev-chaplygin needs I1 = I2 = 4 I3; got I = (4, 4, 2)");
+  EXPECT_EQ(broken(Case::goryachev_chaplygin, b, gc.initial),
+            "goryachev-chaplygin needs I1 = I2 = 4 I3; got I = (4, 4, 2)");
   b = gc.body;
   b.com.z() = 0.3;
   EXPECT_TRUE(contains(broken(Case::goryachev_chaplygin, b, gc.initial), "b0 = c0 = 0"));
@@ -251,15 +282,19 @@ TEST(Cases, BrokenConditionsNameTheCondition) {
   const CasePreset& h = preset(Case::hess);
   b = h.body;
   b.com.z() *= 1.1;
-  EXPECT_TRUE(contains(broken(Case::hess, b, h.initial), "hess needs c0 = +-a0 sqrt(I1 (I2 - I3)) / sqrt(I3 (I1 - I2))"))
+  EXPECT_TRUE(contains(broken(Case::hess, b, h.initial),
+                       "hess needs c0 = +-a0 sqrt(I1 (I2 - I3)) / sqrt(I3 (I1 - I2))"))
       << broken(Case::hess, b, h.initial);
   b = h.body;
   b.com.z() = -b.com.z();  // the other sign is a Hess body too (with its own H = 0 states)
-  EXPECT_FALSE(contains(broken(Case::hess, b, h.initial), "c0 = +-")) << broken(Case::hess, b, h.initial);
-  EXPECT_TRUE(contains(broken(Case::hess, b, h.initial), "hess needs the initial relation H = I1 a0 Omega1 + I3 c0 Omega3 = 0"));
+  EXPECT_FALSE(contains(broken(Case::hess, b, h.initial), "c0 = +-"))
+      << broken(Case::hess, b, h.initial);
+  EXPECT_TRUE(contains(broken(Case::hess, b, h.initial),
+                       "hess needs the initial relation H = I1 a0 Omega1 + I3 c0 Omega3 = 0"));
   s = h.initial;
   s.omega.x() += 0.1;
-  EXPECT_TRUE(contains(broken(Case::hess, h.body, s), "H = I1 a0 Omega1 + I3 c0 Omega3 = 0; got H = 0.3"))
+  EXPECT_TRUE(
+      contains(broken(Case::hess, h.body, s), "H = I1 a0 Omega1 + I3 c0 Omega3 = 0; got H = 0.3"))
       << broken(Case::hess, h.body, s);
   b = h.body;
   b.inertia = Vector3d(2, 3, 1.5);

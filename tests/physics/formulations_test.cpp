@@ -110,7 +110,8 @@ TEST(Spinor, ChainRuleThroughHopfMapGivesPoisson) {
     EXPECT_LT((gdot - g.cross(w)).norm(), 1e-13 * (1 + w.norm())) << "trial " << trial;
     EXPECT_LT((sys.gamma(x) - g).norm(), 1e-15);
     // The linear flow is in SU(2): |p|^2 + |q|^2 is constant.
-    EXPECT_LT(std::abs(x.tail<4>().dot(dx.tail<4>())), 1e-14 * (1 + w.norm()) * x.tail<4>().squaredNorm());
+    EXPECT_LT(std::abs(x.tail<4>().dot(dx.tail<4>())),
+              1e-14 * (1 + w.norm()) * x.tail<4>().squaredNorm());
   }
 }
 

@@ -100,15 +100,19 @@ TEST(FreeRigidBodyFlow, OnTheSeparatrixFallsBackToATinyStepIntegration) {
 TEST(FreeRigidBodyFlow, DegenerateCases) {
   const Vector3d g = Vector3d(0.3, -0.5, 0.8).normalized();
   // Equal moments: regular precession (each pair, and a sphere).
-  for (const Vector3d& I : {Vector3d(1.0, 1.0, 2.0), Vector3d(1.5, 1.0, 1.0), Vector3d(1.2, 0.7, 1.2),
-                            Vector3d(1.3, 1.3, 1.3)})
-    for (double h : {0.2, 9.0}) expect_matches_reference(I, Vector3d(0.7, -0.4, 1.1), g, h, 1e-12, Path::symmetric);
+  for (const Vector3d& I : {Vector3d(1.0, 1.0, 2.0), Vector3d(1.5, 1.0, 1.0),
+                            Vector3d(1.2, 0.7, 1.2), Vector3d(1.3, 1.3, 1.3)})
+    for (double h : {0.2, 9.0})
+      expect_matches_reference(I, Vector3d(0.7, -0.4, 1.1), g, h, 1e-12, Path::symmetric);
   // Steady rotation about each principal axis.
   for (int k = 0; k < 3; ++k)
-    expect_matches_reference(Vector3d(1.0, 2.0, 3.0), 1.3 * Vector3d::Unit(k), g, 4.0, 1e-12, Path::steady);
+    expect_matches_reference(Vector3d(1.0, 2.0, 3.0), 1.3 * Vector3d::Unit(k), g, 4.0, 1e-12,
+                             Path::steady);
   // Nearly steady rotation about the largest and the smallest axis (elliptic, tiny amplitude).
-  expect_matches_reference(Vector3d(1.0, 2.0, 3.0), Vector3d(1e-9, 2e-9, 1.0), g, 5.0, 1e-12, Path::elliptic);
-  expect_matches_reference(Vector3d(1.0, 2.0, 3.0), Vector3d(1.0, -1e-9, 2e-9), g, 5.0, 1e-12, Path::elliptic);
+  expect_matches_reference(Vector3d(1.0, 2.0, 3.0), Vector3d(1e-9, 2e-9, 1.0), g, 5.0, 1e-12,
+                           Path::elliptic);
+  expect_matches_reference(Vector3d(1.0, 2.0, 3.0), Vector3d(1.0, -1e-9, 2e-9), g, 5.0, 1e-12,
+                           Path::elliptic);
   // At rest.
   EXPECT_EQ(int(flow(Vector3d(1.0, 2.0, 3.0), Vector3d::Zero(), g, 1.0).path), int(Path::rest));
 }
@@ -130,7 +134,8 @@ TEST(FreeRigidBodyFlow, ConservesInvariantsToRoundOff) {
 
 TEST(FreeRigidBodyFlow, IsAOneParameterGroup) {
   test::Random rng;
-  for (const Vector3d& I : {Vector3d(1.0, 1.7, 2.2), Vector3d(2.2, 1.0, 1.7), Vector3d(1.0, 1.0, 2.0)}) {
+  for (const Vector3d& I :
+       {Vector3d(1.0, 1.7, 2.2), Vector3d(2.2, 1.0, 1.7), Vector3d(1.0, 1.0, 2.0)}) {
     for (int trial = 0; trial < 50; ++trial) {
       const Vector3d w = rng.vec(), g = rng.unit();
       const double h1 = rng.uniform(-5.0, 5.0), h2 = rng.uniform(-5.0, 5.0);

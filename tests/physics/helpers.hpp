@@ -26,7 +26,9 @@ X rk4(const F& f, double t0, double t1, X x, int n) {
 
 struct Random {
   std::mt19937_64 gen{12345};
-  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(gen); }
+  double uniform(double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(gen);
+  }
   Eigen::Vector3d vec(double lo = -2.0, double hi = 2.0) {
     return Eigen::Vector3d(uniform(lo, hi), uniform(lo, hi), uniform(lo, hi));
   }

@@ -90,7 +90,8 @@ Deriv d_kov(const Body& b, const Point& p) {
   return a.get();
 }
 double gc_G(const Body& b, const Vector3d& w, const Vector3d& g) {
-  return w.z() * (w.x() * w.x() + w.y() * w.y()) - b.weight * b.com.x() / b.inertia.z() * w.x() * g.z();
+  return w.z() * (w.x() * w.x() + w.y() * w.y()) -
+         b.weight * b.com.x() / b.inertia.z() * w.x() * g.z();
 }
 Deriv d_gc(const Body& b, const Point& p) {
   const double k = b.weight * b.com.x() / b.inertia.z();
@@ -161,7 +162,8 @@ void random_state(Case c, const Body& b, test::Random& rng, Vector3d& w, Vector3
   w = rng.vec();
   g = rng.unit();
   if (c == Case::goryachev_chaplygin)
-    w.z() = -(b.inertia.x() * w.x() * g.x() + b.inertia.y() * w.y() * g.y()) / (b.inertia.z() * g.z());
+    w.z() =
+        -(b.inertia.x() * w.x() * g.x() + b.inertia.y() * w.y() * g.y()) / (b.inertia.z() * g.z());
   if (c == Case::hess) w.x() = -b.inertia.z() * b.com.z() * w.z() / (b.inertia.x() * b.com.x());
 }
 
@@ -173,9 +175,11 @@ Body random_case_body(Case c, test::Random& rng) {
     case Case::kovalevskaya: return Body{Vector3d(2 * s, 2 * s, s), Vector3d(a0, 0, 0), P};
     case Case::goryachev_chaplygin: return Body{Vector3d(4 * s, 4 * s, s), Vector3d(a0, 0, 0), P};
     case Case::hess: {
-      const double i3 = rng.uniform(0.5, 1.0), i2 = i3 + rng.uniform(0.1, 0.5), i1 = i2 + rng.uniform(0.1, 0.4);
+      const double i3 = rng.uniform(0.5, 1.0), i2 = i3 + rng.uniform(0.1, 0.5),
+                   i1 = i2 + rng.uniform(0.1, 0.4);
       const Vector3d I(i1, i2, i3);
-      const double c0 = (rng.uniform(0, 1) < 0.5 ? -1 : 1) * a0 * std::sqrt(i1 * (i2 - i3)) / std::sqrt(i3 * (i1 - i2));
+      const double c0 = (rng.uniform(0, 1) < 0.5 ? -1 : 1) * a0 * std::sqrt(i1 * (i2 - i3)) /
+                        std::sqrt(i3 * (i1 - i2));
       return Body{I, Vector3d(a0, 0, c0), P};
     }
     default: return Body{};
@@ -190,7 +194,9 @@ struct CaseOracle {
 const CaseOracle kOracles[] = {
     {Case::euler, euler_L2, d_euler},
     {Case::lagrange, [](const Body&, const Vector3d& w, const Vector3d&) { return w.z(); },
-     [](const Body&, const Point& p) { return Deriv{p.dw.z(), std::abs(p.dw.z()) + 1e-300}; }},
+     [](const Body&, const Point& p) {
+       return Deriv{p.dw.z(), std::abs(p.dw.z()) + 1e-300};
+     }},
     {Case::kovalevskaya, kov_K, d_kov},
     {Case::goryachev_chaplygin, gc_G, d_gc},
     {Case::hess, hess_H, d_hess},
@@ -221,7 +227,8 @@ TEST(Invariants, ExtraIntegralsAreConservedInTheirCase) {
       const Point p = at(body, w, g);
       const double eps = 1e-6;
       const double fd = (*extra_integral(o.c, body, w + eps * p.dw, g + eps * p.dg) -
-                         *extra_integral(o.c, body, w - eps * p.dw, g - eps * p.dg)) / (2 * eps);
+                         *extra_integral(o.c, body, w - eps * p.dw, g - eps * p.dg)) /
+                        (2 * eps);
       EXPECT_NEAR(fd, d.value, 1e-6 * (1 + d.scale));
     }
   }
@@ -261,7 +268,8 @@ TEST(Invariants, GoryachevChaplyginNeedsZeroArea) {
     const Vector3d w = rng.vec(), g = rng.unit();
     const Point p = at(body, w, g);
     const double c0 = body.inertia.cwiseProduct(w).dot(g);
-    const double expected = -body.weight * body.com.x() * w.y() / (4 * body.inertia.z() * body.inertia.z()) * c0;
+    const double expected =
+        -body.weight * body.com.x() * w.y() / (4 * body.inertia.z() * body.inertia.z()) * c0;
     const Deriv d = d_gc(body, p);
     EXPECT_NEAR(d.value, expected, 1e-12 * d.scale);
     EXPECT_TRUE(broken_condition(Case::goryachev_chaplygin, body, InitialState{w, g}).has_value());
@@ -278,7 +286,8 @@ TEST(Invariants, HessRelationDerivativeIsProportionalToH) {
     const Deriv d = d_hess(body, at(body, w, g));
     const Vector3d& I = body.inertia;
     const double mu = w.y() * body.com.z() * (I.x() - I.y()) / (I.x() * body.com.x());
-    EXPECT_NEAR(d.value, mu * hess_H(body, w, g), 1e-12 * (d.scale + std::abs(mu * hess_H(body, w, g))));
+    EXPECT_NEAR(d.value, mu * hess_H(body, w, g),
+                1e-12 * (d.scale + std::abs(mu * hess_H(body, w, g))));
   }
 }
 
@@ -301,7 +310,8 @@ TEST(Invariants, ScalesAreMeaningfulForZeroInvariants) {
   EXPECT_NEAR(*sh.extra, terms, 1e-15);
   EXPECT_GT(terms, 0.1);
   // A body at rest still gets positive scales.
-  const Invariants rest = invariant_scales(Body{}, Case::euler, Vector3d::Zero(), Vector3d::UnitZ());
+  const Invariants rest =
+      invariant_scales(Body{}, Case::euler, Vector3d::Zero(), Vector3d::UnitZ());
   EXPECT_GT(rest.area, 0);
   EXPECT_GT(rest.energy, 0);
   EXPECT_GT(*rest.extra, 0);

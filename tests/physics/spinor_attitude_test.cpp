@@ -21,7 +21,8 @@ Matrix3d hat(const Vector3d& w) {
 }
 
 Vector3d prescribed_omega(double t) {
-  return Vector3d(1.3 * std::sin(1.7 * t) + 0.2, 0.8 * std::cos(0.9 * t) - 0.5, 2.0 + 0.7 * std::sin(2.3 * t));
+  return Vector3d(1.3 * std::sin(1.7 * t) + 0.2, 0.8 * std::cos(0.9 * t) - 0.5,
+                  2.0 + 0.7 * std::sin(2.3 * t));
 }
 
 TEST(SpinorAttitude, FollowsRigidBodyKinematics) {
@@ -39,7 +40,9 @@ TEST(SpinorAttitude, FollowsRigidBodyKinematics) {
     sys.rhs(t, s, ds);
     return V4(ds.tail<4>());
   };
-  const auto frot = [&](double t, const Matrix3d& r) { return Matrix3d(r * hat(prescribed_omega(t))); };
+  const auto frot = [&](double t, const Matrix3d& r) {
+    return Matrix3d(r * hat(prescribed_omega(t)));
+  };
 
   V4 pq = x.tail<4>();
   Matrix3d R = q0.toRotationMatrix();
@@ -71,7 +74,8 @@ TEST(SpinorAttitude, AttitudeDerivativeIsRTimesOmegaHat) {
   const Body body{Vector3d(1, 2, 2.5), Vector3d(0.3, -0.2, 0.5), 1.0};
   const SpinorSystem sys(body);
   for (int trial = 0; trial < 50; ++trial) {
-    const Quaterniond q(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+    const Quaterniond q(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1),
+                        rng.uniform(-1, 1));
     SpinorSystem::State x = SpinorSystem::pack(rng.vec(), q);
     SpinorSystem::State dx;
     sys.rhs(0, x, dx);
@@ -107,7 +111,8 @@ TEST(SpinorAttitude, PackAttitudeRoundTrip) {
   test::Random rng;
   for (int trial = 0; trial < 100; ++trial) {
     const Quaterniond q =
-        Quaterniond(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)).normalized();
+        Quaterniond(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1))
+            .normalized();
     const Vector3d w = rng.vec();
     const SpinorSystem::State x = SpinorSystem::pack(w, q);
     EXPECT_LT(SpinorSystem::attitude(x).angularDistance(q), 1e-7);
@@ -115,7 +120,10 @@ TEST(SpinorAttitude, PackAttitudeRoundTrip) {
     // The Hopf map gives the body-frame vertical of that attitude.
     EXPECT_LT((SpinorSystem::gamma(x) - q.inverse() * Vector3d::UnitZ()).norm(), 1e-14);
     // The overall sign of (p, q) is the same rotation.
-    EXPECT_LT((SpinorSystem::attitude(SpinorSystem::State(-x)).toRotationMatrix() - q.toRotationMatrix()).norm(), 1e-14);
+    EXPECT_LT(
+        (SpinorSystem::attitude(SpinorSystem::State(-x)).toRotationMatrix() - q.toRotationMatrix())
+            .norm(),
+        1e-14);
   }
 }
 

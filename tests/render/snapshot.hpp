@@ -23,19 +23,19 @@
 namespace epviz::testing {
 
 struct SnapshotTolerance {
-    int max_channel_difference = 4;    // 0..255: a pixel differs if any channel differs by more
-    double max_fraction_over = 0.01;   // of all pixels, how many may differ
+  int max_channel_difference = 4;   // 0..255: a pixel differs if any channel differs by more
+  double max_fraction_over = 0.01;  // of all pixels, how many may differ
 };
 
 enum class SnapshotMode { compare, update };
 
 struct SnapshotStore {
-    std::filesystem::path golden_dir;  // <source>/tests/snapshots
-    std::filesystem::path actual_dir;  // <golden_dir>/actual
-    SnapshotMode mode = SnapshotMode::compare;
+  std::filesystem::path golden_dir;  // <source>/tests/snapshots
+  std::filesystem::path actual_dir;  // <golden_dir>/actual
+  SnapshotMode mode = SnapshotMode::compare;
 
-    // The project's store; update mode when EPVIZ_UPDATE_SNAPSHOTS=1.
-    static SnapshotStore project();
+  // The project's store; update mode when EPVIZ_UPDATE_SNAPSHOTS=1.
+  static SnapshotStore project();
 };
 
 // Compares `rgba` (top-down RGBA8) with the golden <name>.png. In update mode

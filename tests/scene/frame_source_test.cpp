@@ -7,7 +7,8 @@ namespace epviz {
 namespace {
 
 scene::ScenePlan lagrange_plan(scene::SceneSettings& s) {
-  const auto r = sim::preset_run(physics::Case::lagrange, sim::Method::dop853, sim::Formulation::direct, 10, 200);
+  const auto r = sim::preset_run(physics::Case::lagrange, sim::Method::dop853,
+                                 sim::Formulation::direct, 10, 200);
   s.width = 320, s.height = 240, s.fps = 10, s.duration = 2;
   return scene::plan_scene(r, s);
 }

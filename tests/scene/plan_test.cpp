@@ -32,7 +32,8 @@ TEST(Plan, LaysOutThePictureWithTheOverlayItWillShow) {
   scene::SceneSettings s;  // 1280 x 720: the overlay sits above the plot
   const auto run = preset_run(physics::Case::kovalevskaya, 10);
   const auto plan = scene::plan_scene(run, s);
-  scene::LayoutRequest q{s.width, s.height, s.layers, {scene::kOverlayLines, 4}, s.camera.distance, s.plane_extent};
+  scene::LayoutRequest q{s.width,           s.height,      s.layers, {scene::kOverlayLines, 4},
+                         s.camera.distance, s.plane_extent};
   const auto expected = scene::frame_layout(q);
   ASSERT_TRUE(plan.layout.plot_area && expected.plot_area);
   EXPECT_TRUE(expected.overlay_in_column);
@@ -114,13 +115,15 @@ TEST_P(AutoToleranceIsEnough, ErrorBelowHalfAPixel) {
   for (std::size_t i = 0; i < coarse.samples.size(); ++i)
     worst = std::max(worst, (coarse.samples[i].gamma - fine.samples[i].gamma).norm());
   const double e = s.plane_extent;
-  const double px = std::max(plan.layout.sphere_px_per_unit, plan.layout.plane_px_per_unit * (1 + e * e) / 2);
+  const double px =
+      std::max(plan.layout.sphere_px_per_unit, plan.layout.plane_px_per_unit * (1 + e * e) / 2);
   EXPECT_LT(worst * px, 0.5) << "tol " << plan.run.tol;
 }
 
 INSTANTIATE_TEST_SUITE_P(Integrable, AutoToleranceIsEnough,
                          ::testing::Values(physics::Case::euler, physics::Case::lagrange,
-                                           physics::Case::kovalevskaya, physics::Case::goryachev_chaplygin,
+                                           physics::Case::kovalevskaya,
+                                           physics::Case::goryachev_chaplygin,
                                            physics::Case::hess));
 
 }  // namespace

@@ -51,7 +51,8 @@ TEST(TrailHistory, KeepsOnlyWhatThePixelsCanTellApart) {
   auto with_newest = kept;
   with_newest.push_back(offered.back());
   double worst = 0.0;
-  for (const auto& p : offered) worst = std::max(worst, distance_to_polyline(with_newest, p.sphere) * 100.0);
+  for (const auto& p : offered)
+    worst = std::max(worst, distance_to_polyline(with_newest, p.sphere) * 100.0);
   EXPECT_LT(worst, 0.3 + 1e-3);
   // Stricter tolerance, more points: the test can tell.
   scene::TrailHistory strict(100.0, 1.0, 0.02, 16.0);
@@ -131,7 +132,8 @@ TEST(BodyShape, UniformBoxHasTheBodysPrincipalMomentRatios) {
   const auto s = scene::body_shape(b);
   const Eigen::Vector3d h = s.half_extents.cast<double>();
   // Uniform box: I1 ~ (h2^2 + h3^2), etc.
-  const Eigen::Vector3d I(h[1] * h[1] + h[2] * h[2], h[0] * h[0] + h[2] * h[2], h[0] * h[0] + h[1] * h[1]);
+  const Eigen::Vector3d I(h[1] * h[1] + h[2] * h[2], h[0] * h[0] + h[2] * h[2],
+                          h[0] * h[0] + h[1] * h[1]);
   EXPECT_NEAR(I[0] / I[2], 2.0 / 4.0, 1e-5);
   EXPECT_NEAR(I[1] / I[2], 3.0 / 4.0, 1e-5);
   // The box and its centre of mass fit inside the unit sphere.

@@ -29,7 +29,8 @@ render::RgbaImage two_halves(int width, int height) {
 }
 
 void expect_near(glm::u8vec4 got, glm::u8vec4 want, int tolerance) {
-  for (int c = 0; c < 3; ++c) EXPECT_LE(std::abs(int(got[c]) - int(want[c])), tolerance) << "channel " << c;
+  for (int c = 0; c < 3; ++c)
+    EXPECT_LE(std::abs(int(got[c]) - int(want[c])), tolerance) << "channel " << c;
 }
 
 TEST(ServeJpeg, DecodesBackToThePicture) {
@@ -51,7 +52,8 @@ TEST(ServeJpeg, EncoderIsReusableAcrossSizes) {
   JpegEncoder encoder;
   for (int size : {32, 200, 16, 500}) {
     const render::RgbaImage image = two_halves(size, size / 2 + 1);
-    const auto back = testing::decode_jpeg(encoder.encode(image.width, image.height, image.pixels, 80));
+    const auto back =
+        testing::decode_jpeg(encoder.encode(image.width, image.height, image.pixels, 80));
     EXPECT_EQ(back.width, image.width);
     EXPECT_EQ(back.height, image.height);
   }

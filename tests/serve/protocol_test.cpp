@@ -40,7 +40,9 @@ TEST(ServeProtocol, ParsesMoveWithSeq) {
   EXPECT_EQ(e.seq, 9u);
 }
 
-TEST(ServeProtocol, SeqIsOptional) { EXPECT_EQ(event_of(R"({"type":"move","x":1,"y":2})").seq, 0u); }
+TEST(ServeProtocol, SeqIsOptional) {
+  EXPECT_EQ(event_of(R"({"type":"move","x":1,"y":2})").seq, 0u);
+}
 
 TEST(ServeProtocol, ParsesButton) {
   const auto e = event_of(R"({"type":"button","x":4,"y":5,"button":1,"down":true})");
@@ -59,7 +61,8 @@ TEST(ServeProtocol, ParsesWheel) {
 }
 
 TEST(ServeProtocol, ParsesKeyWithModifiers) {
-  const auto e = event_of(R"({"type":"key","key":"ArrowLeft","down":false,"ctrl":true,"meta":true})");
+  const auto e =
+      event_of(R"({"type":"key","key":"ArrowLeft","down":false,"ctrl":true,"meta":true})");
   EXPECT_EQ(e.kind, Kind::key);
   EXPECT_EQ(e.key, "ArrowLeft");
   EXPECT_FALSE(e.down);
@@ -99,7 +102,8 @@ Refusal refusal_of(const std::string& text) {
   throw std::runtime_error("accepted: " + text);
 }
 
-void expect_refused(const std::string& text, const std::string& field, const std::string& says = "") {
+void expect_refused(const std::string& text, const std::string& field,
+                    const std::string& says = "") {
   SCOPED_TRACE(text);
   const Refusal r = refusal_of(text);
   EXPECT_EQ(r.field, field);
@@ -166,9 +170,13 @@ TEST(ServeProtocol, RefusesOutOfRangeValues) {
 }
 
 TEST(ServeProtocol, RefusesOverlongText) {
-  EXPECT_NO_THROW(parse_client_message(R"({"type":"text","text":")" + std::string(max_text_bytes, 'a') + "\"}"));
-  expect_refused(R"({"type":"text","text":")" + std::string(max_text_bytes + 1, 'a') + "\"}", "text", "bytes");
-  expect_refused(R"({"type":"key","key":")" + std::string(max_key_bytes + 1, 'k') + R"(","down":true})", "key");
+  EXPECT_NO_THROW(parse_client_message(R"({"type":"text","text":")" +
+                                       std::string(max_text_bytes, 'a') + "\"}"));
+  expect_refused(R"({"type":"text","text":")" + std::string(max_text_bytes + 1, 'a') + "\"}",
+                 "text", "bytes");
+  expect_refused(
+      R"({"type":"key","key":")" + std::string(max_key_bytes + 1, 'k') + R"(","down":true})",
+      "key");
   expect_refused(R"({"type":"key","key":"","down":true})", "key");
 }
 
@@ -184,7 +192,8 @@ TEST(ServeProtocol, FrameMessageHasTheDocumentedLayout) {
   const std::vector<std::uint8_t> image = {0xff, 0xd8, 0x00, 0x01};
   const auto bytes = encode_frame_message(info, image);
 
-  const std::uint32_t n = bytes[0] | (bytes[1] << 8) | (bytes[2] << 16) | (static_cast<std::uint32_t>(bytes[3]) << 24);
+  const std::uint32_t n =
+      bytes[0] | (bytes[1] << 8) | (bytes[2] << 16) | (static_cast<std::uint32_t>(bytes[3]) << 24);
   ASSERT_EQ(bytes.size(), 4 + n + image.size());
   const auto header = nlohmann::json::parse(bytes.begin() + 4, bytes.begin() + 4 + n);
   EXPECT_EQ(header["kind"], "frame");
@@ -244,7 +253,8 @@ TEST(ServeProtocol, FileMessageKeepsOnlyTheFileName) {
 }
 
 TEST(ServeProtocol, NoticeMessageHasNoPayload) {
-  const ServerMessage m = decode_server_message(encode_notice_message("saved \xff frame"));  // invalid UTF-8 survives
+  const ServerMessage m =
+      decode_server_message(encode_notice_message("saved \xff frame"));  // invalid UTF-8 survives
   EXPECT_EQ(m.header["kind"], "notice");
   EXPECT_NE(m.header["text"].get<std::string>().find("saved"), std::string::npos);
   EXPECT_TRUE(m.payload.empty());
@@ -252,8 +262,10 @@ TEST(ServeProtocol, NoticeMessageHasNoPayload) {
 
 TEST(ServeProtocol, DecodeRefusesTruncatedMessages) {
   EXPECT_THROW(decode_server_message(std::vector<std::uint8_t>{1, 0}), ProtocolError);
-  EXPECT_THROW(decode_server_message(std::vector<std::uint8_t>{9, 0, 0, 0, '{', '}'}), ProtocolError);
-  EXPECT_THROW(decode_server_message(std::vector<std::uint8_t>{2, 0, 0, 0, '[', ']'}), ProtocolError);
+  EXPECT_THROW(decode_server_message(std::vector<std::uint8_t>{9, 0, 0, 0, '{', '}'}),
+               ProtocolError);
+  EXPECT_THROW(decode_server_message(std::vector<std::uint8_t>{2, 0, 0, 0, '[', ']'}),
+               ProtocolError);
 }
 
 }  // namespace

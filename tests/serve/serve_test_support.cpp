@@ -5,8 +5,8 @@
 
 #include <unistd.h>
 
-#include <boost/asio/ip/tcp.hpp>
 #include <turbojpeg.h>
+#include <boost/asio/ip/tcp.hpp>
 
 namespace epviz::serve::testing {
 
@@ -48,8 +48,10 @@ void FakeSession::input(const render::InputEvent& event) {
   ++probe_->inputs;
   dirty_ = true;
   if (event.kind != render::InputEvent::Kind::key || !event.down) return;
-  if (event.key == "notice") notices_.push_back("notice after " + std::to_string(inputs_) + " inputs");
-  if (event.key == "download") downloads_.push_back({"some/dir/fake.txt", "text/plain", {'h', 'i'}});
+  if (event.key == "notice")
+    notices_.push_back("notice after " + std::to_string(inputs_) + " inputs");
+  if (event.key == "download")
+    downloads_.push_back({"some/dir/fake.txt", "text/plain", {'h', 'i'}});
   if (event.key == "throw") throw_next_ = true;
   if (event.key == "block") {
     probe_->blocked = true;
@@ -103,7 +105,8 @@ void LogCapture::add(const std::string& line) {
   added_.notify_all();
 }
 
-bool LogCapture::wait_for(const std::vector<std::string>& parts, std::chrono::milliseconds timeout) {
+bool LogCapture::wait_for(const std::vector<std::string>& parts,
+                          std::chrono::milliseconds timeout) {
   auto matches = [&] {
     for (const std::string& line : lines_) {
       bool all = true;
@@ -127,9 +130,11 @@ std::string LogCapture::all() const {
 
 TestServer::TestServer(const std::function<void(ServerOptions&)>& configure, bool always_wants) {
   static std::atomic<int> count{0};
-  page = std::filesystem::temp_directory_path() /
-         ("epviz_serve_test_" + std::to_string(::getpid()) + "_" + std::to_string(count++) + ".html");
-  page_text = "<!doctype html><title>epviz test page</title><p>page " + page.filename().string() + "</p>\n";
+  page =
+      std::filesystem::temp_directory_path() /
+      ("epviz_serve_test_" + std::to_string(::getpid()) + "_" + std::to_string(count++) + ".html");
+  page_text =
+      "<!doctype html><title>epviz test page</title><p>page " + page.filename().string() + "</p>\n";
   std::ofstream(page, std::ios::binary) << page_text;
 
   ServerOptions options;
@@ -150,7 +155,8 @@ TestServer::~TestServer() {
   std::filesystem::remove(page, ignored);
 }
 
-bool TestServer::eventually(const std::function<bool()>& condition, std::chrono::milliseconds timeout) {
+bool TestServer::eventually(const std::function<bool()>& condition,
+                            std::chrono::milliseconds timeout) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   while (!condition()) {
     if (std::chrono::steady_clock::now() > deadline) return false;
@@ -166,10 +172,11 @@ TestClient::TestClient(unsigned short port) : ws_(io_) {
   stream.expires_after(expect_within);  // bounds the connect and the handshake
   bool done = false;
   beast::error_code ec;
-  stream.async_connect(tcp::endpoint(net::ip::make_address("127.0.0.1"), port), [&](beast::error_code e) {
-    ec = e;
-    done = true;
-  });
+  stream.async_connect(tcp::endpoint(net::ip::make_address("127.0.0.1"), port),
+                       [&](beast::error_code e) {
+                         ec = e;
+                         done = true;
+                       });
   if (!run_until(done, expect_within) || ec)
     throw std::runtime_error("test client: cannot connect: " + ec.message());
   done = false;
@@ -234,8 +241,9 @@ std::optional<ServerMessage> TestClient::receive(std::chrono::milliseconds timeo
   if (!run_until(read_done_, timeout)) return std::nullopt;
   read_pending_ = false;
   if (read_error_)
-    throw std::runtime_error("test client: connection ended: " + read_error_.message() + " (close code " +
-                             std::to_string(static_cast<int>(ws_.reason().code)) + ")");
+    throw std::runtime_error("test client: connection ended: " + read_error_.message() +
+                             " (close code " + std::to_string(static_cast<int>(ws_.reason().code)) +
+                             ")");
   const auto data = buffer_.data();
   const auto* begin = static_cast<const std::uint8_t*>(data.data());
   std::vector<std::uint8_t> bytes(begin, begin + data.size());
@@ -247,14 +255,16 @@ std::optional<Closed> TestClient::wait_closed(std::chrono::milliseconds timeout)
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   for (;;) {
     start_read();
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+        deadline - std::chrono::steady_clock::now());
     if (left <= 0ms || !run_until(read_done_, left)) return std::nullopt;
     read_pending_ = false;
     buffer_.clear();
     if (read_error_) {
       Closed closed;
       closed.error = read_error_;
-      if (read_error_ == websocket::error::closed) closed.code = static_cast<int>(ws_.reason().code);
+      if (read_error_ == websocket::error::closed)
+        closed.code = static_cast<int>(ws_.reason().code);
       return closed;
     }
   }
@@ -317,12 +327,12 @@ render::RgbaImage decode_jpeg(const std::vector<std::uint8_t>& jpeg) {
   render::RgbaImage image;
   int subsampling = 0, colourspace = 0;
   const auto size = static_cast<unsigned long>(jpeg.size());
-  bool ok = tjDecompressHeader3(handle, jpeg.data(), size, &image.width, &image.height, &subsampling,
-                                &colourspace) == 0;
+  bool ok = tjDecompressHeader3(handle, jpeg.data(), size, &image.width, &image.height,
+                                &subsampling, &colourspace) == 0;
   if (ok) {
     image.pixels.resize(static_cast<std::size_t>(image.width) * image.height * 4);
-    ok = tjDecompress2(handle, jpeg.data(), size, image.pixels.data(), image.width, 0, image.height, TJPF_RGBA,
-                       0) == 0;
+    ok = tjDecompress2(handle, jpeg.data(), size, image.pixels.data(), image.width, 0, image.height,
+                       TJPF_RGBA, 0) == 0;
   }
   const std::string error = ok ? "" : tjGetErrorStr2(handle);
   tjDestroy(handle);

@@ -88,7 +88,8 @@ class LogCapture {
  public:
   void add(const std::string& line);
   // Whether a line containing every one of `parts` arrives within `timeout`.
-  bool wait_for(const std::vector<std::string>& parts, std::chrono::milliseconds timeout = expect_within);
+  bool wait_for(const std::vector<std::string>& parts,
+                std::chrono::milliseconds timeout = expect_within);
   std::string all() const;
 
  private:
@@ -99,11 +100,13 @@ class LogCapture {
 
 // A started server with fake sessions on a free port and a page file.
 struct TestServer {
-  explicit TestServer(const std::function<void(ServerOptions&)>& configure = {}, bool always_wants = false);
+  explicit TestServer(const std::function<void(ServerOptions&)>& configure = {},
+                      bool always_wants = false);
   ~TestServer();
   unsigned short port() const { return server->port(); }
   // Polls `condition` until it holds or `timeout` passes (for state with no event to wait on).
-  static bool eventually(const std::function<bool()>& condition, std::chrono::milliseconds timeout = expect_within);
+  static bool eventually(const std::function<bool()>& condition,
+                         std::chrono::milliseconds timeout = expect_within);
 
   std::shared_ptr<FakeProbe> probe = std::make_shared<FakeProbe>();
   std::shared_ptr<LogCapture> log = std::make_shared<LogCapture>();
@@ -150,7 +153,8 @@ class TestClient {
 };
 
 // One plain HTTP GET.
-boost::beast::http::response<boost::beast::http::string_body> http_get(unsigned short port, const std::string& target);
+boost::beast::http::response<boost::beast::http::string_body> http_get(unsigned short port,
+                                                                       const std::string& target);
 // A WebSocket upgrade that is expected to be refused: the HTTP response.
 boost::beast::http::response<boost::beast::http::string_body> refused_upgrade(unsigned short port);
 

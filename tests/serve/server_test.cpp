@@ -18,7 +18,9 @@ namespace {
 namespace http = boost::beast::http;
 using nlohmann::json;
 
-json resize(int width, int height) { return {{"type", "resize"}, {"width", width}, {"height", height}}; }
+json resize(int width, int height) {
+  return {{"type", "resize"}, {"width", width}, {"height", height}};
+}
 json ack(std::int64_t frame) { return {{"type", "ack"}, {"frame", frame}}; }
 json move(int seq) { return {{"type", "move"}, {"x", 3}, {"y", 4}, {"seq", seq}}; }
 json key(const std::string& name) { return {{"type", "key"}, {"key", name}, {"down", true}}; }
@@ -27,7 +29,8 @@ json key(const std::string& name) { return {{"type", "key"}, {"key", name}, {"do
 ServerMessage frame_from(TestClient& client) {
   std::optional<ServerMessage> m = client.receive();
   if (!m) throw std::runtime_error("no frame arrived within the deadline");
-  if (m->header.value("kind", "") != "frame") throw std::runtime_error("expected a frame, got " + m->header.dump());
+  if (m->header.value("kind", "") != "frame")
+    throw std::runtime_error("expected a frame, got " + m->header.dump());
   return std::move(*m);
 }
 
@@ -35,7 +38,8 @@ void expect_colour(const ServerMessage& frame, glm::u8vec4 want) {
   const render::RgbaImage image = decode_jpeg(frame.payload);
   const glm::u8vec4 got = image.at(image.width / 2, image.height / 2);
   for (int c = 0; c < 3; ++c)
-    EXPECT_LE(std::abs(int(got[c]) - int(want[c])), 6) << "channel " << c << " of frame " << frame.header.dump();
+    EXPECT_LE(std::abs(int(got[c]) - int(want[c])), 6)
+        << "channel " << c << " of frame " << frame.header.dump();
 }
 
 // Asserts that the bystander still gets frames for its input: ack what it
@@ -144,11 +148,13 @@ class ServeFlowControl : public ::testing::TestWithParam<int> {};
 
 TEST_P(ServeFlowControl, AtMostMaxFramesInFlight) {
   const int in_flight = GetParam();
-  TestServer server([&](ServerOptions& o) { o.max_frames_in_flight = in_flight; }, /*always_wants=*/true);
+  TestServer server([&](ServerOptions& o) { o.max_frames_in_flight = in_flight; },
+                    /*always_wants=*/true);
   TestClient client(server.port());
   client.send(resize(32, 32));
   for (int i = 1; i <= in_flight; ++i) EXPECT_EQ(frame_from(client).header["frame"], i);
-  EXPECT_FALSE(client.receive(quiet_period)) << "more than " << in_flight << " frames without an ack";
+  EXPECT_FALSE(client.receive(quiet_period))
+      << "more than " << in_flight << " frames without an ack";
   EXPECT_EQ(server.probe->renders, in_flight) << "rendered frames that could not be sent";
 
   client.send(ack(1));  // one slot frees: exactly one more frame
@@ -156,7 +162,8 @@ TEST_P(ServeFlowControl, AtMostMaxFramesInFlight) {
   EXPECT_FALSE(client.receive(quiet_period));
 
   client.send(ack(in_flight + 1));  // all acknowledged: a full window again
-  for (int i = 1; i <= in_flight; ++i) EXPECT_EQ(frame_from(client).header["frame"], in_flight + 1 + i);
+  for (int i = 1; i <= in_flight; ++i)
+    EXPECT_EQ(frame_from(client).header["frame"], in_flight + 1 + i);
   EXPECT_FALSE(client.receive(quiet_period));
 }
 
@@ -266,7 +273,8 @@ TEST(ServeServer, MalformedMessagesClose1008AndOthersGoOn) {
   const std::optional<Closed> closed = clients.other->wait_closed();
   ASSERT_TRUE(closed);
   EXPECT_EQ(closed->code, 1008) << closed->error.message();
-  EXPECT_TRUE(server.log->wait_for({"connection #2", "not valid JSON", "1008"})) << server.log->all();
+  EXPECT_TRUE(server.log->wait_for({"connection #2", "not valid JSON", "1008"}))
+      << server.log->all();
   EXPECT_EQ(server.server->stats().protocol_errors, 1);
   expect_still_served(*clients.bystander, 1, 11);
 
@@ -308,7 +316,8 @@ TEST(ServeServer, ClientVanishingMidStreamOnlyEndsItsConnection) {
   TestServer server({}, /*always_wants=*/true);
   TwoClients clients(server);
   // Let frames flow to the other client, then reset its socket with frames in flight.
-  for (int i = 0; i < 5; ++i) clients.other->send(ack(frame_from(*clients.other).header["frame"].get<std::int64_t>()));
+  for (int i = 0; i < 5; ++i)
+    clients.other->send(ack(frame_from(*clients.other).header["frame"].get<std::int64_t>()));
   clients.other->drop();
   EXPECT_TRUE(server.log->wait_for({"connection #2", "connection lost"})) << server.log->all();
   EXPECT_TRUE(TestServer::eventually([&] { return server.probe->destroyed == 1; }))
@@ -323,7 +332,8 @@ TEST(ServeServer, PoliteCloseIsLoggedAndFreesTheSession) {
   TestServer server;
   TwoClients clients(server);
   clients.other->close();
-  EXPECT_TRUE(server.log->wait_for({"connection #2", "closed by the page (1000)"})) << server.log->all();
+  EXPECT_TRUE(server.log->wait_for({"connection #2", "closed by the page (1000)"}))
+      << server.log->all();
   EXPECT_TRUE(TestServer::eventually([&] { return server.probe->destroyed == 1; }));
   expect_still_served(*clients.bystander, 1, 41);
 }
@@ -336,7 +346,8 @@ TEST(ServeServer, FailingSessionCloses1011AndOthersGoOn) {
   const std::optional<Closed> closed = clients.other->wait_closed();
   ASSERT_TRUE(closed);
   EXPECT_EQ(closed->code, 1011);
-  EXPECT_TRUE(server.log->wait_for({"connection #2", "session failed", "fake session asked to fail"}))
+  EXPECT_TRUE(
+      server.log->wait_for({"connection #2", "session failed", "fake session asked to fail"}))
       << server.log->all();
   expect_still_served(*clients.bystander, 1, 51);
 }
@@ -389,7 +400,8 @@ TEST(ServeServer, GetSlashServesThePage) {
 TEST(ServeServer, OtherPathsAre404) {
   TestServer server;
   EXPECT_EQ(http_get(server.port(), "/nope").result(), http::status::not_found);
-  EXPECT_EQ(http_get(server.port(), "/ws").result(), http::status::not_found);  // without an upgrade
+  EXPECT_EQ(http_get(server.port(), "/ws").result(),
+            http::status::not_found);  // without an upgrade
 }
 
 TEST(ServeServer, StartOnABusyPortThrowsNamingIt) {
@@ -403,14 +415,17 @@ TEST(ServeServer, StartOnABusyPortThrowsNamingIt) {
     second.start();
     FAIL() << "started on a port in use";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("127.0.0.1:" + std::to_string(port)), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("127.0.0.1:" + std::to_string(port)), std::string::npos)
+        << e.what();
   }
 }
 
 TEST(ServeServer, RenderThreadInitFailureIsStartsException) {
   ServerOptions options;
   options.port = 0;
-  Server server(options, [] { throw std::runtime_error("no GL for you"); }, [] { return std::unique_ptr<Session>(); });
+  Server server(
+      options, [] { throw std::runtime_error("no GL for you"); },
+      [] { return std::unique_ptr<Session>(); });
   EXPECT_THROW(
       {
         try {
@@ -442,7 +457,8 @@ TEST(ServeServer, StopClosesConnections1001AndDestroysSessions) {
 TEST(ServeServer, WaitReturnsAfterRequestStop) {
   TestServer server;
   auto waiting = std::async(std::launch::async, [&] { server.server->wait(); });
-  EXPECT_EQ(waiting.wait_for(quiet_period), std::future_status::timeout) << "wait() returned before any stop";
+  EXPECT_EQ(waiting.wait_for(quiet_period), std::future_status::timeout)
+      << "wait() returned before any stop";
   server.server->request_stop();
   EXPECT_EQ(waiting.wait_for(expect_within), std::future_status::ready);
 }

@@ -35,7 +35,8 @@ Vec6 fixed_step_final(Stepper s, long n) {
 
 const Vec6& reference() {
   static const Vec6 ref = [] {
-    return fixed_step_final(numerics::Gauss6<physics::DirectSystem>(physics::DirectSystem(smooth_case().body)), 2000);
+    return fixed_step_final(
+        numerics::Gauss6<physics::DirectSystem>(physics::DirectSystem(smooth_case().body)), 2000);
   }();
   return ref;
 }

@@ -45,7 +45,8 @@ const Vec6& reference(physics::Case c, double t_end) {
   static std::map<std::pair<int, double>, Vec6> cache;
   auto key = std::make_pair(int(c), t_end);
   auto it = cache.find(key);
-  if (it == cache.end()) it = cache.emplace(key, run_final(c, sim::Method::dop853, t_end, 1, 1e-14)).first;
+  if (it == cache.end())
+    it = cache.emplace(key, run_final(c, sim::Method::dop853, t_end, 1, 1e-14)).first;
   return it->second;
 }
 
@@ -65,12 +66,17 @@ double observed_order(sim::Method m, long n) {
   return std::log2(e1 / e2);
 }
 
-TEST(ExactSplit, ObservedOrderTwo) { EXPECT_NEAR(observed_order(sim::Method::exact_split2, 100), 2.0, 0.2); }
-TEST(ExactSplit, ObservedOrderFour) { EXPECT_NEAR(observed_order(sim::Method::exact_split4, 20), 4.0, 0.2); }
+TEST(ExactSplit, ObservedOrderTwo) {
+  EXPECT_NEAR(observed_order(sim::Method::exact_split2, 100), 2.0, 0.2);
+}
+TEST(ExactSplit, ObservedOrderFour) {
+  EXPECT_NEAR(observed_order(sim::Method::exact_split4, 20), 4.0, 0.2);
+}
 
 // 1e5 steps of h = 0.01 on the Kovalevskaya top, sampled 1000 times.
 void expect_long_run_invariants(sim::Method m) {
-  auto spec = sim::preset_run(physics::Case::kovalevskaya, m, sim::Formulation::direct, 1000.0, 1000);
+  auto spec =
+      sim::preset_run(physics::Case::kovalevskaya, m, sim::Formulation::direct, 1000.0, 1000);
   spec.step = 0.01;
   const auto r = sim::simulate(spec);
   ASSERT_FALSE(r.failure) << r.failure->message();
@@ -83,17 +89,24 @@ void expect_long_run_invariants(sim::Method m) {
   // larger than twice that of the first tenth.
   double first = 0.0, last = 0.0;
   const std::size_t n = r.samples.size();
-  for (std::size_t i = 0; i < n / 10; ++i) first = std::max(first, mon.relative_drift(mon.at(r.samples[i])).energy);
-  for (std::size_t i = n - n / 10; i < n; ++i) last = std::max(last, mon.relative_drift(mon.at(r.samples[i])).energy);
+  for (std::size_t i = 0; i < n / 10; ++i)
+    first = std::max(first, mon.relative_drift(mon.at(r.samples[i])).energy);
+  for (std::size_t i = n - n / 10; i < n; ++i)
+    last = std::max(last, mon.relative_drift(mon.at(r.samples[i])).energy);
   EXPECT_GT(first, 0.0);
   EXPECT_LT(last, 2.0 * first);
   EXPECT_LT(d.energy, 1e-3);
-  std::printf("%s: max drift |gamma|^2 %.2e  C0 %.2e  C1 %.2e (first tenth %.2e, last tenth %.2e)\n",
-              std::string(sim::name(m)).c_str(), d.gamma_norm2, d.area, d.energy, first, last);
+  std::printf(
+      "%s: max drift |gamma|^2 %.2e  C0 %.2e  C1 %.2e (first tenth %.2e, last tenth %.2e)\n",
+      std::string(sim::name(m)).c_str(), d.gamma_norm2, d.area, d.energy, first, last);
 }
 
-TEST(ExactSplit, Split2KeepsCasimirsToRoundOffAndEnergyBounded) { expect_long_run_invariants(sim::Method::exact_split2); }
-TEST(ExactSplit, Split4KeepsCasimirsToRoundOffAndEnergyBounded) { expect_long_run_invariants(sim::Method::exact_split4); }
+TEST(ExactSplit, Split2KeepsCasimirsToRoundOffAndEnergyBounded) {
+  expect_long_run_invariants(sim::Method::exact_split2);
+}
+TEST(ExactSplit, Split4KeepsCasimirsToRoundOffAndEnergyBounded) {
+  expect_long_run_invariants(sim::Method::exact_split4);
+}
 
 // Smallest step count in a geometric sweep with final-time error <= target.
 long steps_for(sim::Method m, physics::Case c, double t_end, double target) {
@@ -106,11 +119,14 @@ TEST(ExactSplit, Split4NeedsFewerStepsThanAxisSplittingOnKovalevskaya) {
   const double t_end = 10.0;
   for (double target : {1e-6, 1e-9}) {
     const long ns = steps_for(sim::Method::splitting, physics::Case::kovalevskaya, t_end, target);
-    const long n2 = steps_for(sim::Method::exact_split2, physics::Case::kovalevskaya, t_end, target);
-    const long n4 = steps_for(sim::Method::exact_split4, physics::Case::kovalevskaya, t_end, target);
-    std::printf("error %.0e at t = %.0f: steps splitting %ld, exact-split2 %ld, exact-split4 %ld "
-                "(ratio splitting/exact-split4 %.1f)\n",
-                target, t_end, ns, n2, n4, double(ns) / double(n4));
+    const long n2 =
+        steps_for(sim::Method::exact_split2, physics::Case::kovalevskaya, t_end, target);
+    const long n4 =
+        steps_for(sim::Method::exact_split4, physics::Case::kovalevskaya, t_end, target);
+    std::printf(
+        "error %.0e at t = %.0f: steps splitting %ld, exact-split2 %ld, exact-split4 %ld "
+        "(ratio splitting/exact-split4 %.1f)\n",
+        target, t_end, ns, n2, n4, double(ns) / double(n4));
     ASSERT_GT(ns, 0);
     ASSERT_GT(n4, 0);
     EXPECT_LT(n4, ns);
@@ -133,13 +149,16 @@ TEST(ExactSplit, Suzuki5BeatsTripleJumpAtEqualWork) {
   const auto& body = physics::preset(physics::Case::generic).body;
   for (long n5 : {30L, 60L}) {
     const long n3 = n5 * 5 / 3;
-    const Vec6 s5 = composition_final(numerics::Composition4<ExactSplitSystem>(ExactSplitSystem(body)), 2.0, n5);
+    const Vec6 s5 = composition_final(
+        numerics::Composition4<ExactSplitSystem>(ExactSplitSystem(body)), 2.0, n5);
     const Vec6 tj = composition_final(
-        numerics::Composition4<ExactSplitSystem, numerics::TripleJump4>(ExactSplitSystem(body)), 2.0, n3);
+        numerics::Composition4<ExactSplitSystem, numerics::TripleJump4>(ExactSplitSystem(body)),
+        2.0, n3);
     const double e5 = (s5 - reference(physics::Case::generic, 2.0)).norm();
     const double e3 = (tj - reference(physics::Case::generic, 2.0)).norm();
-    std::printf("equal work: Suzuki5 %ld steps error %.2e, triple jump %ld steps error %.2e (ratio %.1f)\n",
-                n5, e5, n3, e3, e3 / e5);
+    std::printf(
+        "equal work: Suzuki5 %ld steps error %.2e, triple jump %ld steps error %.2e (ratio %.1f)\n",
+        n5, e5, n3, e3, e3 / e5);
     EXPECT_LT(e5, e3);
   }
 }

@@ -45,12 +45,14 @@ INSTANTIATE_TEST_SUITE_P(Cases, ExtraIntegral,
                                            physics::Case::goryachev_chaplygin, physics::Case::hess),
                          [](const auto& info) {
                            std::string n = physics::case_name(info.param);
-                           for (auto& ch : n) if (ch == '-') ch = '_';
+                           for (auto& ch : n)
+                             if (ch == '-') ch = '_';
                            return n;
                          });
 
 TEST(ExtraIntegral, GenericHasNone) {
-  auto spec = sim::preset_run(physics::Case::generic, sim::Method::dop853, sim::Formulation::direct, 1.0, 10);
+  auto spec = sim::preset_run(physics::Case::generic, sim::Method::dop853, sim::Formulation::direct,
+                              1.0, 10);
   const auto result = sim::simulate(spec);
   const sim::InvariantMonitor monitor(spec.body, spec.case_id, spec.initial);
   EXPECT_FALSE(monitor.max_relative_drift(result.samples).extra.has_value());

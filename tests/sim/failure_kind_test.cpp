@@ -46,8 +46,8 @@ TEST(FailureKinds, RiccatiPoleIsAChartPole) {
 TEST(FailureKinds, ImplicitStepTooLargeIsSolverDivergence) {
   // A fast top with a step longer than its period: the fixed-point iteration
   // of the stage equations cannot contract.
-  auto spec = sim::preset_run(physics::Case::lagrange, sim::Method::gauss4, sim::Formulation::direct,
-                              20.0, 2);
+  auto spec = sim::preset_run(physics::Case::lagrange, sim::Method::gauss4,
+                              sim::Formulation::direct, 20.0, 2);
   spec.initial.omega = {0.0, 0.0, 50.0};
   spec.step = 5.0;
   const auto r = sim::simulate(spec);

@@ -11,7 +11,8 @@ namespace {
 
 // 1e5 steps of h = 0.01 on the Kovalevskaya top, sampled 1000 times.
 sim::RunSpec long_run(sim::Method m, double t_end = 1000.0, int samples = 1000) {
-  auto spec = sim::preset_run(physics::Case::kovalevskaya, m, sim::Formulation::direct, t_end, samples);
+  auto spec =
+      sim::preset_run(physics::Case::kovalevskaya, m, sim::Formulation::direct, t_end, samples);
   spec.step = 0.01;
   return spec;
 }
@@ -34,7 +35,8 @@ TEST_P(ImplicitMethod, KeepsQuadraticInvariantsOver1e5Steps) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Gauss, ImplicitMethod,
-                         ::testing::Values(sim::Method::midpoint, sim::Method::gauss4, sim::Method::gauss6),
+                         ::testing::Values(sim::Method::midpoint, sim::Method::gauss4,
+                                           sim::Method::gauss6),
                          [](const auto& info) { return std::string(sim::name(info.param)); });
 
 TEST(Splitting, KeepsCasimirsToRoundOffAndEnergyBounded) {
@@ -48,8 +50,10 @@ TEST(Splitting, KeepsCasimirsToRoundOffAndEnergyBounded) {
   const sim::InvariantMonitor m(spec.body, spec.case_id, spec.initial);
   double first = 0.0, last = 0.0;
   const std::size_t n = samples.size();
-  for (std::size_t i = 0; i < n / 10; ++i) first = std::max(first, m.relative_drift(m.at(samples[i])).energy);
-  for (std::size_t i = n - n / 10; i < n; ++i) last = std::max(last, m.relative_drift(m.at(samples[i])).energy);
+  for (std::size_t i = 0; i < n / 10; ++i)
+    first = std::max(first, m.relative_drift(m.at(samples[i])).energy);
+  for (std::size_t i = n - n / 10; i < n; ++i)
+    last = std::max(last, m.relative_drift(m.at(samples[i])).energy);
   EXPECT_GT(first, 0.0);
   EXPECT_LT(last, 2.0 * first);
   EXPECT_LT(d.energy, 1e-2);

@@ -16,8 +16,8 @@ namespace {
 constexpr double kTEnd = 10.0;
 
 sim::RunSpec kovalevskaya(double tol) {
-  auto spec = sim::preset_run(physics::Case::kovalevskaya, sim::Method::dop853, sim::Formulation::direct,
-                              kTEnd, 1);
+  auto spec = sim::preset_run(physics::Case::kovalevskaya, sim::Method::dop853,
+                              sim::Formulation::direct, kTEnd, 1);
   spec.tol = tol;
   return spec;
 }

@@ -16,7 +16,8 @@ constexpr double kPassTime = 2.0;
 sim::RunSpec pole_spec(sim::Formulation f, double distance = 5e-4) {
   auto spec = sim::preset_run(physics::Case::generic, sim::Method::dop853, f, 6.0, 600);
   spec.case_id = physics::Case::custom;
-  spec.initial = study::pole_passage_initial_state(spec.body, {0.3, 1.2, -0.4}, kPassTime, distance);
+  spec.initial =
+      study::pole_passage_initial_state(spec.body, {0.3, 1.2, -0.4}, kPassTime, distance);
   spec.tol = 1e-12;
   return spec;
 }
@@ -29,7 +30,8 @@ TEST(PolePassage, TrajectoryReallyPassesNearTheSouthPole) {
   const auto r = sim::simulate(spec);
   ASSERT_FALSE(r.failure);
   double closest = 2.0;
-  for (const auto& s : r.samples) closest = std::min(closest, (s.gamma + Eigen::Vector3d::UnitZ()).norm());
+  for (const auto& s : r.samples)
+    closest = std::min(closest, (s.gamma + Eigen::Vector3d::UnitZ()).norm());
   EXPECT_LT(closest, 1e-3);
 }
 

@@ -23,7 +23,8 @@ std::vector<study::StudyRow> reduced_sweep() {
 
 TEST(StudyReference, RichardsonGauss6AgreesWithDop853) {
   const auto& p = physics::preset(physics::Case::kovalevskaya);
-  const auto ref = study::compute_reference(p.body, p.initial, 10.0, 10, study::reference_step(p.initial));
+  const auto ref =
+      study::compute_reference(p.body, p.initial, 10.0, 10, study::reference_step(p.initial));
   ASSERT_EQ(ref.samples.size(), 11u);
   EXPECT_LT(ref.self_check, 1e-11);
   EXPECT_NEAR(ref.samples.back().t, 10.0, 1e-12);

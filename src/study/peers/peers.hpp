@@ -20,11 +20,11 @@ namespace epviz::study::peers {
 
 enum class PeerId {
   odeint_dopri5_controlled,  // make_controlled(tol, tol, runge_kutta_dopri5) + integrate_adaptive
-  odeint_dopri5_dense,       // make_dense_output(tol, tol, runge_kutta_dopri5) + integrate_times {0, t_end}
-  odeint_rkf78_controlled,   // make_controlled(tol, tol, runge_kutta_fehlberg78) + integrate_adaptive
-  gsl_rk8pd,                 // gsl_odeiv2_driver_alloc_y_new(rk8pd, tol, tol) + driver_apply
-  scipy_dop853_solve_ivp,    // scipy.integrate.solve_ivp(method='DOP853', rtol=atol=tol)
-  scipy_dop853_ode,          // scipy.integrate.ode('dop853', rtol=atol=tol) (Hairer's Fortran)
+  odeint_dopri5_dense,  // make_dense_output(tol, tol, runge_kutta_dopri5) + integrate_times {0, t_end}
+  odeint_rkf78_controlled,  // make_controlled(tol, tol, runge_kutta_fehlberg78) + integrate_adaptive
+  gsl_rk8pd,                // gsl_odeiv2_driver_alloc_y_new(rk8pd, tol, tol) + driver_apply
+  scipy_dop853_solve_ivp,   // scipy.integrate.solve_ivp(method='DOP853', rtol=atol=tol)
+  scipy_dop853_ode,         // scipy.integrate.ode('dop853', rtol=atol=tol) (Hairer's Fortran)
 };
 
 // The peers this build offers (GSL's only when it was found at configure time).
@@ -41,13 +41,13 @@ enum class PeerStatus {
 
 struct PeerResult {
   PeerStatus status = PeerStatus::ok;
-  std::string reason;         // why failed/skipped, "" when ok
-  double t = 0.0;             // time reached (t_end when ok)
+  std::string reason;  // why failed/skipped, "" when ok
+  double t = 0.0;      // time reached (t_end when ok)
   Eigen::Vector3d omega = Eigen::Vector3d::Zero();
   Eigen::Vector3d gamma = Eigen::Vector3d::UnitZ();
-  long rhs_evals = 0;         // of the first run
-  long steps = -1;            // accepted steps; -1 where the library does not say (scipy ode)
-  double cpu_seconds = 0.0;   // median over repeats, integration only
+  long rhs_evals = 0;        // of the first run
+  long steps = -1;           // accepted steps; -1 where the library does not say (scipy ode)
+  double cpu_seconds = 0.0;  // median over repeats, integration only
   int repeats = 0;
   bool ok() const { return status == PeerStatus::ok; }
 };
@@ -70,7 +70,7 @@ struct PeerRow {
 // physics::preset(c)) over [0, t_end]. The SciPy rows come from one Python
 // process for all tolerances; without /usr/bin/python3 or scipy they are
 // skipped, with the reason.
-std::vector<PeerRow> peer_work_precision(physics::Case c, const std::vector<double>& tolerances, double t_end,
-                                         int repeats);
+std::vector<PeerRow> peer_work_precision(physics::Case c, const std::vector<double>& tolerances,
+                                         double t_end, int repeats);
 
 }  // namespace epviz::study::peers

@@ -41,9 +41,10 @@ ScipyResults run_scipy_peers(const physics::Body& body, const physics::InitialSt
     return all_with(n, PeerStatus::skipped, std::string(kPython) + " not found");
   const std::string script = scipy_driver_path();
   if (script.empty() || !std::filesystem::exists(script))
-    return all_with(n, PeerStatus::skipped,
-                    "SciPy driver not found: " +
-                        (script.empty() ? "bench/peers/scipy_driver.py in the data directories" : script));
+    return all_with(
+        n, PeerStatus::skipped,
+        "SciPy driver not found: " +
+            (script.empty() ? "bench/peers/scipy_driver.py in the data directories" : script));
   nlohmann::json problem = {{"inertia", vec(body.inertia)}, {"com", vec(body.com)},
                             {"weight", body.weight},        {"omega0", vec(initial.omega)},
                             {"gamma0", vec(initial.gamma)}, {"t_end", t_end},

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "study/peers/peers.hpp"
 #include "physics/body.hpp"
+#include "study/peers/peers.hpp"
 
 namespace epviz::study::peers {
 
