@@ -7,15 +7,12 @@
 #include <nlohmann/json.hpp>
 
 #include "physics/cases.hpp"
+#include "physics/format.hpp"
 
 namespace epviz::app {
 namespace {
 
-std::string vec(const Eigen::Vector3d& v) {
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "(%.6g, %.6g, %.6g)", v[0], v[1], v[2]);
-  return buf;
-}
+std::string vec(const Eigen::Vector3d& v) { return physics::detail::vec(v, 6); }
 
 nlohmann::json to_json(const Eigen::Vector3d& v) { return {v[0], v[1], v[2]}; }
 

@@ -25,8 +25,8 @@ namespace epviz::io {
 // the program is not found) or a pipe cannot be made.
 class SubprocessError : public std::runtime_error {
  public:
-  SubprocessError(const std::string& what, int errno_value)
-      : std::runtime_error(what), errno_value(errno_value) {}
+  SubprocessError(const std::string& what, int error_number)
+      : std::runtime_error(what), errno_value(error_number) {}
   int errno_value;
 };
 

@@ -52,7 +52,10 @@ struct Suzuki5 {
 
 template <class Sys, class Scheme>
 requires SplittableSystem<Sys>
-class SymmetricComposition {
+class SymmetricComposition : public StepperCore<Sys> {
+  using StepperCore<Sys>::sys_;
+  using StepperCore<Sys>::stats_;
+
  public:
   using System = Sys;
   using State = typename Sys::State;
@@ -62,7 +65,7 @@ class SymmetricComposition {
 
   // `name`: the method's name in failure reports (a string literal).
   explicit SymmetricComposition(Sys sys, const char* name = "composition")
-      : sys_(std::move(sys)), name_(name) {
+      : StepperCore<Sys>(std::move(sys)), name_(name) {
     const auto w = Scheme::weights();
     for (std::size_t i = 0; i < w.size(); ++i) w_[i] = w[i];
   }
@@ -84,22 +87,14 @@ class SymmetricComposition {
     }
     sys_.flow(0, pending, tmp_);
     stats_.flow_evals += s * (2 * n_flows - 3) + s + 1;
-    detail::check_accepted(sys_, tmp_, t + h, name_);
-    x = tmp_;
-    ++stats_.steps;
+    this->accept(x, tmp_, t + h, name_);
   }
 
   const char* name() const { return name_; }
-  Sys& system() { return sys_; }
-  const Sys& system() const { return sys_; }
-  const Stats& stats() const { return stats_; }
-  void reset_stats() { stats_ = Stats{}; }
 
  private:
-  Sys sys_;
   const char* name_;
   std::array<double, std::tuple_size_v<decltype(Scheme::weights())>> w_{};
-  Stats stats_;
   State tmp_ = State::Zero();
 };
 

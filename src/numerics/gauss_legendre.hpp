@@ -77,7 +77,9 @@ struct GaussTableau<3> {
 };
 
 template <OdeSystem Sys, int Stages>
-class GaussLegendre {
+class GaussLegendre : public StepperCore<Sys> {
+  using StepperCore<Sys>::sys_;
+  using StepperCore<Sys>::stats_;
   static_assert(Stages >= 1 && Stages <= 3, "Gauss–Legendre with 1, 2 or 3 stages");
   using T = GaussTableau<Stages>;
 
@@ -88,7 +90,8 @@ class GaussLegendre {
   static constexpr int order = T::order;
   static constexpr int stages = Stages;
 
-  explicit GaussLegendre(Sys sys, ImplicitOptions opts = {}) : sys_(std::move(sys)), opts_(opts) {}
+  explicit GaussLegendre(Sys sys, ImplicitOptions opts = {})
+      : StepperCore<Sys>(std::move(sys)), opts_(opts) {}
 
   // Advances x from t to t + h. Throws IntegrationError when the stage
   // equations do not converge, on a non-finite result, or when the system's
@@ -96,10 +99,6 @@ class GaussLegendre {
   // remapping at the start of the step).
   void step(State& x, double t, double h);
 
-  Sys& system() { return sys_; }
-  const Sys& system() const { return sys_; }
-  const Stats& stats() const { return stats_; }
-  void reset_stats() { stats_ = Stats{}; }
   const ImplicitOptions& options() const { return opts_; }
   int last_iterations() const { return last_iterations_; }
 
@@ -125,9 +124,7 @@ class GaussLegendre {
     w_ratio_ = r;
   }
 
-  Sys sys_;
   ImplicitOptions opts_;
-  Stats stats_;
   int last_iterations_ = 0;
   static std::array<State, Stages> zeros() {
     std::array<State, Stages> a;

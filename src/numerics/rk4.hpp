@@ -5,14 +5,17 @@
 namespace epviz::numerics {
 
 template <OdeSystem Sys>
-class Rk4 {
+class Rk4 : public StepperCore<Sys> {
+  using StepperCore<Sys>::sys_;
+  using StepperCore<Sys>::stats_;
+
  public:
   using System = Sys;
   using State = typename Sys::State;
   static constexpr const char* name = "rk4";
   static constexpr int order = 4;
 
-  explicit Rk4(Sys sys) : sys_(std::move(sys)) {}
+  explicit Rk4(Sys sys) : StepperCore<Sys>(std::move(sys)) {}
 
   // Advances x from t to t + h. Throws IntegrationError on a non-finite
   // result or when the system's check() objects; x is then left unchanged
@@ -29,19 +32,10 @@ class Rk4 {
     sys_.rhs(t + h, tmp_, k4_);
     tmp_ = x + (h / 6.0) * (k1_ + 2.0 * (k2_ + k3_) + k4_);
     stats_.rhs_evals += 4;
-    detail::check_accepted(sys_, tmp_, t + h, name);
-    x = tmp_;
-    ++stats_.steps;
+    this->accept(x, tmp_, t + h, name);
   }
 
-  Sys& system() { return sys_; }
-  const Sys& system() const { return sys_; }
-  const Stats& stats() const { return stats_; }
-  void reset_stats() { stats_ = Stats{}; }
-
  private:
-  Sys sys_;
-  Stats stats_;
   State k1_ = State::Zero(), k2_ = State::Zero(), k3_ = State::Zero(), k4_ = State::Zero();
   State tmp_ = State::Zero();
 };

@@ -16,7 +16,10 @@ namespace epviz::numerics {
 
 template <class Sys>
 requires SplittableSystem<Sys>
-class StrangSplitting {
+class StrangSplitting : public StepperCore<Sys> {
+  using StepperCore<Sys>::sys_;
+  using StepperCore<Sys>::stats_;
+
  public:
   using System = Sys;
   using State = typename Sys::State;
@@ -25,7 +28,7 @@ class StrangSplitting {
   static constexpr int n_flows = Sys::n_flows;
   static_assert(n_flows >= 1, "a splitting needs at least one sub-flow");
 
-  explicit StrangSplitting(Sys sys) : sys_(std::move(sys)) {}
+  explicit StrangSplitting(Sys sys) : StepperCore<Sys>(std::move(sys)) {}
 
   // Advances x from t to t + h. Throws IntegrationError on a non-finite result
   // or when the system's check() objects; x is then left unchanged (apart from
@@ -38,19 +41,10 @@ class StrangSplitting {
     sys_.flow(n_flows - 1, h, tmp_);
     for (int i = n_flows - 2; i >= 0; --i) sys_.flow(i, h2, tmp_);
     stats_.flow_evals += 2 * n_flows - 1;
-    detail::check_accepted(sys_, tmp_, t + h, name);
-    x = tmp_;
-    ++stats_.steps;
+    this->accept(x, tmp_, t + h, name);
   }
 
-  Sys& system() { return sys_; }
-  const Sys& system() const { return sys_; }
-  const Stats& stats() const { return stats_; }
-  void reset_stats() { stats_ = Stats{}; }
-
  private:
-  Sys sys_;
-  Stats stats_;
   State tmp_ = State::Zero();
 };
 

@@ -45,6 +45,32 @@ inline void check_accepted(const Sys& sys, const typename Sys::State& x, double 
 
 }  // namespace detail
 
+// The system and the work counters a fixed-step stepper keeps, and the end of
+// its step: the new state checked, accepted and counted. Derived steppers
+// name the members with `using` so that the hot loops read them directly.
+template <class Sys>
+class StepperCore {
+ public:
+  explicit StepperCore(Sys sys) : sys_(std::move(sys)) {}
+
+  Sys& system() { return sys_; }
+  const Sys& system() const { return sys_; }
+  const Stats& stats() const { return stats_; }
+  void reset_stats() { stats_ = Stats{}; }
+
+ protected:
+  // x becomes x_new (the state at time t) unless the checks throw.
+  void accept(typename Sys::State& x, const typename Sys::State& x_new, double t,
+              const char* method) {
+    detail::check_accepted(sys_, x_new, t, method);
+    x = x_new;
+    ++stats_.steps;
+  }
+
+  Sys sys_;
+  Stats stats_;
+};
+
 // A system that can be split into exactly solvable sub-flows (Strang splitting).
 template <class Sys>
 concept SplittableSystem = requires(const Sys& s, int i, double h, typename Sys::State& x) {

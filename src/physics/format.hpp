@@ -3,6 +3,7 @@
 // gave as the shortest text that reads back as the same double ("1.5", "0.1").
 #include <Eigen/Core>
 #include <charconv>
+#include <cstdio>
 #include <string>
 
 namespace epviz::physics::detail {
@@ -29,6 +30,13 @@ inline std::string vec(const Eigen::Vector3d& v) {
   s += num(v.z());
   s += ')';
   return s;
+}
+
+// A computed vector for display, to `digits` significant digits: "(0.5, 1, 2)".
+inline std::string vec(const Eigen::Vector3d& v, int digits) {
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "(%.*g, %.*g, %.*g)", digits, v.x(), digits, v.y(), digits, v.z());
+  return buf;
 }
 
 }  // namespace epviz::physics::detail

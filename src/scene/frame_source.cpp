@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "physics/format.hpp"
 #include "physics/stereographic.hpp"
 #include "scene/body_shape.hpp"
 #include "scene/plane_path.hpp"
@@ -11,11 +12,7 @@
 namespace epviz::scene {
 namespace {
 
-std::string fmt3(const Eigen::Vector3d& v) {
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "(%.4g, %.4g, %.4g)", v[0], v[1], v[2]);
-  return buf;
-}
+std::string fmt3(const Eigen::Vector3d& v) { return physics::detail::vec(v, 4); }
 
 }  // namespace
 

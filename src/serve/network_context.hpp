@@ -15,9 +15,9 @@ namespace epviz::serve {
 class WebSocketConnection;
 
 struct NetworkContext {
-  NetworkContext(const ServerOptions& options, const ServerLog& log, ServerCounters& counters,
-                 RenderHub& hub)
-      : options(options), log(log), counters(counters), hub(hub) {}
+  NetworkContext(const ServerOptions& server_options, const ServerLog& server_log,
+                 ServerCounters& server_counters, RenderHub& render_hub)
+      : options(server_options), log(server_log), counters(server_counters), hub(render_hub) {}
 
   const ServerOptions& options;
   const ServerLog& log;

@@ -66,8 +66,8 @@ class ConnectionLink {
   // page flooding events cannot grow the server's memory without bound.
   static constexpr std::size_t inbox_limit = 1024;
 
-  ConnectionLink(long id, std::weak_ptr<ConnectionOutlet> outlet)
-      : id(id), outlet(std::move(outlet)) {}
+  ConnectionLink(long connection_id, std::weak_ptr<ConnectionOutlet> connection_outlet)
+      : id(connection_id), outlet(std::move(connection_outlet)) {}
 
   const long id;
   const std::weak_ptr<ConnectionOutlet> outlet;  // expired once the network side is gone

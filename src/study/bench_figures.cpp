@@ -66,30 +66,32 @@ TableSpec stability_table(const std::vector<StudyRow>& rows) {
   t.title = "Stability studies";
   t.header = {"study", "case", "method", "formulation", "status", "result"};
   for (const auto& row : rows) {
-    if (const auto* r = std::get_if<MaxStepRow>(&row)) {
-      const auto result =
-          Result().add("max step", r->max_step).add("h/period", r->max_step_over_period);
-      t.rows.push_back({"max_step", r->case_name, r->method, r->formulation,
-                        r->failure_reason.empty() ? "ok" : "limit", result.text()});
-    } else if (const auto* r = std::get_if<PolePassageRow>(&row)) {
-      t.rows.push_back(
-          table_row("pole", r->run, Result().add("variant", r->variant).add("error", r->error)));
-    } else if (const auto* r = std::get_if<SeparatrixRow>(&row)) {
-      t.rows.push_back(
-          table_row("separatrix", r->run,
-                    Result().add("step", r->run.step).add("flip time err", r->flip_time_error)));
-    } else if (const auto* r = std::get_if<SleepingTopRow>(&row)) {
-      t.rows.push_back(table_row("sleeping_top", r->run,
+    if (const auto* max_step = std::get_if<MaxStepRow>(&row)) {
+      const auto result = Result()
+                              .add("max step", max_step->max_step)
+                              .add("h/period", max_step->max_step_over_period);
+      t.rows.push_back({"max_step", max_step->case_name, max_step->method, max_step->formulation,
+                        max_step->failure_reason.empty() ? "ok" : "limit", result.text()});
+    } else if (const auto* pole = std::get_if<PolePassageRow>(&row)) {
+      t.rows.push_back(table_row("pole", pole->run,
+                                 Result().add("variant", pole->variant).add("error", pole->error)));
+    } else if (const auto* separatrix = std::get_if<SeparatrixRow>(&row)) {
+      t.rows.push_back(table_row("separatrix", separatrix->run,
                                  Result()
-                                     .add("step", r->run.step)
-                                     .add("gamma err", r->gamma_error)
-                                     .add("reached", r->reached ? "yes" : "no")));
-    } else if (const auto* r = std::get_if<ChaosRow>(&row)) {
-      t.rows.push_back(table_row("chaos", r->run,
+                                     .add("step", separatrix->run.step)
+                                     .add("flip time err", separatrix->flip_time_error)));
+    } else if (const auto* sleeping = std::get_if<SleepingTopRow>(&row)) {
+      t.rows.push_back(table_row("sleeping_top", sleeping->run,
                                  Result()
-                                     .add("step", r->run.step)
-                                     .add("separated", r->separated ? "yes" : "no")
-                                     .add("at", r->separation_time)));
+                                     .add("step", sleeping->run.step)
+                                     .add("gamma err", sleeping->gamma_error)
+                                     .add("reached", sleeping->reached ? "yes" : "no")));
+    } else if (const auto* chaos = std::get_if<ChaosRow>(&row)) {
+      t.rows.push_back(table_row("chaos", chaos->run,
+                                 Result()
+                                     .add("step", chaos->run.step)
+                                     .add("separated", chaos->separated ? "yes" : "no")
+                                     .add("at", chaos->separation_time)));
     }
   }
   return t;
