@@ -226,21 +226,27 @@ void Renderer::draw_lines(const DrawList& list, const glm::mat4& view_projection
     }
   }
   if (scratch_indices_.empty()) return;
-  standard_blending();
-  line_program_.use();
-  line_program_.set("u_view_projection", view_projection);
-  line_program_.set("u_viewport_size", viewport_size);
-  line_program_.set("u_min_alpha", min_alpha_);
-  glBindVertexArray(lines_.vao);
-  glBindBuffer(GL_ARRAY_BUFFER, lines_.vertices);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(scratch_vertices_.size() * sizeof(float)),
-               scratch_vertices_.data(), GL_STREAM_DRAW);
+  begin_screen_space_pass(line_program_, lines_, view_projection, viewport_size);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, lines_.indices);
   glBufferData(GL_ELEMENT_ARRAY_BUFFER,
                static_cast<GLsizeiptr>(scratch_indices_.size() * sizeof(std::uint32_t)),
                scratch_indices_.data(), GL_STREAM_DRAW);
   glDrawElements(GL_LINES_ADJACENCY, static_cast<GLsizei>(scratch_indices_.size()), GL_UNSIGNED_INT,
                  nullptr);
+}
+
+void Renderer::begin_screen_space_pass(ShaderProgram& program, const StreamBuffer& buffer,
+                                       const glm::mat4& view_projection,
+                                       const glm::vec2& viewport_size) {
+  standard_blending();
+  program.use();
+  program.set("u_view_projection", view_projection);
+  program.set("u_viewport_size", viewport_size);
+  program.set("u_min_alpha", min_alpha_);
+  glBindVertexArray(buffer.vao);
+  glBindBuffer(GL_ARRAY_BUFFER, buffer.vertices);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(scratch_vertices_.size() * sizeof(float)),
+               scratch_vertices_.data(), GL_STREAM_DRAW);
 }
 
 void Renderer::draw_markers(const DrawList& list, const glm::mat4& view_projection,
@@ -253,15 +259,7 @@ void Renderer::draw_markers(const DrawList& list, const glm::mat4& view_projecti
     push_colour(scratch_vertices_, m.outline);
     scratch_vertices_.insert(scratch_vertices_.end(), {m.radius_px, m.outline_px});
   }
-  standard_blending();
-  marker_program_.use();
-  marker_program_.set("u_view_projection", view_projection);
-  marker_program_.set("u_viewport_size", viewport_size);
-  marker_program_.set("u_min_alpha", min_alpha_);
-  glBindVertexArray(markers_.vao);
-  glBindBuffer(GL_ARRAY_BUFFER, markers_.vertices);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(scratch_vertices_.size() * sizeof(float)),
-               scratch_vertices_.data(), GL_STREAM_DRAW);
+  begin_screen_space_pass(marker_program_, markers_, view_projection, viewport_size);
   glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(list.markers().size()));
 }
 

@@ -94,6 +94,10 @@ class Renderer {
                   const glm::vec2& viewport_size);
   void draw_markers(const DrawList& list, const glm::mat4& view_projection,
                     const glm::vec2& viewport_size);
+  // Lines and markers are expanded in screen space by geometry shaders: binds
+  // `program` with the uniforms both share and uploads scratch_vertices_.
+  void begin_screen_space_pass(ShaderProgram& program, const StreamBuffer& buffer,
+                               const glm::mat4& view_projection, const glm::vec2& viewport_size);
   void queue_label(const TextLabel& label, const glm::vec2& pixel);
 
   GlContext& context_;
