@@ -94,7 +94,7 @@ INSTANTIATE_TEST_SUITE_P(
                  R"({"inertia": [1, 2]})"},
         BadInput{"job_bad_case", "--job {dir}/job.json", "job.json: key 'case': unknown case",
                  R"({"case": "top"})"}),
-    [](const auto& info) { return info.param.name; });
+    [](const auto& param_info) { return param_info.param.name; });
 
 TEST(Simulate, NormalizeGammaAcceptsANonUnitVector) {
   test::TempDir dir;

@@ -163,7 +163,7 @@ INSTANTIATE_TEST_SUITE_P(
                       Change{"one_more_second_of_trail",
                              [](auto& j) { j["trail"]["length"] = 21.0; }},
                       Change{"another_method", [](auto& j) { j["simulation"]["method"] = "rk4"; }}),
-    [](const auto& info) { return info.param.name; });
+    [](const auto& param_info) { return param_info.param.name; });
 
 TEST_F(Check, MissingGoldenFailsWithTheCommandThatCreatesIt) {
   const auto r = epviz("check " + job() + " --frames 3,7:8");
@@ -286,7 +286,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCheck{"bench_job", "DIR/bench.json",
                  "bench.json: a bench-figures job has no frames to check"},
         BadCheck{"empty_directory", "DIR/empty", "empty: no render jobs"}),
-    [](const auto& info) { return info.param.name; });
+    [](const auto& param_info) { return param_info.param.name; });
 
 }  // namespace
 }  // namespace epviz

@@ -99,7 +99,7 @@ INSTANTIATE_TEST_SUITE_P(
                      {"body", false}, {"sphere", false}, {"riccati", false}, {"overlay", false}};
                },
                "", "nothing to draw"}),
-    [](const auto& info) { return info.param.name; });
+    [](const auto& param_info) { return param_info.param.name; });
 
 TEST(Render, MissingJobFileIsNamed) {
   test::TempDir dir;

@@ -172,8 +172,8 @@ TEST_P(VideoFormats, DestroyedWithoutFinishLeavesNothing) {
 
 INSTANTIATE_TEST_SUITE_P(AllFormats, VideoFormats,
                          ::testing::Values(VideoFormat::mp4, VideoFormat::webm, VideoFormat::gif),
-                         [](const auto& info) {
-                           return std::string(video_format_name(info.param));
+                         [](const auto& param_info) {
+                           return std::string(video_format_name(param_info.param));
                          });
 
 template <typename F>

@@ -71,8 +71,8 @@ TEST_P(StayInCase, EveryEditEndsInsideTheCaseKeepingTheEditedValue) {
 INSTANTIATE_TEST_SUITE_P(Cases, StayInCase,
                          ::testing::Values(Case::euler, Case::lagrange, Case::kovalevskaya,
                                            Case::goryachev_chaplygin, Case::hess),
-                         [](const auto& info) {
-                           std::string n = physics::case_name(info.param);
+                         [](const auto& param_info) {
+                           std::string n = physics::case_name(param_info.param);
                            for (char& ch : n)
                              if (ch == '-') ch = '_';
                            return n;

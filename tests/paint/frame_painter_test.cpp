@@ -85,7 +85,7 @@ INSTANTIATE_TEST_SUITE_P(
               only(false, false, true, false)},
         Named{"layer_overlay", physics::Case::kovalevskaya, scene::View::body,
               only(false, false, false, true)}),
-    [](const auto& info) { return info.param.name; });
+    [](const auto& param_info) { return param_info.param.name; });
 
 // The plan picks the tolerance and the trail's decimation from the same layout
 // the painter draws into, and its pixel scales are those of the real camera and plot.

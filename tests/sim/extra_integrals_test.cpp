@@ -43,8 +43,8 @@ INSTANTIATE_TEST_SUITE_P(Cases, ExtraIntegral,
                          ::testing::Values(physics::Case::euler, physics::Case::lagrange,
                                            physics::Case::kovalevskaya,
                                            physics::Case::goryachev_chaplygin, physics::Case::hess),
-                         [](const auto& info) {
-                           std::string n = physics::case_name(info.param);
+                         [](const auto& param_info) {
+                           std::string n = physics::case_name(param_info.param);
                            for (auto& ch : n)
                              if (ch == '-') ch = '_';
                            return n;

@@ -37,7 +37,9 @@ TEST_P(ImplicitMethod, KeepsQuadraticInvariantsOver1e5Steps) {
 INSTANTIATE_TEST_SUITE_P(Gauss, ImplicitMethod,
                          ::testing::Values(sim::Method::midpoint, sim::Method::gauss4,
                                            sim::Method::gauss6),
-                         [](const auto& info) { return std::string(sim::name(info.param)); });
+                         [](const auto& param_info) {
+                           return std::string(sim::name(param_info.param));
+                         });
 
 TEST(Splitting, KeepsCasimirsToRoundOffAndEnergyBounded) {
   std::vector<sim::Sample> samples;

@@ -70,8 +70,9 @@ TEST_P(PeerTest, ErrorFallsWithTolerance) {
 }
 
 INSTANTIATE_TEST_SUITE_P(All, PeerTest, ::testing::ValuesIn(all_peers()),
-                         [](const ::testing::TestParamInfo<PeerId>& info) {
-                           std::string s = impl_name(info.param) + "_" + method_name(info.param);
+                         [](const ::testing::TestParamInfo<PeerId>& param_info) {
+                           std::string s =
+                               impl_name(param_info.param) + "_" + method_name(param_info.param);
                            for (char& c : s)
                              if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
                            return s;
