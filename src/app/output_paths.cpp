@@ -17,7 +17,12 @@ namespace fs = std::filesystem;
 // Room left in a file name for "_000123.png" or ".tmp-<pid>" after output.name.
 constexpr std::size_t kLongestName = 200;
 
-std::string in_quotes(const fs::path& p) { return "'" + p.string() + "'"; }
+std::string in_quotes(const fs::path& p) {
+  std::string text(1, '\'');
+  text += p.string();
+  text += '\'';
+  return text;
+}
 
 std::string errno_text(int error) { return std::system_category().message(error); }
 

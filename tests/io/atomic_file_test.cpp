@@ -60,8 +60,9 @@ TEST_F(AtomicFileTest, DeviceNodesAndFifosAreStreams) {
   ASSERT_EQ(::mkfifo((dir_ / "fifo").c_str(), 0600), 0);
   EXPECT_EQ(resolve_output(dir_ / "fifo").kind, OutputKind::stream);
   // /dev/stdout names a file descriptor through /proc: never a name to replace.
-  if (fs::is_symlink("/dev/stdout"))
+  if (fs::is_symlink("/dev/stdout")) {
     EXPECT_EQ(resolve_output("/dev/stdout").kind, OutputKind::stream);
+  }
 }
 
 TEST_F(AtomicFileTest, SymbolicLinksAreFollowedToTheRealFile) {
