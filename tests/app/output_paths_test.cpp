@@ -117,5 +117,16 @@ TEST(RenderOutputPaths, OutputNamesThatAreNotFileNamesAreRefused) {
   }
 }
 
+TEST(RenderOutputPaths, ReportJsonDashPutsOnlyTheReportOnStandardOutput) {
+  test::TempDir dir;
+  const auto job = write_job(dir, small_job(dir / "frames"));
+  const auto r = test::run_epviz("render " + job.string() + " --quiet --report-json -", dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const auto report = nlohmann::json::parse(r.out);  // throws if the summary line got in
+  EXPECT_EQ(report["frames_drawn"], 2);
+  EXPECT_NE(r.err.find("frames"), std::string::npos) << "the summary line goes to stderr";
+  EXPECT_FALSE(fs::exists(dir / "-"));
+}
+
 }  // namespace
 }  // namespace epviz
