@@ -12,6 +12,7 @@
 #include "app/cli_values.hpp"
 #include "app/failure_advice.hpp"
 #include "app/job_frames.hpp"
+#include "app/output_paths.hpp"
 #include "app/render_job.hpp"
 #include "app/usage_error.hpp"
 #include "io/atomic_file.hpp"
@@ -20,6 +21,7 @@
 #include "io/image_tiling.hpp"
 #include "io/png_writer.hpp"
 #include "io/progress.hpp"
+#include "io/temp_registry.hpp"
 #include "io/video_writer.hpp"
 #include "paint/frame_painter.hpp"
 #include "render/gl_context.hpp"
@@ -56,6 +58,9 @@ PreparedJob prepare(RenderJob job, const RenderOptions& o) {
   if (!o.height.empty()) job.scene.height = int(parse_integer("--height", o.height, 16, 8192));
   if (auto f = format_option(o)) job.output.format = *f;
   if (!o.out.empty()) job.output.dir = o.out;
+  // Every output is checked before any work, so that nothing is written on exit 2.
+  check_file_name(job.file.string() + ": output.name", job.output.name);
+  check_output_dir(o.out.empty() ? job.file.string() + ": output.dir" : "--out", job.output.dir);
   if (job.output.format != OutputFormat::png && (job.scene.width % 2 || job.scene.height % 2))
     throw UsageError(job.file.string() + ": video needs an even width and height, got " +
                      std::to_string(job.scene.width) + "x" + std::to_string(job.scene.height));
@@ -113,6 +118,8 @@ RenderStats render_frames(const PreparedJob& p, paint::FramePainter& painter,
   const auto& job = p.job;
   const auto& s = job.scene;
   fs::create_directories(job.output.dir);
+  // Temporaries of runs killed before they could clean up (SIGKILL).
+  io::remove_stale_temporaries(job.output.dir);
   JobFrameDrawer drawer(p.plan, s);
 
   std::unique_ptr<io::AsyncPngWriter> pngs;
@@ -187,13 +194,19 @@ void add_gl_report(nlohmann::json& j, const render::GlContext& context) {
   j["gl_version"] = context.version();
 }
 
-void print_job_line(const PreparedJob& p, const RenderStats& st) {
-  std::printf("%s: %d frames %dx%d in %.2f s (%.1f frames/s), %s %s, %s -> %s\n",
-              p.job.file.string().c_str(), st.frames_drawn, p.job.scene.width, p.job.scene.height,
-              st.seconds, st.seconds > 0 ? st.frames_drawn / st.seconds : 0.0,
-              std::string(sim::name(p.plan.run.method)).c_str(), p.plan.accuracy_note.c_str(),
-              std::string(sim::name(p.plan.run.formulation)).c_str(),
-              p.job.output.dir.string().c_str());
+// Where the one-line summaries go: stderr when standard output carries the
+// JSON report (--report-json -), so that the report stays parseable.
+std::FILE* summary_stream(const RenderOptions& o) {
+  return !o.report_json.empty() && io::writes_to_standard_output(o.report_json) ? stderr : stdout;
+}
+
+void print_job_line(std::FILE* out, const PreparedJob& p, const RenderStats& st) {
+  std::fprintf(out, "%s: %d frames %dx%d in %.2f s (%.1f frames/s), %s %s, %s -> %s\n",
+               p.job.file.string().c_str(), st.frames_drawn, p.job.scene.width, p.job.scene.height,
+               st.seconds, st.seconds > 0 ? st.frames_drawn / st.seconds : 0.0,
+               std::string(sim::name(p.plan.run.method)).c_str(), p.plan.accuracy_note.c_str(),
+               std::string(sim::name(p.plan.run.formulation)).c_str(),
+               p.job.output.dir.string().c_str());
 }
 
 int report_failure(const std::optional<numerics::Failure>& f) {
@@ -208,7 +221,7 @@ int render_single(RenderJob job, const RenderOptions& o) {
   auto context = open_context(o);
   paint::FramePainter painter(*context, p.job.scene.width, p.job.scene.height);
   const auto st = render_frames(p, painter, o);
-  print_job_line(p, st);
+  print_job_line(summary_stream(o), p, st);
   if (!o.report_json.empty()) {
     auto report = job_report(p, st);
     add_gl_report(report, *context);
@@ -221,6 +234,7 @@ int render_gallery(GalleryJob g, const RenderOptions& o) {
   if (!o.frames.empty())
     throw UsageError("--frames: a gallery renders whole jobs; give --frames to a single job");
   if (!o.out.empty()) g.dir = o.out;
+  check_output_dir(o.out.empty() ? g.file.string() + ": dir" : "--out", g.dir);
   if (auto f = format_option(o)) g.videos = *f == OutputFormat::png ? std::nullopt : f;
   // Check every job before rendering any.
   std::vector<PreparedJob> stills, videos;
@@ -244,6 +258,7 @@ int render_gallery(GalleryJob g, const RenderOptions& o) {
     }
   }
   fs::create_directories(g.dir);
+  io::remove_stale_temporaries(g.dir);
   auto context = open_context(o);
   paint::FramePainter painter(*context, g.tile_width, g.tile_height);
 
@@ -269,12 +284,12 @@ int render_gallery(GalleryJob g, const RenderOptions& o) {
   const auto figure = io::tile_images(spans, g.tile_width, g.tile_height, tiling);
   const fs::path figure_path = g.dir / "gallery.png";
   io::write_png_rgba(figure_path, figure.width, figure.height, figure.pixels);
-  std::printf("%s: %zu cases tiled into %s (%dx%d)\n", g.file.string().c_str(), tiles.size(),
-              figure_path.string().c_str(), figure.width, figure.height);
+  std::fprintf(summary_stream(o), "%s: %zu cases tiled into %s (%dx%d)\n", g.file.string().c_str(),
+               tiles.size(), figure_path.string().c_str(), figure.width, figure.height);
 
   for (const auto& p : videos) {
     const auto st = render_frames(p, painter, o);
-    print_job_line(p, st);
+    print_job_line(summary_stream(o), p, st);
     reports.push_back(job_report(p, st));
     add_gl_report(reports.back(), *context);
     failures += report_failure(st.failure) != 0;
@@ -284,11 +299,9 @@ int render_gallery(GalleryJob g, const RenderOptions& o) {
 }
 
 int run_render(const RenderOptions& o) {
-  if (!o.report_json.empty()) {
-    const auto dir = fs::absolute(o.report_json).parent_path();
-    if (!fs::is_directory(dir))
-      throw UsageError("--report-json: directory '" + dir.string() + "' does not exist");
-  }
+  check_output_file("--report-json", o.report_json);
+  // SIGINT/SIGTERM remove the temporaries of the frames and videos being written.
+  io::install_temporary_cleanup();
   auto loaded = load_render_job(o.job);
   if (loaded.bench) {
     if (!o.frames.empty() || !o.format.empty() || o.resume)
@@ -319,7 +332,8 @@ std::function<int()> add_render_command(CLI::App& app) {
   cmd->add_option("--gl", o->gl,
                   "offscreen GL backend: auto, egl or osmesa (default: $EPVIZ_GL or auto)");
   cmd->add_option("--report-json", o->report_json,
-                  "write what was rendered (tolerance chosen, timings) as JSON");
+                  "write what was rendered (tolerance chosen, timings) as JSON ('-': standard "
+                  "output; the summary lines then go to stderr)");
   cmd->add_flag("--resume", o->resume, "PNG: skip frames already written completely");
   cmd->add_flag("--quiet", o->quiet, "no progress line");
   cmd->add_flag("--progress", o->progress, "progress line even when stderr is not a terminal");

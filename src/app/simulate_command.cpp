@@ -5,13 +5,17 @@
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "app/cli_values.hpp"
 #include "app/failure_advice.hpp"
+#include "app/output_paths.hpp"
 #include "app/simulation_fields.hpp"
 #include "app/simulation_output.hpp"
 #include "app/usage_error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/progress.hpp"
+#include "io/temp_registry.hpp"
 #include "physics/cases.hpp"
 
 namespace epviz::app {
@@ -19,7 +23,7 @@ namespace {
 
 struct RawOptions {
   std::string job, case_name, inertia, com, weight, omega, gamma, formulation, method, tol, step,
-      t_end, samples, csv, report_json;
+      t_end, samples, csv, report_json, max_steps;
   bool allow_nonphysical = false, normalize_gamma = false, no_chart_switch = false;
 };
 
@@ -66,39 +70,62 @@ SimulationFields fields_from_job(const std::string& path) {
   }
 }
 
-void check_output_path(const std::string& option, const std::string& path) {
-  if (path.empty()) return;
-  const auto dir = std::filesystem::absolute(path).parent_path();
-  if (!std::filesystem::is_directory(dir))
-    throw UsageError(option + ": directory '" + dir.string() + "' does not exist");
-}
-
 std::string fmt(double x, const char* f = "%.3g") {
   char buf[32];
   std::snprintf(buf, sizeof buf, f, x);
   return buf;
 }
 
-void print_summary(const sim::RunSpec& spec, const sim::RunResult& r, const sim::Drifts& d) {
+// The step budget (--max-steps, default 1e8) bounds adaptive runs while they
+// run (a step_budget failure, exit 3). A fixed-step run's number of steps is
+// known before it starts: beyond the budget it would take hours, which is
+// almost always a typo in --t-end or --step, so it is refused before any work.
+void check_step_budget(const sim::RunSpec& spec) {
+  if (sim::is_adaptive(spec.method)) return;
+  const double steps = spec.t_end / spec.step;
+  if (steps > double(spec.max_steps))
+    throw UsageError("--t-end: " + fmt(spec.t_end) + " with --step " + fmt(spec.step) + " needs " +
+                     fmt(steps) + " steps, more than the step budget of " +
+                     fmt(double(spec.max_steps)) +
+                     " (--max-steps); shorten --t-end or take a larger --step");
+}
+
+// Removes temporaries that killed runs left beside `path` (the process is gone).
+void remove_stale_beside(const std::string& path) {
+  if (path.empty() || path == "-") return;
+  const auto target = io::resolve_output(path);
+  if (target.kind == io::OutputKind::replace)
+    io::remove_stale_temporaries(target.path.parent_path());
+}
+
+void print_summary(std::FILE* out, const sim::RunSpec& spec, const sim::RunResult& r,
+                   const sim::Drifts& d) {
   std::string accuracy =
       sim::is_adaptive(spec.method) ? "tol " + fmt(spec.tol) : "step " + fmt(r.effective_step);
-  std::printf("%-20s %-8s %-9s %-12s steps %8ld  rhs %9ld  rejected %5ld  cpu %8.4f s\n",
-              physics::case_name(spec.case_id).c_str(),
-              std::string(sim::name(spec.formulation)).c_str(),
-              std::string(sim::name(spec.method)).c_str(), accuracy.c_str(), r.stats.steps,
-              r.stats.rhs_evals, r.stats.rejected_steps, r.cpu_seconds);
-  std::printf("%-20s max relative drift  |gamma|^2 %-9s  C0 %-9s  C1 %-9s  extra %s\n", "",
-              fmt(d.gamma_norm2).c_str(), fmt(d.area).c_str(), fmt(d.energy).c_str(),
-              d.extra ? fmt(*d.extra).c_str() : "-");
-  if (r.failure) std::printf("%-20s FAILED: %s\n", "", failure_line(*r.failure).c_str());
+  std::fprintf(out, "%-20s %-8s %-9s %-12s steps %8ld  rhs %9ld  rejected %5ld  cpu %8.4f s\n",
+               physics::case_name(spec.case_id).c_str(),
+               std::string(sim::name(spec.formulation)).c_str(),
+               std::string(sim::name(spec.method)).c_str(), accuracy.c_str(), r.stats.steps,
+               r.stats.rhs_evals, r.stats.rejected_steps, r.cpu_seconds);
+  std::fprintf(out, "%-20s max relative drift  |gamma|^2 %-9s  C0 %-9s  C1 %-9s  extra %s\n", "",
+               fmt(d.gamma_norm2).c_str(), fmt(d.area).c_str(), fmt(d.energy).c_str(),
+               d.extra ? fmt(*d.extra).c_str() : "-");
+  if (r.failure) std::fprintf(out, "%-20s FAILED: %s\n", "", failure_line(*r.failure).c_str());
 }
 
 int run_simulate(const RawOptions& raw) {
   SimulationFields fields;
   if (!raw.job.empty()) fields = fields_from_job(raw.job);
   fields.overlay(fields_from_cli(raw));
-  check_output_path("--csv", raw.csv);
-  check_output_path("--report-json", raw.report_json);
+  check_output_file("--csv", raw.csv);
+  check_output_file("--report-json", raw.report_json);
+  const bool csv_to_stdout = !raw.csv.empty() && io::writes_to_standard_output(raw.csv);
+  const bool report_to_stdout =
+      !raw.report_json.empty() && io::writes_to_standard_output(raw.report_json);
+  if (csv_to_stdout && report_to_stdout)
+    throw UsageError(
+        "--report-json: standard output already carries the samples (--csv); write one of them "
+        "to a file");
 
   std::vector<SimulationFields> runs;
   if (fields.case_name && *fields.case_name == "all") {
@@ -116,23 +143,50 @@ int run_simulate(const RawOptions& raw) {
   // Resolve every run before integrating any: bad input leaves nothing behind.
   std::vector<sim::RunSpec> specs;
   for (const auto& f : runs) specs.push_back(resolve(f));
+  if (!raw.max_steps.empty()) {
+    const long budget = long(parse_integer("--max-steps", raw.max_steps, 1, 1'000'000'000'000));
+    for (auto& spec : specs) spec.max_steps = budget;
+  }
+  for (const auto& spec : specs) check_step_budget(spec);
+
+  // When standard output carries data, the summary goes to stderr so that it
+  // cannot corrupt the data.
+  std::FILE* summary = csv_to_stdout || report_to_stdout ? stderr : stdout;
+  io::install_temporary_cleanup();
+  remove_stale_beside(raw.csv);
+  remove_stale_beside(raw.report_json);
 
   nlohmann::json reports = nlohmann::json::array();
   int failures = 0;
-  std::string csv;
+  // The samples are written as they are produced: memory stays flat however
+  // many --samples are asked for.
+  std::optional<io::AtomicFile> csv_file;
+  if (!raw.csv.empty()) csv_file.emplace(raw.csv);
   for (const auto& spec : specs) {
-    const auto result = sim::simulate(spec);
     const sim::InvariantMonitor monitor(spec.body, spec.case_id, spec.initial);
-    const auto drift = monitor.max_relative_drift(result.samples);
-    print_summary(spec, result, drift);
+    sim::Drifts drift = monitor.no_drift();
+    std::optional<SamplesCsvWriter> csv;
+    if (csv_file) csv.emplace(spec, *csv_file);
+    io::ProgressOptions po;
+    po.label = "simulate " + physics::case_name(spec.case_id);
+    po.unit = "samples";
+    io::ProgressLine progress(spec.samples + 1, po);
+    const auto result = sim::simulate(spec, [&](const sim::Sample& s) {
+      monitor.worsen(drift, s);
+      if (csv) csv->add(s);
+      progress.advance();
+    });
+    progress.finish();
+    if (csv) csv->flush();
+    print_summary(summary, spec, result, drift);
     reports.push_back(run_report(spec, result, drift));
-    if (!raw.csv.empty()) csv = samples_csv(spec, result);
     if (result.failure) {
       ++failures;
       std::fprintf(stderr, "epviz: %s\n", failure_line(*result.failure).c_str());
     }
   }
-  if (!raw.csv.empty()) io::write_file_atomically(raw.csv, csv);
+  std::fflush(summary);
+  if (csv_file) csv_file->commit();
   if (!raw.report_json.empty())
     io::write_file_atomically(raw.report_json,
                               (specs.size() == 1 ? reports[0] : reports).dump(2) + "\n");
@@ -162,9 +216,14 @@ std::function<int()> add_simulate_command(CLI::App& app) {
                   "relative and absolute tolerance of adaptive methods (default 1e-10)");
   cmd->add_option("--step", raw->step, "largest step of fixed-step methods (default 0.01)");
   cmd->add_option("--t-end", raw->t_end, "final time (default 20)");
+  cmd->add_option("--max-steps", raw->max_steps,
+                  "adaptive methods: end the run as failed after this many steps (default 1e8)");
   cmd->add_option("--samples", raw->samples, "N: write N+1 equally spaced samples (default 200)");
-  cmd->add_option("--csv", raw->csv, "write the samples to this CSV file");
-  cmd->add_option("--report-json", raw->report_json, "write the run report to this JSON file");
+  cmd->add_option("--csv", raw->csv,
+                  "write the samples to this CSV file ('-': standard output; the summary then "
+                  "goes to stderr)");
+  cmd->add_option("--report-json", raw->report_json,
+                  "write the run report to this JSON file ('-': standard output)");
   cmd->add_flag("--allow-nonphysical", raw->allow_nonphysical,
                 "accept moments that break the triangle inequalities");
   cmd->add_flag("--normalize-gamma", raw->normalize_gamma, "rescale a non-unit initial gamma");

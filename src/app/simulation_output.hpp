@@ -4,6 +4,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "io/atomic_file.hpp"
 #include "sim/drift.hpp"
 #include "sim/run_spec.hpp"
 #include "sim/simulate.hpp"
@@ -14,6 +15,22 @@ namespace epviz::app {
 // a, b are the stereographic coordinates of gamma (empty at gamma3 = -1);
 // gamma_norm_error is |gamma| - 1; extra_integral is empty without a fourth integral.
 std::string samples_csv(const sim::RunSpec& spec, const sim::RunResult& result);
+
+// The same CSV written row by row as samples arrive (sim::simulate with a
+// sink), in chunks of about 64 kB, so that memory does not grow with the number
+// of samples. The header is written by the constructor; flush() writes what is
+// buffered (call it before committing the file).
+class SamplesCsvWriter {
+ public:
+  SamplesCsvWriter(const sim::RunSpec& spec, io::AtomicFile& file);
+  void add(const sim::Sample& s);
+  void flush();
+
+ private:
+  sim::InvariantMonitor monitor_;
+  io::AtomicFile& file_;
+  std::string buffer_;
+};
 
 nlohmann::json run_report(const sim::RunSpec& spec, const sim::RunResult& result,
                           const sim::Drifts& drift);

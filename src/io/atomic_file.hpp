@@ -2,6 +2,13 @@
 // Atomic file writes: the data goes to "<name>.tmp-<pid>" in the target's
 // directory and is renamed over the target only once it is complete, so a
 // reader (or a later `--resume`) never sees a partial file under the real name.
+//
+// Only regular files are replaced that way. A target that exists and is not a
+// regular file (/dev/null, /dev/stdout, a FIFO, a terminal) is a stream: it is
+// opened and written directly, never replaced (renaming over /dev/null would
+// replace the device node). A symbolic link is followed: the file it points to
+// is replaced atomically, with the temporary beside that file, and the link
+// stays. "-" means standard output.
 #include <cstddef>
 #include <filesystem>
 #include <span>
@@ -21,8 +28,31 @@ class FileWriteError : public std::runtime_error {
 // It lives in the same directory so that the final rename stays on one file system.
 std::filesystem::path temporary_path_for(const std::filesystem::path& target);
 
+// How a target is written, decided from what is on disk now.
+enum class OutputKind {
+  replace,          // a regular file or nothing yet: temporary + rename over `path`
+  stream,           // an existing non-regular file: opened and written directly
+  standard_output,  // "-": file descriptor 1
+};
+
+struct OutputTarget {
+  OutputKind kind = OutputKind::replace;
+  std::filesystem::path path;  // the file written or replaced, symbolic links followed
+};
+
+// Follows symbolic links (a dangling link: its final target, which is created).
+// Throws FileWriteError for a link loop.
+OutputTarget resolve_output(const std::filesystem::path& target);
+
+// Whether writing `target` writes what this process's standard output shows:
+// "-", /dev/stdout, or any path to the same file as file descriptor 1. A
+// command that writes data there prints its messages to stderr instead.
+bool writes_to_standard_output(const std::filesystem::path& target);
+
 // An open temporary file that becomes `target` on commit(). If it is destroyed
 // without commit() (an exception, an early return) the temporary is removed.
+// For a stream target (see resolve_output) the target itself is written and
+// commit() only closes it; what was written cannot be taken back.
 // Not for two writers of the same target in one process at the same time.
 class AtomicFile {
  public:
@@ -39,13 +69,17 @@ class AtomicFile {
   void commit();
 
   const std::filesystem::path& target() const { return target_; }
+  OutputKind kind() const { return resolved_.kind; }
 
  private:
   void discard() noexcept;
+  [[noreturn]] void fail(const std::string& what, int error);
 
   std::filesystem::path target_;
-  std::filesystem::path temporary_;
+  OutputTarget resolved_;
+  std::filesystem::path temporary_;  // empty for streams
   int fd_ = -1;
+  int cleanup_slot_ = -1;  // temp_registry.hpp
   bool sync_ = false;
   bool committed_ = false;
 };

@@ -21,15 +21,15 @@ std::string format_eta(double seconds) {
 }
 
 std::string format_progress(const std::string& label, int done, int total, double frames_per_second,
-                            double eta_seconds) {
+                            double eta_seconds, const std::string& unit) {
   char rate[32];
   if (frames_per_second > 0.0 && std::isfinite(frames_per_second))
     std::snprintf(rate, sizeof rate, "%.1f", frames_per_second);
   else
     std::snprintf(rate, sizeof rate, "--");
   std::string line = label.empty() ? std::string() : label + ": ";
-  line += std::to_string(done) + "/" + std::to_string(total) + " frames, " + rate +
-          " frames/s, ETA " + format_eta(eta_seconds);
+  line += std::to_string(done) + "/" + std::to_string(total) + " " + unit + ", " + rate + " " +
+          unit + "/s, ETA " + format_eta(eta_seconds);
   return line;
 }
 
@@ -71,7 +71,8 @@ void ProgressLine::draw(std::chrono::steady_clock::time_point t) {
   const int counted = done_ - options_.already_done;
   const double rate = elapsed > 0.0 && counted > 0 ? counted / elapsed : 0.0;
   const double eta = rate > 0.0 ? (total_ - done_) / rate : (done_ >= total_ ? 0.0 : -1.0);
-  std::string line = format_progress(options_.label, done_, total_, rate, eta < 0.0 ? -1.0 : eta);
+  std::string line =
+      format_progress(options_.label, done_, total_, rate, eta < 0.0 ? -1.0 : eta, options_.unit);
   const std::size_t length = line.size();
   // Blank out what is left of a longer previous line.
   if (length < last_length_) line.append(last_length_ - length, ' ');

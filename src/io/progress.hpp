@@ -22,6 +22,7 @@ struct ProgressOptions {
   ProgressMode mode = ProgressMode::automatic;
   std::ostream* out = nullptr;  // nullptr: std::cerr
   std::string label;            // printed before the counts with ": " when not empty
+  std::string unit = "frames";  // what is counted: "frames", "samples"
   int already_done = 0;         // frames done before this run (--resume): not counted in frames/s
   std::chrono::duration<double> min_interval{0.2};
   // Time source, injectable for tests; default std::chrono::steady_clock::now.
@@ -33,7 +34,7 @@ std::string format_eta(double seconds);
 
 // The line's text without '\r' or padding.
 std::string format_progress(const std::string& label, int done, int total, double frames_per_second,
-                            double eta_seconds);
+                            double eta_seconds, const std::string& unit = "frames");
 
 class ProgressLine {
  public:

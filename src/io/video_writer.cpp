@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "io/atomic_file.hpp"
+#include "io/temp_registry.hpp"
 
 namespace epviz::io {
 namespace {
@@ -185,6 +186,8 @@ VideoWriter::VideoWriter(fs::path target, VideoFormat format, int width, int hei
     throw VideoError("cannot write video '" + target_.string() + "': cannot start " +
                      options.ffmpeg + ": " + errno_text(e.errno_value));
   }
+  install_temporary_cleanup();
+  cleanup_slot_ = register_temporary(temporary_, ffmpeg_->pid());
 }
 
 VideoWriter::~VideoWriter() {
@@ -195,6 +198,7 @@ ExitStatus VideoWriter::wait_for_exit() noexcept {
   if (!ffmpeg_) return {};
   ffmpeg_->close_stdin();
   const ExitStatus status = ffmpeg_->wait();
+  forget_child(cleanup_slot_);
   ffmpeg_.reset();
   return status;
 }
@@ -206,6 +210,8 @@ void VideoWriter::abort() noexcept {
     wait_for_exit();
   }
   ::unlink(temporary_.c_str());
+  unregister_temporary(cleanup_slot_);
+  cleanup_slot_ = -1;
   if (stderr_fd_ >= 0) {
     ::close(stderr_fd_);
     stderr_fd_ = -1;
@@ -289,6 +295,8 @@ void VideoWriter::finish() {
     throw VideoError("cannot write video '" + target_.string() + "': cannot rename '" +
                      temporary_.string() + "': " + errno_text(error));
   }
+  unregister_temporary(cleanup_slot_);
+  cleanup_slot_ = -1;
   if (stderr_fd_ >= 0) {
     ::close(stderr_fd_);
     stderr_fd_ = -1;

@@ -7,7 +7,8 @@
 // the target's directory; finish() waits for ffmpeg and renames the temporary
 // over the target only if ffmpeg succeeded. A failed run, an exception or a
 // destructor without finish() kills ffmpeg and removes the temporary, so the
-// real name never holds a partial video.
+// real name never holds a partial video. On SIGINT/SIGTERM ffmpeg is killed and
+// the temporary removed (io/temp_registry.hpp).
 //
 // Sizes: mp4 and webm are encoded as yuv420p, which needs even width and
 // height; an odd size is rejected up front (std::invalid_argument naming the
@@ -136,6 +137,7 @@ class VideoWriter {
   std::size_t frames_ = 0;
   std::unique_ptr<Subprocess> ffmpeg_;  // null once reaped
   int stderr_fd_ = -1;                  // unlinked temporary holding ffmpeg's stderr
+  int cleanup_slot_ = -1;               // the temporary and ffmpeg in temp_registry.hpp
   bool finished_ = false;
 };
 

@@ -403,7 +403,7 @@ void EmbeddedRk<Sys, Tableau>::step() {
     double h = std::min(h_, opts_.h_max);
     if (attempts_ >= opts_.max_steps) [[unlikely]]
       fail(FailureKind::step_budget,
-           "more than " + std::to_string(opts_.max_steps) + " steps (the max_steps budget)");
+           "step budget of " + std::to_string(opts_.max_steps) + " steps exhausted");
     if (!(h >= 16.0 * std::numeric_limits<double>::epsilon() * std::abs(t_)) || h <= 0.0)
         [[unlikely]]
       fail(FailureKind::step_underflow, fmt("step size %.3g below the round-off limit", h));

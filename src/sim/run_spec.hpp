@@ -39,8 +39,9 @@ struct RunSpec {
   double step =
       1e-2;  // fixed-step methods: largest step; shortened so that it divides the sample spacing
   double t_end = 20.0;
-  int samples = 200;         // samples + 1 equally spaced output times from 0 to t_end
-  bool chart_switch = true;  // Riccati only: Moebius chart switch near the south pole
+  int samples = 200;             // samples + 1 equally spaced output times from 0 to t_end
+  bool chart_switch = true;      // Riccati only: Moebius chart switch near the south pole
+  long max_steps = 100'000'000;  // adaptive methods: step attempts before a step_budget failure
 };
 
 // The run of case `c`'s preset body and initial state with one method and

@@ -13,6 +13,12 @@ double cpu_now() {
   return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
+void finish(RunResult& r, const Trajectory& trajectory) {
+  r.stats = trajectory.stats();
+  r.effective_step = trajectory.effective_step();
+  r.chart_switches = trajectory.chart_switches();
+}
+
 }  // namespace
 
 RunResult simulate(const RunSpec& spec) {
@@ -29,9 +35,32 @@ RunResult simulate(const RunSpec& spec) {
     r.failure = e.failure();
   }
   r.cpu_seconds = cpu_now() - start;
-  r.stats = trajectory->stats();
-  r.effective_step = trajectory->effective_step();
-  r.chart_switches = trajectory->chart_switches();
+  r.samples_written = long(r.samples.size());
+  finish(r, *trajectory);
+  return r;
+}
+
+RunResult simulate(const RunSpec& spec, const SampleSink& sink) {
+  RunResult r;
+  double start = cpu_now();
+  auto trajectory = Trajectory::start(spec);
+  Sample s = trajectory->initial();
+  r.cpu_seconds += cpu_now() - start;
+  sink(s);
+  ++r.samples_written;
+  for (int k = 1; k <= spec.samples; ++k) {
+    start = cpu_now();
+    try {
+      s = trajectory->next();
+    } catch (const numerics::IntegrationError& e) {
+      r.failure = e.failure();
+    }
+    r.cpu_seconds += cpu_now() - start;
+    if (r.failure) break;
+    sink(s);
+    ++r.samples_written;
+  }
+  finish(r, *trajectory);
   return r;
 }
 

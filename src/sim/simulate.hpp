@@ -1,6 +1,7 @@
 #pragma once
 // Runs one model with one stepper to a list of output times.
 #include <Eigen/Geometry>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -19,7 +20,8 @@ struct Sample {
 };
 
 struct RunResult {
-  std::vector<Sample> samples;  // up to the failure, if any
+  std::vector<Sample> samples;  // up to the failure, if any (empty when streamed to a sink)
+  long samples_written = 0;     // samples produced, kept or streamed
   numerics::Stats stats;
   double cpu_seconds = 0.0;     // integration only: no I/O, no invariant bookkeeping
   double effective_step = 0.0;  // fixed-step methods: the step actually used
@@ -34,5 +36,12 @@ struct RunResult {
 // Numerical failure is not thrown: it ends the run and is returned in `failure`.
 // Throws std::invalid_argument for a spec that cannot run (incompatible method).
 RunResult simulate(const RunSpec& spec);
+
+// The same run, handing each sample to `sink` as it is produced instead of
+// keeping it, so that memory does not grow with spec.samples (result.samples
+// stays empty). cpu_seconds counts the integration only, not the sink.
+// Exceptions from the sink propagate.
+using SampleSink = std::function<void(const Sample&)>;
+RunResult simulate(const RunSpec& spec, const SampleSink& sink);
 
 }  // namespace epviz::sim

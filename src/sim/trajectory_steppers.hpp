@@ -108,6 +108,7 @@ std::unique_ptr<Trajectory> start_with(Sys sys, const RunSpec& spec) {
   numerics::AdaptiveOptions opts;
   opts.rtol = spec.tol;
   opts.atol = spec.tol;
+  opts.max_steps = spec.max_steps;
   switch (spec.method) {
     case Method::rk4: return fixed(numerics::Rk4<Sys>(sys), spec);
     case Method::dopri5: return adaptive(numerics::Dopri5<Sys>(sys, opts), spec);

@@ -227,7 +227,7 @@ TEST(Failure, MaxStepsExceeded) {
     while (s.t() < 1.0) s.step();
   });
   EXPECT_EQ(f.kind, FailureKind::step_budget);
-  EXPECT_TRUE(contains(f.detail, "more than 10 steps")) << f.detail;
+  EXPECT_TRUE(contains(f.detail, "step budget of 10 steps exhausted")) << f.detail;
   EXPECT_EQ(s.stats().steps, 10);
   EXPECT_NEAR(f.t, 0.1, 1e-12);
 }

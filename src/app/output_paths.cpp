@@ -1,0 +1,92 @@
+#include "app/output_paths.hpp"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <system_error>
+
+#include "app/usage_error.hpp"
+#include "io/atomic_file.hpp"
+
+namespace epviz::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Room left in a file name for "_000123.png" or ".tmp-<pid>" after output.name.
+constexpr std::size_t kLongestName = 200;
+
+std::string in_quotes(const fs::path& p) {
+  std::string text(1, '\'');
+  text += p.string();
+  text += '\'';
+  return text;
+}
+
+std::string errno_text(int error) { return std::system_category().message(error); }
+
+bool writable_directory(const fs::path& dir) { return ::access(dir.c_str(), W_OK | X_OK) == 0; }
+
+}  // namespace
+
+void check_output_file(const std::string& option, const std::string& path) {
+  if (path.empty() || path == "-") return;
+  if (path.back() == '/')
+    throw UsageError(option + ": " + in_quotes(path) + " names a directory; give a file name");
+  io::OutputTarget target;
+  try {
+    target = io::resolve_output(path);
+  } catch (const io::FileWriteError& e) {
+    throw UsageError(option + ": " + e.what());
+  }
+  if (target.kind == io::OutputKind::stream) {
+    std::error_code ec;
+    if (fs::is_directory(target.path, ec))
+      throw UsageError(option + ": " + in_quotes(path) + " is a directory; give a file name");
+    if (::access(target.path.c_str(), W_OK) != 0)
+      throw UsageError(option + ": cannot write " + in_quotes(path) + ": " + errno_text(errno));
+    return;
+  }
+  fs::path dir = target.path.parent_path();
+  if (dir.empty()) dir = ".";
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))
+    throw UsageError(option + ": directory " + in_quotes(fs::absolute(dir)) + " does not exist");
+  if (!writable_directory(dir))
+    throw UsageError(option + ": directory " + in_quotes(fs::absolute(dir)) +
+                     " is not writable: " + errno_text(errno));
+}
+
+void check_output_dir(const std::string& what, const fs::path& dir) {
+  std::error_code ec;
+  const fs::path absolute = fs::absolute(dir, ec);
+  fs::path existing = absolute;
+  while (!fs::exists(existing, ec) && existing.has_relative_path())
+    existing = existing.parent_path();
+  if (!fs::is_directory(existing, ec)) {
+    if (existing == absolute)
+      throw UsageError(what + ": " + in_quotes(dir) + " exists and is not a directory");
+    throw UsageError(what + ": cannot create " + in_quotes(dir) + ": " + in_quotes(existing) +
+                     " is not a directory");
+  }
+  if (!writable_directory(existing)) {
+    const int error = errno;
+    if (existing == absolute)
+      throw UsageError(what + ": directory " + in_quotes(dir) +
+                       " is not writable: " + errno_text(error));
+    throw UsageError(what + ": cannot create " + in_quotes(dir) + ": " + in_quotes(existing) +
+                     " is not writable: " + errno_text(error));
+  }
+}
+
+void check_file_name(const std::string& what, const std::string& name) {
+  const char* allowed =
+      ": expected a file name: not empty, not '.' or '..', without '/', NUL or control characters, "
+      "at most 200 bytes";
+  bool bad = name.empty() || name == "." || name == ".." || name.size() > kLongestName;
+  for (const unsigned char c : name) bad = bad || c == '/' || c < 0x20 || c == 0x7f;
+  if (bad) throw UsageError(what + allowed);
+}
+
+}  // namespace epviz::app

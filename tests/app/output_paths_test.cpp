@@ -1,0 +1,132 @@
+// Every output path is checked before any work: exit 2, one line naming the
+// option (or file and key), nothing written.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+
+namespace epviz {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::size_t lines(const std::string& s) {
+  return std::size_t(std::count(s.begin(), s.end(), '\n'));
+}
+
+void expect_usage_error(const test::CliResult& r, const std::string& must_name) {
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(lines(r.err), 1u) << r.err;
+  EXPECT_NE(r.err.find(must_name), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << "work was done before the check:\n" << r.out;
+}
+
+TEST(SimulateOutputPaths, ReportJsonDirectoryIsRefusedBeforeWork) {
+  test::TempDir dir;
+  fs::create_directories(dir / "reports");
+  const auto r = test::run_epviz("simulate --case euler --csv " + (dir / "s.csv").string() +
+                                     " --report-json " + (dir / "reports").string(),
+                                 dir);
+  expect_usage_error(r, "--report-json");
+  EXPECT_FALSE(fs::exists(dir / "s.csv")) << "the CSV was written despite exit 2";
+}
+
+TEST(SimulateOutputPaths, CsvDirectoryIsRefused) {
+  test::TempDir dir;
+  fs::create_directories(dir / "out");
+  expect_usage_error(test::run_epviz("simulate --case euler --csv " + (dir / "out").string(), dir),
+                     "--csv");
+  expect_usage_error(test::run_epviz("simulate --case euler --csv " + (dir / "x/").string(), dir),
+                     "--csv");
+}
+
+TEST(SimulateOutputPaths, CsvInMissingDirectoryIsRefused) {
+  test::TempDir dir;
+  expect_usage_error(
+      test::run_epviz("simulate --case euler --csv " + (dir / "no" / "s.csv").string(), dir),
+      "--csv");
+}
+
+TEST(SimulateOutputPaths, UnwritableDirectoryIsRefused) {
+  if (::geteuid() == 0) GTEST_SKIP() << "root may write anywhere";
+  test::TempDir dir;
+  fs::create_directories(dir / "ro");
+  fs::permissions(dir / "ro", fs::perms::owner_read | fs::perms::owner_exec);
+  const auto r = test::run_epviz(
+      "simulate --case euler --report-json " + (dir / "ro" / "r.json").string(), dir);
+  fs::permissions(dir / "ro", fs::perms::owner_all);
+  expect_usage_error(r, "--report-json");
+}
+
+nlohmann::json small_job(const fs::path& out) {
+  return {{"simulation", {{"case", "lagrange"}, {"t_end", 1.0}}},
+          {"width", 64},
+          {"height", 48},
+          {"fps", 2},
+          {"duration", 1},
+          {"output", {{"dir", out.string()}, {"format", "png"}, {"name", "frame"}}}};
+}
+
+fs::path write_job(const test::TempDir& dir, const nlohmann::json& j) {
+  std::ofstream(dir / "job.json") << j.dump(2);
+  return dir / "job.json";
+}
+
+TEST(RenderOutputPaths, OutThatIsAFileIsRefused) {
+  test::TempDir dir;
+  std::ofstream(dir / "taken") << "a file";
+  const auto job = write_job(dir, small_job(dir / "frames"));
+  expect_usage_error(
+      test::run_epviz("render " + job.string() + " --out " + (dir / "taken").string(), dir),
+      "--out");
+  EXPECT_EQ(test::slurp(dir / "taken"), "a file");
+}
+
+TEST(RenderOutputPaths, OutputDirBelowAFileIsRefused) {
+  test::TempDir dir;
+  std::ofstream(dir / "taken") << "a file";
+  const auto job = write_job(dir, small_job(dir / "taken" / "frames"));
+  expect_usage_error(test::run_epviz("render " + job.string(), dir), "output.dir");
+}
+
+TEST(RenderOutputPaths, ReportJsonDirectoryIsRefusedBeforeRendering) {
+  test::TempDir dir;
+  fs::create_directories(dir / "reports");
+  const auto job = write_job(dir, small_job(dir / "frames"));
+  expect_usage_error(
+      test::run_epviz("render " + job.string() + " --report-json " + (dir / "reports").string(),
+                      dir),
+      "--report-json");
+  EXPECT_FALSE(fs::exists(dir / "frames")) << "frames rendered despite exit 2";
+}
+
+TEST(RenderOutputPaths, OutputNamesThatAreNotFileNamesAreRefused) {
+  for (const std::string name :
+       {std::string("a\0b", 3), std::string("sub/frame"), std::string(".."),
+        std::string("line\nbreak"), std::string(300, 'n')}) {
+    test::TempDir dir;
+    auto j = small_job(dir / "frames");
+    j["output"]["name"] = name;
+    const auto job = write_job(dir, j);
+    const auto r = test::run_epviz("render " + job.string(), dir);
+    expect_usage_error(r, "output.name");
+    EXPECT_FALSE(fs::exists(dir / "frames")) << "frames rendered despite exit 2";
+  }
+}
+
+TEST(RenderOutputPaths, ReportJsonDashPutsOnlyTheReportOnStandardOutput) {
+  test::TempDir dir;
+  const auto job = write_job(dir, small_job(dir / "frames"));
+  const auto r = test::run_epviz("render " + job.string() + " --quiet --report-json -", dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const auto report = nlohmann::json::parse(r.out);  // throws if the summary line got in
+  EXPECT_EQ(report["frames_drawn"], 2);
+  EXPECT_NE(r.err.find("frames"), std::string::npos) << "the summary line goes to stderr";
+  EXPECT_FALSE(fs::exists(dir / "-"));
+}
+
+}  // namespace
+}  // namespace epviz

@@ -1,0 +1,115 @@
+// Temporaries do not outlive a run: SIGTERM/SIGINT remove them, and a later
+// run into the same directory removes those of processes that no longer exist
+// (SIGKILL cannot be caught).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "cli_runner.hpp"
+
+namespace epviz {
+namespace {
+
+namespace fs = std::filesystem;
+
+pid_t dead_pid() {
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  ::waitpid(child, nullptr, 0);
+  return child;
+}
+
+std::vector<std::string> temporaries_in(const fs::path& dir) {
+  std::vector<std::string> found;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec))
+    if (e.path().filename().string().find(".tmp-") != std::string::npos)
+      found.push_back(e.path().filename().string());
+  return found;
+}
+
+nlohmann::json video_job(const fs::path& out, double seconds) {
+  return {{"simulation", {{"case", "lagrange"}, {"t_end", seconds}}},
+          {"width", 160},
+          {"height", 120},
+          {"fps", 30},
+          {"duration", seconds},
+          {"output", {{"dir", out.string()}, {"format", "mp4"}, {"name", "clip"}}}};
+}
+
+pid_t start_epviz(const std::vector<std::string>& args) {
+  const pid_t child = ::fork();
+  if (child == 0) {
+    std::freopen("/dev/null", "w", stdout);
+    std::freopen("/dev/null", "w", stderr);
+    std::vector<char*> argv{const_cast<char*>(EPVIZ_BINARY)};
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::execv(EPVIZ_BINARY, argv.data());
+    ::_exit(127);
+  }
+  return child;
+}
+
+void expect_signal_cleans_up_video(int sig) {
+  test::TempDir dir;
+  const auto out = dir / "video";
+  std::ofstream(dir / "job.json") << video_job(out, 60.0).dump();
+  const pid_t child = start_epviz({"render", (dir / "job.json").string()});
+  ASSERT_GT(child, 0);
+  const auto temporary = out / ("clip.mp4.tmp-" + std::to_string(child));
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!fs::exists(temporary) && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ASSERT_TRUE(fs::exists(temporary)) << "the render never started writing " << temporary;
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // mid-way through the frames
+  ::kill(child, sig);
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == sig) << "status " << status;
+  // ffmpeg was killed by the handler; give the kernel a moment to close its files.
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  EXPECT_TRUE(temporaries_in(out).empty()) << temporaries_in(out).front();
+  EXPECT_FALSE(fs::exists(out / "clip.mp4")) << "a partial video under the real name";
+}
+
+TEST(Signals, SigtermDuringVideoRenderLeavesNoTemporary) { expect_signal_cleans_up_video(SIGTERM); }
+TEST(Signals, SigintDuringVideoRenderLeavesNoTemporary) { expect_signal_cleans_up_video(SIGINT); }
+
+TEST(Signals, RenderRemovesStaleTemporariesOfDeadProcesses) {
+  test::TempDir dir;
+  const auto out = dir / "frames";
+  fs::create_directories(out);
+  const auto stale = out / ("x.mp4.tmp-" + std::to_string(dead_pid()));
+  const auto live = out / ("y.mp4.tmp-" + std::to_string(::getpid()));  // this test is alive
+  std::ofstream(stale) << "left by a killed run";
+  std::ofstream(live) << "being written";
+  nlohmann::json j = video_job(out, 1.0);
+  j["output"]["format"] = "png";
+  j["fps"] = 2;
+  std::ofstream(dir / "job.json") << j.dump();
+  const auto r = test::run_epviz("render " + (dir / "job.json").string(), dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(stale)) << "stale temporary of a dead process kept";
+  EXPECT_TRUE(fs::exists(live)) << "temporary of a live process removed";
+}
+
+TEST(Signals, SimulateRemovesStaleTemporariesBesideItsOutputs) {
+  test::TempDir dir;
+  const auto stale = dir / ("s.csv.tmp-" + std::to_string(dead_pid()));
+  std::ofstream(stale) << "left by a killed run";
+  const auto r =
+      test::run_epviz("simulate --case euler --samples 5 --csv " + (dir / "s.csv").string(), dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(stale));
+  EXPECT_TRUE(fs::exists(dir / "s.csv"));
+}
+
+}  // namespace
+}  // namespace epviz
