@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "app/cli_values.hpp"
 #include "app/render_job.hpp"
@@ -13,6 +15,7 @@
 #include "io/data_dir.hpp"
 #include "live/live_session.hpp"
 #include "render/gl_context.hpp"
+#include "serve/origin_policy.hpp"
 #include "serve/server.hpp"
 
 namespace epviz::app {
@@ -23,6 +26,7 @@ namespace fs = std::filesystem;
 struct ServeOptions {
   std::string job, bind = "127.0.0.1", gl, image = "jpeg", save_dir, record;
   std::string port = "8080", quality = "85";
+  std::vector<std::string> allow_origins;
   bool play = false;
 };
 
@@ -76,6 +80,14 @@ int run_serve(const ServeOptions& o) {
                      " (set EPVIZ_DATA_DIR)");
   }
   so.record_path = o.record;
+  for (const std::string& origin : o.allow_origins) {
+    const auto normalized = serve::OriginPolicy::normalize_origin(origin);
+    if (!normalized)
+      throw UsageError("--allow-origin: '" + origin +
+                       "' is not an origin (allowed: http://HOST[:PORT] or https://HOST[:PORT], "
+                       "no path)");
+    so.allowed_origins.push_back(*normalized);
+  }
   so.log = [](const std::string& line) { std::fprintf(stderr, "epviz serve: %s\n", line.c_str()); };
 
   const std::string backend = o.gl.empty() ? render::gl_backend_from_environment() : o.gl;
@@ -147,6 +159,10 @@ std::function<int()> add_serve_command(CLI::App& app) {
   cmd->add_option("--quality", o->quality, "JPEG quality 1..100")->capture_default_str();
   cmd->add_option("--save-dir", o->save_dir,
                   "also write saved frames and jobs here (default: browser downloads only)");
+  cmd->add_option("--allow-origin", o->allow_origins,
+                  "also accept WebSocket connections from pages of this origin "
+                  "(http[s]://HOST[:PORT]; repeatable); by default only the server's own page")
+      ->allow_extra_args(false);
   cmd->add_flag("--play", o->play, "start playing");
   cmd->add_option("--record", o->record,
                   "record the first connection's events (replayed by the tests)");

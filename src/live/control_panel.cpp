@@ -43,6 +43,9 @@ LiveSetup edited_body(LiveSetup s, physics::Case chosen, Edited what) {
                         ? physics::Case::custom
                         : chosen;
   }
+  // A job's title describes its case ("Kovalevskaya top"); a body that left
+  // the case is titled by what it is now.
+  if (s.run.case_id != chosen) s.scene.title.clear();
   return s;
 }
 
@@ -75,6 +78,11 @@ void ControlPanel::note_item(const char* name) {
   controls_[name] = {a.x, a.y, b.x - a.x, b.y - a.y};
 }
 
+void ControlPanel::note_window(const char* name) {
+  const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  controls_[name] = {pos.x, pos.y, size.x, size.y};
+}
+
 bool ControlPanel::contains(float x, float y) const {
   const auto it = controls_.find("panel");
   if (it == controls_.end()) return false;
@@ -91,9 +99,16 @@ PanelActions ControlPanel::draw(const LiveScene& scene, const render::Viewport& 
   ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f),
                                       ImVec2(width, std::max(80.0f, float(area.height) - 16.0f)));
   ImGui::SetNextWindowBgAlpha(0.82f);
-  const bool open = ImGui::Begin("epviz", nullptr,
-                                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
-                                     ImGuiWindowFlags_AlwaysAutoResize);
+  // The panel may let the scene show through; a combo's list over the panel
+  // must not, or the panel's text reads through the list's items.
+  ImVec4 popup_bg = ImGui::GetStyle().Colors[ImGuiCol_PopupBg];
+  popup_bg.w = 1.0f;
+  ImGui::PushStyleColor(ImGuiCol_PopupBg, popup_bg);
+  // As tall as its contents up to the view's height, scrolling beyond it
+  // (an always-auto-resizing window would cut off what does not fit).
+  ImGui::SetNextWindowSize(ImVec2(width, 0.0f), ImGuiCond_Always);
+  const bool open =
+      ImGui::Begin("epviz", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
   if (open) {
     ImGui::PushItemWidth(-9.0f * font);  // room for the labels on the right
     draw_playback(scene, out);
@@ -107,7 +122,6 @@ PanelActions ControlPanel::draw(const LiveScene& scene, const render::Viewport& 
     if (header("Integrator", "header:integrator", false)) draw_integrator(scene, out);
     if (header("View", "header:view", false)) draw_view(scene, out);
     if (header("Invariant drift", "header:drift", true)) draw_drift(scene);
-    if (header("Save", "header:save", false)) draw_save();
     ImGui::PopItemWidth();
   }
   const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
@@ -115,6 +129,7 @@ PanelActions ControlPanel::draw(const LiveScene& scene, const render::Viewport& 
   collapsed_ = !open;
   occupied_width_ = int(std::ceil(pos.x + size.x + 8.0f));
   ImGui::End();
+  ImGui::PopStyleColor();
   return out;
 }
 
@@ -148,6 +163,10 @@ void ControlPanel::draw_playback(const LiveScene& scene, PanelActions& out) {
   if (ImGui::Button("Save job", ImVec2(button_w, 0))) out.save_job = true;
   note_item("save_job");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("a render job file that `epviz render` accepts");
+  // The name on the same row: a section of its own ended up below the fold.
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(std::max(2.0f * button_w / 5.5f, ImGui::GetContentRegionAvail().x));
+  draw_save();
   ImGui::TextDisabled("Space: play/pause   R: restart   S: step");
   if (scene.failure()) {
     ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
@@ -167,6 +186,7 @@ void ControlPanel::draw_case_and_body(const LiveScene& scene, PanelActions& out)
   const std::string preview =
       current == physics::Case::custom ? "custom body" : physics::case_name(current);
   if (ImGui::BeginCombo("case", preview.c_str())) {
+    note_window("list:case");
     for (const auto& p : physics::case_presets()) {
       if (ImGui::Selectable(p.name.c_str(), p.id == current)) out.load_case = p.id;
       note_item(("case:" + p.name).c_str());
@@ -186,10 +206,18 @@ void ControlPanel::draw_case_and_body(const LiveScene& scene, PanelActions& out)
   if (current == physics::Case::custom) ImGui::EndDisabled();
   if (current != physics::Case::custom && current != physics::Case::generic)
     ImGui::TextWrapped("conditions: %s", case_conditions_summary(current));
-  if (auto broken = physics::broken_condition(current, s.run.body, s.run.initial)) {
+  if (current != physics::Case::custom) left_case_ = current;
+  // A custom body that came from a case says which of its conditions it broke.
+  const physics::Case judged = current == physics::Case::custom ? left_case_ : current;
+  if (auto broken = physics::broken_condition(judged, s.run.body, s.run.initial)) {
     ImGui::PushStyleColor(ImGuiCol_Text, kWarnColour);
-    ImGui::TextWrapped("%s", broken->c_str());
+    if (judged != current)
+      ImGui::TextWrapped("not the %s case: %s", physics::case_name(judged).c_str(),
+                         broken->c_str());
+    else
+      ImGui::TextWrapped("%s", broken->c_str());
     ImGui::PopStyleColor();
+    note_item("broken");
   }
 
   LiveSetup e = s;
@@ -223,22 +251,29 @@ void ControlPanel::draw_case_and_body(const LiveScene& scene, PanelActions& out)
 void ControlPanel::draw_integrator(const LiveScene& scene, PanelActions& out) {
   const LiveSetup& s = scene.setup();
   LiveSetup e = s;
-  if (ImGui::BeginCombo("formulation", std::string(sim::name(s.run.formulation)).c_str())) {
+  // The formulation the scene runs, which the view may have chosen (the
+  // space view needs the spinor form) rather than the one in the setup.
+  const sim::Formulation running = scene.formulation();
+  shown_formulation_ = running;
+  if (ImGui::BeginCombo("formulation", std::string(sim::name(running)).c_str())) {
+    note_window("list:formulation");
     for (auto f : sim::all_formulations()) {
       const bool usable = !sim::incompatibility(s.run.method, f) &&
                           (s.scene.view != scene::View::space || f == sim::Formulation::spinor);
       if (!usable) ImGui::BeginDisabled();
-      if (ImGui::Selectable(std::string(sim::name(f)).c_str(), f == s.run.formulation)) {
+      if (ImGui::Selectable(std::string(sim::name(f)).c_str(), f == running)) {
         e.run.formulation = f;
         e.scene.formulation_given = true;
         out.rerun = e;
       }
+      note_item(("formulation:" + std::string(sim::name(f))).c_str());
       if (!usable) ImGui::EndDisabled();
     }
     ImGui::EndCombo();
   }
   note_item("formulation");
   if (ImGui::BeginCombo("method", std::string(sim::name(s.run.method)).c_str())) {
+    note_window("list:method");
     for (auto m : sim::all_methods()) {
       const bool usable = !sim::incompatibility(m, s.run.formulation);
       if (!usable) ImGui::BeginDisabled();
@@ -324,14 +359,15 @@ void ControlPanel::draw_drift(const LiveScene& scene) {
 void ControlPanel::draw_save() {
   char name[64];
   std::snprintf(name, sizeof name, "%s", save_name_.c_str());
-  if (ImGui::InputText("file name", name, sizeof name)) {
+  if (ImGui::InputText("##file name", name, sizeof name)) {
     std::string n = name;
     n.erase(std::remove_if(n.begin(), n.end(), [](char c) { return c == '/' || c == '\\'; }),
             n.end());
     if (!n.empty()) save_name_ = n;
   }
   note_item("file_name");
-  ImGui::TextDisabled("frames: <name>_t<time>.png, jobs: <name>.json");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("file name: frames <name>_t<time>.png, jobs <name>.json");
 }
 
 }  // namespace epviz::live

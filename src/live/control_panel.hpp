@@ -35,20 +35,24 @@ class ControlPanel {
   void set_message(std::string text, bool error = false);
   // Where the named controls were in the last frame: "play", "step",
   // "restart", "speed", "case", "case:<name>" (items of the open combo),
-  // "stay", "I1", "I2", "I3", "weight", "formulation", "method",
-  // "method:<name>", "header:<section>", "file_name", "save_frame",
-  // "save_job", and "panel" (the whole window).
+  // "stay", "broken" (a broken condition's line), "I1", "I2", "I3", "weight", "formulation", "formulation:<name>",
+  // "method", "method:<name>", "list:case" / "list:formulation" /
+  // "list:method" (an open combo's list), "header:<section>", "file_name",
+  // "save_frame", "save_job", and "panel" (the whole window).
   const std::map<std::string, Rect>& controls() const { return controls_; }
   // Whether (x, y) is on the panel (a press there is the panel's, not an orbit).
   bool contains(float x, float y) const;
   // The pixels the expanded panel takes from the left edge (0 when collapsed
   // or not drawn yet), so the scene can be laid out beside it.
   int occupied_width() const { return collapsed_ ? 0 : occupied_width_; }
+  // The formulation the formulation box showed last (the one the scene integrates).
+  sim::Formulation shown_formulation() const { return shown_formulation_; }
   // The file name stem for saved frames and jobs (editable in the panel).
   const std::string& save_name() const { return save_name_; }
 
  private:
-  void note_item(const char* name);  // records the last item's rectangle
+  void note_item(const char* name);    // records the last item's rectangle
+  void note_window(const char* name);  // records the current window's (a combo's list)
   void draw_playback(const LiveScene& scene, PanelActions& out);
   void draw_case_and_body(const LiveScene& scene, PanelActions& out);
   void draw_integrator(const LiveScene& scene, PanelActions& out);
@@ -62,6 +66,8 @@ class ControlPanel {
   bool collapsed_ = false;
   int occupied_width_ = 0;
   std::string save_name_ = "epviz_live";
+  sim::Formulation shown_formulation_ = sim::Formulation::direct;
+  physics::Case left_case_ = physics::Case::custom;  // the last named case shown
 };
 
 }  // namespace epviz::live

@@ -1,15 +1,31 @@
 #include "live/job_file.hpp"
 
+#include <algorithm>
+
 #include "job/schema.hpp"
+#include "scene/plan.hpp"
 
 namespace epviz::live {
 namespace {
 
 std::array<double, 3> vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
+// The horizon LiveScene plans an open-ended run's automatic tolerance for
+// (live_scene.cpp, kToleranceHorizon): the two must agree, which
+// job_file_moment_test checks against the live scene's own note.
+constexpr double kLiveToleranceHorizon = 1e4;
+
 }  // namespace
 
-job::JobDocument job_document(const LiveSetup& setup, const std::string& name, double duration_s) {
+std::optional<double> live_tolerance(const LiveSetup& setup) {
+  if (!sim::is_adaptive(setup.run.method) || !setup.scene.auto_tolerance) return std::nullopt;
+  sim::RunSpec run = setup.run;
+  run.t_end = std::max(run.t_end, kLiveToleranceHorizon);
+  return scene::plan_scene(run, setup.scene).run.tol;
+}
+
+job::JobDocument job_document(const LiveSetup& setup, const std::string& name,
+                              const LiveMoment& moment, double duration_s) {
   const auto& run = setup.run;
   const std::string from = "the live setup";
   job::JobDocument d;
@@ -23,25 +39,30 @@ job::JobDocument job_document(const LiveSetup& setup, const std::string& name, d
   sim.gamma.set(vec(run.initial.gamma), from);
   sim.formulation.set(std::string(sim::name(run.formulation)), from);
   sim.method.set(std::string(sim::name(run.method)), from);
-  // An adaptive method's tolerance ("auto" unless it was chosen), a fixed step otherwise.
+  // The tolerance the live run uses, as a number: "auto" would be chosen
+  // again for the job's shorter run, looser than what was seen.
   if (!sim::is_adaptive(run.method))
     sim.step.set(run.step, from);
-  else if (!setup.scene.auto_tolerance)
-    sim.tol.set(run.tol, from);
+  else
+    sim.tol.set(moment.tolerance.value_or(run.tol), from);
   if (run.formulation == sim::Formulation::riccati) sim.chart_switch.set(run.chart_switch, from);
-  sim.t_end.set(setup.speed * duration_s, from);
+  // From t = 0 through the time reached and `duration_s` more, at the live speed.
+  const double t_end = std::max(moment.time, 0.0) + setup.speed * duration_s;
+  sim.t_end.set(t_end, from);
 
   d.scene = setup.scene;
+  if (sim::is_adaptive(run.method)) d.scene.auto_tolerance = false;  // the tol written is the one
   d.scene.fps = 30.0;
-  d.scene.duration = duration_s;
+  d.scene.duration = t_end / std::max(setup.speed, 1e-9);
   d.output.dir = "out/" + name;
   d.output.format = job::OutputFormat::mp4;
   d.output.name = name;
   return d;
 }
 
-std::string render_job_json(const LiveSetup& setup, const std::string& name, double duration_s) {
-  return job::write_job(job_document(setup, name, duration_s)).dump(2) + "\n";
+std::string render_job_json(const LiveSetup& setup, const std::string& name,
+                            const LiveMoment& moment, double duration_s) {
+  return job::write_job(job_document(setup, name, moment, duration_s)).dump(2) + "\n";
 }
 
 }  // namespace epviz::live

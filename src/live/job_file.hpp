@@ -1,7 +1,9 @@
 #pragma once
 // The current interactive setup as a render job (render_jobs/*.json format)
-// that `epviz render` accepts: the same body, state, integrator and view, a
-// video of `duration` seconds at the live speed.
+// that `epviz render` accepts: the same body, state, integrator, camera and
+// view, at the live speed. Render jobs start at t = 0 (the format has no
+// start time), so the job's t_end covers the time the live scene has reached
+// and `duration` seconds more.
 #include <string>
 
 #include "job/document.hpp"
@@ -9,14 +11,28 @@
 
 namespace epviz::live {
 
+// What the live scene runs with beyond its setup.
+struct LiveMoment {
+  double time = 0.0;  // the simulation time shown
+  // The tolerance of an adaptive method with the automatic tolerance: the
+  // one the live run uses (for its long horizon), which a render of a
+  // shorter run would choose looser. Unset: the setup's own.
+  std::optional<double> tolerance;
+};
+
 // The job's content. `name` is the output stem (out/<name>/...). The body and
 // state are given in full, so the job reproduces an edited body; the case is
-// named only when its conditions hold (else the run is a custom body).
+// named only when its conditions hold (else the run is a custom body). The
+// tolerance or step is written as a number, never "auto".
 job::JobDocument job_document(const LiveSetup& setup, const std::string& name,
-                              double duration_s = 10.0);
+                              const LiveMoment& moment = {}, double duration_s = 10.0);
 
 // job_document written in the job format (job/schema.hpp).
 std::string render_job_json(const LiveSetup& setup, const std::string& name,
-                            double duration_s = 10.0);
+                            const LiveMoment& moment = {}, double duration_s = 10.0);
+
+// The tolerance the live scene runs `setup` with (its plan for an open-ended
+// run), or nullopt when the method has a fixed step or the tolerance is set.
+std::optional<double> live_tolerance(const LiveSetup& setup);
 
 }  // namespace epviz::live

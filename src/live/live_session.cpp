@@ -2,11 +2,13 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
 #include "io/atomic_file.hpp"
 #include "io/png_writer.hpp"
+#include "job/schema.hpp"
 #include "live/camera_control.hpp"
 #include "live/job_file.hpp"
 
@@ -113,7 +115,10 @@ const render::RgbaImage& LiveSession::render() {
   const double dt = wall_seconds_since_last_frame();
   render::ImGuiOverlay& gui = painter_->gui();
   gui.set_delta_time(float(dt));
-  gui_input_.apply(gui.context(), [this](const render::InputEvent& e) { observe(e); });
+  if (hold_input_frames_ > 0)
+    --hold_input_frames_;
+  else
+    gui_input_.apply(gui.context(), [this](const render::InputEvent& e) { observe(e); });
   scene_.update(dt);
   const scene::Frame& frame = scene_.frame();
   // The scene moves right of the expanded panel when the window is wide
@@ -129,6 +134,11 @@ const render::RgbaImage& LiveSession::render() {
   PanelActions actions;
   const render::RgbaImage& image = painter_->paint(frame, [&] {
     actions = panel_.draw(scene_, render::Viewport{0, 0, width_, height_});
+    const bool popup_open =
+        ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
+    // Hidden in this frame (laid out), shown in the next, hoverable after it.
+    if (popup_open && !popup_was_open_) hold_input_frames_ = 2;
+    popup_was_open_ = popup_open;
   });
   if (panel_.occupied_width() != panel_px)
     settle_frames_ = kSettleFrames;  // lay the scene out again
@@ -199,9 +209,21 @@ void LiveSession::save_frame() {
 }
 
 void LiveSession::save_job() {
-  const std::string text = render_job_json(scene_.setup(), panel_.save_name());
+  const LiveSetup& setup = scene_.setup();
+  const LiveMoment moment{scene_.time(), live_tolerance(setup)};
+  const job::JobDocument job = job_document(setup, panel_.save_name(), moment);
+  const std::string text = job::write_job(job).dump(2) + "\n";
   deliver({panel_.save_name() + ".json", "application/json",
            std::vector<std::uint8_t>(text.begin(), text.end())});
+  // Render jobs have no start time: say where the moment seen lies in the video.
+  if (moment.time > 0) {
+    char note[200];
+    std::snprintf(note, sizeof note,
+                  "the job runs from t = 0 (jobs have no start time): t = %.3f is at %.1f s of "
+                  "its video, which ends at t = %.3f",
+                  moment.time, moment.time / std::max(setup.speed, 1e-9), *job.simulation.t_end);
+    notices_.push_back(note);
+  }
 }
 
 std::vector<serve::Download> LiveSession::take_downloads() { return std::exchange(downloads_, {}); }

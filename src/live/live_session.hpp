@@ -72,6 +72,12 @@ class LiveSession : public serve::Session {
   render::Viewport view_3d_;
   std::optional<std::pair<float, float>> drag_;  // last pointer position of an orbit drag
   int settle_frames_ = 1;  // frames still to draw after a change (ImGui needs one or two to settle)
+  // Frames still drawn without applying input, after a popup (a combo's
+  // list) opened: ImGui lays a new popup out unseen in its first frame and
+  // hovers only what the previous frame showed, so a pick that arrived with
+  // the click that opened the list would land on nothing and close it.
+  int hold_input_frames_ = 0;
+  bool popup_was_open_ = false;
   bool save_frame_pending_ = false;
   std::vector<serve::Download> downloads_;
   std::vector<std::string> notices_;

@@ -38,7 +38,30 @@ std::optional<std::string> read_file(const std::filesystem::path& path) {
   return std::move(text).str();
 }
 
+std::string peer_of(beast::tcp_stream& stream) {
+  beast::error_code ec;
+  const auto endpoint = stream.socket().remote_endpoint(ec);
+  if (ec) return "an unknown address";
+  return endpoint.address().to_string() + ":" + std::to_string(endpoint.port());
+}
+
 }  // namespace
+
+std::optional<std::string> HttpSession::refusal(const Request& request) const {
+  const OriginPolicy& policy = *context_.origins;
+  const auto host = request.find(http::field::host);
+  const auto view = [](boost::beast::string_view v) {
+    return std::string_view(v.data(), v.size());
+  };
+  const std::string_view host_text =
+      host == request.end() ? std::string_view() : view(host->value());
+  if (auto problem = policy.host_problem(host_text)) return problem;
+  if (!websocket::is_upgrade(request)) return std::nullopt;
+  const auto origin = request.find(http::field::origin);
+  return policy.origin_problem(origin != request.end(),
+                               origin == request.end() ? std::string_view() : view(origin->value()),
+                               host_text);
+}
 
 HttpSession::HttpSession(boost::asio::ip::tcp::socket socket, NetworkContext& context)
     : stream_(std::move(socket)), context_(context) {}
@@ -65,6 +88,11 @@ void HttpSession::on_request(beast::error_code ec) {
   }
   Request request = parser_->release();
   const std::string path = path_of(request);
+  if (auto problem = refusal(request)) {
+    context_.log("refused a request for " + std::string(path.substr(0, 100)) + " from " +
+                 peer_of(stream_) + ": " + *problem);
+    return respond(request, http::status::forbidden, "text/plain", *problem + "\n");
+  }
   if (websocket::is_upgrade(request)) {
     if (path == "/ws") return upgrade(std::move(request));
     return respond(request, http::status::not_found, "text/plain",

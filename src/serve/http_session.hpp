@@ -1,9 +1,11 @@
 #pragma once
-// A freshly accepted TCP connection speaking HTTP: serves the page at "/",
-// 404 elsewhere, and hands an upgrade request for "/ws" to a new
+// A freshly accepted TCP connection speaking HTTP: refuses (403) requests
+// whose Host does not name this server and upgrades from other pages'
+// origins (OriginPolicy), serves the page at "/", 404 elsewhere, and hands an upgrade request for "/ws" to a new
 // WebSocketConnection (or refuses it with 503 when max_clients are connected).
 #include <memory>
 #include <optional>
+#include <string>
 
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/beast/core.hpp>
@@ -22,6 +24,8 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   using Request = boost::beast::http::request<boost::beast::http::string_body>;
   using Response = boost::beast::http::response<boost::beast::http::string_body>;
 
+  // Why the request is refused (Host, and Origin for an upgrade), or nullopt.
+  std::optional<std::string> refusal(const Request& request) const;
   void read_request();
   void on_request(boost::beast::error_code ec);
   void upgrade(Request request);

@@ -5,8 +5,10 @@
 // outlives every connection.
 #include <functional>
 #include <memory>
+#include <optional>
 #include <unordered_map>
 
+#include "serve/origin_policy.hpp"
 #include "serve/server.hpp"
 #include "serve/shared_state.hpp"
 
@@ -24,6 +26,7 @@ struct NetworkContext {
   ServerCounters& counters;
   RenderHub& hub;
 
+  std::optional<OriginPolicy> origins;  // set once the port is bound, before the first accept
   long next_id = 1;
   int websocket_clients = 0;  // upgraded or upgrading; max_clients bounds this
   bool stopping = false;      // no new connections; the last one to finish calls on_all_closed

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <exception>
 #include <stdexcept>
 #include <type_traits>
@@ -17,6 +18,8 @@ double ms_since(Clock::time_point start) {
 
 // Smaller than this and a view is useless (and some encoders dislike tiny images).
 constexpr int min_view_pixels = 16;
+
+int scaled(int size, double scale) { return std::max(min_view_pixels, int(size * scale)); }
 
 std::string describe_current_exception() {
   try {
@@ -55,8 +58,12 @@ void RenderLoop::run() {
       }
       clients_.push_back(std::move(client));
     }
+    for (Client& client : clients_) take_messages(client);
+    apply_pixel_budget();
     bool rendered = false;
-    for (Client& client : clients_) rendered |= serve(client);
+    const std::size_t n = clients_.size();
+    for (std::size_t i = 0; i < n; ++i) rendered |= render_if_due(clients_[(next_first_ + i) % n]);
+    next_first_ = n == 0 ? 0 : (next_first_ + 1) % n;
     std::erase_if(clients_, [](const Client& c) { return c.finished; });
     if (hub_.stop_requested()) break;
     // After a frame, go round again at once (a playing session wants the
@@ -66,13 +73,27 @@ void RenderLoop::run() {
   clients_.clear();
 }
 
-bool RenderLoop::serve(Client& client) {
+template <class Step>
+void RenderLoop::guarded(Client& client, Step&& step) {
+  if (client.finished) return;
+  try {
+    step();
+  } catch (...) {
+    // A failing session ends its own connection, never the server.
+    log_(connection_name(client.link->id) + ": session failed: " + describe_current_exception());
+    if (auto outlet = client.link->outlet.lock())
+      outlet->close(close_internal_error, "session failed");
+    client.finished = true;
+  }
+}
+
+void RenderLoop::take_messages(Client& client) {
   ConnectionLink& link = *client.link;
   if (link.closed) {
     client.finished = true;
-    return false;
+    return;
   }
-  try {
+  guarded(client, [&] {
     if (!client.session) {
       client.session = make_session_();
       if (!client.session) throw std::runtime_error("the session factory returned no session");
@@ -81,9 +102,29 @@ bool RenderLoop::serve(Client& client) {
     for (const ClientMessage& message : link.take(resume_reading)) apply(client, message);
     if (resume_reading)
       if (auto outlet = link.outlet.lock()) outlet->resume_reading();
+  });
+}
 
-    bool rendered = false;
-    const bool room = link.frames_sent - link.frames_acked < options_.max_frames_in_flight;
+void RenderLoop::apply_pixel_budget() {
+  double asked = 0;
+  for (const Client& c : clients_)
+    if (c.sized && !c.finished) asked += double(c.asked_width) * c.asked_height;
+  const double budget = double(options_.pixel_budget);
+  // The same factor for every view: each keeps its shape and its share.
+  scale_ = budget > 0 && asked > budget ? std::sqrt(budget / asked) : 1.0;
+  for (Client& c : clients_) {
+    if (!c.sized) continue;
+    const int width = scaled(c.asked_width, scale_);
+    const int height = scaled(c.asked_height, scale_);
+    if (width != c.width || height != c.height)
+      guarded(c, [&] { resize_session(c, width, height); });
+  }
+}
+
+bool RenderLoop::render_if_due(Client& client) {
+  bool rendered = false;
+  guarded(client, [&] {
+    const bool room = client.link->frames_in_flight() < options_.max_frames_in_flight;
     if (client.sized && room && client.session->wants_frame()) {
       send_frame(client);
       rendered = true;
@@ -92,14 +133,8 @@ bool RenderLoop::serve(Client& client) {
       send(client, encode_file_message(download));
     for (const std::string& notice : client.session->take_notices())
       send(client, encode_notice_message(notice));
-    return rendered;
-  } catch (...) {
-    // A failing session ends its own connection, never the server.
-    log_(connection_name(link.id) + ": session failed: " + describe_current_exception());
-    if (auto outlet = link.outlet.lock()) outlet->close(close_internal_error, "session failed");
-    client.finished = true;
-    return false;
-  }
+  });
+  return rendered;
 }
 
 void RenderLoop::record(const Client& client, const std::string& line) {
@@ -117,10 +152,12 @@ void RenderLoop::apply(Client& client, const ClientMessage& message) {
               std::clamp(m.width, min_view_pixels, std::max(min_view_pixels, options_.max_width));
           const int height =
               std::clamp(m.height, min_view_pixels, std::max(min_view_pixels, options_.max_height));
-          // Recorded as the session gets it (clamped), so a replay makes the same calls.
-          record(client, encode_client_message(Resize{width, height}));
-          client.session->resize(width, height);
+          client.asked_width = width;
+          client.asked_height = height;
           client.sized = true;
+          // At once, in order with the input around it, at the last round's
+          // scale; apply_pixel_budget then corrects every view's scale.
+          resize_session(client, scaled(width, scale_), scaled(height, scale_));
         } else if constexpr (std::is_same_v<T, render::InputEvent>) {
           record(client, encode_client_message(message));
           if (m.seq != 0) client.last_seq = m.seq;
@@ -129,6 +166,14 @@ void RenderLoop::apply(Client& client, const ClientMessage& message) {
         // Acks never reach the inbox: the network thread records them directly.
       },
       message);
+}
+
+void RenderLoop::resize_session(Client& client, int width, int height) {
+  // Recorded as the session gets it (clamped, scaled), so a replay makes the same calls.
+  record(client, encode_client_message(Resize{width, height}));
+  client.session->resize(width, height);
+  client.width = width;
+  client.height = height;
 }
 
 void RenderLoop::send_frame(Client& client) {
@@ -151,11 +196,12 @@ void RenderLoop::send_frame(Client& client) {
   // is not yet counted as sent.
   client.link->frames_sent = info.frame;
   ++counters_.frames_sent;
-  send(client, encode_frame_message(info, encoded.bytes));
+  if (client.width < client.asked_width) ++counters_.downscaled_frames;
+  send(client, encode_frame_message(info, encoded.bytes), info.frame);
 }
 
-void RenderLoop::send(const Client& client, std::vector<std::uint8_t> message) {
-  if (auto outlet = client.link->outlet.lock()) outlet->send(std::move(message));
+void RenderLoop::send(const Client& client, std::vector<std::uint8_t> message, std::int64_t frame) {
+  if (auto outlet = client.link->outlet.lock()) outlet->send(std::move(message), frame);
 }
 
 }  // namespace epviz::serve

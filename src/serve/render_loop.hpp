@@ -1,8 +1,12 @@
 #pragma once
 // The render thread's work: the only code that creates, drives and destroys
 // sessions, so a session (and the GL context behind it) is only ever touched
-// from one thread. It serves every connection in turn, one frame each per
-// pass, and sleeps in the RenderHub whenever no connection can use a frame.
+// from one thread. It serves the connections round-robin, at most one frame
+// each per round, and sleeps in the RenderHub whenever no connection can use
+// a frame. A round's pixels are bounded (ServerOptions::pixel_budget): when
+// the views together ask for more, every view is rendered smaller by the same
+// factor, so a round takes bounded time and every connection keeps a frame
+// rate however many large views are open.
 #include <cstdint>
 #include <fstream>
 #include <memory>
@@ -30,16 +34,24 @@ class RenderLoop {
   struct Client {
     std::shared_ptr<ConnectionLink> link;
     std::unique_ptr<Session> session;
-    bool sized = false;          // no frame before the page has said how big its view is
-    std::uint64_t last_seq = 0;  // of the last input event applied
-    bool finished = false;       // remove (and destroy the session) after this pass
-    bool recorded = false;       // its messages go to options.record_path
+    bool sized = false;                     // no frame before the page has said how big its view is
+    int asked_width = 0, asked_height = 0;  // the page's view, clamped to the limits
+    int width = 0, height = 0;              // what the session renders (within the budget)
+    std::uint64_t last_seq = 0;             // of the last input event applied
+    bool finished = false;                  // remove (and destroy the session) after this pass
+    bool recorded = false;                  // its messages go to options.record_path
   };
 
-  bool serve(Client& client);  // one pass for one connection; true when it rendered a frame
+  // Each step for one connection; a session that throws ends its connection only.
+  void take_messages(Client& client);
+  void apply_pixel_budget();
+  bool render_if_due(Client& client);  // true when it rendered a frame
+  template <class Step>
+  void guarded(Client& client, Step&& step);
   void apply(Client& client, const ClientMessage& message);
+  void resize_session(Client& client, int width, int height);
   void send_frame(Client& client);
-  void send(const Client& client, std::vector<std::uint8_t> message);
+  void send(const Client& client, std::vector<std::uint8_t> message, std::int64_t frame = 0);
   void record(const Client& client, const std::string& line);
 
   const ServerOptions& options_;
@@ -49,6 +61,8 @@ class RenderLoop {
   ServerCounters& counters_;
   ImageEncoder encoder_;
   std::vector<Client> clients_;
+  double scale_ = 1.0;          // the pixel budget's factor for every view, from the last round
+  std::size_t next_first_ = 0;  // where the next round starts: no connection is always first
   std::ofstream recording_;
   bool recording_taken_ = false;  // only the first connection is recorded
 };

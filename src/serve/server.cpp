@@ -118,6 +118,7 @@ void Server::Impl::start() {
   acceptor->listen(net::socket_base::max_listen_connections, ec);
   fail_if("listen");
   bound_port = acceptor->local_endpoint().port();
+  network.origins.emplace(options.bind, bound_port, options.allowed_origins);
 
   // The render thread starts first and start() waits for its init, so a GL
   // context that cannot be created is start()'s exception, not a silent hang.
@@ -248,8 +249,16 @@ void Server::wait() {
 
 ServerStats Server::stats() const {
   const ServerCounters& c = impl_->counters;
-  return {c.connections_accepted.load(), c.connections_open.load(), c.frames_sent.load(),
-          c.protocol_errors.load()};
+  ServerStats s;
+  s.connections_accepted = c.connections_accepted;
+  s.connections_open = c.connections_open;
+  s.frames_sent = c.frames_sent;
+  s.protocol_errors = c.protocol_errors;
+  s.outbox_bytes = c.outbox_bytes;
+  s.outbox_bytes_peak = c.outbox_bytes_peak;
+  s.outbox_overflows = c.outbox_overflows;
+  s.downscaled_frames = c.downscaled_frames;
+  return s;
 }
 
 }  // namespace epviz::serve

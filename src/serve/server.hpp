@@ -3,11 +3,13 @@
 // browser tab for events in and frames out (Boost.Beast). Protocol:
 // docs/serve.md. Knows nothing of physics or GL: sessions come from a factory
 // and are driven on one render thread.
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "serve/session.hpp"
 
@@ -17,12 +19,25 @@ enum class ImageFormat { jpeg, png };
 
 struct ServerOptions {
   std::string bind = "127.0.0.1";
-  unsigned short port = 8080;                 // 0: any free port (see Server::port())
-  std::filesystem::path page;                 // the HTML file served at "/"
+  unsigned short port = 8080;  // 0: any free port (see Server::port())
+  std::filesystem::path page;  // the HTML file served at "/"
+  // Origins besides the server's own whose pages may open the WebSocket
+  // ("http://host:port"); see OriginPolicy. Requests whose Host does not
+  // name this server get 403 whatever their origin.
+  std::vector<std::string> allowed_origins;
   std::size_t max_message_bytes = 64 * 1024;  // larger client messages close that connection
-  int max_frames_in_flight = 2;             // frames sent but not yet acknowledged, per connection
+  int max_frames_in_flight = 2;  // frames sent but not yet acknowledged, per connection
+  // Bytes waiting to be written to one connection; a connection that stays
+  // above this for outbox_grace (a page that does not read) is dropped.
+  std::size_t max_outbox_bytes = 32u * 1024 * 1024;
+  std::chrono::milliseconds outbox_grace{10000};
   int max_clients = 16;                     // further connections are refused with a reason
   int max_width = 3840, max_height = 2160;  // resize requests are clamped to these
+  // Pixels rendered in one round over all connections (each gets at most one
+  // frame a round): when the views together are larger, all are rendered
+  // smaller by one factor, so no connection waits long for its frame. The
+  // default is two 3840x2160 views; 0: no budget.
+  long pixel_budget = 2L * 3840 * 2160;
   ImageFormat image_format = ImageFormat::jpeg;
   int jpeg_quality = 85;
   // One line per event worth logging (connections, closes and their reasons).
@@ -37,7 +52,11 @@ struct ServerStats {
   long connections_accepted = 0;
   long connections_open = 0;
   long frames_sent = 0;
-  long protocol_errors = 0;  // connections closed for malformed or oversized messages
+  long protocol_errors = 0;    // connections closed for malformed or oversized messages
+  long outbox_bytes = 0;       // waiting to be written now, all connections together
+  long outbox_bytes_peak = 0;  // the most that ever waited
+  long outbox_overflows = 0;   // connections dropped for not reading
+  long downscaled_frames = 0;  // frames rendered smaller than asked to keep the pixel budget
 };
 
 class Server {

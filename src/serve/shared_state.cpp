@@ -20,12 +20,13 @@ std::vector<ClientMessage> ConnectionLink::take(bool& resume) {
   return taken;
 }
 
-void ConnectionLink::acknowledge(std::int64_t frame) {
-  frame = std::min(frame, frames_sent.load());
+bool ConnectionLink::acknowledge(std::int64_t frame) {
+  if (frame > frames_sent.load()) return false;
   std::int64_t current = frames_acked.load();
   // Only the network thread writes, but a CAS loop keeps this right if that changes.
   while (frame > current && !frames_acked.compare_exchange_weak(current, frame)) {
   }
+  return true;
 }
 
 void RenderHub::add(std::shared_ptr<ConnectionLink> link) {

@@ -3,6 +3,7 @@
 // that what crosses threads stays small and visibly guarded: a log, counters,
 // and per connection an inbox, two frame counters and a closed flag. Sessions
 // never appear here; only the render thread touches them.
+#include <algorithm>
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
@@ -46,6 +47,10 @@ struct ServerCounters {
   std::atomic<long> connections_open{0};
   std::atomic<long> frames_sent{0};
   std::atomic<long> protocol_errors{0};
+  std::atomic<long> outbox_bytes{0};       // waiting to be written, all connections together
+  std::atomic<long> outbox_bytes_peak{0};  // the most outbox_bytes has been
+  std::atomic<long> outbox_overflows{0};   // connections dropped for a full outbox
+  std::atomic<long> downscaled_frames{0};  // frames rendered smaller than asked (pixel budget)
 };
 
 // The network side of one connection as the render thread sees it. Every
@@ -53,8 +58,10 @@ struct ServerCounters {
 class ConnectionOutlet {
  public:
   virtual ~ConnectionOutlet() = default;
-  virtual void send(std::vector<std::uint8_t> message) = 0;  // one binary WebSocket message
-  virtual void resume_reading() = 0;                         // the inbox has room again
+  // One binary WebSocket message; `frame` is its frame number, 0 for other
+  // messages (a frame counts as delivered once its write has completed).
+  virtual void send(std::vector<std::uint8_t> message, std::int64_t frame) = 0;
+  virtual void resume_reading() = 0;  // the inbox has room again
   virtual void close(std::uint16_t code, std::string reason) = 0;
 };
 
@@ -71,8 +78,9 @@ class ConnectionLink {
 
   const long id;
   const std::weak_ptr<ConnectionOutlet> outlet;  // expired once the network side is gone
-  std::atomic<std::int64_t> frames_sent{0};      // written by the render thread
-  std::atomic<std::int64_t> frames_acked{0};     // written by the network thread
+  std::atomic<std::int64_t> frames_sent{0};      // handed to the network side (render thread)
+  std::atomic<std::int64_t> frames_written{0};   // whose write completed (network thread)
+  std::atomic<std::int64_t> frames_acked{0};     // the page's acks (network thread)
   std::atomic<bool> closed{false};               // the network side has finished
 
   // Network thread: queues a resize or input event; returns false when the
@@ -80,8 +88,15 @@ class ConnectionLink {
   bool push(ClientMessage message);
   // Render thread: takes everything queued; sets `resume` when reading was paused.
   std::vector<ClientMessage> take(bool& resume);
-  // Network thread: records an ack (acks never go backwards, nor past what was sent).
-  void acknowledge(std::int64_t frame);
+  // Network thread: records an ack (acks never go backwards); false for an
+  // ack of a frame never sent, which only a broken or hostile page sends.
+  bool acknowledge(std::int64_t frame);
+  // Frames the page cannot have shown yet. An ack counts only up to the last
+  // frame whose write completed: a page cannot have shown a frame still in
+  // the server's outbox, and counting a forged ack would let the outbox grow.
+  std::int64_t frames_in_flight() const {
+    return frames_sent - std::min(frames_acked.load(), frames_written.load());
+  }
 
  private:
   std::mutex mutex_;

@@ -37,7 +37,8 @@ WebSocketConnection::WebSocketConnection(beast::tcp_stream stream, NetworkContex
     : ws_(std::move(stream)),
       context_(context),
       id_(id),
-      peer_(peer_of(beast::get_lowest_layer(ws_))) {}
+      peer_(peer_of(beast::get_lowest_layer(ws_))),
+      overflow_timer_(ws_.get_executor()) {}
 
 WebSocketConnection::~WebSocketConnection() {
   // Only reached without finish() when Server::stop ends the connections
@@ -151,7 +152,11 @@ void WebSocketConnection::handle_text(std::string_view text) {
   if (const Ack* ack = std::get_if<Ack>(&message)) {
     // Acks skip the inbox: they only move the flow-control window, and the
     // render thread may be asleep waiting for exactly this.
-    link_->acknowledge(ack->frame);
+    if (!link_->acknowledge(ack->frame)) {
+      protocol_error("ack for frame " + std::to_string(ack->frame) + ", but only " +
+                     std::to_string(link_->frames_sent.load()) + " frames were sent");
+      return;
+    }
   } else if (!link_->push(std::move(message))) {
     // Worth a line: it means the session is slow or stuck in the render thread.
     read_paused_ = true;
@@ -167,13 +172,48 @@ void WebSocketConnection::protocol_error(const std::string& problem) {
   start_close(close_policy_error, problem);
 }
 
-void WebSocketConnection::send(std::vector<std::uint8_t> message) {
-  net::post(ws_.get_executor(),
-            [self = shared_from_this(), message = std::move(message)]() mutable {
-              if (self->closing_ || self->finished_) return;
-              self->outbox_.push_back(std::move(message));
-              self->write_next();
-            });
+void WebSocketConnection::send(std::vector<std::uint8_t> message, std::int64_t frame) {
+  net::post(ws_.get_executor(), [self = shared_from_this(), message = std::move(message),
+                                 frame]() mutable {
+    if (self->closing_ || self->finished_) return;
+    self->outbox_bytes_ += message.size();
+    const long total = self->context_.counters.outbox_bytes += long(message.size());
+    long peak = self->context_.counters.outbox_bytes_peak;
+    while (total > peak &&
+           !self->context_.counters.outbox_bytes_peak.compare_exchange_weak(peak, total)) {
+    }
+    self->outbox_.push_back({std::move(message), frame});
+    self->watch_outbox();
+    self->write_next();
+  });
+}
+
+void WebSocketConnection::release_outbox_bytes(std::size_t bytes) {
+  outbox_bytes_ -= bytes;
+  context_.counters.outbox_bytes -= long(bytes);
+}
+
+void WebSocketConnection::watch_outbox() {
+  const std::size_t limit = context_.options.max_outbox_bytes;
+  if (outbox_bytes_ <= limit) {
+    if (overflow_armed_) overflow_timer_.cancel();
+    overflow_armed_ = false;
+    return;
+  }
+  if (overflow_armed_) return;
+  overflow_armed_ = true;
+  overflow_timer_.expires_after(context_.options.outbox_grace);
+  overflow_timer_.async_wait([self = shared_from_this()](beast::error_code ec) {
+    if (ec || self->finished_ || !self->overflow_armed_) return;
+    self->overflow_armed_ = false;
+    if (self->outbox_bytes_ <= self->context_.options.max_outbox_bytes) return;
+    ++self->context_.counters.outbox_overflows;
+    // No close frame: it would wait behind the writes that do not complete.
+    self->finish(std::to_string(self->outbox_bytes_) + " bytes waited to be written for " +
+                 std::to_string(self->context_.options.outbox_grace.count()) + " ms (more than " +
+                 std::to_string(self->context_.options.max_outbox_bytes) +
+                 "): the page does not read; dropped");
+  });
 }
 
 void WebSocketConnection::resume_reading() {
@@ -194,10 +234,19 @@ void WebSocketConnection::write_next() {
   if (writing_ || outbox_.empty() || closing_ || finished_) return;
   writing_ = true;
   ws_.binary(true);
-  ws_.async_write(net::buffer(outbox_.front()),
+  ws_.async_write(net::buffer(outbox_.front().bytes),
                   [self = shared_from_this()](beast::error_code ec, std::size_t) {
                     self->writing_ = false;
+                    const Outgoing written = std::move(self->outbox_.front());
                     self->outbox_.pop_front();
+                    if (self->finished_) return;  // finish() released the outbox
+                    self->release_outbox_bytes(written.bytes.size());
+                    self->watch_outbox();
+                    if (!ec && written.frame > 0) {
+                      // Only now may an ack of this frame open the window.
+                      self->link_->frames_written = written.frame;
+                      self->context_.hub.notify();
+                    }
                     if (ec) {
                       self->finish(ec == net::error::operation_aborted
                                        ? ""
@@ -227,6 +276,9 @@ void WebSocketConnection::finish(const std::string& why) {
   // the session, and whoever watches both must not see the session gone
   // while the connection still counts as open.
   if (link_) --context_.counters.connections_open;
+  release_outbox_bytes(outbox_bytes_);
+  overflow_armed_ = false;
+  overflow_timer_.cancel();
   --context_.websocket_clients;
   context_.connections.erase(id_);
   if (link_) {

@@ -2,13 +2,15 @@
 // One browser tab's WebSocket on the network thread: reads page messages
 // into its ConnectionLink (acks are recorded at once), writes the render
 // thread's messages one at a time (Beast allows a single write in flight, so
-// they wait in an outbox), and closes with the protocol's codes.
+// they wait in an outbox, bounded in bytes), and closes with the protocol's
+// codes.
 #include <cstdint>
 #include <deque>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include <boost/asio/steady_timer.hpp>
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
 #include <boost/beast/websocket.hpp>
@@ -33,7 +35,7 @@ class WebSocketConnection : public ConnectionOutlet,
   void shutdown();
 
   // ConnectionOutlet: any thread; each hops onto this connection's strand.
-  void send(std::vector<std::uint8_t> message) override;
+  void send(std::vector<std::uint8_t> message, std::int64_t frame) override;
   void resume_reading() override;
   void close(std::uint16_t code, std::string reason) override;
 
@@ -44,6 +46,8 @@ class WebSocketConnection : public ConnectionOutlet,
   void handle_text(std::string_view text);
   void protocol_error(const std::string& problem);
   void write_next();
+  void watch_outbox();  // arms or disarms the overflow deadline after the outbox changed
+  void release_outbox_bytes(std::size_t bytes);
   void start_close(std::uint16_t code, std::string reason);
   // The one exit: marks the link closed, frees the client slot, logs `why`
   // (when not empty). Later errors from the same connection are ignored.
@@ -57,7 +61,14 @@ class WebSocketConnection : public ConnectionOutlet,
   boost::beast::http::request<boost::beast::http::string_body> upgrade_request_;
   std::shared_ptr<ConnectionLink> link_;  // from a successful upgrade on
   boost::beast::flat_buffer buffer_;
-  std::deque<std::vector<std::uint8_t>> outbox_;  // front() is being written while writing_
+  struct Outgoing {
+    std::vector<std::uint8_t> bytes;
+    std::int64_t frame = 0;  // 0: not a frame
+  };
+  std::deque<Outgoing> outbox_;  // front() is being written while writing_
+  std::size_t outbox_bytes_ = 0;
+  boost::asio::steady_timer overflow_timer_;
+  bool overflow_armed_ = false;
   bool writing_ = false;
   bool reading_ = false;
   bool read_paused_ = false;  // the link's inbox is full

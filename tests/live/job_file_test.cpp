@@ -20,7 +20,7 @@ TEST(JobFile, EpvizRenderAcceptsTheSavedSetupOfEveryCase) {
     s.run.body.weight = 1.75;  // an edit the job must carry
     s.scene.camera.azimuth_deg = 80.0;
     const auto file = dir / (p.name + ".json");
-    std::ofstream(file) << render_job_json(s, p.name, 2.0);
+    std::ofstream(file) << render_job_json(s, p.name, {}, 2.0);
     const auto r = test::run_epviz("render " + file.string() +
                                        " --frames 0 --format png --width 160 --height 90 "
                                        "--quiet --out " +
@@ -89,8 +89,8 @@ std::vector<LiveSetup> varied_setups() {
 
 TEST(JobFile, EveryWrittenFieldIsReadBackEqual) {
   for (const auto& setup : varied_setups()) {
-    const job::JobDocument w = job_document(setup, "round", 3.0);
-    const std::string text = render_job_json(setup, "round", 3.0);
+    const job::JobDocument w = job_document(setup, "round", {}, 3.0);
+    const std::string text = render_job_json(setup, "round", {}, 3.0);
     const job::JobDocument r = job::read_job(nlohmann::json::parse(text), "round.json");
     SCOPED_TRACE(text);
     const auto &ws = w.simulation, &rs = r.simulation;

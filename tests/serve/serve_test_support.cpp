@@ -67,7 +67,11 @@ bool FakeSession::wants_frame() const {
 const render::RgbaImage& FakeSession::render() {
   probe_->check_thread();
   ++probe_->renders;
+  if (long(image_.width) * image_.height >= 1'000'000) ++probe_->large_renders;
   if (throw_next_) throw std::runtime_error("fake session asked to fail");
+  if (const int cost = probe_->render_ms_per_megapixel; cost > 0)
+    std::this_thread::sleep_for(std::chrono::microseconds(
+        static_cast<long>(double(image_.width) * image_.height * cost / 1000.0)));
   dirty_ = false;
   const glm::u8vec4 colour = fake_colour(inputs_);
   image_.pixels.resize(static_cast<std::size_t>(image_.width) * image_.height * 4);

@@ -44,9 +44,13 @@ struct FakeProbe {
   std::atomic<int> created{0};
   std::atomic<int> destroyed{0};
   std::atomic<int> renders{0};
+  std::atomic<int> large_renders{0};  // of a megapixel or more
   std::atomic<int> inputs{0};
   std::atomic<bool> wrong_thread{false};  // a session was touched off the render thread
   std::atomic<std::thread::id> render_thread{};
+  // Simulated render cost: render() sleeps this long per million pixels
+  // (sleeping, not spinning, so the cost does not depend on the machine's load).
+  std::atomic<int> render_ms_per_megapixel{0};
   // A key event "block" holds the render thread in input() until this is set.
   std::atomic<bool> blocked{false};  // a session is waiting in input("block")
   std::promise<void> unblock;

@@ -1,0 +1,124 @@
+// Many pages at once, several of them 3840x2160: every connection keeps a
+// frame rate, because the render thread serves them round-robin and a
+// round's pixels are bounded (large views are rendered smaller, all alike).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "serve_test_support.hpp"
+
+namespace epviz::serve::testing {
+namespace {
+
+using nlohmann::json;
+using Clock = std::chrono::steady_clock;
+
+json resize(int width, int height) {
+  return {{"type", "resize"}, {"width", width}, {"height", height}};
+}
+json ack(std::int64_t frame) { return {{"type", "ack"}, {"frame", frame}}; }
+
+// One page: asks for a size, reads and acks every frame, notes when each came.
+class Viewer {
+ public:
+  Viewer(unsigned short port, int width, int height) : client_(port) {
+    client_.send(resize(width, height));
+    thread_ = std::thread([this] { run(); });
+  }
+  ~Viewer() {
+    stop_ = true;
+    thread_.join();
+  }
+  std::vector<Clock::time_point> arrivals() const {
+    std::lock_guard lock(mutex_);
+    return arrivals_;
+  }
+  std::pair<int, int> last_size() const {
+    std::lock_guard lock(mutex_);
+    return last_size_;
+  }
+
+ private:
+  void run() {
+    while (!stop_) {
+      std::optional<ServerMessage> m;
+      try {
+        m = client_.receive(100ms);
+      } catch (const std::exception&) {
+        return;
+      }
+      if (!m || m->header.value("kind", "") != "frame") continue;
+      {
+        std::lock_guard lock(mutex_);
+        arrivals_.push_back(Clock::now());
+        last_size_ = {m->header["width"].get<int>(), m->header["height"].get<int>()};
+      }
+      client_.send(ack(m->header["frame"].get<std::int64_t>()));
+    }
+  }
+
+  TestClient client_;
+  std::atomic<bool> stop_{false};
+  mutable std::mutex mutex_;
+  std::vector<Clock::time_point> arrivals_;
+  std::pair<int, int> last_size_{0, 0};
+  std::thread thread_;
+};
+
+TEST(ServeFairness, TwelveClientsFourOfThemLargeAllKeepAFrameRate) {
+  constexpr long budget = 3840L * 2160;
+  TestServer server([](ServerOptions& o) { o.pixel_budget = budget; }, /*always_wants=*/true);
+  // 100 ms per megapixel: a full 3840x2160 frame costs ~0.8 s, so four of
+  // them a round would leave every page waiting over 3 s for each frame.
+  server.probe->render_ms_per_megapixel = 100;
+  std::vector<std::unique_ptr<Viewer>> viewers;
+  for (int i = 0; i < 12; ++i) {
+    const bool large = i % 3 == 0;
+    viewers.push_back(
+        std::make_unique<Viewer>(server.port(), large ? 3840 : 320 + i, large ? 2160 : 240));
+  }
+  // Every page has its first frame soon...
+  ASSERT_TRUE(TestServer::eventually([&] {
+    return std::all_of(viewers.begin(), viewers.end(),
+                       [](const auto& v) { return !v->arrivals().empty(); });
+  })) << "a page got no frame at all";
+  // ...and then never waits long for the next.
+  const Clock::time_point from = Clock::now();
+  std::this_thread::sleep_for(8s);
+  const Clock::time_point to = Clock::now();
+  for (std::size_t i = 0; i < viewers.size(); ++i) {
+    SCOPED_TRACE("viewer " + std::to_string(i));
+    std::vector<Clock::time_point> times = viewers[i]->arrivals();
+    std::erase_if(times, [&](auto t) { return t < from || t > to; });
+    ASSERT_GE(times.size(), 4u) << "too few frames in 8 s";
+    double longest = std::chrono::duration<double>(times.front() - from).count();
+    for (std::size_t k = 1; k < times.size(); ++k)
+      longest = std::max(longest, std::chrono::duration<double>(times[k] - times[k - 1]).count());
+    EXPECT_LT(longest, 2.0) << "a page waited this long (s) for a frame";
+  }
+  // The large views were scaled alike, keeping their shape, within the budget.
+  const auto [w, h] = viewers[0]->last_size();
+  EXPECT_LT(w, 3840);
+  EXPECT_NEAR(double(w) / h, 3840.0 / 2160.0, 0.01);
+  long total = 0;
+  for (const auto& v : viewers) total += long(v->last_size().first) * v->last_size().second;
+  EXPECT_LE(total, budget);
+  EXPECT_GT(server.server->stats().downscaled_frames, 0);
+}
+
+TEST(ServeFairness, ViewsWithinTheBudgetAreNotScaled) {
+  TestServer server([](ServerOptions& o) { o.pixel_budget = 100 * 100 * 2; });
+  TestClient a(server.port()), b(server.port());
+  a.send(resize(100, 100));
+  b.send(resize(100, 100));
+  for (TestClient* c : {&a, &b}) {
+    const std::optional<ServerMessage> frame = c->receive();
+    ASSERT_TRUE(frame);
+    EXPECT_EQ(frame->header["width"], 100);
+    EXPECT_EQ(frame->header["height"], 100);
+  }
+  EXPECT_EQ(server.server->stats().downscaled_frames, 0);
+}
+
+}  // namespace
+}  // namespace epviz::serve::testing

@@ -1,0 +1,146 @@
+// A page that acknowledges frames it never read, or does not read at all,
+// cannot make the server queue frames without bound: a frame counts as
+// delivered only once written, the outbox is bounded in bytes, and a
+// connection that stays over the bound is dropped while others go on.
+#include <gtest/gtest.h>
+
+#include <boost/asio/ip/tcp.hpp>
+
+#include "serve_test_support.hpp"
+
+namespace epviz::serve::testing {
+namespace {
+
+namespace beast = boost::beast;
+namespace websocket = beast::websocket;
+namespace net = boost::asio;
+using tcp = net::ip::tcp;
+using nlohmann::json;
+
+json resize(int width, int height) {
+  return {{"type", "resize"}, {"width", width}, {"height", height}};
+}
+json ack(std::int64_t frame) { return {{"type", "ack"}, {"frame", frame}}; }
+
+// Sends, never reads; a tiny receive buffer makes the server's writes stall soon.
+class NonReadingClient {
+ public:
+  explicit NonReadingClient(unsigned short port) : ws_(io_) {
+    tcp::socket& socket = beast::get_lowest_layer(ws_).socket();
+    socket.open(tcp::v4());
+    socket.set_option(net::socket_base::receive_buffer_size(4096));
+    socket.connect(tcp::endpoint(net::ip::make_address("127.0.0.1"), port));
+    ws_.handshake("127.0.0.1:" + std::to_string(port), "/ws");
+    ws_.text(true);
+  }
+  // Errors are ignored: the server may drop this client, which is the point.
+  void send(const json& message) {
+    beast::error_code ignored;
+    ws_.write(net::buffer(message.dump()), ignored);
+  }
+
+ private:
+  net::io_context io_;
+  websocket::stream<beast::tcp_stream> ws_;
+};
+
+// Reads and acks frames on its own thread, counting them.
+class BusyReader {
+ public:
+  explicit BusyReader(unsigned short port) : client_(port) {
+    client_.send(resize(64, 64));
+    thread_ = std::thread([this] {
+      while (!stop_) {
+        std::optional<ServerMessage> m;
+        try {
+          m = client_.receive(200ms);
+        } catch (const std::exception&) {
+          return;
+        }
+        if (!m || m->header.value("kind", "") != "frame") continue;
+        ++frames_;
+        client_.send(ack(m->header["frame"].get<std::int64_t>()));
+      }
+    });
+  }
+  ~BusyReader() {
+    stop_ = true;
+    thread_.join();
+  }
+  int frames() const { return frames_; }
+
+ private:
+  TestClient client_;
+  std::atomic<bool> stop_{false};
+  std::atomic<int> frames_{0};
+  std::thread thread_;
+};
+
+TEST(ServeFlowLimits, ForgedAcksDoNotGrowTheOutbox) {
+  TestServer server({}, /*always_wants=*/true);
+  // The size of one full-size frame, as a reading page receives it.
+  std::size_t frame_bytes = 0;
+  {
+    TestClient reference(server.port());
+    reference.send(resize(3840, 2160));
+    const std::optional<ServerMessage> frame = reference.receive();
+    ASSERT_TRUE(frame);
+    frame_bytes = frame->payload.size();
+  }
+  ASSERT_GT(frame_bytes, 4096u);
+
+  BusyReader bystander(server.port());
+  NonReadingClient forger(server.port());
+  forger.send(resize(3840, 2160));
+  // Acks each frame once it has been rendered (one behind, so never one
+  // not yet sent), reading none: before writes counted, this kept the
+  // window open and every frame went into the outbox.
+  const int renders_before = server.probe->large_renders;
+  const auto end = std::chrono::steady_clock::now() + 3s;
+  std::int64_t acked = 0;
+  while (std::chrono::steady_clock::now() < end) {
+    const std::int64_t rendered = server.probe->large_renders - renders_before;
+    if (rendered - 1 > acked) forger.send(ack(acked = rendered - 1));
+    std::this_thread::sleep_for(2ms);
+  }
+  const ServerStats stats = server.server->stats();
+  EXPECT_LE(stats.outbox_bytes_peak, long(4 * frame_bytes + 64 * 1024))
+      << "frames piled up for a page that reads none (frame " << frame_bytes << " bytes)";
+  EXPECT_GE(bystander.frames(), 20) << "the reading page lost its frame rate";
+  EXPECT_EQ(stats.protocol_errors, 0) << server.log->all();
+}
+
+TEST(ServeFlowLimits, APageThatDoesNotReadIsDroppedOthersGoOn) {
+  TestServer server(
+      [](ServerOptions& o) {
+        o.max_outbox_bytes = 16 * 1024;
+        o.outbox_grace = 300ms;
+      },
+      /*always_wants=*/true);
+  BusyReader bystander(server.port());
+  NonReadingClient stuck(server.port());
+  stuck.send(resize(3840, 2160));
+  // Acks what was rendered, reads nothing: once the socket's buffers are
+  // full, the frames the window still allows wait in the outbox for good.
+  const int renders_before = server.probe->large_renders;
+  std::int64_t acked = 0;
+  EXPECT_TRUE(TestServer::eventually([&] {
+    const std::int64_t rendered = server.probe->large_renders - renders_before;
+    if (rendered - 1 > acked) stuck.send(ack(acked = rendered - 1));
+    return server.server->stats().outbox_overflows > 0;
+  }));
+  EXPECT_TRUE(server.log->wait_for({"connection #2", "the page does not read; dropped"}))
+      << server.log->all();
+  EXPECT_EQ(server.server->stats().outbox_overflows, 1);
+  EXPECT_TRUE(TestServer::eventually([&] { return server.probe->destroyed == 1; }))
+      << "the dropped page's session lives on";
+  EXPECT_TRUE(TestServer::eventually([&] {
+    return server.server->stats().outbox_bytes < 64 * 1024;
+  })) << "the dropped outbox is still counted";
+  const int before = bystander.frames();
+  EXPECT_TRUE(TestServer::eventually([&] { return bystander.frames() >= before + 10; }))
+      << "the reading page stopped getting frames";
+}
+
+}  // namespace
+}  // namespace epviz::serve::testing

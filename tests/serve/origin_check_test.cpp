@@ -1,0 +1,134 @@
+// The server refuses, with 403 and one log line, WebSocket upgrades from
+// other web pages (their Origin) and any request whose Host is not this
+// server's (DNS rebinding), over real sockets with hand-written requests.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <fstream>
+
+#include <boost/asio/ip/tcp.hpp>
+
+#include "serve_test_support.hpp"
+
+namespace epviz::serve::testing {
+namespace {
+
+namespace beast = boost::beast;
+namespace http = beast::http;
+namespace net = boost::asio;
+using tcp = net::ip::tcp;
+
+struct Request {
+  std::string target = "/ws";
+  bool upgrade = true;
+  std::optional<std::string> host = {};
+  std::optional<std::string> origin = {};
+};
+
+// Sends one request by hand and returns the response (101 for an accepted upgrade).
+http::response<http::string_body> exchange(unsigned short port, const Request& r) {
+  net::io_context io;
+  beast::tcp_stream stream(io);
+  stream.expires_after(expect_within);
+  stream.connect(tcp::endpoint(net::ip::make_address("127.0.0.1"), port));
+  http::request<http::empty_body> request{http::verb::get, r.target, 11};
+  if (r.host) request.set(http::field::host, *r.host);
+  if (r.origin) request.set(http::field::origin, *r.origin);
+  if (r.upgrade) {
+    request.set(http::field::connection, "Upgrade");
+    request.set(http::field::upgrade, "websocket");
+    request.set(http::field::sec_websocket_version, "13");
+    request.set(http::field::sec_websocket_key, "AAAAAAAAAAAAAAAAAAAAAA==");
+  }
+  http::write(stream, request);
+  beast::flat_buffer buffer;
+  http::response_parser<http::string_body> parser;
+  http::read_header(stream, buffer, parser);
+  if (parser.get().result() != http::status::switching_protocols)
+    http::read(stream, buffer, parser);
+  return parser.release();
+}
+
+std::string own(unsigned short port) { return "127.0.0.1:" + std::to_string(port); }
+
+TEST(ServeOrigin, OwnPageUpgradesOtherPagesGet403) {
+  TestServer server;
+  const unsigned short port = server.port();
+  const std::string p = std::to_string(port);
+  for (const std::string& origin : {"http://127.0.0.1:" + p, "http://localhost:" + p}) {
+    SCOPED_TRACE(origin);
+    EXPECT_EQ(exchange(port, {.host = own(port), .origin = origin}).result(),
+              http::status::switching_protocols);
+  }
+  // Without Origin the client is no web page (browsers always send one).
+  EXPECT_EQ(exchange(port, {.host = own(port)}).result(), http::status::switching_protocols);
+
+  for (const std::string& origin :
+       {std::string("http://evil.example"), "http://evil.example:" + p, std::string("null"),
+        "https://127.0.0.1:" + p, "http://127.0.0.1:" + std::to_string(port + 1)}) {
+    SCOPED_TRACE(origin);
+    const auto response = exchange(port, {.host = own(port), .origin = origin});
+    EXPECT_EQ(response.result(), http::status::forbidden);
+    EXPECT_NE(response.body().find("is not this server's page"), std::string::npos)
+        << response.body();
+  }
+  EXPECT_TRUE(server.log->wait_for({"refused a request for /ws", "Origin 'http://evil.example'"}))
+      << server.log->all();
+  EXPECT_EQ(server.server->stats().connections_accepted, 3) << "a refused upgrade was accepted";
+}
+
+TEST(ServeOrigin, ForgedHostGets403ForThePageAndTheSocket) {
+  TestServer server;
+  const unsigned short port = server.port();
+  const std::string rebound = "evil.example:" + std::to_string(port);
+  const auto page = exchange(port, {.target = "/", .upgrade = false, .host = rebound});
+  EXPECT_EQ(page.result(), http::status::forbidden);
+  EXPECT_EQ(page.body().find("epviz test page"), std::string::npos) << "the page leaked";
+  EXPECT_NE(page.body().find("does not name this server"), std::string::npos) << page.body();
+  // Even with an origin that matches the forged host, as a rebound page would send.
+  const auto socket = exchange(port, {.host = rebound, .origin = "http://" + rebound});
+  EXPECT_EQ(socket.result(), http::status::forbidden);
+  EXPECT_EQ(exchange(port, {.target = "/", .upgrade = false}).result(), http::status::forbidden)
+      << "no Host at all";
+  EXPECT_TRUE(server.log->wait_for({"refused a request for /", "Host 'evil.example:"}))
+      << server.log->all();
+  EXPECT_EQ(server.server->stats().connections_accepted, 0);
+
+  EXPECT_EQ(exchange(port, {.target = "/", .upgrade = false, .host = own(port)}).result(),
+            http::status::ok);
+  EXPECT_EQ(
+      exchange(port, {.target = "/", .upgrade = false, .host = "localhost:" + std::to_string(port)})
+          .result(),
+      http::status::ok);
+}
+
+TEST(ServeOrigin, AllowOriginLetsThatPageIn) {
+  TestServer server([](ServerOptions& o) { o.allowed_origins = {"https://viz.example.org"}; });
+  const unsigned short port = server.port();
+  EXPECT_EQ(exchange(port, {.host = own(port), .origin = "https://viz.example.org"}).result(),
+            http::status::switching_protocols);
+  EXPECT_EQ(exchange(port, {.host = own(port), .origin = "https://other.example.org"}).result(),
+            http::status::forbidden);
+}
+
+TEST(ServeOrigin, AMalformedAllowOriginIsABadOption) {
+  const auto err = std::filesystem::temp_directory_path() /
+                   ("epviz_allow_origin_" + std::to_string(::getpid()) + ".txt");
+  const int status =
+      std::system((std::string(EPVIZ_BINARY) + " serve --port 0 --allow-origin 'http://x/path' 2>" +
+                   err.string())
+                      .c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  std::ifstream in(err);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("--allow-origin: 'http://x/path' is not an origin"), std::string::npos)
+      << text;
+  std::filesystem::remove(err);
+}
+
+}  // namespace
+}  // namespace epviz::serve::testing
