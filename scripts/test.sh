@@ -6,4 +6,5 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 EPVIZ_WERROR=ON bash scripts/build.sh
 ctest --test-dir build --output-on-failure -j2
-bash tests/sanitizers/run.sh
+# EPVIZ_SANITIZERS=asan, tsan or none runs fewer of them (CI runs all).
+bash tests/sanitizers/run.sh "${EPVIZ_SANITIZERS:-all}"

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds epviz under the sanitizers and runs the tests that mean something there
 # (docs/architecture.md, "Sanitizers"). scripts/test.sh runs it after the Release
-# build and its tests; run it alone with `bash tests/sanitizers/run.sh [asan|tsan]`.
+# build and its tests (EPVIZ_SANITIZERS=asan|tsan|none there picks; all by default);
+# run it alone with `bash tests/sanitizers/run.sh [all|asan|tsan]`.
 #   asan: build-asan/, AddressSanitizer + LeakSanitizer + UBSan at -O1, the suite
 #         less the tests listed in asan_excluded below;
 #   tsan: build-tsan/, ThreadSanitizer at -O1, the server's tests (test_serve).
@@ -12,8 +13,9 @@ here=tests/sanitizers
 which=${1:-all}
 case "$which" in
   all | asan | tsan) ;;
+  none) exit 0 ;;
   *)
-    echo "tests/sanitizers/run.sh: argument must be asan, tsan or nothing (both), not '$which'" >&2
+    echo "tests/sanitizers/run.sh: argument must be all, asan, tsan or none, not '$which'" >&2
     exit 2
     ;;
 esac
