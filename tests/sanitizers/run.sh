@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# Builds epviz under the sanitizers and runs the tests that mean something there
+# (docs/architecture.md, "Sanitizers"). scripts/test.sh runs it after the Release
+# build and its tests (EPVIZ_SANITIZERS=asan|tsan|none there picks; all by default);
+# run it alone with `bash tests/sanitizers/run.sh [all|asan|tsan]`.
+#   asan: build-asan/, AddressSanitizer + LeakSanitizer + UBSan at -O1, the suite
+#         less the tests listed in asan_excluded below;
+#   tsan: build-tsan/, ThreadSanitizer at -O1, the server's tests (test_serve).
+# A report fails the test it occurs in, so ctest names it.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+here=tests/sanitizers
+which=${1:-all}
+case "$which" in
+  all | asan | tsan) ;;
+  none) exit 0 ;;
+  *)
+    echo "tests/sanitizers/run.sh: argument must be all, asan, tsan or none, not '$which'" >&2
+    exit 2
+    ;;
+esac
+
+# Benchmarks have no tests. Warnings are the Release build's job (-Werror there):
+# with the sanitizers GCC 12 warns where it does not otherwise (-Wshadow on
+# constructor parameters named like members, repeated per instrumented clone).
+configure() {
+  cmake -S . -B "$1" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DEPVIZ_SANITIZE="$2" \
+    -DEPVIZ_BUILD_BENCH=OFF -DEPVIZ_WERROR=OFF >/dev/null
+}
+
+if [ "$which" != tsan ]; then
+  configure build-asan address,undefined
+  cmake --build build-asan
+  # Tests left out under ASan, each with its reason (they all run in the Release build):
+  asan_excluded=(
+    # Browser tests: headless Chromium and Node do the work; our code in them
+    # (the server, the live session, the report) runs under ASan in test_serve,
+    # test_live and test_app.
+    '^e2e_'
+    # Installs the build tree and runs it elsewhere: it checks the install layout,
+    # not code paths the other tests do not already run.
+    '^install_tree$'
+    # Formatting and include edges: no code of ours runs.
+    '^style_'
+    # The GL tests' second pass on OSMesa: the same code of ours on another driver
+    # (the driver is not instrumented); gl_context_test still makes an OSMesa
+    # context and draws with it in the first pass.
+    '\.osmesa$'
+  )
+  exclude=$(IFS='|'; echo "${asan_excluded[*]}")
+  # detect_leaks: LeakSanitizer at exit of every test process; lsan.supp lists
+  # the leaks of the GL drivers (Mesa), which are not ours.
+  ASAN_OPTIONS=detect_leaks=1:check_initialization_order=1:strict_init_order=1 \
+    LSAN_OPTIONS=suppressions=$PWD/$here/lsan.supp:print_suppressions=0 \
+    UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    ctest --test-dir build-asan --output-on-failure -j2 -E "$exclude"
+fi
+
+if [ "$which" != asan ]; then
+  configure build-tsan thread
+  cmake --build build-tsan --target test_serve
+  # The gtest binary directly: ctest would also list the programs not built here.
+  TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 build-tsan/tests/test_serve
+fi
