@@ -73,6 +73,10 @@ std::optional<numerics::Failure> MotionCheck::failure(const Sample& s,
   const Drifts d = monitor_.relative_drift(monitor_.at(s));
   if (d.energy <= max_drift_ && d.gamma_norm2 <= max_drift_) [[likely]]
     return std::nullopt;
+  // Finite numbers whose squares overflow: the run has blown up, whatever the limit.
+  if (!std::isfinite(d.energy) || !std::isfinite(d.gamma_norm2))
+    return numerics::Failure{s.t, std::string(method), numerics::FailureKind::non_finite,
+                             "energy or |gamma|^2 not finite (omega or gamma overflows)"};
   // The larger of the two is the one the user hears of.
   const bool energy = !(d.energy < d.gamma_norm2);
   char detail[128];

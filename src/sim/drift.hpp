@@ -53,8 +53,9 @@ class MotionCheck {
   MotionCheck(const physics::Body& body, const physics::InitialState& initial, double max_drift);
 
   // nullopt when `s` keeps the motion; otherwise the failure at s.t, with
-  // kind non_finite (NaN or Inf in the sample) or lost_motion (a drift above
-  // the limit, named in the detail), reported for `method`.
+  // kind non_finite (NaN or Inf in the sample, or in its energy or |gamma|^2)
+  // or lost_motion (a drift above the limit, named in the detail), reported
+  // for `method`.
   std::optional<numerics::Failure> failure(const Sample& s, std::string_view method) const;
 
   double max_drift() const { return max_drift_; }

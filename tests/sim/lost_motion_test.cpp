@@ -183,8 +183,10 @@ TEST_F(HandMade, NonFiniteSamplesFailAsNonFinite) {
   const sim::MotionCheck check(body, initial, 1e300);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
+  // The last two are finite, but their energy or |gamma|^2 overflows.
   for (const auto& s : {sample({nan, 0, 0}, {0, 0, 1}), sample({1, 0, 0}, {0, -nan, 1}),
-                        sample({inf, 0, 0}, {0, 0, 1})}) {
+                        sample({inf, 0, 0}, {0, 0, 1}), sample({1e200, 0, 0}, {0, 0, 1}),
+                        sample({1, 0, 0}, {0, 0, 1e200})}) {
     const auto f = check.failure(s, "dop853");
     ASSERT_TRUE(f.has_value());
     EXPECT_EQ(f->kind, FailureKind::non_finite);
