@@ -19,7 +19,7 @@ namespace {
 
 struct RawOptions {
   std::string job, case_name, inertia, com, weight, omega, gamma, formulation, method, tol, step,
-      t_end, samples, csv, report_json;
+      t_end, samples, csv, report_json, max_drift;
   bool allow_nonphysical = false, normalize_gamma = false, no_chart_switch = false;
 };
 
@@ -44,6 +44,7 @@ SimulationFields fields_from_cli(const RawOptions& o) {
   num(f.tol, o.tol, "--tol", true);
   num(f.step, o.step, "--step", true);
   num(f.t_end, o.t_end, "--t-end", true);
+  num(f.max_drift, o.max_drift, "--max-drift", true);
   if (!o.samples.empty())
     f.samples.set(parse_integer("--samples", o.samples, 1, 100'000'000), "--samples");
   if (!o.formulation.empty()) f.formulation.set(o.formulation, "--formulation");
@@ -163,6 +164,9 @@ std::function<int()> add_simulate_command(CLI::App& app) {
   cmd->add_option("--step", raw->step, "largest step of fixed-step methods (default 0.01)");
   cmd->add_option("--t-end", raw->t_end, "final time (default 20)");
   cmd->add_option("--samples", raw->samples, "N: write N+1 equally spaced samples (default 200)");
+  cmd->add_option("--max-drift", raw->max_drift,
+                  "fail (lost the motion) at the first sample whose relative energy or |gamma|^2 "
+                  "drift exceeds X (default 1)");
   cmd->add_option("--csv", raw->csv, "write the samples to this CSV file");
   cmd->add_option("--report-json", raw->report_json, "write the run report to this JSON file");
   cmd->add_flag("--allow-nonphysical", raw->allow_nonphysical,
