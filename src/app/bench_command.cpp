@@ -212,8 +212,8 @@ void print_invariant_tables(const std::vector<StudyRow>& rows) {
 void print_stability_tables(const std::vector<StudyRow>& rows) {
   {
     using R = MaxStepRow;
-    print_table(TextTable<R>{"stability 1: largest fixed step before blow-up or loss of shape "
-                             "(error > 0.1 or energy drift > 10%)",
+    print_table(TextTable<R>{"stability 1: largest fixed step before blow-up, lost motion "
+                             "(energy or |gamma|^2 drift > 1) or loss of shape (error > 0.1)",
                              {text("case", &R::case_name), text("method", &R::method),
                               number("max_step", &R::max_step),
                               number("h/period", &R::max_step_over_period),

@@ -7,7 +7,7 @@ namespace {
 
 // How the user names each setting the advice may mention.
 struct Words {
-  std::string tol, step, t_end;
+  std::string tol, step, t_end, max_drift;
   std::string method_prefix, formulation_prefix;  // followed by the quoted value
   std::string chart_switch_on;
   std::string method(std::string_view m) const { return method_prefix + std::string(m); }
@@ -17,11 +17,21 @@ struct Words {
 Words words_for(SettingsIn where) {
   switch (where) {
     case SettingsIn::command_line:
-      return {"--tol",     "--step",         "--t-end",
-              "--method ", "--formulation ", "drop --no-chart-switch"};
+      return {"--tol",
+              "--step",
+              "--t-end",
+              "--max-drift",
+              "--method ",
+              "--formulation ",
+              "drop --no-chart-switch"};
     case SettingsIn::render_job:
-      return {"simulation.tol",     "simulation.step",         "simulation.t_end",
-              "simulation.method ", "simulation.formulation ", "simulation.chart_switch true"};
+      return {"simulation.tol",
+              "simulation.step",
+              "simulation.t_end",
+              "simulation.max_drift",
+              "simulation.method ",
+              "simulation.formulation ",
+              "simulation.chart_switch true"};
   }
   return words_for(SettingsIn::command_line);  // not reached: every value is listed
 }
@@ -71,9 +81,12 @@ std::string failure_advice(numerics::FailureKind kind, std::string_view method, 
              ": the fixed-point iteration converges only for steps well below the motion's "
              "fastest time scale.";
     case FailureKind::lost_motion:
-      if (adaptive) return "tighten " + w.tol + ".";
-      return "use a smaller " + w.step + ", or an adaptive method (" +
-             w.method(suggested_adaptive()) + ").";
+      // Raising the limit is for those who want to watch a run go wrong.
+      if (adaptive)
+        return "tighten " + w.tol + ", or accept more drift with a larger " + w.max_drift + ".";
+      return "use a smaller " + w.step + " or an adaptive method (" +
+             w.method(suggested_adaptive()) + "), or accept more drift with a larger " +
+             w.max_drift + ".";
     case FailureKind::chart_pole:
       return "use " + w.formulation(pole_free()) +
              ", which has no pole, or leave chart switching on (" + w.chart_switch_on + ").";

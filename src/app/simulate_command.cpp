@@ -23,7 +23,7 @@ namespace {
 
 struct RawOptions {
   std::string job, case_name, inertia, com, weight, omega, gamma, formulation, method, tol, step,
-      t_end, samples, csv, report_json, max_steps;
+      t_end, samples, csv, report_json, max_steps, max_drift;
   bool allow_nonphysical = false, normalize_gamma = false, no_chart_switch = false;
 };
 
@@ -48,6 +48,7 @@ SimulationFields fields_from_cli(const RawOptions& o) {
   num(f.tol, o.tol, "--tol", true);
   num(f.step, o.step, "--step", true);
   num(f.t_end, o.t_end, "--t-end", true);
+  num(f.max_drift, o.max_drift, "--max-drift", true);
   if (!o.samples.empty())
     f.samples.set(parse_integer("--samples", o.samples, 1, 100'000'000), "--samples");
   if (!o.formulation.empty()) f.formulation.set(o.formulation, "--formulation");
@@ -219,6 +220,9 @@ std::function<int()> add_simulate_command(CLI::App& app) {
   cmd->add_option("--max-steps", raw->max_steps,
                   "adaptive methods: end the run as failed after this many steps (default 1e8)");
   cmd->add_option("--samples", raw->samples, "N: write N+1 equally spaced samples (default 200)");
+  cmd->add_option("--max-drift", raw->max_drift,
+                  "fail (lost the motion) at the first sample whose relative energy or |gamma|^2 "
+                  "drift exceeds X (default 1)");
   cmd->add_option("--csv", raw->csv,
                   "write the samples to this CSV file ('-': standard output; the summary then "
                   "goes to stderr)");

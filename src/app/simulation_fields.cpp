@@ -108,6 +108,7 @@ sim::RunSpec resolve(const SimulationFields& f) {
     spec.chart_switch = *f.chart_switch;
   }
   if (f.t_end) spec.t_end = *f.t_end;
+  if (f.max_drift) spec.max_drift = *f.max_drift;
   if (f.samples) spec.samples = int(*f.samples);
   if (!sim::is_adaptive(spec.method) && spec.t_end / spec.step > 1e9)
     throw UsageError(f.step.origin + ": t_end / step exceeds 1e9 steps");

@@ -31,7 +31,7 @@ struct Given {
 struct SimulationFields {
   Given<std::string> case_name;
   Given<std::array<double, 3>> inertia, com, omega, gamma;
-  Given<double> weight, tol, step, t_end;
+  Given<double> weight, tol, step, t_end, max_drift;
   Given<long> samples;
   Given<std::string> formulation, method;
   Given<bool> allow_nonphysical, normalize_gamma, chart_switch;

@@ -153,6 +153,15 @@ const std::vector<Sim>& simulation_entries() {
       sim_flag("normalize_gamma", &SimulationFields::normalize_gamma, "scale gamma to unit length"),
       sim_flag("chart_switch", &SimulationFields::chart_switch,
                "riccati: switch charts near infinity"),
+      {{"max_drift", ValueType::number, "1", "> 0",
+        "the run fails (lost the motion) at the first output time whose relative drift of the "
+        "energy or of |gamma|^2 exceeds this"},
+       [](io::ObjectReader& r, SimulationFields& f) {
+         if (auto v = r.positive_number("max_drift")) f.max_drift.set(*v, r.where("max_drift"));
+       },
+       [](const SimulationFields& f, Json& j) {
+         if (f.max_drift) j["max_drift"] = *f.max_drift;
+       }},
   };
   return entries;
 }
@@ -428,6 +437,7 @@ void SimulationFields::overlay(const SimulationFields& o) {
   take(allow_nonphysical, o.allow_nonphysical);
   take(normalize_gamma, o.normalize_gamma);
   take(chart_switch, o.chart_switch);
+  take(max_drift, o.max_drift);
 }
 
 std::string_view output_format_name(OutputFormat f) {

@@ -25,6 +25,9 @@ std::unique_ptr<scene::FrameSource> LiveScene::make_source(const LiveSetup& setu
   // tighter tolerance is nothing next to drawing a frame).
   sim::RunSpec run = setup.run;
   run.t_end = std::max(run.t_end, kToleranceHorizon);
+  // The panels have no control for the drift limit and a saved job does not
+  // carry one: the live run stops where a render of its saved job would.
+  run.max_drift = sim::kDefaultMaxDrift;
   scene::ScenePlan plan = scene::plan_scene(run, setup.scene);
   plan.open_ended = true;
   const double spacing = std::max(setup.speed, 1e-3) / kSamplesPerWallSecond;

@@ -2,7 +2,8 @@
 // The simulation behind the interactive view: a scene::FrameSource with no
 // last frame, advanced by wall-clock time times the speed while playing, and
 // stopped (not drawn as garbage) at a numerical failure, whose report stays on
-// screen until the user restarts.
+// screen until the user restarts. A run that has lost the motion (its energy
+// or |gamma|^2 drift above the default limit, sim/drift.hpp) is such a failure.
 #include <deque>
 #include <memory>
 #include <optional>

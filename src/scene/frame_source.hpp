@@ -17,7 +17,9 @@ class FrameSource {
 
   int frame_count() const { return plan_.frames; }
   // Frame `index`; indices must not decrease (skipped frames are still
-  // integrated through). Throws numerics::IntegrationError on a numerical failure.
+  // integrated through). Throws numerics::IntegrationError on a numerical
+  // failure, including a sample that lost the motion (sim/drift.hpp): no frame
+  // is composed at or after its time.
   Frame frame(int index);
   // Open-ended use (the interactive scene): integrates through every sample up
   // to simulation time `t` (never backwards) and composes the next frame.

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 namespace epviz::sim {
 
@@ -48,6 +50,39 @@ Drifts InvariantMonitor::max_relative_drift(const std::vector<Sample>& samples) 
   Drifts worst = no_drift();
   for (const auto& s : samples) worsen(worst, s);
   return worst;
+}
+
+MotionCheck::MotionCheck(const physics::Body& body, const physics::InitialState& initial,
+                         double max_drift)
+    : monitor_(body, physics::Case::custom, initial), max_drift_(max_drift) {}
+
+namespace {
+
+bool finite(const Sample& s) {
+  return s.omega.allFinite() && s.gamma.allFinite() &&
+         (!s.attitude || s.attitude->coeffs().allFinite());
+}
+
+}  // namespace
+
+std::optional<numerics::Failure> MotionCheck::failure(const Sample& s,
+                                                      std::string_view method) const {
+  if (!finite(s)) [[unlikely]]
+    return numerics::Failure{s.t, std::string(method), numerics::FailureKind::non_finite,
+                             "omega or gamma not finite (NaN or Inf)"};
+  const Drifts d = monitor_.relative_drift(monitor_.at(s));
+  if (d.energy <= max_drift_ && d.gamma_norm2 <= max_drift_) [[likely]]
+    return std::nullopt;
+  // Finite numbers whose squares overflow: the run has blown up, whatever the limit.
+  if (!std::isfinite(d.energy) || !std::isfinite(d.gamma_norm2))
+    return numerics::Failure{s.t, std::string(method), numerics::FailureKind::non_finite,
+                             "energy or |gamma|^2 not finite (omega or gamma overflows)"};
+  // The larger of the two is the one the user hears of.
+  const bool energy = !(d.energy < d.gamma_norm2);
+  char detail[128];
+  std::snprintf(detail, sizeof detail, "lost the motion: relative %s drift %.3g above the limit %g",
+                energy ? "energy" : "|gamma|^2", energy ? d.energy : d.gamma_norm2, max_drift_);
+  return numerics::Failure{s.t, std::string(method), numerics::FailureKind::lost_motion, detail};
 }
 
 }  // namespace epviz::sim

@@ -2,7 +2,10 @@
 // Invariant bookkeeping over a run: each sample's invariants and the largest
 // relative drift from their initial values (physics/invariants.hpp defines the scales).
 #include <optional>
+#include <string_view>
 #include <vector>
+
+#include "numerics/failure.hpp"
 
 #include "physics/invariants.hpp"
 #include "sim/simulate.hpp"
@@ -37,6 +40,29 @@ class InvariantMonitor {
   physics::Case case_;
   physics::Invariants initial_;
   physics::Invariants scale_;
+};
+
+// The test every run passes at each output time, whoever consumes it (epviz
+// simulate, render, the live view, the stability study): the sample must be
+// finite, and its relative drift of the energy and of |gamma|^2 at most a limit
+// (RunSpec::max_drift). A run that fails it is no longer the motion of the
+// body, however finite its numbers: it ends there, as a numerical failure.
+// Cheap enough for every sample: two quadratic forms and a comparison.
+class MotionCheck {
+ public:
+  MotionCheck(const physics::Body& body, const physics::InitialState& initial, double max_drift);
+
+  // nullopt when `s` keeps the motion; otherwise the failure at s.t, with
+  // kind non_finite (NaN or Inf in the sample, or in its energy or |gamma|^2)
+  // or lost_motion (a drift above the limit, named in the detail), reported
+  // for `method`.
+  std::optional<numerics::Failure> failure(const Sample& s, std::string_view method) const;
+
+  double max_drift() const { return max_drift_; }
+
+ private:
+  InvariantMonitor monitor_;  // of a custom case: the energy and |gamma|^2 need no case
+  double max_drift_;
 };
 
 }  // namespace epviz::sim

@@ -29,6 +29,11 @@ std::string names_joined(const std::vector<Formulation>& formulations, std::stri
 // sub-flows are exact only in the direct formulation need it).
 std::optional<std::string> incompatibility(Method m, Formulation f);
 
+// The largest relative drift of the energy or of |gamma|^2 (physics/invariants.hpp
+// defines the scales) that a run may reach before it counts as having lost the
+// motion: 1, an error as large as the quantity itself (sim/drift.hpp checks it).
+inline constexpr double kDefaultMaxDrift = 1.0;
+
 struct RunSpec {
   physics::Case case_id = physics::Case::custom;
   physics::Body body;
@@ -42,6 +47,9 @@ struct RunSpec {
   int samples = 200;             // samples + 1 equally spaced output times from 0 to t_end
   bool chart_switch = true;      // Riccati only: Moebius chart switch near the south pole
   long max_steps = 100'000'000;  // adaptive methods: step attempts before a step_budget failure
+  // A run whose relative energy or |gamma|^2 drift exceeds this at an output
+  // time fails there (numerics::FailureKind::lost_motion).
+  double max_drift = kDefaultMaxDrift;
 };
 
 // The run of case `c`'s preset body and initial state with one method and

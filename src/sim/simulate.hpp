@@ -33,7 +33,9 @@ struct RunResult {
 // instants from 0 to spec.t_end (a loop over sim::Trajectory).
 // Adaptive methods sample by dense output, so output times never force steps;
 // fixed-step methods shorten spec.step so that it divides the sample spacing.
-// Numerical failure is not thrown: it ends the run and is returned in `failure`.
+// Numerical failure is not thrown: it ends the run and is returned in `failure`
+// (a sample that lost the motion, sim/drift.hpp, is one; samples hold only
+// those before it).
 // Throws std::invalid_argument for a spec that cannot run (incompatible method).
 RunResult simulate(const RunSpec& spec);
 

@@ -18,7 +18,9 @@ class Trajectory {
   virtual Sample initial() const = 0;
   // Advances to the next output time t_k = k * spacing (k = 1, 2, ...) and
   // returns its sample. Adaptive methods sample by dense output; fixed-step
-  // methods take steps that divide the spacing. Throws numerics::IntegrationError.
+  // methods take steps that divide the spacing. Throws numerics::IntegrationError,
+  // also for a sample that is not finite or lost the motion (sim::MotionCheck
+  // with spec.max_drift): a trajectory hands out only samples that keep it.
   virtual Sample next() = 0;
 
   virtual numerics::Stats stats() const = 0;

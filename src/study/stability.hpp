@@ -12,11 +12,18 @@
 
 namespace epviz::study {
 
-// Whether one fixed-step run of `c`'s preset over t_end keeps the motion:
-// no failure, finite, global error <= 0.1 and relative energy drift <= 0.1 at t_end.
+// The largest state error at t_end, against the reference, of a run that
+// keeps the motion's shape.
+inline constexpr double kMaxStateError = 0.1;
+
+// Whether one fixed-step run of `c`'s preset over t_end keeps the motion: no
+// failure (in particular none of the run's own drift check, sim::MotionCheck
+// at the default limit) and a state error at most kMaxStateError at t_end.
 struct StepVerdict {
   bool ok = true;
-  std::string reason;  // "" when ok: "blew up: ...", "lost the motion: error ...", or the failure
+  // "" when ok: "blew up: ..." (not finite), "lost the motion: ..." (the drift
+  // check), "failed: ..." (another failure) or "off the reference: error ...".
+  std::string reason;
   double error = 0.0, energy_drift = 0.0, failure_t = 0.0;
 };
 StepVerdict check_fixed_step(physics::Case c, sim::Method m, double step, double t_end,
