@@ -114,8 +114,15 @@ std::optional<std::string> OriginPolicy::normalize_origin(std::string_view origi
   const auto& [scheme, a] = *split;
   const bool default_port =
       (scheme == "http" && a.port == 80) || (scheme == "https" && a.port == 443);
-  return scheme + "://" + with_brackets(a.host) +
-         (default_port ? "" : ":" + std::to_string(a.port));
+  // Appended piecewise: GCC 12 warns (-Wrestrict, a false positive) on "literal" + string&&.
+  std::string out = scheme;
+  out += "://";
+  out += with_brackets(a.host);
+  if (!default_port) {
+    out += ':';
+    out += std::to_string(a.port);
+  }
+  return out;
 }
 
 bool OriginPolicy::names_this_server(const Authority& a) const {
