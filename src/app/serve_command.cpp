@@ -71,7 +71,7 @@ int run_serve(const ServeOptions& o) {
   so.page = io::find_data_path("assets/serve.html");
   if (so.page.empty()) {
     std::string searched;
-    for (const auto& dir : render::data_search_path()) searched += " " + (dir / "assets").string();
+    for (const auto& dir : io::data_search_path()) searched += " " + (dir / "assets").string();
     throw UsageError("the page serve.html is missing; searched:" + searched +
                      " (set EPVIZ_DATA_DIR)");
   }
