@@ -7,6 +7,7 @@
 
 #include "app/bench_command.hpp"
 #include "app/cases_command.hpp"
+#include "app/cli_values.hpp"
 #include "app/simulate_command.hpp"
 #ifdef EPVIZ_HAVE_RENDER
 #include "app/check_command.hpp"
@@ -45,6 +46,7 @@ int main(int argc, char** argv) {
   commands["check"] = epviz::app::add_check_command(app);
   commands["serve"] = epviz::app::add_serve_command(app);
 #endif
+  epviz::app::reject_empty_values(app);
 
   try {
     app.parse(argc, argv);

@@ -22,42 +22,9 @@ namespace epviz::app {
 namespace {
 
 struct RawOptions {
-  std::string job, case_name, inertia, com, weight, omega, gamma, formulation, method, tol, step,
-      t_end, samples, csv, report_json, max_steps, max_drift;
-  bool allow_nonphysical = false, normalize_gamma = false, no_chart_switch = false;
+  std::string job, csv, report_json, max_steps;
+  SimulationOptions sim;
 };
-
-SimulationFields fields_from_cli(const RawOptions& o) {
-  SimulationFields f;
-  auto vec = [](Given<std::array<double, 3>>& g, const std::string& v, const char* opt) {
-    if (!v.empty()) g.set(parse_vec3(opt, v), opt);
-  };
-  auto num = [](Given<double>& g, const std::string& v, const char* opt, bool positive) {
-    if (v.empty()) return;
-    const double x = parse_number(opt, v);
-    if (positive && !(x > 0.0))
-      throw UsageError(std::string(opt) + ": expected a positive number, got '" + v + "'");
-    g.set(x, opt);
-  };
-  if (!o.case_name.empty()) f.case_name.set(o.case_name, "--case");
-  vec(f.inertia, o.inertia, "--inertia");
-  vec(f.com, o.com, "--com");
-  vec(f.omega, o.omega, "--omega");
-  vec(f.gamma, o.gamma, "--gamma");
-  num(f.weight, o.weight, "--weight", false);
-  num(f.tol, o.tol, "--tol", true);
-  num(f.step, o.step, "--step", true);
-  num(f.t_end, o.t_end, "--t-end", true);
-  num(f.max_drift, o.max_drift, "--max-drift", true);
-  if (!o.samples.empty())
-    f.samples.set(parse_integer("--samples", o.samples, 1, 100'000'000), "--samples");
-  if (!o.formulation.empty()) f.formulation.set(o.formulation, "--formulation");
-  if (!o.method.empty()) f.method.set(o.method, "--method");
-  if (o.allow_nonphysical) f.allow_nonphysical.set(true, "--allow-nonphysical");
-  if (o.normalize_gamma) f.normalize_gamma.set(true, "--normalize-gamma");
-  if (o.no_chart_switch) f.chart_switch.set(false, "--no-chart-switch");
-  return f;
-}
 
 SimulationFields fields_from_job(const std::string& path) {
   try {
@@ -117,7 +84,8 @@ void print_summary(std::FILE* out, const sim::RunSpec& spec, const sim::RunResul
 int run_simulate(const RawOptions& raw) {
   SimulationFields fields;
   if (!raw.job.empty()) fields = fields_from_job(raw.job);
-  fields.overlay(fields_from_cli(raw));
+  fields.overlay(fields_from_options(raw.sim));
+  require_distinct_files({{"--csv", raw.csv}, {"--report-json", raw.report_json}});
   check_output_file("--csv", raw.csv);
   check_output_file("--report-json", raw.report_json);
   const bool csv_to_stdout = !raw.csv.empty() && io::writes_to_standard_output(raw.csv);
@@ -202,37 +170,14 @@ std::function<int()> add_simulate_command(CLI::App& app) {
       app.add_subcommand("simulate", "Integrate one body (or every preset) and write samples");
   cmd->add_option("--job", raw->job,
                   "JSON job file with the same fields (options given here override it)");
-  cmd->add_option("--case", raw->case_name,
-                  "euler|lagrange|kovalevskaya|goryachev-chaplygin|hess|generic, or all");
-  cmd->add_option("--inertia", raw->inertia, "principal moments I1,I2,I3");
-  cmd->add_option("--com", raw->com, "centre of mass a0,b0,c0 in body axes");
-  cmd->add_option("--weight", raw->weight, "weight P = m g");
-  cmd->add_option("--omega", raw->omega, "initial angular velocity W1,W2,W3 (body axes)");
-  cmd->add_option("--gamma", raw->gamma, "initial unit vertical G1,G2,G3 (body axes)");
-  cmd->add_option("--formulation", raw->formulation,
-                  sim::names_joined(sim::all_formulations()) + " (default direct)");
-  cmd->add_option("--method", raw->method,
-                  sim::names_joined(sim::all_methods()) + " (default dop853)");
-  cmd->add_option("--tol", raw->tol,
-                  "relative and absolute tolerance of adaptive methods (default 1e-10)");
-  cmd->add_option("--step", raw->step, "largest step of fixed-step methods (default 0.01)");
-  cmd->add_option("--t-end", raw->t_end, "final time (default 20)");
+  add_simulation_options(*cmd, raw->sim);
   cmd->add_option("--max-steps", raw->max_steps,
                   "adaptive methods: end the run as failed after this many steps (default 1e8)");
-  cmd->add_option("--samples", raw->samples, "N: write N+1 equally spaced samples (default 200)");
-  cmd->add_option("--max-drift", raw->max_drift,
-                  "fail (lost the motion) at the first sample whose relative energy or |gamma|^2 "
-                  "drift exceeds X (default 1)");
   cmd->add_option("--csv", raw->csv,
                   "write the samples to this CSV file ('-': standard output; the summary then "
                   "goes to stderr)");
   cmd->add_option("--report-json", raw->report_json,
                   "write the run report to this JSON file ('-': standard output)");
-  cmd->add_flag("--allow-nonphysical", raw->allow_nonphysical,
-                "accept moments that break the triangle inequalities");
-  cmd->add_flag("--normalize-gamma", raw->normalize_gamma, "rescale a non-unit initial gamma");
-  cmd->add_flag("--no-chart-switch", raw->no_chart_switch,
-                "riccati: keep the north chart even near the south pole (to show the pole)");
   return [raw] { return run_simulate(*raw); };
 }
 

@@ -1,42 +1,216 @@
 #include "io/json_reader.hpp"
 
+#include <cerrno>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <fstream>
-#include <sstream>
+
+#include "io/printable.hpp"
 
 namespace epviz::io {
+namespace {
 
-nlohmann::json read_json_file(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw JobError(path.string() + ": cannot open the file for reading");
-  std::stringstream text;
-  text << in.rdbuf();
+using Json = nlohmann::json;
+
+// File names may hold any byte but '/' and NUL; long ones are legitimate.
+std::string file_name(const std::string& file) { return printable(file, 1000); }
+
+// Where the parser is, as a key path ("camera.azimuth", "jobs[2]"), so that
+// errors the parser raises before a value exists can still name its key.
+// Also refuses a key given twice in one object and nesting past the limit.
+class ParseTracker {
+ public:
+  explicit ParseTracker(std::string file) : file_(std::move(file)) {}
+
+  bool on_event(Json::parse_event_t event, const Json& parsed) {
+    using E = Json::parse_event_t;
+    switch (event) {
+      case E::object_start:
+      case E::array_start:
+        if (levels_.size() >= std::size_t(max_json_depth))
+          throw JobError(file_name(file_) + ": " + at(2) + "nested deeper than " +
+                         std::to_string(max_json_depth) + " levels of arrays and objects");
+        levels_.push_back({event == E::object_start, {}, {}, 0});
+        break;
+      case E::key: {
+        auto& top = levels_.back();
+        top.key = parsed.get<std::string>();
+        if (!top.keys.insert(top.key).second)
+          throw JobError(file_name(file_) + ": " + at() +
+                         "given twice in one object (only one is allowed)");
+        break;
+      }
+      case E::object_end:
+      case E::array_end:
+        levels_.pop_back();
+        next_element();
+        break;
+      case E::value: next_element(); break;
+    }
+    return true;
+  }
+
+  // "key 'a.b': ", or "" at the top level; deeper than `max_levels`, "key 'a[0]...': ".
+  std::string at(std::size_t max_levels = std::size_t(max_json_depth)) const {
+    std::string path;
+    for (const auto& l : levels_) {
+      if (max_levels-- == 0) {
+        path += "...";
+        break;
+      }
+      if (l.object)
+        path += (path.empty() ? "" : ".") + l.key;
+      else
+        path += "[" + std::to_string(l.index) + "]";
+    }
+    return path.empty() ? "" : "key '" + printable(path, 200) + "': ";
+  }
+
+ private:
+  struct Level {
+    bool object;
+    std::set<std::string> keys;  // objects: the keys seen so far
+    std::string key;             // objects: the key whose value is being read
+    std::size_t index;           // arrays: the element being read
+  };
+  void next_element() {
+    if (!levels_.empty() && !levels_.back().object) ++levels_.back().index;
+  }
+
+  std::string file_;
+  std::vector<Level> levels_;
+};
+
+// "1e400" from the library's "number overflow parsing '1e400'".
+std::string overflowing_token(const std::string& what) {
+  const auto open = what.find("parsing '");
+  const auto close = what.rfind('\'');
+  if (open == std::string::npos || close == std::string::npos || close <= open + 9) return "";
+  return " " + printable(what.substr(open + 9, close - open - 9), 40);
+}
+
+// The value itself, cut off once `out` reaches `limit` bytes. Each level of
+// nesting adds at least one byte, so the recursion is as deep as `limit` at most.
+void preview(const Json& v, std::string& out, std::size_t limit) {
+  if (out.size() >= limit) return;
+  switch (v.type()) {
+    case Json::value_t::array: {
+      out += '[';
+      bool first = true;
+      for (const auto& x : v) {
+        if (out.size() >= limit) return;
+        if (!first) out += ", ";
+        first = false;
+        preview(x, out, limit);
+      }
+      out += ']';
+      break;
+    }
+    case Json::value_t::object: {
+      out += '{';
+      bool first = true;
+      for (auto it = v.begin(); it != v.end(); ++it) {
+        if (out.size() >= limit) return;
+        if (!first) out += ", ";
+        first = false;
+        out += '"' + printable(it.key(), limit - out.size()) + "\": ";
+        preview(it.value(), out, limit);
+      }
+      out += '}';
+      break;
+    }
+    case Json::value_t::string:
+      out += '"' + printable(v.get_ref<const std::string&>(), limit - out.size()) + '"';
+      break;
+    default: out += v.dump(); break;  // a number, true, false or null: short
+  }
+}
+
+}  // namespace
+
+Json parse_json_text(std::string_view text, const std::string& file) {
+  ParseTracker tracker(file);
+  Json j;
   try {
-    auto j = nlohmann::json::parse(text.str());
-    if (!j.is_object()) throw JobError(path.string() + ": the job must be a JSON object {...}");
-    return j;
-  } catch (const nlohmann::json::parse_error& e) {
+    j = Json::parse(text.begin(), text.end(), [&](int, Json::parse_event_t e, Json& parsed) {
+      return tracker.on_event(e, parsed);
+    });
+  } catch (const Json::parse_error& e) {
     // e.byte is the offset of the failure; turn it into line:column for the user.
-    const std::string s = text.str();
     std::size_t line = 1, col = 1;
-    for (std::size_t i = 0; i + 1 < e.byte && i < s.size(); ++i) {
-      if (s[i] == '\n') {
+    for (std::size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
+      if (text[i] == '\n') {
         ++line;
         col = 1;
       } else {
         ++col;
       }
     }
-    throw JobError(path.string() + ":" + std::to_string(line) + ":" + std::to_string(col) +
+    throw JobError(file_name(file) + ":" + std::to_string(line) + ":" + std::to_string(col) +
                    ": not valid JSON");
+  } catch (const Json::out_of_range& e) {
+    // The one range error of the parser: a number too large for a double.
+    throw JobError(file_name(file) + ": " + tracker.at() + "the number" +
+                   overflowing_token(e.what()) +
+                   " is out of range (a double holds magnitudes up to about 1.8e308)");
+  } catch (const Json::exception& e) {
+    throw JobError(file_name(file) + ": not valid JSON (" + printable(e.what(), 120) + ")");
+  }
+  if (!j.is_object()) throw JobError(file_name(file) + ": the job must be a JSON object {...}");
+  return j;
+}
+
+Json read_json_file(const std::filesystem::path& path) {
+  const std::string file = path.string();
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw JobError(file_name(file) + ": is a directory, not a job file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw JobError(file_name(file) + ": cannot open the file for reading (" + std::strerror(errno) +
+                   ")");
+  // Read at most one byte past the limit: /dev/zero or an endless pipe ends here.
+  std::string text;
+  char buffer[1 << 16];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    text.append(buffer, std::size_t(in.gcount()));
+    if (text.size() > max_json_file_bytes)
+      throw JobError(file_name(file) + ": larger than " +
+                     std::to_string(max_json_file_bytes >> 20) + " MiB, the limit for a job file");
+  }
+  if (in.bad()) throw JobError(file_name(file) + ": cannot read the file");
+  return parse_json_text(text, file);
+}
+
+std::string describe(const Json& value) {
+  constexpr std::size_t limit = 60;
+  std::string text;
+  preview(value, text, limit);
+  if (text.size() > limit) text = text.substr(0, limit);
+  const bool cut = text.size() >= limit;
+  // Don't end the cut inside a UTF-8 sequence.
+  while (cut && !text.empty() && (static_cast<unsigned char>(text.back()) & 0xc0) == 0x80)
+    text.pop_back();
+  if (cut && !text.empty() && static_cast<unsigned char>(text.back()) >= 0xc0) text.pop_back();
+  if (cut) text += "...";
+  switch (value.type()) {
+    case Json::value_t::array: return "an array " + text;
+    case Json::value_t::object: return "an object " + text;
+    case Json::value_t::string: return "a string " + text;
+    case Json::value_t::number_integer:
+    case Json::value_t::number_unsigned: return "the integer " + text;
+    case Json::value_t::number_float: return "the number " + text;
+    default: return text;  // true, false, null
   }
 }
 
-ObjectReader::ObjectReader(const nlohmann::json& object, std::string file, std::string path)
+ObjectReader::ObjectReader(const Json& object, std::string file, std::string path)
     : object_(&object), file_(std::move(file)), path_(std::move(path)) {}
 
 std::string ObjectReader::where(const std::string& key) const {
-  return file_ + ": key '" + (path_.empty() ? key : path_ + "." + key) + "'";
+  return file_name(file_) + ": key '" + printable(path_.empty() ? key : path_ + "." + key, 200) +
+         "'";
 }
 
 void ObjectReader::fail(const std::string& key, const std::string& what) const {
@@ -51,7 +225,7 @@ std::optional<std::string> ObjectReader::peek_string(const std::string& key) con
   return it->get<std::string>();
 }
 
-const nlohmann::json* ObjectReader::get(const std::string& key) {
+const Json* ObjectReader::get(const std::string& key) {
   read_.insert(key);
   auto it = object_->find(key);
   return it == object_->end() ? nullptr : &*it;
@@ -60,7 +234,7 @@ const nlohmann::json* ObjectReader::get(const std::string& key) {
 std::optional<double> ObjectReader::number(const std::string& key) {
   const auto* v = get(key);
   if (!v) return std::nullopt;
-  if (!v->is_number()) fail(key, "expected a number, got " + v->dump());
+  if (!v->is_number()) fail(key, "expected a number, got " + describe(*v));
   const double x = v->get<double>();
   if (!std::isfinite(x)) fail(key, "expected a finite number");
   return x;
@@ -68,32 +242,43 @@ std::optional<double> ObjectReader::number(const std::string& key) {
 
 std::optional<double> ObjectReader::positive_number(const std::string& key) {
   auto x = number(key);
-  if (x && !(*x > 0.0)) fail(key, "expected a positive number, got " + object_->at(key).dump());
+  if (x && !(*x > 0.0)) fail(key, "expected a positive number, got " + describe(object_->at(key)));
+  return x;
+}
+
+std::optional<double> ObjectReader::number_in(const std::string& key, double min_value,
+                                              double max_value, const std::string& allowed) {
+  auto x = number(key);
+  if (x && !(*x >= min_value && *x <= max_value))
+    fail(key, "expected " + allowed + ", got " + describe(object_->at(key)));
   return x;
 }
 
 std::optional<long> ObjectReader::integer(const std::string& key, long min_value, long max_value) {
   const auto* v = get(key);
   if (!v) return std::nullopt;
-  if (!v->is_number_integer()) fail(key, "expected an integer, got " + v->dump());
-  const long x = v->get<long>();
-  if (x < min_value || x > max_value)
-    fail(key, "expected an integer from " + std::to_string(min_value) + " to " +
-                  std::to_string(max_value) + ", got " + std::to_string(x));
-  return x;
+  const std::string expected =
+      "expected an integer from " + std::to_string(min_value) + " to " + std::to_string(max_value);
+  if (!v->is_number_integer()) fail(key, expected + ", got " + describe(*v));
+  // An unsigned value past the largest long must not wrap around to a negative one.
+  const bool in_range = v->is_number_unsigned()
+                            ? max_value >= 0 && v->get<std::uint64_t>() <= std::uint64_t(max_value)
+                            : v->get<long>() >= min_value && v->get<long>() <= max_value;
+  if (!in_range) fail(key, expected + ", got " + describe(*v));
+  return v->get<long>();
 }
 
 std::optional<bool> ObjectReader::boolean(const std::string& key) {
   const auto* v = get(key);
   if (!v) return std::nullopt;
-  if (!v->is_boolean()) fail(key, "expected true or false, got " + v->dump());
+  if (!v->is_boolean()) fail(key, "expected true or false, got " + describe(*v));
   return v->get<bool>();
 }
 
 std::optional<std::string> ObjectReader::string(const std::string& key) {
   const auto* v = get(key);
   if (!v) return std::nullopt;
-  if (!v->is_string()) fail(key, "expected a string, got " + v->dump());
+  if (!v->is_string()) fail(key, "expected a string, got " + describe(*v));
   return v->get<std::string>();
 }
 
@@ -105,17 +290,17 @@ std::optional<std::string> ObjectReader::choice(const std::string& key,
     if (a == *s) return s;
   std::string list;
   for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-  fail(key, "'" + *s + "' is not one of: " + list);
+  fail(key, "'" + printable(*s) + "' is not one of: " + list);
 }
 
 std::optional<std::array<double, 3>> ObjectReader::vec3(const std::string& key) {
   const auto* v = get(key);
   if (!v) return std::nullopt;
   if (!v->is_array() || v->size() != 3)
-    fail(key, "expected an array of 3 numbers, got " + v->dump());
+    fail(key, "expected an array of 3 numbers, got " + describe(*v));
   std::array<double, 3> out{};
   for (std::size_t i = 0; i < 3; ++i) {
-    if (!(*v)[i].is_number()) fail(key, "expected an array of 3 numbers, got " + v->dump());
+    if (!(*v)[i].is_number()) fail(key, "expected an array of 3 numbers, got " + describe(*v));
     out[i] = (*v)[i].get<double>();
   }
   return out;
@@ -124,7 +309,7 @@ std::optional<std::array<double, 3>> ObjectReader::vec3(const std::string& key) 
 std::optional<ObjectReader> ObjectReader::object(const std::string& key) {
   const auto* v = get(key);
   if (!v) return std::nullopt;
-  if (!v->is_object()) fail(key, "expected an object {...}, got " + v->dump());
+  if (!v->is_object()) fail(key, "expected an object {...}, got " + describe(*v));
   return ObjectReader(*v, file_, path_.empty() ? key : path_ + "." + key);
 }
 

@@ -1,13 +1,17 @@
 #pragma once
 // Typed, strict reading of JSON job files: every error names the file, the key
 // path and what is allowed, and keys nobody asked for are errors (a typo must
-// not pass silently).
+// not pass silently). Hostile files are errors too, not crashes: a file is read
+// up to a size limit, nesting is bounded, a key given twice is refused, and
+// values are quoted in messages by type and a short prefix, on one line.
 #include <array>
+#include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -19,8 +23,23 @@ class JobError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Parses a whole file; a syntax error names the file, line and column.
+// Job files are a few kilobytes; the limit keeps /dev/zero or a runaway
+// generator from filling the memory.
+inline constexpr std::size_t max_json_file_bytes = std::size_t{16} << 20;
+// Jobs nest three levels deep; the limit keeps a hostile file from reaching
+// the recursion of whatever walks the value later.
+inline constexpr int max_json_depth = 64;
+
+// Reads and parses a whole file (at most max_json_file_bytes, so a device or a
+// pipe is not read forever); the root must be an object. Errors name the file
+// and, for a syntax error, the line and column.
 nlohmann::json read_json_file(const std::filesystem::path& path);
+// The same for text already read; `file` names it in messages.
+nlohmann::json parse_json_text(std::string_view text, const std::string& file);
+
+// A JSON value for an error message: its type and a short prefix of it, on
+// one line whatever its size, depth or content ("an array [[[[[...").
+std::string describe(const nlohmann::json& value);
 
 // Reads the members of one JSON object. Call finish() after the last get to
 // reject unknown keys.
@@ -38,6 +57,9 @@ class ObjectReader {
   const nlohmann::json* raw(const std::string& key) { return get(key); }
   std::optional<double> number(const std::string& key);
   std::optional<double> positive_number(const std::string& key);
+  // A number from `min_value` to `max_value`; `allowed` words the range for the message.
+  std::optional<double> number_in(const std::string& key, double min_value, double max_value,
+                                  const std::string& allowed);
   std::optional<long> integer(const std::string& key, long min_value, long max_value);
   std::optional<bool> boolean(const std::string& key);
   std::optional<std::string> string(const std::string& key);

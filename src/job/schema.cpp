@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <functional>
 
+#include "io/printable.hpp"
 #include "scene/theme.hpp"
 
 namespace epviz::job {
@@ -82,10 +83,18 @@ Sim sim_text(const char* key, SimMember<std::string> m, std::string allowed, std
           }};
 }
 
-Sim sim_vec(const char* key, SimMember<Vec3> m, std::string help) {
-  return {{key, ValueType::vec3, "", "three numbers", std::move(help)},
+// Three numbers, each from `lo` to `hi`.
+Sim sim_vec(const char* key, SimMember<Vec3> m, double lo, double hi, std::string help) {
+  const std::string allowed =
+      "three numbers from " + format_number(lo) + " to " + format_number(hi);
+  return {{key, ValueType::vec3, "", allowed, std::move(help)},
           [=](io::ObjectReader& r, SimulationFields& f) {
-            if (auto v = r.vec3(key)) (f.*m).set(*v, r.where(key));
+            if (auto v = r.vec3(key)) {
+              for (double x : *v)
+                if (!(x >= lo && x <= hi))
+                  r.fail(key, "expected " + allowed + ", got " + io::describe(*r.raw(key)));
+              (f.*m).set(*v, r.where(key));
+            }
           },
           [=](const SimulationFields& f, Json& j) {
             if (f.*m) j[key] = *(f.*m);
@@ -103,6 +112,19 @@ Sim sim_number(const char* key, SimMember<double> m, bool positive, std::string 
           }};
 }
 
+// A number from `lo` to `hi`.
+Sim sim_number_in(const char* key, SimMember<double> m, double lo, double hi, std::string help) {
+  const std::string allowed = format_number(lo) + " to " + format_number(hi);
+  return {{key, ValueType::number, "", allowed, std::move(help)},
+          [=](io::ObjectReader& r, SimulationFields& f) {
+            if (auto v = r.number_in(key, lo, hi, "a number from " + allowed))
+              (f.*m).set(*v, r.where(key));
+          },
+          [=](const SimulationFields& f, Json& j) {
+            if (f.*m) j[key] = *(f.*m);
+          }};
+}
+
 Sim sim_flag(const char* key, SimMember<bool> m, std::string help) {
   return {{key, ValueType::boolean, "false", "true, false", std::move(help)},
           [=](io::ObjectReader& r, SimulationFields& f) {
@@ -113,18 +135,22 @@ Sim sim_flag(const char* key, SimMember<bool> m, std::string help) {
           }};
 }
 
-constexpr long kMaxSamples = 100'000'000;
-
 // "tol" is read by read_simulation_fields itself ("auto" or a number).
 const std::vector<Sim>& simulation_entries() {
   static const std::vector<Sim> entries{
-      sim_text("case", &SimulationFields::case_name, "a case preset (epviz cases)",
-               "the classical case whose body and state are the defaults; none: a generic body"),
-      sim_vec("inertia", &SimulationFields::inertia, "principal moments I1, I2, I3"),
-      sim_vec("com", &SimulationFields::com, "centre of mass in body axes"),
-      sim_vec("omega", &SimulationFields::omega, "initial angular velocity in body axes"),
-      sim_vec("gamma", &SimulationFields::gamma, "initial vertical in body axes (unit length)"),
-      sim_number("weight", &SimulationFields::weight, false, "weight m g"),
+      sim_text("case", &SimulationFields::case_name, "a case preset (epviz cases), or custom",
+               "the classical case whose body and state are the defaults; none or custom: a "
+               "body of one's own (the generic preset's values for what is not given)"),
+      sim_vec("inertia", &SimulationFields::inertia, min_moment, max_moment,
+              "principal moments I1, I2, I3"),
+      sim_vec("com", &SimulationFields::com, -max_magnitude, max_magnitude,
+              "centre of mass in body axes"),
+      sim_vec("omega", &SimulationFields::omega, -max_magnitude, max_magnitude,
+              "initial angular velocity in body axes"),
+      sim_vec("gamma", &SimulationFields::gamma, -max_magnitude, max_magnitude,
+              "initial vertical in body axes (unit length)"),
+      sim_number_in("weight", &SimulationFields::weight, -max_magnitude, max_magnitude,
+                    "weight m g"),
       {{"tol", ValueType::number, "auto", "1e-15 to 0.1, or \"auto\"",
         "tolerance of an adaptive method; auto: an error well below a pixel at the job's "
         "resolution"},
@@ -136,10 +162,10 @@ const std::vector<Sim>& simulation_entries() {
        }},
       sim_number("step", &SimulationFields::step, true, "step of a fixed-step method"),
       sim_number("t_end", &SimulationFields::t_end, true, "simulation time of the run"),
-      {{"samples", ValueType::integer, "", "1 to " + std::to_string(kMaxSamples),
+      {{"samples", ValueType::integer, "", "1 to " + std::to_string(max_samples),
         "output samples (epviz simulate)"},
        [](io::ObjectReader& r, SimulationFields& f) {
-         if (auto v = r.integer("samples", 1, kMaxSamples)) f.samples.set(*v, r.where("samples"));
+         if (auto v = r.integer("samples", 1, max_samples)) f.samples.set(*v, r.where("samples"));
        },
        [](const SimulationFields& f, Json& j) {
          if (f.samples) j["samples"] = *f.samples;
@@ -174,7 +200,7 @@ using Job = Entry<JobDocument>;
 scene::Rgba parse_colour(const io::ObjectReader& r, const std::string& key,
                          const std::string& text) {
   const std::string expected =
-      "expected a colour \"#rrggbb\" or \"#rrggbbaa\", got \"" + text + "\"";
+      "expected a colour \"#rrggbb\" or \"#rrggbbaa\", got \"" + io::printable(text) + "\"";
   if (text.empty() || text[0] != '#' || (text.size() != 7 && text.size() != 9))
     r.fail(key, expected);
   auto hex = [&](std::size_t i) {
@@ -289,14 +315,19 @@ const std::vector<Job>& job_entries() {
               }
             },
             [](const JobDocument& d, Json& j) { j["elevation"] = d.scene.camera.elevation_deg; }},
-           {{"distance", ValueType::number, fmt(defaults.camera.distance), "> 1.2",
+           {{"distance", ValueType::number, fmt(defaults.camera.distance),
+             "more than " + format_number(min_camera_distance) + ", at most " +
+                 format_number(max_camera_distance),
              "from the fixed point, in sphere radii"},
             [](io::ObjectReader& r, JobDocument& d) {
               if (auto v = r.positive_number("distance")) {
-                if (*v <= 1.2)
-                  r.fail("distance",
-                         "expected more than 1.2 sphere radii (the camera would be inside the "
-                         "sphere)");
+                if (*v <= min_camera_distance)
+                  r.fail("distance", "expected more than " + format_number(min_camera_distance) +
+                                         " sphere radii (the camera would be inside the sphere)");
+                if (*v > max_camera_distance)
+                  r.fail("distance", "expected at most " + format_number(max_camera_distance) +
+                                         " sphere radii (the sphere would be a dot), got " +
+                                         io::describe(*r.raw("distance")));
                 d.scene.camera.distance = *v;
               }
             },
@@ -343,10 +374,14 @@ const std::vector<Job>& job_entries() {
        {},
        {},
        {
-           {{"extent", ValueType::number, fmt(defaults.plane_extent), "> 0",
+           {{"extent", ValueType::number, fmt(defaults.plane_extent),
+             format_number(min_plane_extent) + " to " + format_number(max_plane_extent),
              "the panel shows [-extent, extent]^2"},
             [](io::ObjectReader& r, JobDocument& d) {
-              if (auto v = r.positive_number("extent")) d.scene.plane_extent = float(*v);
+              if (auto v = r.number_in("extent", min_plane_extent, max_plane_extent,
+                                       "a number from " + format_number(min_plane_extent) + " to " +
+                                           format_number(max_plane_extent)))
+                d.scene.plane_extent = float(*v);
             },
             [](const JobDocument& d, Json& j) { j["extent"] = d.scene.plane_extent; }},
        }},
@@ -420,6 +455,21 @@ void take(Given<T>& mine, const Given<T>& theirs) {
 }
 
 }  // namespace
+
+std::string format_number(double value) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", value);
+  std::string s = buf;
+  // "1e+06" -> "1e6", "1e-06" -> "1e-6": as one would write it in a job.
+  if (const auto e = s.find('e'); e != std::string::npos) {
+    std::string mantissa = s.substr(0, e), exponent = s.substr(e + 1);
+    const bool negative = exponent[0] == '-';
+    if (exponent[0] == '+' || exponent[0] == '-') exponent.erase(0, 1);
+    exponent.erase(0, std::min(exponent.find_first_not_of('0'), exponent.size() - 1));
+    s = mantissa + "e" + (negative ? "-" : "") + exponent;
+  }
+  return s;
+}
 
 void SimulationFields::overlay(const SimulationFields& o) {
   take(case_name, o.case_name);

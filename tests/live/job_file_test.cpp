@@ -141,6 +141,22 @@ TEST(JobFile, EveryWrittenFieldIsReadBackEqual) {
   }
 }
 
+// The job format bounds some numbers (job/schema.hpp); whatever the live
+// controls reach must stay inside them, or a saved job would not render.
+TEST(JobFile, TheLiveControlsLimitsAreInsideTheJobFormatsBounds) {
+  for (const double distance : {1.5, 20.0}) {  // the orbit camera's zoom range
+    LiveSetup s = preset_setup(physics::Case::lagrange);
+    s.scene.camera.distance = distance;
+    const auto text = render_job_json(s, "edge", 2.0);
+    EXPECT_NO_THROW(job::read_job(nlohmann::json::parse(text), "edge.json")) << text;
+  }
+  EXPECT_GT(1.5, job::min_camera_distance);
+  EXPECT_LE(20.0, job::max_camera_distance);
+  const scene::SceneSettings defaults;
+  EXPECT_GE(defaults.plane_extent, job::min_plane_extent);
+  EXPECT_LE(defaults.plane_extent, job::max_plane_extent);
+}
+
 void expect_listed(const nlohmann::json& object, const std::string& prefix,
                    const std::vector<std::string>& listed) {
   for (const auto& [key, value] : object.items()) {

@@ -1,0 +1,195 @@
+// Strict JSON reading under hostile files: errors, never crashes; every
+// message on one line and short, whatever the value or key holds.
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "io/json_reader.hpp"
+#include "io/printable.hpp"
+
+namespace {
+
+using epviz::io::describe;
+using epviz::io::JobError;
+using epviz::io::ObjectReader;
+using epviz::io::parse_json_text;
+using epviz::io::printable;
+using nlohmann::json;
+
+// The message of the JobError `f` throws; fails the test if it throws none.
+template <class F>
+std::string error_of(F&& f) {
+  try {
+    f();
+  } catch (const JobError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no JobError";
+  return "";
+}
+
+std::string nested_arrays(int depth, const std::string& inner = "1") {
+  return std::string(std::size_t(depth), '[') + inner + std::string(std::size_t(depth), ']');
+}
+
+bool one_line(const std::string& s) { return s.find('\n') == std::string::npos; }
+
+TEST(JsonReader, NestingIsBoundedOnParse) {
+  const std::string deep = R"({"title": )" + nested_arrays(100'000) + "}";
+  const auto message = error_of([&] { parse_json_text(deep, "deep.json"); });
+  EXPECT_NE(message.find("deep.json: key 'title"), std::string::npos) << message.substr(0, 300);
+  EXPECT_NE(message.find("nested deeper than 64"), std::string::npos) << message.substr(0, 300);
+  EXPECT_LT(message.size(), 400u);
+}
+
+TEST(JsonReader, NestingUpToTheLimitIsRead) {
+  // The root object is one level, so 63 arrays inside it reach the limit.
+  const auto at_limit = parse_json_text(R"({"a": )" + nested_arrays(63) + "}", "ok.json");
+  EXPECT_TRUE(at_limit["a"].is_array());
+  EXPECT_THROW(parse_json_text(R"({"a": )" + nested_arrays(64) + "}", "ok.json"), JobError);
+}
+
+TEST(JsonReader, DuplicateKeysAreRefusedByPath) {
+  const auto message =
+      error_of([] { parse_json_text(R"({"camera": {"azimuth": 1, "azimuth": 2}})", "d.json"); });
+  EXPECT_NE(message.find("d.json: key 'camera.azimuth': given twice"), std::string::npos)
+      << message;
+  // The same key in two different objects is fine.
+  EXPECT_NO_THROW(
+      parse_json_text(R"({"a": {"x": 1}, "b": {"x": 2}, "c": [{"x": 1}, {"x": 2}]})", "ok.json"));
+}
+
+TEST(JsonReader, NumberOverflowNamesTheKey) {
+  auto message = error_of([] { parse_json_text(R"({"simulation": {"t_end": 1e400}})", "o.json"); });
+  EXPECT_NE(message.find("o.json: key 'simulation.t_end': the number 1e400 is out of range"),
+            std::string::npos)
+      << message;
+  message = error_of([] { parse_json_text(R"({"v": [1, -1e999, 3]})", "o.json"); });
+  EXPECT_NE(message.find("key 'v[1]'"), std::string::npos) << message;
+}
+
+TEST(JsonReader, SyntaxErrorsNameLineAndColumn) {
+  const auto message = error_of([] { parse_json_text("{\n  \"a\": x\n}", "s.json"); });
+  EXPECT_EQ(message.rfind("s.json:2:", 0), 0u) << message;
+}
+
+TEST(JsonReader, TheRootMustBeAnObject) {
+  EXPECT_NE(error_of([] { parse_json_text("[1, 2]", "r.json"); }).find("must be a JSON object"),
+            std::string::npos);
+}
+
+TEST(JsonReader, DescribeIsShortAndOneLineForAnyValue) {
+  // Built without the parser, so deeper than it would allow.
+  json deep = 1;
+  for (int i = 0; i < 100'000; ++i) {
+    json outer = json::array();
+    outer.push_back(std::move(deep));
+    deep = std::move(outer);
+  }
+  const auto d = describe(deep);
+  EXPECT_EQ(d.rfind("an array [[[[", 0), 0u) << d;
+  EXPECT_LT(d.size(), 100u);
+
+  const auto big = describe(json(std::string(10'000'000, 'x')));
+  EXPECT_EQ(big.rfind("a string \"xxx", 0), 0u) << big;
+  EXPECT_LT(big.size(), 100u);
+
+  const auto lines = describe(json{{"a\nb", "c\rd"}});
+  EXPECT_TRUE(one_line(lines)) << lines;
+  EXPECT_NE(lines.find("a\\nb"), std::string::npos) << lines;
+  EXPECT_NE(lines.find("c\\rd"), std::string::npos) << lines;
+
+  EXPECT_EQ(describe(json(2.5)), "the number 2.5");
+  EXPECT_EQ(describe(json(7)), "the integer 7");
+  EXPECT_EQ(describe(json(true)), "true");
+}
+
+TEST(JsonReader, UnknownKeysAndChoicesAreQuotedOnOneLine) {
+  const auto j = parse_json_text(R"({"vi\new": "top\nbottom", "view": "a\u2028b"})", "k.json");
+  ObjectReader r(j, "k.json");
+  const auto choice = error_of([&] { r.choice("view", {"body", "space"}); });
+  EXPECT_TRUE(one_line(choice)) << choice;
+  EXPECT_NE(choice.find("a\\u2028b"), std::string::npos) << choice;
+  const auto unknown = error_of([&] { r.finish(); });
+  EXPECT_TRUE(one_line(unknown)) << unknown;
+  EXPECT_NE(unknown.find("key 'vi\\new': unknown key"), std::string::npos) << unknown;
+}
+
+TEST(JsonReader, LargeIntegersDoNotWrapInMessages) {
+  const auto j = parse_json_text(
+      R"({"width": 18446744073709551615, "height": -9223372036854775808})", "i.json");
+  ObjectReader r(j, "i.json");
+  const auto width = error_of([&] { r.integer("width", 16, 8192); });
+  EXPECT_NE(width.find("got the integer 18446744073709551615"), std::string::npos) << width;
+  const auto height = error_of([&] { r.integer("height", 16, 8192); });
+  EXPECT_NE(height.find("got the integer -9223372036854775808"), std::string::npos) << height;
+}
+
+TEST(JsonReader, PrintableEscapesControlsAndBadUtf8AndCutsLongText) {
+  EXPECT_EQ(printable("a\nb\tc\x01"), "a\\nb\\tc\\u0001");
+  EXPECT_EQ(printable("\xff\xfe ok"), "\\xff\\xfe ok");
+  EXPECT_EQ(printable("caf\xc3\xa9"), "caf\xc3\xa9");  // UTF-8 passes through
+  EXPECT_EQ(printable("\xc2\x85"), "\\u0085");         // NEL, a C1 line break
+  const auto cut = printable(std::string(1000, 'y'), 10);
+  EXPECT_EQ(cut, "yyyyyyyyyy... (1000 bytes)");
+  // A multi-byte character is never split.
+  const auto accents = printable("\xc3\xa9\xc3\xa9\xc3\xa9", 3);
+  EXPECT_EQ(accents, "\xc3\xa9\xc3\xa9... (6 bytes)");
+}
+
+class JsonFile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("epviz-json-reader-" + std::to_string(::getpid()) + "-" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::filesystem::path dir_;
+};
+
+TEST_F(JsonFile, AnEndlessDeviceIsReadOnlyUpToTheLimit) {
+  const auto message = error_of([] { epviz::io::read_json_file("/dev/zero"); });
+  EXPECT_NE(message.find("/dev/zero: larger than 16 MiB"), std::string::npos) << message;
+}
+
+TEST_F(JsonFile, AFileOverTheLimitIsRefusedAndOneAtItIsRead) {
+  const auto at_limit = dir_ / "at.json";
+  {
+    std::ofstream out(at_limit);
+    out << "{}" << std::string(epviz::io::max_json_file_bytes - 2, ' ');
+  }
+  EXPECT_NO_THROW(epviz::io::read_json_file(at_limit));
+  std::ofstream(at_limit, std::ios::app) << ' ';
+  const auto message = error_of([&] { epviz::io::read_json_file(at_limit); });
+  EXPECT_NE(message.find("at.json: larger than 16 MiB"), std::string::npos) << message;
+}
+
+TEST_F(JsonFile, ADirectorySaysSo) {
+  const auto message = error_of([&] { epviz::io::read_json_file(dir_); });
+  EXPECT_NE(message.find(": is a directory, not a job file"), std::string::npos) << message;
+}
+
+TEST_F(JsonFile, AMissingFileSaysWhy) {
+  const auto message = error_of([&] { epviz::io::read_json_file(dir_ / "none.json"); });
+  EXPECT_NE(message.find("none.json: cannot open the file for reading (No such file"),
+            std::string::npos)
+      << message;
+}
+
+TEST_F(JsonFile, AFileNameWithANewlineStaysOnOneLine) {
+  const auto path = dir_ / "bad\nname.json";
+  std::ofstream(path) << "[]";
+  const auto message = error_of([&] { epviz::io::read_json_file(path); });
+  EXPECT_TRUE(one_line(message)) << message;
+  EXPECT_NE(message.find("bad\\nname.json"), std::string::npos) << message;
+}
+
+}  // namespace
