@@ -14,7 +14,7 @@
 
 #include "app/failure_advice.hpp"
 #include "numerics/embedded_rk.hpp"
-#include "numerics/test_systems.hpp"
+#include "numerics/provoked_failures.hpp"
 #include "sim/simulate.hpp"
 
 namespace epviz {
@@ -67,33 +67,8 @@ std::vector<Failure> real_failures() {
     spec.chart_switch = false;
     all.push_back(failed_run(spec));
   }
-  {  // step_underflow: y' = y^2 runs into its pole at t = 1.
-    AdaptiveOptions o;
-    o.rtol = o.atol = 1e-8;
-    Dop853<BlowUp> s({}, o);
-    s.init(0.0, Vec<1>(1.0));
-    all.push_back(failure_of([&] {
-      while (s.t() < 2.0) s.step();
-    }));
-  }
-  {  // step_budget
-    AdaptiveOptions o;
-    o.max_steps = 10;
-    o.h_max = 0.01;
-    Dopri5<Linear1> s(Linear1{-1.0}, o);
-    s.init(0.0, Vec<1>(1.0));
-    all.push_back(failure_of([&] {
-      while (s.t() < 1.0) s.step();
-    }));
-  }
-  {  // rejections
-    AdaptiveOptions o;
-    o.max_consecutive_rejects = 2;
-    o.h_init = 10.0;
-    Dop853<Linear1> s(Linear1{1.0}, o);
-    s.init(0.0, Vec<1>(1.0));
-    all.push_back(failure_of([&] { s.step(); }));
-  }
+  // step_underflow, step_budget, rejections: from the step control on tiny test systems.
+  for (const Failure& f : numerics::testing::step_control_failures()) all.push_back(f);
   return all;
 }
 

@@ -122,7 +122,7 @@ INSTANTIATE_TEST_SUITE_P(
                    "job.json: key 'simulation.weight': expected a number from -1e6 to 1e6"},
         HostileJob{"huge_omega", R"({"case": "generic", "omega": [1e300, 0, 0]})", "",
                    "job.json: key 'simulation.omega'"}),
-    [](const auto& info) { return info.param.name; });
+    [](const auto& param_info) { return param_info.param.name; });
 
 TEST(HostileJobFile, ADirectoryIsNotAJob) {
   test::TempDir dir;
@@ -240,7 +240,7 @@ INSTANTIATE_TEST_SUITE_P(
         HostileOption{"same_file_through_symlink",
                       "--csv {dir}/target.csv --report-json {dir}/link.csv",
                       "--report-json: the same file as --csv"}),
-    [](const auto& info) { return info.param.name; });
+    [](const auto& param_info) { return param_info.param.name; });
 
 class RenderOptionRefuses : public ::testing::TestWithParam<HostileOption> {};
 
@@ -259,7 +259,7 @@ INSTANTIATE_TEST_SUITE_P(Options, RenderOptionRefuses,
                                            HostileOption{"empty_format", "--format ''", "--format"},
                                            HostileOption{"empty_frames", "--frames ''",
                                                          "--frames"}),
-                         [](const auto& info) { return info.param.name; });
+                         [](const auto& param_info) { return param_info.param.name; });
 
 }  // namespace
 }  // namespace epviz

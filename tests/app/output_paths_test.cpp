@@ -104,7 +104,7 @@ TEST(RenderOutputPaths, ReportJsonDirectoryIsRefusedBeforeRendering) {
 }
 
 TEST(RenderOutputPaths, OutputNamesThatAreNotFileNamesAreRefused) {
-  for (const std::string name :
+  for (const std::string& name :
        {std::string("a\0b", 3), std::string("sub/frame"), std::string(".."),
         std::string("line\nbreak"), std::string(300, 'n')}) {
     test::TempDir dir;

@@ -147,7 +147,7 @@ TEST(JobFile, TheLiveControlsLimitsAreInsideTheJobFormatsBounds) {
   for (const double distance : {1.5, 20.0}) {  // the orbit camera's zoom range
     LiveSetup s = preset_setup(physics::Case::lagrange);
     s.scene.camera.distance = distance;
-    const auto text = render_job_json(s, "edge", 2.0);
+    const auto text = render_job_json(s, "edge", {}, 2.0);
     EXPECT_NO_THROW(job::read_job(nlohmann::json::parse(text), "edge.json")) << text;
   }
   EXPECT_GT(1.5, job::min_camera_distance);

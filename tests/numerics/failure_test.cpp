@@ -13,6 +13,7 @@
 #include "numerics/gauss_legendre.hpp"
 #include "numerics/rk4.hpp"
 #include "numerics/splitting.hpp"
+#include "provoked_failures.hpp"
 #include "test_systems.hpp"
 
 namespace epviz::numerics {
@@ -294,33 +295,8 @@ std::vector<Failure> provoked_failures() {
     s.init(0.0, Vec<1>(std::numeric_limits<double>::infinity()));
     all.push_back(failure_of([&] { s.step(); }));
   }
-  {  // step_underflow: y' = y^2 runs into its pole at t = 1
-    AdaptiveOptions o;
-    o.rtol = o.atol = 1e-8;
-    Dop853<BlowUp> s({}, o);
-    s.init(0.0, Vec<1>(1.0));
-    all.push_back(failure_of([&] {
-      while (s.t() < 2.0) s.step();
-    }));
-  }
-  {  // step_budget
-    AdaptiveOptions o;
-    o.max_steps = 10;
-    o.h_max = 0.01;
-    Dopri5<Linear1> s(Linear1{-1.0}, o);
-    s.init(0.0, Vec<1>(1.0));
-    all.push_back(failure_of([&] {
-      while (s.t() < 1.0) s.step();
-    }));
-  }
-  {  // rejections
-    AdaptiveOptions o;
-    o.max_consecutive_rejects = 2;
-    o.h_init = 10.0;
-    Dop853<Linear1> s(Linear1{1.0}, o);
-    s.init(0.0, Vec<1>(1.0));
-    all.push_back(failure_of([&] { s.step(); }));
-  }
+  // step_underflow, step_budget, rejections
+  for (const Failure& f : testing::step_control_failures()) all.push_back(f);
   {  // solver_divergence
     Gauss4<Linear1> s(Linear1{-1000.0});
     Vec<1> x(1.0);
