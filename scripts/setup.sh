@@ -11,7 +11,7 @@ packages=(
   libosmesa6-dev libgl-dev libegl-dev libegl-mesa0 libegl1 libglm-dev libimgui-dev libstb-dev zlib1g-dev
   ffmpeg libgsl-dev python3-scipy
   libturbojpeg0-dev chromium fonts-dejavu-core
-  clang-format python3
+  clang-format python3 clang libclang-rt-14-dev
 )
 
 missing=()

@@ -6,6 +6,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 EPVIZ_WERROR=ON bash scripts/build.sh
 ctest --test-dir build --output-on-failure -j2
+# libFuzzer on the job reader, simulate's options and the page protocol, from
+# the committed corpora, 60 s each (clang; its own build directory).
+bash scripts/fuzz.sh 60
 # EPVIZ_SANITIZERS=all, asan or tsan adds the sanitizer passes. They are off by
 # default until their time on a fresh 2-core machine is measured (docs/architecture.md).
 bash tests/sanitizers/run.sh "${EPVIZ_SANITIZERS:-none}"
