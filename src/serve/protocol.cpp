@@ -4,6 +4,8 @@
 #include <cstring>
 #include <limits>
 
+#include "io/printable.hpp"
+
 namespace epviz::serve {
 
 using nlohmann::json;
@@ -13,12 +15,11 @@ ProtocolError::ProtocolError(std::string field, const std::string& message)
 
 namespace {
 
-// A value quoted in an error message, cut short: the message goes to a log
-// line and a WebSocket close reason (at most 123 bytes).
+// A value quoted in an error message, cut short on a character boundary and
+// escaped: the message goes to a log line and a WebSocket close reason (at
+// most 123 bytes of valid UTF-8).
 std::string quote(const json& value) {
-  std::string text = value.dump(-1, ' ', false, json::error_handler_t::replace);
-  if (text.size() > 24) text = text.substr(0, 21) + "...";
-  return text;
+  return io::printable(value.dump(-1, ' ', false, json::error_handler_t::replace), 24);
 }
 
 // Reads the fields of one message; every error names the message type and the field.

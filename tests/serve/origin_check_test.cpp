@@ -9,48 +9,12 @@
 #include <cstdlib>
 #include <fstream>
 
-#include <boost/asio/ip/tcp.hpp>
-
 #include "serve_test_support.hpp"
 
 namespace epviz::serve::testing {
 namespace {
 
-namespace beast = boost::beast;
-namespace http = beast::http;
-namespace net = boost::asio;
-using tcp = net::ip::tcp;
-
-struct Request {
-  std::string target = "/ws";
-  bool upgrade = true;
-  std::optional<std::string> host = {};
-  std::optional<std::string> origin = {};
-};
-
-// Sends one request by hand and returns the response (101 for an accepted upgrade).
-http::response<http::string_body> exchange(unsigned short port, const Request& r) {
-  net::io_context io;
-  beast::tcp_stream stream(io);
-  stream.expires_after(expect_within);
-  stream.connect(tcp::endpoint(net::ip::make_address("127.0.0.1"), port));
-  http::request<http::empty_body> request{http::verb::get, r.target, 11};
-  if (r.host) request.set(http::field::host, *r.host);
-  if (r.origin) request.set(http::field::origin, *r.origin);
-  if (r.upgrade) {
-    request.set(http::field::connection, "Upgrade");
-    request.set(http::field::upgrade, "websocket");
-    request.set(http::field::sec_websocket_version, "13");
-    request.set(http::field::sec_websocket_key, "AAAAAAAAAAAAAAAAAAAAAA==");
-  }
-  http::write(stream, request);
-  beast::flat_buffer buffer;
-  http::response_parser<http::string_body> parser;
-  http::read_header(stream, buffer, parser);
-  if (parser.get().result() != http::status::switching_protocols)
-    http::read(stream, buffer, parser);
-  return parser.release();
-}
+namespace http = boost::beast::http;
 
 std::string own(unsigned short port) { return "127.0.0.1:" + std::to_string(port); }
 

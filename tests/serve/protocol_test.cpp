@@ -169,6 +169,35 @@ TEST(ServeProtocol, RefusesOutOfRangeValues) {
   expect_refused(R"({"type":"wheel","x":1,"y":2,"dx":0,"dy":-1e9})", "dy");
 }
 
+// Whether `s` is well-formed UTF-8 (a WebSocket close reason must be).
+bool is_utf8(const std::string& s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    const std::size_t n = c < 0x80         ? 1
+                          : (c >> 5) == 6  ? 2
+                          : (c >> 4) == 14 ? 3
+                          : (c >> 3) == 30 ? 4
+                                           : 0;
+    if (n == 0 || i + n > s.size()) return false;
+    for (std::size_t k = 1; k < n; ++k)
+      if ((static_cast<unsigned char>(s[i + k]) & 0xc0) != 0x80) return false;
+    i += n;
+  }
+  return true;
+}
+
+TEST(ServeProtocol, QuotedValuesAreShortValidUtf8OnOneLine) {
+  std::string accents;
+  for (int i = 0; i < 200; ++i) accents += "\u00e9";  // é, two bytes in UTF-8
+  const Refusal r = refusal_of(R"({"type":"x)" + accents + "\"}");
+  EXPECT_EQ(r.field, "type");
+  EXPECT_TRUE(is_utf8(r.message)) << r.message;
+  EXPECT_LE(r.message.size(), 123u) << r.message;  // the longest close reason
+  const Refusal lines = refusal_of(R"({"type":"resize","width":"a\nb\u2028c","height":1})");
+  EXPECT_EQ(lines.message.find('\n'), std::string::npos) << lines.message;
+  EXPECT_EQ(lines.message.find("\u2028"), std::string::npos) << lines.message;
+}
+
 TEST(ServeProtocol, RefusesOverlongText) {
   EXPECT_NO_THROW(parse_client_message(R"({"type":"text","text":")" +
                                        std::string(max_text_bytes, 'a') + "\"}"));

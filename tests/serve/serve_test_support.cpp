@@ -304,23 +304,31 @@ http::response<http::string_body> http_get(unsigned short port, const std::strin
   return response;
 }
 
-http::response<http::string_body> refused_upgrade(unsigned short port) {
-  // By hand rather than with websocket::stream::handshake, which in Boost
-  // 1.74 does not hand back the response of a declined upgrade.
+http::response<http::string_body> exchange(unsigned short port, const HandRequest& r) {
   net::io_context io;
   beast::tcp_stream stream(io);
+  stream.expires_after(expect_within);
   stream.connect(tcp::endpoint(net::ip::make_address("127.0.0.1"), port));
-  http::request<http::empty_body> request{http::verb::get, "/ws", 11};
-  request.set(http::field::host, "127.0.0.1:" + std::to_string(port));
-  request.set(http::field::connection, "Upgrade");
-  request.set(http::field::upgrade, "websocket");
-  request.set(http::field::sec_websocket_version, "13");
-  request.set(http::field::sec_websocket_key, "AAAAAAAAAAAAAAAAAAAAAA==");
+  http::request<http::empty_body> request{http::verb::get, r.target, 11};
+  if (r.host) request.set(http::field::host, *r.host);
+  if (r.origin) request.set(http::field::origin, *r.origin);
+  if (r.upgrade) {
+    request.set(http::field::connection, "Upgrade");
+    request.set(http::field::upgrade, "websocket");
+    request.set(http::field::sec_websocket_version, "13");
+    request.set(http::field::sec_websocket_key, "AAAAAAAAAAAAAAAAAAAAAA==");
+  }
   http::write(stream, request);
   beast::flat_buffer buffer;
-  http::response<http::string_body> response;
-  http::read(stream, buffer, response);
-  return response;
+  http::response_parser<http::string_body> parser;
+  http::read_header(stream, buffer, parser);
+  if (parser.get().result() != http::status::switching_protocols)
+    http::read(stream, buffer, parser);
+  return parser.release();
+}
+
+http::response<http::string_body> refused_upgrade(unsigned short port) {
+  return exchange(port, {.host = "127.0.0.1:" + std::to_string(port)});
 }
 
 // ---- JPEG ----

@@ -159,7 +159,21 @@ class TestClient {
 // One plain HTTP GET.
 boost::beast::http::response<boost::beast::http::string_body> http_get(unsigned short port,
                                                                        const std::string& target);
-// A WebSocket upgrade that is expected to be refused: the HTTP response.
+// A request written by hand, for what the server must refuse (by hand rather
+// than with websocket::stream::handshake, which in Boost 1.74 does not hand
+// back the response of a declined upgrade): the target, whether it asks for a
+// WebSocket upgrade, and the Host and Origin headers, left out when absent.
+struct HandRequest {
+  std::string target = "/ws";
+  bool upgrade = true;
+  std::optional<std::string> host = {};
+  std::optional<std::string> origin = {};
+};
+// Sends it and returns the response (101 for an accepted upgrade).
+boost::beast::http::response<boost::beast::http::string_body> exchange(unsigned short port,
+                                                                       const HandRequest& r);
+// A WebSocket upgrade from this server's own host that is expected to be
+// refused: the HTTP response.
 boost::beast::http::response<boost::beast::http::string_body> refused_upgrade(unsigned short port);
 
 // Decodes a JPEG frame payload to RGBA (TurboJPEG); throws on failure.
