@@ -164,6 +164,7 @@ nlohmann::ordered_json run_point(const PointFields& point, const sim::RunSpec& r
     row["step"] = run.step;
     row["effective_step"] = result.effective_step;
   }
+  row["initial"] = {{"omega", vec(run.initial.omega)}, {"gamma", vec(run.initial.gamma)}};
   row["energy"] =
       physics::invariants(run.body, physics::Case::custom, run.initial.omega, run.initial.gamma)
           .energy;
