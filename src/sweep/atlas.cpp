@@ -51,12 +51,16 @@ bool has_metric(const std::vector<Json>& rows, const std::string& metric) {
   return false;
 }
 
-std::string safe(std::string s) {
-  for (char& c : s)
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.' || c == '_' ||
-          c == '[' || c == ']' || c == '='))
-      c = '_';
-  return s;
+// File names without characters a shell would glob or quote: "gamma[0]" -> "gamma0".
+std::string safe(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '[' || c == ']') continue;
+    const bool plain =
+        std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.' || c == '_' || c == '=';
+    out.push_back(plain ? c : '_');
+  }
+  return out;
 }
 
 }  // namespace
@@ -120,7 +124,8 @@ std::vector<AtlasFigure> atlas_figures(const std::vector<Json>& rows, const Atla
   for (const auto& r : sorted) {
     std::string key;
     for (const auto& n : names)
-      if (n != q.x && n != q.y && n != reduced) key += "_" + n + "=" + label_of(r["axes"][n]);
+      if (n != q.x && n != q.y && n != reduced && values[n].size() > 1)
+        key += "_" + n + "=" + label_of(r["axes"][n]);
     groups[key].push_back(&r);
   }
   std::vector<AtlasFigure> out;
@@ -131,9 +136,16 @@ std::vector<AtlasFigure> atlas_figures(const std::vector<Json>& rows, const Atla
     h.rows = values[q.y];
     h.x_label = q.x;
     h.y_label = q.y;
-    h.value_label = reduced.empty() ? q.metric : "largest " + reduced + " without failure";
-    h.title = reduced.empty() ? q.metric + " over " + q.x + " and " + q.y : h.value_label;
-    if (!key.empty()) h.title += " (" + key.substr(1) + ")";
+    h.value_label = reduced.empty() ? q.metric : "largest stable " + reduced;
+    h.title = reduced.empty()
+                  ? q.metric + " over " + q.x + " and " + q.y
+                  : "largest " + reduced + " without a failure, by " + q.x + " and " + q.y;
+    std::string fixed;  // axes with one value: named in the title only
+    for (const auto& n : names)
+      if (n != q.x && n != q.y && n != reduced && values[n].size() == 1)
+        fixed += ", " + n + "=" + values[n][0];
+    if (!key.empty() || !fixed.empty())
+      h.title += " (" + (key.empty() ? fixed.substr(2) : key.substr(1) + fixed) + ")";
     h.missing_label = reduced.empty()
                           ? (q.metric == "ftle" ? "no value (a run failed)" : "no value")
                           : "every " + reduced + " failed";
@@ -159,7 +171,9 @@ std::vector<AtlasFigure> atlas_figures(const std::vector<Json>& rows, const Atla
         lo = std::min(lo, v);
         hi = std::max(hi, v);
       }
-    h.log_values = positive && hi > 0.0 && lo > 0.0 && hi / lo > 100.0;
+    // (a largest step on a log grid reads best in log10 whatever its spread).
+    h.log_values = positive && hi > 0.0 && lo > 0.0 &&
+                   (hi / lo > 100.0 || (!reduced.empty() && hi / lo > 4.0));
     f.file_name = safe("atlas_" + q.metric + "_" + q.x + "_" + q.y + key + ".png");
     out.push_back(std::move(f));
   }

@@ -23,7 +23,7 @@ class AtlasError : public std::invalid_argument {
 };
 
 struct AtlasFigure {
-  std::string file_name;  // "atlas_ftle_gamma[0]_gamma[1].png", made safe for file systems
+  std::string file_name;  // "atlas_ftle_gamma0_gamma1.png", made safe for file systems
   chart::HeatMapSpec heat_map;
 };
 

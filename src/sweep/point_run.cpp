@@ -37,6 +37,8 @@ std::string key_of(const sim::RunSpec& r) {
 
 using State = Eigen::Matrix<double, 6, 1>;
 
+constexpr int kKeptSamples = 100'000;
+
 State state_of(const sim::Sample& s) {
   State x;
   x << s.omega, s.gamma;
@@ -143,12 +145,26 @@ nlohmann::ordered_json run_point(const PointFields& point, const sim::RunSpec& r
   std::vector<sim::Sample> kept;
   sim::Sample last;
   bool any = false;
-  const auto result = sim::simulate(run, [&](const sim::Sample& s) {
+  auto fold = [&](const sim::Sample& s) {
     monitor.worsen(drift, s);
     last = s;
     any = true;
-    if (reference) kept.push_back(s);
-  });
+  };
+  // The streamed run reads the CPU clock around every sample (a system call
+  // each, several times a short run's integration), so runs of a modest
+  // number of samples keep them and fold them in afterwards; only very long
+  // sample lists are streamed, to keep memory flat.
+  sim::RunResult result;
+  if (run.samples <= kKeptSamples) {
+    result = sim::simulate(run);
+    for (const auto& s : result.samples) fold(s);
+    if (reference) kept = std::move(result.samples);
+  } else {
+    result = sim::simulate(run, [&](const sim::Sample& s) {
+      fold(s);
+      if (reference) kept.push_back(s);
+    });
+  }
 
   Row row;
   row["index"] = point.index;
