@@ -59,6 +59,15 @@ std::optional<ShardSpec> shard_from_environment(const Environment& env, long cou
     const long count = number("SLURM_ARRAY_TASK_COUNT", max_shards);
     const long min =
         env("SLURM_ARRAY_TASK_MIN") ? number("SLURM_ARRAY_TASK_MIN", 1'000'000'000) : 0;
+    // A stepped array (--array=0-15:4) or a list (--array=1,3,7) numbers
+    // its tasks with gaps: they are not shards 0..count-1.
+    const long max = env("SLURM_ARRAY_TASK_MAX") ? number("SLURM_ARRAY_TASK_MAX", 1'000'000'000)
+                                                 : min + count - 1;
+    if (max - min + 1 != count)
+      throw ShardError("SLURM_ARRAY_TASK_COUNT: " + std::to_string(count) + " tasks numbered " +
+                       std::to_string(min) + " to " + std::to_string(max) +
+                       " are not consecutive; give the array as --array=A-B (step 1) or pass "
+                       "--shard I/N");
     if (count < 1 || id < min || id - min >= count)
       throw ShardError("SLURM_ARRAY_TASK_ID: task " + std::to_string(id) + " is not one of the " +
                        std::to_string(count) + " tasks from " + std::to_string(min) +

@@ -49,6 +49,13 @@ TEST(ShardSpec, SlurmArrayTasksCountFromTheArrayMinimum) {
                                       0),
                ShardError);
   EXPECT_THROW(shard_from_environment(env_of({{"SLURM_ARRAY_TASK_ID", "1"}}), 0), ShardError);
+  // --array=0-15:4: tasks 0, 4, 8, 12 are not consecutive shards.
+  EXPECT_THROW(shard_from_environment(env_of({{"SLURM_ARRAY_TASK_ID", "0"},
+                                              {"SLURM_ARRAY_TASK_MIN", "0"},
+                                              {"SLURM_ARRAY_TASK_MAX", "12"},
+                                              {"SLURM_ARRAY_TASK_COUNT", "4"}}),
+                                      0),
+               ShardError);
 }
 
 TEST(ShardSpec, IndexOnlyEnvironmentsNeedTheCount) {
