@@ -89,6 +89,10 @@ render::RgbaImage paint_heat_map(render::GlContext& context, const HeatMapSpec& 
       hi = std::max(hi, s);
     }
   }
+  if (std::isfinite(shade(spec.range_min, spec.log_values)))
+    lo = shade(spec.range_min, spec.log_values);
+  if (std::isfinite(shade(spec.range_max, spec.log_values)))
+    hi = shade(spec.range_max, spec.log_values);
   const bool any = lo <= hi;
   if (any && hi - lo < 1e-12) {
     lo -= 0.5;

@@ -174,6 +174,8 @@ std::vector<AtlasFigure> atlas_figures(const std::vector<Json>& rows, const Atla
     // (a largest step on a log grid reads best in log10 whatever its spread).
     h.log_values = positive && hi > 0.0 && lo > 0.0 &&
                    (hi / lo > 100.0 || (!reduced.empty() && hi / lo > 4.0));
+    h.range_min = q.min;
+    h.range_max = q.max;
     f.file_name = safe("atlas_" + q.metric + "_" + q.x + "_" + q.y + key + ".png");
     out.push_back(std::move(f));
   }

@@ -176,7 +176,13 @@ SweepSpec read_sweep(const Json& root, const std::string& file) {
       if (!m) ar.fail("metric", "missing");
       if (!x) ar.fail("x", "missing");
       if (!y) ar.fail("y", "missing");
-      q = {*m, *x, *y};
+      q.metric = *m;
+      q.x = *x;
+      q.y = *y;
+      if (auto v = ar.number("min")) q.min = *v;
+      if (auto v = ar.number("max")) q.max = *v;
+      if (!(std::isnan(q.min) || std::isnan(q.max) || q.min < q.max))
+        ar.fail("max", "must be larger than \"min\"");
       for (const auto* name : {&q.x, &q.y}) {
         bool found = false;
         for (const auto& ax : s.axes) found |= ax.field == *name;

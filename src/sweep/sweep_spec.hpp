@@ -13,6 +13,7 @@
 //    "atlas": [{"metric": "largest_stable:step", "x": "energy", "y": "method"}]}
 #include <cstddef>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -44,6 +45,10 @@ struct FtleSettings {
 // A heat map merge draws from the rows: `metric` over axes x and y.
 struct AtlasRequest {
   std::string metric, x, y;
+  // The colour bar's range; NaN: the values' own. A fixed range lets two
+  // atlases (a chaotic and an integrable body) be compared by colour.
+  double min = std::numeric_limits<double>::quiet_NaN();
+  double max = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct SweepSpec {
