@@ -82,6 +82,8 @@ TEST(SweepSpec, BadFilesNameTheKeyAndWhatIsAllowed) {
            "'simulation.tol'", ""},
           {R"({"axes": [{"field": "step", "values": [1]}], "atlas": [{"metric": "ftle", "x": "step", "y": "energy"}]})",
            "'atlas[0].y'", "not one of the sweep's axes"},
+          {R"({"axes": [{"field": "step", "values": [1]}], "atlas": [{"metric": "ftle", "x": "step", "y": "step", "min": 1, "max": 0}]})",
+           "'atlas[0].max'", "larger than \"min\""},
       }) {
     const std::string e = error_of(c.text);
     EXPECT_NE(e.find(c.key), std::string::npos) << c.text << " -> " << e;
