@@ -15,7 +15,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 seconds=${1:-60}
 shift $(($# > 0 ? 1 : 0))
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_job_reader fuzz_simulate_options fuzz_protocol)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_job_reader fuzz_simulate_options fuzz_protocol fuzz_sweep_reader)
 build=${EPVIZ_FUZZ_BUILD:-$root/build-fuzz}
 
 # The largest input each target is tried with: a job file can be long (and
@@ -23,6 +23,7 @@ build=${EPVIZ_FUZZ_BUILD:-$root/build-fuzz}
 max_len() {
   case "$1" in
     fuzz_job_reader) echo 65536 ;;
+    fuzz_sweep_reader) echo 65536 ;;
     fuzz_simulate_options) echo 4096 ;;
     fuzz_protocol) echo 65536 ;;
     *) echo 4096 ;;

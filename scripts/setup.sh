@@ -12,6 +12,7 @@ packages=(
   ffmpeg libgsl-dev python3-scipy
   libturbojpeg0-dev chromium fonts-dejavu-core
   clang-format python3 clang libclang-rt-14-dev
+  slurmctld slurmd slurm-client munge
 )
 
 missing=()

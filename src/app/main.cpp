@@ -8,7 +8,9 @@
 #include "app/bench_command.hpp"
 #include "app/cases_command.hpp"
 #include "app/cli_values.hpp"
+#include "app/merge_command.hpp"
 #include "app/simulate_command.hpp"
+#include "app/sweep_command.hpp"
 #ifdef EPVIZ_HAVE_RENDER
 #include "app/check_command.hpp"
 #include "app/render_command.hpp"
@@ -41,6 +43,8 @@ int main(int argc, char** argv) {
   commands["simulate"] = epviz::app::add_simulate_command(app);
   commands["cases"] = epviz::app::add_cases_command(app);
   commands["bench"] = epviz::app::add_bench_command(app);
+  commands["sweep"] = epviz::app::add_sweep_command(app);
+  commands["merge"] = epviz::app::add_merge_command(app);
 #ifdef EPVIZ_HAVE_RENDER
   commands["render"] = epviz::app::add_render_command(app);
   commands["check"] = epviz::app::add_check_command(app);

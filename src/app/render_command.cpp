@@ -14,6 +14,7 @@
 #include "app/job_frames.hpp"
 #include "app/output_paths.hpp"
 #include "app/render_job.hpp"
+#include "app/render_shard.hpp"
 #include "app/usage_error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/frame_names.hpp"
@@ -33,7 +34,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct RenderOptions {
-  std::string job, out, frames, width, height, format, gl, report_json;
+  std::string job, out, frames, width, height, format, gl, report_json, shard, shard_count;
   bool resume = false, quiet = false, progress = false;
 };
 
@@ -217,10 +218,18 @@ int report_failure(const std::optional<numerics::Failure>& f) {
 }
 
 int render_single(RenderJob job, const RenderOptions& o) {
-  const auto p = prepare(std::move(job), o);
+  auto p = prepare(std::move(job), o);
+  // A shard draws a contiguous range of frames (app/render_shard.hpp).
+  auto shard = plan_render_shard(o.shard, o.shard_count, o.frames, p.job, p.plan.frames);
+  if (shard) {
+    p.range = shard->range;
+    p.job.output.name = shard->output_name;
+  }
   auto context = open_context(o);
   paint::FramePainter painter(*context, p.job.scene.width, p.job.scene.height);
+  if (shard) start_render_shard(*shard);
   const auto st = render_frames(p, painter, o);
+  if (shard && !st.failure) finish_render_shard(*shard, p.job);
   print_job_line(summary_stream(o), p, st);
   if (!o.report_json.empty()) {
     auto report = job_report(p, st);
@@ -233,6 +242,8 @@ int render_single(RenderJob job, const RenderOptions& o) {
 int render_gallery(GalleryJob g, const RenderOptions& o) {
   if (!o.frames.empty())
     throw UsageError("--frames: a gallery renders whole jobs; give --frames to a single job");
+  if (!o.shard.empty())
+    throw UsageError("--shard: a gallery renders whole jobs; shard a single job");
   if (!o.out.empty()) g.dir = o.out;
   check_output_dir(o.out.empty() ? g.file.string() + ": dir" : "--out", g.dir);
   if (auto f = format_option(o)) g.videos = *f == OutputFormat::png ? std::nullopt : f;
@@ -304,7 +315,7 @@ int run_render(const RenderOptions& o) {
   io::install_temporary_cleanup();
   auto loaded = load_render_job(o.job);
   if (loaded.bench) {
-    if (!o.frames.empty() || !o.format.empty() || o.resume)
+    if (!o.frames.empty() || !o.format.empty() || o.resume || !o.shard.empty())
       throw UsageError(o.job + ": a bench-figures job takes only --out and --gl");
     BenchRequest b;
     b.quick = loaded.bench->quick;
@@ -334,6 +345,11 @@ std::function<int()> add_render_command(CLI::App& app) {
   cmd->add_option("--report-json", o->report_json,
                   "write what was rendered (tolerance chosen, timings) as JSON ('-': standard "
                   "output; the summary lines then go to stderr)");
+  cmd->add_option("--shard", o->shard,
+                  "I/N: draw only shard I (from 0) of N, a contiguous range of frames (default "
+                  "from an array job's environment; epviz merge joins video segments)");
+  cmd->add_option("--shard-count", o->shard_count,
+                  "N: the number of shards when the environment gives only the index");
   cmd->add_flag("--resume", o->resume, "PNG: skip frames already written completely");
   cmd->add_flag("--quiet", o->quiet, "no progress line");
   cmd->add_flag("--progress", o->progress, "progress line even when stderr is not a terminal");

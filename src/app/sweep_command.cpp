@@ -1,0 +1,174 @@
+#include "app/sweep_command.hpp"
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <thread>
+
+#include "app/cli_values.hpp"
+#include "app/output_paths.hpp"
+#include "app/shard_options.hpp"
+#include "app/simulation_fields.hpp"
+#include "app/usage_error.hpp"
+#include "io/json_reader.hpp"
+#include "io/progress.hpp"
+#include "shard/manifest.hpp"
+#include "sweep/sweep_runner.hpp"
+#include "sweep/sweep_spec.hpp"
+
+namespace epviz::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct SweepOptions {
+  std::string file, out, jobs, shard, shard_count;
+  bool quiet = false;
+};
+
+// "stability_atlas.sweep.json" -> "stability_atlas".
+std::string sweep_stem(const fs::path& file) {
+  std::string s = file.filename().string();
+  for (const char* ext : {".sweep.json", ".json"})
+    if (s.size() > std::string(ext).size() && s.ends_with(ext))
+      return s.substr(0, s.size() - std::string(ext).size());
+  return s;
+}
+
+// "rows.jsonl" -> "rows".
+std::string rows_stem(const fs::path& out) {
+  std::string s = out.filename().string();
+  return s.ends_with(".jsonl") && s.size() > 6 ? s.substr(0, s.size() - 6) : s;
+}
+
+int run_sweep(const SweepOptions& o) {
+  sweep::SweepSpec spec;
+  try {
+    spec = sweep::read_sweep_file(o.file);
+  } catch (const io::JobError& e) {
+    throw UsageError(e.what());
+  }
+  const int threads = o.jobs.empty() ? int(std::max(1u, std::thread::hardware_concurrency()))
+                                     : int(parse_integer("-j", o.jobs, 1, 4096));
+  const auto shard = shard_from_options(o.shard, o.shard_count);
+
+  // Every point is resolved before any runs: a bad value anywhere in the
+  // sweep stops every shard alike, before any work.
+  const long total = spec.point_count();
+  std::vector<sweep::PreparedPoint> points;
+  points.reserve(std::size_t(total));
+  for (long i = 0; i < total; ++i) {
+    try {
+      auto p = sweep::point_fields(spec, i);
+      auto run = sweep::resolve_point(p, [](const SimulationFields& f) { return resolve(f); });
+      points.push_back({std::move(p), std::move(run)});
+    } catch (const io::JobError& e) {
+      throw UsageError(e.what());
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(e.what());
+    }
+  }
+
+  const fs::path out_given =
+      o.out.empty() ? fs::path(sweep_stem(o.file) + ".jsonl") : fs::path(o.out);
+  if (o.out == "-") throw UsageError("--out: rows are appended to a file, not standard output");
+  check_output_file("--out", out_given.string());
+  fs::path out = out_given;
+  const shard::ItemRange range =
+      shard ? shard::shard_range(total, *shard) : shard::ItemRange{0, total};
+  const fs::path dir = out_given.parent_path().empty() ? fs::path(".") : out_given.parent_path();
+  if (shard) out = dir / (rows_stem(out_given) + "." + shard::shard_tag(*shard) + ".jsonl");
+
+  sweep::ExistingRows existing;
+  try {
+    existing = sweep::resume_rows(out, spec.hash, total);
+  } catch (const sweep::RowsFileError& e) {
+    throw UsageError(e.what());
+  }
+  for (long i : existing.indices)
+    if (i < range.first || i >= range.end)
+      throw UsageError(out.string() + ": holds point " + std::to_string(i) +
+                       ", outside this shard's points " + std::to_string(range.first) + ".." +
+                       std::to_string(range.end - 1) + "; give another --out");
+  std::vector<sweep::PreparedPoint> pending;
+  for (long i = range.first; i < range.end; ++i)
+    if (!existing.indices.count(i)) pending.push_back(points[std::size_t(i)]);
+
+  shard::Manifest manifest;
+  fs::path manifest_path;
+  if (shard) {
+    manifest.kind = "sweep";
+    manifest.source = fs::absolute(o.file).lexically_normal().string();
+    manifest.hash = spec.hash;
+    manifest.shard = *shard;
+    manifest.items = range;
+    manifest.total = total;
+    manifest.command = {"epviz", "sweep", manifest.source, "--out",
+                        fs::absolute(out_given).lexically_normal().string()};
+    if (!o.jobs.empty()) manifest.command.insert(manifest.command.end(), {"-j", o.jobs});
+    manifest.output = out_given.filename().string();
+    manifest_path = dir / shard::manifest_name(rows_stem(out_given), *shard);
+    shard::write_manifest(manifest_path, manifest);  // "completed": false until the end
+  }
+
+  io::ProgressOptions po;
+  po.mode = o.quiet ? io::ProgressMode::off : io::ProgressMode::automatic;
+  po.label = "sweep " + sweep_stem(o.file);
+  po.unit = "points";
+  po.already_done = int(range.size() - long(pending.size()));
+  io::ProgressLine progress(int(range.size()), po);
+  progress.update(po.already_done);
+  const auto start = std::chrono::steady_clock::now();
+  sweep::SweepTotals totals;
+  {
+    sweep::RowAppender rows(out);
+    totals = sweep::run_points(spec, pending, threads, rows, [&] { progress.advance(); });
+  }
+  progress.finish();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  if (shard) {
+    shard::add_file(manifest, dir, out);
+    manifest.completed = true;
+    shard::write_manifest(manifest_path, manifest);
+  }
+  std::printf(
+      "%s: %ld points%s, %zu already in %s%s, ran %ld in %.2f s (%.1f points/s, %d threads), %ld "
+      "failed\n",
+      o.file.c_str(), total,
+      shard
+          ? (" (shard " + std::to_string(shard->index) + "/" + std::to_string(shard->count) +
+             ": points " + std::to_string(range.first) + ".." + std::to_string(range.end - 1) + ")")
+                .c_str()
+          : "",
+      existing.indices.size(), out.string().c_str(),
+      existing.dropped_torn ? " (a torn last line dropped)" : "", totals.points, seconds,
+      seconds > 0 ? double(totals.points) / seconds : 0.0, threads, totals.failures);
+  return 0;
+}
+
+}  // namespace
+
+std::function<int()> add_sweep_command(CLI::App& app) {
+  auto o = std::make_shared<SweepOptions>();
+  auto* cmd = app.add_subcommand(
+      "sweep", "Run every point of a parameter sweep (SWEEP.json) and write one JSON row each");
+  cmd->add_option("sweep", o->file, "sweep file (JSON: simulation, axes; docs/cluster.md)")
+      ->required();
+  cmd->add_option("--out", o->out,
+                  "rows file (JSON Lines, appended; default <sweep>.jsonl); rows already in it "
+                  "are kept and their points skipped");
+  cmd->add_option("-j,--jobs", o->jobs, "threads (default: all cores)");
+  cmd->add_option("--shard", o->shard,
+                  "I/N: run only shard I (from 0) of N, a contiguous range of points; default "
+                  "from SLURM_ARRAY_TASK_ID, JOB_COMPLETION_INDEX or AWS_BATCH_JOB_ARRAY_INDEX");
+  cmd->add_option("--shard-count", o->shard_count,
+                  "N: the number of shards when the environment gives only the index");
+  cmd->add_flag("--quiet", o->quiet, "no progress line");
+  return [o] { return run_sweep(*o); };
+}
+
+}  // namespace epviz::app

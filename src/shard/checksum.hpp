@@ -1,0 +1,31 @@
+#pragma once
+// Checksums of the files a shard writes, so that a merge can tell a complete
+// file from one cut short or changed since: 64-bit FNV-1a, written as 16 hex
+// digits. It detects accidents (truncation, a rerun writing other bytes), not
+// tampering, which is all a merge needs.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace epviz::shard {
+
+class Fnv1a64 {
+ public:
+  void add(std::string_view bytes);
+  std::uint64_t value() const { return h_; }
+  std::string hex() const;
+
+ private:
+  std::uint64_t h_ = 14695981039346656037ull;
+};
+
+std::string checksum_of(std::string_view bytes);
+// The file's size and checksum; throws std::runtime_error naming the file when it cannot be read.
+struct FileDigest {
+  std::uintmax_t bytes = 0;
+  std::string checksum;
+};
+FileDigest digest_file(const std::filesystem::path& path);
+
+}  // namespace epviz::shard

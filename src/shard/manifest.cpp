@@ -1,0 +1,145 @@
+#include "shard/manifest.hpp"
+
+#include "io/atomic_file.hpp"
+#include "io/json_reader.hpp"
+#include "shard/checksum.hpp"
+
+namespace epviz::shard {
+
+namespace fs = std::filesystem;
+
+nlohmann::ordered_json to_json(const Manifest& m) {
+  nlohmann::ordered_json j;
+  j["kind"] = m.kind;
+  j["source"] = m.source;
+  j["hash"] = m.hash;
+  j["shard"] = m.shard.index;
+  j["shards"] = m.shard.count;
+  j["first"] = m.items.first;
+  j["end"] = m.items.end;
+  j["total"] = m.total;
+  j["command"] = m.command;
+  j["output"] = m.output;
+  auto files = nlohmann::ordered_json::array();
+  for (const auto& f : m.files)
+    files.push_back({{"path", f.path}, {"bytes", f.bytes}, {"checksum", f.checksum}});
+  j["files"] = files;
+  j["completed"] = m.completed;
+  return j;
+}
+
+Manifest read_manifest(const fs::path& path) {
+  const auto json = io::read_json_file(path);
+  io::ObjectReader r(json, path.string());
+  Manifest m;
+  auto text = [&](const char* key) {
+    auto v = r.string(key);
+    if (!v) r.fail(key, "missing");
+    return *v;
+  };
+  auto integer = [&](const char* key, long lo, long hi) {
+    auto v = r.integer(key, lo, hi);
+    if (!v) r.fail(key, "missing");
+    return *v;
+  };
+  m.kind = text("kind");
+  m.source = text("source");
+  m.hash = text("hash");
+  m.shard.count = integer("shards", 1, max_shards);
+  m.shard.index = integer("shard", 0, m.shard.count - 1);
+  m.total = integer("total", 0, 1L << 50);
+  m.items.first = integer("first", 0, m.total);
+  m.items.end = integer("end", m.items.first, m.total);
+  m.output = text("output");
+  const auto* command = r.raw("command");
+  if (!command || !command->is_array()) r.fail("command", "expected an array of strings");
+  for (const auto& a : *command) {
+    if (!a.is_string()) r.fail("command", "expected an array of strings");
+    m.command.push_back(a.get<std::string>());
+  }
+  const auto* files = r.raw("files");
+  if (!files || !files->is_array()) r.fail("files", "expected an array of objects");
+  for (std::size_t i = 0; i < files->size(); ++i) {
+    io::ObjectReader f((*files)[i], path.string(), "files[" + std::to_string(i) + "]");
+    ManifestFile mf;
+    auto p = f.string("path");
+    auto b = f.integer("bytes", 0, 1L << 50);
+    auto c = f.string("checksum");
+    if (!p || !b || !c) f.fail("path", "each file needs path, bytes and checksum");
+    mf.path = *p;
+    mf.bytes = std::uintmax_t(*b);
+    mf.checksum = *c;
+    f.finish();
+    m.files.push_back(mf);
+  }
+  const auto done = r.boolean("completed");
+  m.completed = done && *done;
+  r.finish();
+  return m;
+}
+
+void write_manifest(const fs::path& path, const Manifest& m) {
+  io::write_file_atomically(path, to_json(m).dump(2) + "\n");
+}
+
+std::string manifest_name(const std::string& stem, const ShardSpec& s) {
+  return stem + "." + shard_tag(s) + std::string(manifest_suffix);
+}
+
+void add_file(Manifest& m, const fs::path& dir, const fs::path& file) {
+  const auto d = digest_file(file);
+  m.files.push_back({file.lexically_relative(dir).generic_string(), d.bytes, d.checksum});
+}
+
+std::vector<std::string> file_problems(const Manifest& m, const fs::path& dir) {
+  std::vector<std::string> out;
+  for (const auto& f : m.files) {
+    const fs::path p = dir / f.path;
+    std::error_code ec;
+    if (!fs::is_regular_file(p, ec)) {
+      out.push_back(p.string() + ": missing");
+      continue;
+    }
+    try {
+      const auto d = digest_file(p);
+      if (d.bytes != f.bytes)
+        out.push_back(p.string() + ": " + std::to_string(d.bytes) + " bytes, the manifest says " +
+                      std::to_string(f.bytes));
+      else if (d.checksum != f.checksum)
+        out.push_back(p.string() + ": checksum " + d.checksum + ", the manifest says " +
+                      f.checksum);
+    } catch (const std::exception& e) {
+      out.push_back(e.what());
+    }
+  }
+  return out;
+}
+
+std::string rerun_command(const Manifest& m, long index) {
+  auto quote = [](const std::string& a) {
+    if (!a.empty() && a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                          "0123456789_-./=:,+@%") == std::string::npos)
+      return a;
+    std::string q(1, '\'');
+    for (char c : a) {
+      if (c == '\'')
+        q.append("'\\''");
+      else
+        q.push_back(c);
+    }
+    q.push_back('\'');
+    return q;
+  };
+  std::string line;
+  for (const auto& a : m.command) {
+    if (!line.empty()) line.push_back(' ');
+    line.append(quote(a));
+  }
+  line.append(" --shard ");
+  line.append(std::to_string(index));
+  line.push_back('/');
+  line.append(std::to_string(m.shard.count));
+  return line;
+}
+
+}  // namespace epviz::shard

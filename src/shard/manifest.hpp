@@ -1,0 +1,59 @@
+#pragma once
+// The small JSON file each shard writes beside its output: which batch it
+// belongs to (a hash of the batch's canonical content), which shard it is,
+// which items it covered, the files it wrote with their checksums, and how to
+// run it again. It is written twice: at the start with "completed": false and,
+// once every output file is closed, again with "completed": true, so that the
+// flag is the last thing to reach the disk.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "shard/shard_spec.hpp"
+
+namespace epviz::shard {
+
+struct ManifestFile {
+  std::string path;  // relative to the manifest's directory
+  std::uintmax_t bytes = 0;
+  std::string checksum;  // shard/checksum.hpp
+};
+
+struct Manifest {
+  std::string kind;    // "sweep" or "render"
+  std::string source;  // the sweep or job file as given
+  std::string hash;    // of the batch's canonical content: shards of one batch share it
+  ShardSpec shard;
+  ItemRange items;  // points or frames
+  long total = 0;   // items in the whole batch
+  // The command that ran this shard, without its shard options: a missing
+  // shard j is rerun by adding "--shard j/N".
+  std::vector<std::string> command;
+  std::string output;  // what a merge writes (file name), empty when nothing is joined
+  std::vector<ManifestFile> files;
+  bool completed = false;
+};
+
+nlohmann::ordered_json to_json(const Manifest& m);
+// Strict reading (io/json_reader): throws io::JobError naming the file and key.
+Manifest read_manifest(const std::filesystem::path& path);
+// Atomic write (temporary + rename).
+void write_manifest(const std::filesystem::path& path, const Manifest& m);
+
+// "<stem>.shard-2-of-8.manifest.json": where shard `s` of a batch named `stem` keeps it.
+std::string manifest_name(const std::string& stem, const ShardSpec& s);
+inline constexpr std::string_view manifest_suffix = ".manifest.json";
+
+// Adds `file` (a path) to m.files, relative to `dir`, with its size and checksum.
+void add_file(Manifest& m, const std::filesystem::path& dir, const std::filesystem::path& file);
+
+// What is wrong with the manifest's files as they are on disk now (missing,
+// other size, other checksum), one line each; empty when all are intact.
+std::vector<std::string> file_problems(const Manifest& m, const std::filesystem::path& dir);
+
+// The command to run shard `index` again, as one shell line (arguments quoted where needed).
+std::string rerun_command(const Manifest& m, long index);
+
+}  // namespace epviz::shard

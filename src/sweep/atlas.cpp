@@ -1,0 +1,185 @@
+#include "sweep/atlas.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+
+namespace epviz::sweep {
+namespace {
+
+using Json = nlohmann::json;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::string label_of(const Json& v) {
+  if (v.is_string()) return v.get<std::string>();
+  if (v.is_number()) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", v.get<double>());
+    return buf;
+  }
+  return v.dump();
+}
+
+// The metric of one row; NaN when the row has none (null, or a failure's
+// time for a run that did not fail).
+double metric_of(const Json& row, const std::string& metric) {
+  if (metric == "time_to_failure") {
+    if (row.contains("failure") && row["failure"].is_object())
+      return row["failure"]["t"].get<double>();
+    return row.contains("t_end") ? row["t_end"].get<double>() : kNaN;
+  }
+  const Json* v = &row;
+  std::size_t pos = 0;
+  while (pos <= metric.size()) {
+    const auto dot = metric.find('.', pos);
+    const std::string key =
+        metric.substr(pos, dot == std::string::npos ? std::string::npos : dot - pos);
+    if (!v->is_object() || !v->contains(key)) return kNaN;
+    v = &(*v)[key];
+    if (dot == std::string::npos) break;
+    pos = dot + 1;
+  }
+  return v->is_number() ? v->get<double>() : kNaN;
+}
+
+bool has_metric(const std::vector<Json>& rows, const std::string& metric) {
+  const std::string root = metric.substr(0, metric.find('.'));
+  for (const auto& r : rows)
+    if (r.contains(root)) return true;
+  return false;
+}
+
+// File names without characters a shell would glob or quote: "gamma[0]" -> "gamma0".
+std::string safe(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '[' || c == ']') continue;
+    const bool plain =
+        std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.' || c == '_' || c == '=';
+    out.push_back(plain ? c : '_');
+  }
+  return out;
+}
+
+}  // namespace
+
+AtlasRequest parse_atlas_option(const std::string& text) {
+  // The metric may itself hold a ':' ("largest_stable:step"): x and y are the last two fields.
+  const auto b = text.rfind(':');
+  const auto a = b == std::string::npos || b == 0 ? std::string::npos : text.rfind(':', b - 1);
+  if (a == std::string::npos || a == 0 || b == a + 1 || b + 1 >= text.size())
+    throw AtlasError(
+        "--atlas: expected METRIC:XAXIS:YAXIS (e.g. ftle:gamma[0]:gamma[1] or "
+        "largest_stable:step:energy:method), got '" +
+        text + "'");
+  return {text.substr(0, a), text.substr(a + 1, b - a - 1), text.substr(b + 1)};
+}
+
+std::vector<AtlasFigure> atlas_figures(const std::vector<Json>& rows, const AtlasRequest& q) {
+  if (rows.empty()) throw AtlasError("atlas " + q.metric + ": the sweep has no rows");
+  std::vector<Json> sorted = rows;
+  std::sort(sorted.begin(), sorted.end(), [](const Json& a, const Json& b) {
+    return a["index"].get<long>() < b["index"].get<long>();
+  });
+  // Axis names and their values in sweep order (first appearance in index order).
+  const Json& first_axes = sorted.front()["axes"];
+  std::vector<std::string> names;
+  for (auto it = first_axes.begin(); it != first_axes.end(); ++it) names.push_back(it.key());
+  auto is_axis = [&](const std::string& n) {
+    return std::find(names.begin(), names.end(), n) != names.end();
+  };
+  std::string allowed;
+  for (const auto& n : names) allowed += (allowed.empty() ? "" : ", ") + n;
+  for (const auto* n : {&q.x, &q.y})
+    if (!is_axis(*n))
+      throw AtlasError("atlas " + q.metric + ": '" + *n +
+                       "' is not an axis of the sweep (axes: " + allowed + ")");
+  std::string reduced;
+  const std::string stable = "largest_stable:";
+  if (q.metric.starts_with(stable)) {
+    reduced = q.metric.substr(stable.size());
+    if (!is_axis(reduced))
+      throw AtlasError("atlas " + q.metric + ": '" + reduced +
+                       "' is not an axis of the sweep (axes: " + allowed + ")");
+  } else if (q.metric != "time_to_failure" && !has_metric(sorted, q.metric)) {
+    throw AtlasError(
+        "atlas " + q.metric +
+        ": no row has this metric (e.g. ftle, reference_error, "
+        "max_relative_drift.energy, time_to_failure, largest_stable:AXIS, cpu_seconds)");
+  }
+  std::map<std::string, std::vector<std::string>> values;  // labels in order
+  std::map<std::string, std::map<std::string, std::size_t>> position;
+  for (const auto& r : sorted)
+    for (const auto& n : names) {
+      const std::string l = label_of(r["axes"][n]);
+      if (!position[n].count(l)) {
+        position[n][l] = values[n].size();
+        values[n].push_back(l);
+      }
+    }
+  // One figure per combination of the axes that are left over.
+  std::map<std::string, std::vector<const Json*>> groups;
+  for (const auto& r : sorted) {
+    std::string key;
+    for (const auto& n : names)
+      if (n != q.x && n != q.y && n != reduced && values[n].size() > 1)
+        key += "_" + n + "=" + label_of(r["axes"][n]);
+    groups[key].push_back(&r);
+  }
+  std::vector<AtlasFigure> out;
+  for (const auto& [key, members] : groups) {
+    AtlasFigure f;
+    auto& h = f.heat_map;
+    h.columns = values[q.x];
+    h.rows = values[q.y];
+    h.x_label = q.x;
+    h.y_label = q.y;
+    h.value_label = reduced.empty() ? q.metric : "largest stable " + reduced;
+    h.title = reduced.empty()
+                  ? q.metric + " over " + q.x + " and " + q.y
+                  : "largest " + reduced + " without a failure, by " + q.x + " and " + q.y;
+    std::string fixed;  // axes with one value: named in the title only
+    for (const auto& n : names)
+      if (n != q.x && n != q.y && n != reduced && values[n].size() == 1)
+        fixed += ", " + n + "=" + values[n][0];
+    if (!key.empty() || !fixed.empty())
+      h.title += " (" + (key.empty() ? fixed.substr(2) : key.substr(1) + fixed) + ")";
+    h.missing_label = reduced.empty()
+                          ? (q.metric == "ftle" ? "no value (a run failed)" : "no value")
+                          : "every " + reduced + " failed";
+    h.values.assign(h.columns.size() * h.rows.size(), kNaN);
+    for (const Json* r : members) {
+      const std::size_t i = position[q.x][label_of((*r)["axes"][q.x])];
+      const std::size_t j = position[q.y][label_of((*r)["axes"][q.y])];
+      double& cell = h.values[j * h.columns.size() + i];
+      if (!reduced.empty()) {
+        const bool failed = !(*r)["failure"].is_null();
+        const Json& v = (*r)["axes"][reduced];
+        if (!failed && v.is_number() && !(cell >= v.get<double>())) cell = v.get<double>();
+      } else {
+        cell = metric_of(*r, q.metric);
+      }
+    }
+    // Positive values spread over more than two decades read best in log10.
+    double lo = HUGE_VAL, hi = 0.0;
+    bool positive = true;
+    for (double v : h.values)
+      if (std::isfinite(v)) {
+        positive &= v > 0.0;
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+      }
+    // (a largest step on a log grid reads best in log10 whatever its spread).
+    h.log_values = positive && hi > 0.0 && lo > 0.0 &&
+                   (hi / lo > 100.0 || (!reduced.empty() && hi / lo > 4.0));
+    h.range_min = q.min;
+    h.range_max = q.max;
+    f.file_name = safe("atlas_" + q.metric + "_" + q.x + "_" + q.y + key + ".png");
+    out.push_back(std::move(f));
+  }
+  return out;
+}
+
+}  // namespace epviz::sweep

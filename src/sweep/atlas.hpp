@@ -1,0 +1,38 @@
+#pragma once
+// Atlas figures of a finished sweep: a metric of its rows as a heat map over
+// two of its axes. The metric is a row key ("ftle", "reference_error",
+// "cpu_seconds", "steps"), a path into one ("max_relative_drift.energy",
+// "failure.t"), "time_to_failure" (the failure's time, t_end without one),
+// or "largest_stable:AXIS" (the largest value of AXIS among the cell's points
+// that did not fail: the largest stable step of a method at an energy). Axes
+// that are neither x, y nor reduced give one figure per combination of their values.
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "chart/heat_map_spec.hpp"
+#include "sweep/sweep_spec.hpp"
+
+namespace epviz::sweep {
+
+class AtlasError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+struct AtlasFigure {
+  std::string file_name;  // "atlas_ftle_gamma0_gamma1.png", made safe for file systems
+  chart::HeatMapSpec heat_map;
+};
+
+// "metric:x:y" (the --atlas option). Throws AtlasError naming --atlas.
+AtlasRequest parse_atlas_option(const std::string& text);
+
+// `rows`: the sweep's rows (any order). Throws AtlasError for an axis that
+// is not in the rows or a metric that no row has.
+std::vector<AtlasFigure> atlas_figures(const std::vector<nlohmann::json>& rows,
+                                       const AtlasRequest& request);
+
+}  // namespace epviz::sweep

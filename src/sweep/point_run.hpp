@@ -1,0 +1,52 @@
+#pragma once
+// Running one point of a sweep and describing it as a row: failure (kind and
+// time) or none, the largest relative drift of every invariant, the final
+// state, steps, evaluations and CPU time, the same numbers `epviz simulate`
+// reports for the same run; optionally the separation from a reference run
+// and a finite-time Lyapunov exponent. Safe to call from several threads.
+#include <future>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "sim/run_spec.hpp"
+#include "sim/simulate.hpp"
+#include "sweep/sweep_point.hpp"
+#include "sweep/sweep_spec.hpp"
+
+namespace epviz::sweep {
+
+// The reference of a run: the same body, initial state, end time and output
+// times, integrated by dop853 at tolerance 1e-13 in the direct formulation.
+// Points that share these (every method and step at one energy) share one
+// reference run, computed once by whichever thread asks first.
+class ReferenceCache {
+ public:
+  // The reference's samples; empty when the reference itself failed.
+  std::shared_ptr<const std::vector<sim::Sample>> get(const sim::RunSpec& run);
+
+ private:
+  std::mutex mutex_;
+  std::map<std::string, std::shared_future<std::shared_ptr<const std::vector<sim::Sample>>>> runs_;
+};
+
+sim::RunSpec reference_run(const sim::RunSpec& run);
+
+// Largest distance sqrt(|d omega|^2 + |d gamma|^2) between two runs at their
+// common output times.
+double max_separation(const std::vector<sim::Sample>& a, const std::vector<sim::Sample>& b);
+
+// The finite-time Lyapunov exponent of `run` (docs/cluster.md defines it):
+// nullopt when either state's integration fails.
+std::optional<double> finite_time_lyapunov(const sim::RunSpec& run, const FtleSettings& settings);
+
+// One row (a JSON object without a line break when dumped).
+nlohmann::ordered_json run_point(const PointFields& point, const sim::RunSpec& run,
+                                 const std::string& sweep_hash, bool reference,
+                                 const std::optional<FtleSettings>& ftle, ReferenceCache* cache);
+
+}  // namespace epviz::sweep

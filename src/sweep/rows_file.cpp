@@ -1,0 +1,88 @@
+#include "sweep/rows_file.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+namespace epviz::sweep {
+
+namespace fs = std::filesystem;
+
+ExistingRows resume_rows(const fs::path& path, const std::string& sweep_hash, long points) {
+  ExistingRows out;
+  std::error_code ec;
+  if (!fs::exists(path, ec)) return out;
+  if (!fs::is_regular_file(path, ec))
+    throw RowsFileError(path.string() + ": not a regular file (rows are appended to a file)");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw RowsFileError(path.string() + ": cannot read (" + std::strerror(errno) + ")");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string text = ss.str();
+  std::size_t pos = 0;
+  long line_no = 0;
+  while (pos < text.size()) {
+    const auto nl = text.find('\n', pos);
+    if (nl == std::string::npos) break;  // torn: no end of line
+    ++line_no;
+    const std::string line = text.substr(pos, nl - pos);
+    pos = nl + 1;
+    auto bad = [&](const std::string& why) {
+      throw RowsFileError(path.string() + ": line " + std::to_string(line_no) + " " + why +
+                          "; give another --out, or remove the file to start over");
+    };
+    nlohmann::json row;
+    try {
+      row = nlohmann::json::parse(line);
+    } catch (const nlohmann::json::exception&) {
+      bad("is not a JSON row");
+    }
+    if (!row.is_object() || !row.contains("sweep") || !row.contains("index") ||
+        !row["index"].is_number_integer())
+      bad("is not a row of a sweep");
+    if (row["sweep"] != sweep_hash) bad("is a row of another sweep (or of an edited sweep file)");
+    const long index = row["index"].get<long>();
+    if (index < 0 || index >= points) bad("has an index outside this sweep");
+    out.indices.insert(index);
+  }
+  if (pos < text.size()) {
+    fs::resize_file(path, pos, ec);
+    if (ec)
+      throw RowsFileError(path.string() + ": cannot cut off the torn last line (" + ec.message() +
+                          ")");
+    out.dropped_torn = true;
+  }
+  return out;
+}
+
+RowAppender::RowAppender(const fs::path& path) : path_(path) {
+  fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  if (fd_ < 0)
+    throw RowsFileError(path.string() + ": cannot open for appending (" + std::strerror(errno) +
+                        ")");
+}
+
+RowAppender::~RowAppender() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void RowAppender::append(const std::string& line) {
+  const std::string data = line + "\n";
+  std::lock_guard lock(mutex_);
+  std::size_t done = 0;
+  while (done < data.size()) {
+    const ssize_t n = ::write(fd_, data.data() + done, data.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0)
+      throw RowsFileError(path_.string() + ": write failed (" + std::strerror(errno) + ")");
+    done += std::size_t(n);
+  }
+}
+
+}  // namespace epviz::sweep

@@ -1,0 +1,49 @@
+#pragma once
+// One point of a sweep: the base simulation fields with the point's axis
+// values put in, each read by the job format's own reader (so a value is
+// checked exactly as the same key in a render job would be), and the energy
+// level to reach, if an axis gives one.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "job/document.hpp"
+#include "sim/run_spec.hpp"
+#include "sweep/sweep_spec.hpp"
+
+namespace epviz::sweep {
+
+struct PointFields {
+  long index = 0;
+  job::SimulationFields fields;
+  std::optional<double> energy;  // total energy C1 the initial omega is scaled to
+  std::string energy_origin;
+  // The point's value of each axis, by field name, in axis order.
+  nlohmann::ordered_json axis_values = nlohmann::ordered_json::object();
+  // Axes that do not apply to this point: "step" for an adaptive method,
+  // "tol" for a fixed-step one (a sweep over methods and steps crosses both).
+  std::vector<std::string> ignored;
+};
+
+// Throws io::JobError naming the sweep file and the axis for a value the
+// field does not accept.
+PointFields point_fields(const SweepSpec& spec, long index);
+
+// Scales spec.initial.omega so that the total energy C1 is `energy`, keeping
+// its direction and gamma. Throws std::invalid_argument (the message starts
+// with `origin`) when no such scaling exists: omega is zero, or `energy` is
+// below the potential energy of the initial gamma.
+void set_energy(sim::RunSpec& spec, double energy, const std::string& origin);
+
+// The resolved run of a point: fields checked and defaults filled (the
+// caller's resolver, which is `epviz simulate`'s), then the energy level set.
+template <class Resolver>
+sim::RunSpec resolve_point(const PointFields& p, const Resolver& resolve) {
+  sim::RunSpec run = resolve(p.fields);
+  if (p.energy) set_energy(run, *p.energy, p.energy_origin);
+  return run;
+}
+
+}  // namespace epviz::sweep

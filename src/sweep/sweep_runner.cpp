@@ -1,0 +1,49 @@
+#include "sweep/sweep_runner.hpp"
+
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+namespace epviz::sweep {
+
+SweepTotals run_points(const SweepSpec& spec, const std::vector<PreparedPoint>& points, int threads,
+                       RowAppender& rows, const std::function<void()>& on_row) {
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> stop{false};
+  std::atomic<long> failures{0};
+  std::exception_ptr error;
+  std::mutex lock;
+  ReferenceCache references;
+  auto work = [&] {
+    for (;;) {
+      const std::size_t i = next.fetch_add(1);
+      if (i >= points.size() || stop) return;
+      try {
+        const auto& p = points[i];
+        const auto row =
+            run_point(p.point, p.run, spec.hash, spec.reference, spec.ftle, &references);
+        if (!row["failure"].is_null()) ++failures;
+        rows.append(row.dump());
+        if (on_row) {
+          std::lock_guard g(lock);
+          on_row();
+        }
+      } catch (...) {
+        std::lock_guard g(lock);
+        if (!error) error = std::current_exception();
+        stop = true;
+        return;
+      }
+    }
+  };
+  const int n = std::max(1, std::min<int>(threads, int(points.size())));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < n; ++t) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+  return {long(points.size()), failures.load()};
+}
+
+}  // namespace epviz::sweep

@@ -1,0 +1,205 @@
+#include "sweep/sweep_spec.hpp"
+
+#include <cmath>
+
+#include "io/json_reader.hpp"
+#include "job/schema.hpp"
+#include "shard/checksum.hpp"
+
+namespace epviz::sweep {
+namespace {
+
+using Json = nlohmann::json;
+
+constexpr long max_axis_values = 100'000;
+
+bool is_text_field(const std::string& f) {
+  return f == "case" || f == "method" || f == "formulation";
+}
+bool is_vector_field(const std::string& f) {
+  return f == "inertia" || f == "com" || f == "omega" || f == "gamma";
+}
+
+// Numbers from `from` to `to`, both included, evenly spaced (log: in log10).
+std::vector<Json> range_values(io::ObjectReader& r, const std::string& field) {
+  if (is_text_field(field) || is_vector_field(field))
+    r.fail("from", "a range gives numbers; field '" + field + "' takes a list of \"values\"");
+  const auto from = r.number("from");
+  const auto to = r.number("to");
+  const auto count = r.integer("count", 1, max_axis_values);
+  const auto scale = r.choice("scale", {"linear", "log"});
+  if (!from) r.fail("from", "missing (a range needs from, to and count)");
+  if (!to) r.fail("to", "missing (a range needs from, to and count)");
+  if (!count) r.fail("count", "missing (a range needs from, to and count)");
+  const bool log = scale && *scale == "log";
+  if (log && !(*from > 0.0)) r.fail("from", "a log scale needs a positive number");
+  if (log && !(*to > 0.0)) r.fail("to", "a log scale needs a positive number");
+  std::vector<Json> out;
+  for (long i = 0; i < *count; ++i) {
+    const double f = *count == 1 ? 0.0 : double(i) / double(*count - 1);
+    // The ends exactly as written, whatever the rounding in between.
+    const double v =
+        i == 0            ? *from
+        : i == *count - 1 ? *to
+        : log ? std::pow(10.0, std::log10(*from) + f * (std::log10(*to) - std::log10(*from)))
+              : *from + f * (*to - *from);
+    out.emplace_back(v);
+  }
+  return out;
+}
+
+Axis read_axis(const Json& value, const std::string& file, std::size_t k) {
+  const std::string key = "axes[" + std::to_string(k) + "]";
+  if (!value.is_object())
+    throw io::JobError(file + ": key '" + key +
+                       "': expected an object {\"field\": ..., \"values\": [...]}, got " +
+                       io::describe(value));
+  io::ObjectReader r(value, file, key);
+  Axis a;
+  a.key = key;
+  const auto field = r.choice("field", axis_fields());
+  if (!field) r.fail("field", "missing (allowed: " + axis_fields_joined() + ")");
+  a.field = *field;
+  if (r.has("values")) {
+    if (r.has("from") || r.has("to") || r.has("count") || r.has("scale"))
+      r.fail("values", "give either a list of values or from/to/count/scale, not both");
+    const Json* v = r.raw("values");
+    if (!v->is_array() || v->empty() || v->size() > std::size_t(max_axis_values))
+      r.fail("values", "expected a list of 1 to " + std::to_string(max_axis_values) +
+                           " values, got " + io::describe(*v));
+    for (std::size_t i = 0; i < v->size(); ++i) {
+      const Json& x = (*v)[i];
+      const std::string at = "values[" + std::to_string(i) + "]";
+      if (is_text_field(a.field) && !x.is_string())
+        r.fail(at, "field '" + a.field + "' takes strings, got " + io::describe(x));
+      if (is_vector_field(a.field) && !(x.is_array() && x.size() == 3 && x[0].is_number() &&
+                                        x[1].is_number() && x[2].is_number()))
+        r.fail(at, "field '" + a.field + "' takes arrays of 3 numbers, got " + io::describe(x));
+      if (!is_text_field(a.field) && !is_vector_field(a.field) &&
+          !(x.is_number() && std::isfinite(x.get<double>())))
+        r.fail(at, "field '" + a.field + "' takes finite numbers, got " + io::describe(x));
+      a.values.push_back(x);
+    }
+  } else {
+    a.values = range_values(r, a.field);
+  }
+  r.finish();
+  return a;
+}
+
+}  // namespace
+
+std::vector<std::string> axis_fields() {
+  std::vector<std::string> f{"case",  "method",  "formulation", "step",   "tol",
+                             "t_end", "samples", "max_drift",   "weight", "energy"};
+  for (const char* v : {"inertia", "com", "omega", "gamma"}) {
+    f.emplace_back(v);
+    for (int i = 0; i < 3; ++i) f.push_back(std::string(v) + "[" + std::to_string(i) + "]");
+  }
+  return f;
+}
+
+std::string axis_fields_joined() {
+  std::string s;
+  for (const auto& f : axis_fields()) s += (s.empty() ? "" : ", ") + f;
+  return s;
+}
+
+long SweepSpec::point_count() const {
+  long n = 1;
+  for (const auto& a : axes) n *= long(a.values.size());
+  return n;
+}
+
+std::vector<std::size_t> SweepSpec::coordinates(long index) const {
+  std::vector<std::size_t> c(axes.size());
+  for (std::size_t k = axes.size(); k-- > 0;) {
+    const long n = long(axes[k].values.size());
+    c[k] = std::size_t(index % n);
+    index /= n;
+  }
+  return c;
+}
+
+SweepSpec read_sweep(const Json& root, const std::string& file) {
+  io::ObjectReader r(root, file);
+  SweepSpec s;
+  s.file = file;
+  if (auto sim = r.object("simulation")) {
+    s.base = job::read_simulation_fields(*sim);
+    sim->finish();
+  }
+  const Json* axes = r.raw("axes");
+  if (!axes) r.fail("axes", "missing: a list of {\"field\": ..., \"values\": [...]} objects");
+  if (!axes->is_array() || axes->empty() || axes->size() > 16)
+    r.fail("axes", "expected a list of 1 to 16 axes, got " + io::describe(*axes));
+  long points = 1;
+  for (std::size_t k = 0; k < axes->size(); ++k) {
+    s.axes.push_back(read_axis((*axes)[k], file, k));
+    for (std::size_t j = 0; j < k; ++j)
+      if (s.axes[j].field == s.axes[k].field)
+        throw io::JobError(file + ": key 'axes[" + std::to_string(k) + "].field': '" +
+                           s.axes[k].field + "' is already axes[" + std::to_string(j) + "]");
+    points *= long(s.axes[k].values.size());
+    if (points > max_points)
+      throw io::JobError(file + ": key 'axes': more than " + std::to_string(max_points) +
+                         " points; split the sweep into several files");
+  }
+  if (auto ref = r.boolean("reference")) s.reference = *ref;
+  if (r.has("ftle")) {
+    const Json* f = r.raw("ftle");
+    if (f->is_boolean()) {
+      if (f->get<bool>()) s.ftle = FtleSettings{};
+    } else if (f->is_object()) {
+      io::ObjectReader fr(*f, file, "ftle");
+      FtleSettings st;
+      if (auto v = fr.number_in("separation", 1e-14, 1e-2, "1e-14 to 0.01")) st.separation = *v;
+      if (auto v = fr.positive_number("window")) st.window = *v;
+      fr.finish();
+      s.ftle = st;
+    } else {
+      r.fail("ftle", "expected true, false or {\"separation\": ..., \"window\": ...}, got " +
+                         io::describe(*f));
+    }
+  }
+  if (r.has("atlas")) {
+    const Json* a = r.raw("atlas");
+    if (!a->is_array()) r.fail("atlas", "expected a list of {\"metric\", \"x\", \"y\"} objects");
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      const std::string key = "atlas[" + std::to_string(i) + "]";
+      if (!(*a)[i].is_object()) r.fail(key, "expected an object {\"metric\", \"x\", \"y\"}");
+      io::ObjectReader ar((*a)[i], file, key);
+      AtlasRequest q;
+      auto m = ar.string("metric");
+      auto x = ar.string("x");
+      auto y = ar.string("y");
+      if (!m) ar.fail("metric", "missing");
+      if (!x) ar.fail("x", "missing");
+      if (!y) ar.fail("y", "missing");
+      q.metric = *m;
+      q.x = *x;
+      q.y = *y;
+      if (auto v = ar.number("min")) q.min = *v;
+      if (auto v = ar.number("max")) q.max = *v;
+      if (!(std::isnan(q.min) || std::isnan(q.max) || q.min < q.max))
+        ar.fail("max", "must be larger than \"min\"");
+      for (const auto* name : {&q.x, &q.y}) {
+        bool found = false;
+        for (const auto& ax : s.axes) found |= ax.field == *name;
+        if (!found)
+          ar.fail(name == &q.x ? "x" : "y", "'" + *name + "' is not one of the sweep's axes");
+      }
+      ar.finish();
+      s.atlases.push_back(q);
+    }
+  }
+  r.finish();
+  s.hash = shard::checksum_of(root.dump());  // nlohmann::json keeps keys sorted
+  return s;
+}
+
+SweepSpec read_sweep_file(const std::filesystem::path& path) {
+  return read_sweep(io::read_json_file(path), path.string());
+}
+
+}  // namespace epviz::sweep

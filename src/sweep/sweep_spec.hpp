@@ -1,0 +1,75 @@
+#pragma once
+// A parameter sweep as its file states it (render_jobs/*.sweep.json): a base
+// "simulation" object, read by the render job's own reader (job/schema.hpp),
+// and "axes", each naming one simulation field and the values it takes. The
+// points are the cartesian product of the axes, numbered 0..N-1 with the
+// first axis varying slowest. Read strictly: an unknown key or a value of the
+// wrong kind is an io::JobError naming the file and the key path.
+//
+//   {"simulation": {"case": "generic", "t_end": 50},
+//    "axes": [{"field": "method", "values": ["rk4", "gauss4"]},
+//             {"field": "step", "from": 0.001, "to": 0.5, "count": 24, "scale": "log"}],
+//    "reference": true, "ftle": true,
+//    "atlas": [{"metric": "largest_stable:step", "x": "energy", "y": "method"}]}
+#include <cstddef>
+#include <filesystem>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "job/document.hpp"
+
+namespace epviz::sweep {
+
+// Fields an axis may name: the simulation keys themselves, one component of
+// a vector ("inertia[0]"), and "energy", the total energy C1 reached by
+// scaling the initial angular velocity (sweep/energy_level.hpp).
+std::vector<std::string> axis_fields();
+std::string axis_fields_joined();
+
+struct Axis {
+  std::string field;
+  std::vector<nlohmann::json> values;  // numbers, strings or 3-vectors, as the field takes
+  std::string key;                     // "axes[1]", for messages
+};
+
+// Finite-time Lyapunov exponent of each point (sweep/point_run.hpp says how).
+struct FtleSettings {
+  double separation = 1e-8;  // initial and renormalised distance of the two states
+  double window = 0.0;       // time between renormalisations; 0: the sample spacing
+};
+
+// A heat map merge draws from the rows: `metric` over axes x and y.
+struct AtlasRequest {
+  std::string metric, x, y;
+  // The colour bar's range; NaN: the values' own. A fixed range lets two
+  // atlases (a chaotic and an integrable body) be compared by colour.
+  double min = std::numeric_limits<double>::quiet_NaN();
+  double max = std::numeric_limits<double>::quiet_NaN();
+};
+
+struct SweepSpec {
+  std::string file;
+  job::SimulationFields base;
+  std::vector<Axis> axes;
+  bool reference = false;
+  std::optional<FtleSettings> ftle;
+  std::vector<AtlasRequest> atlases;
+  // Of the canonical content (the parsed JSON written with sorted keys):
+  // whitespace and key order do not change it, any value does.
+  std::string hash;
+
+  long point_count() const;
+  // The index into each axis's values of point `index` (first axis slowest).
+  std::vector<std::size_t> coordinates(long index) const;
+};
+
+inline constexpr long max_points = 10'000'000;
+
+SweepSpec read_sweep(const nlohmann::json& root, const std::string& file);
+SweepSpec read_sweep_file(const std::filesystem::path& path);
+
+}  // namespace epviz::sweep

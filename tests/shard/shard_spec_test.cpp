@@ -1,0 +1,91 @@
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "shard/shard_spec.hpp"
+
+namespace epviz::shard {
+namespace {
+
+Environment env_of(std::map<std::string, std::string> vars) {
+  return [vars](const std::string& name) -> std::optional<std::string> {
+    auto it = vars.find(name);
+    if (it == vars.end()) return std::nullopt;
+    return it->second;
+  };
+}
+
+TEST(ShardSpec, ParsesIndexOfCount) {
+  EXPECT_EQ(parse_shard("0/1"), (ShardSpec{0, 1}));
+  EXPECT_EQ(parse_shard("2/8"), (ShardSpec{2, 8}));
+  EXPECT_EQ(parse_shard("999/1000"), (ShardSpec{999, 1000}));
+}
+
+TEST(ShardSpec, RefusesWhatIsNotAShardNamingTheOption) {
+  for (const char* bad :
+       {"8/8", "-1/2", "1/-2", "a/b", "1/0", "3", "", "/", "1/2x", " 1/2", "1/2/3", "0/1000001"}) {
+    try {
+      parse_shard(bad, "--shard");
+      ADD_FAILURE() << "accepted '" << bad << "'";
+    } catch (const ShardError& e) {
+      EXPECT_NE(std::string(e.what()).find("--shard: expected I/N"), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(ShardSpec, SlurmArrayTasksCountFromTheArrayMinimum) {
+  // --array=4-7: tasks 4..7 are shards 0..3.
+  EXPECT_EQ(shard_from_environment(env_of({{"SLURM_ARRAY_TASK_ID", "5"},
+                                           {"SLURM_ARRAY_TASK_MIN", "4"},
+                                           {"SLURM_ARRAY_TASK_COUNT", "4"}}),
+                                   0),
+            (ShardSpec{1, 4}));
+  EXPECT_EQ(shard_from_environment(
+                env_of({{"SLURM_ARRAY_TASK_ID", "3"}, {"SLURM_ARRAY_TASK_COUNT", "4"}}), 0),
+            (ShardSpec{3, 4}));
+  EXPECT_THROW(shard_from_environment(env_of({{"SLURM_ARRAY_TASK_ID", "8"},
+                                              {"SLURM_ARRAY_TASK_MIN", "4"},
+                                              {"SLURM_ARRAY_TASK_COUNT", "4"}}),
+                                      0),
+               ShardError);
+  EXPECT_THROW(shard_from_environment(env_of({{"SLURM_ARRAY_TASK_ID", "1"}}), 0), ShardError);
+  // --array=0-15:4: tasks 0, 4, 8, 12 are not consecutive shards.
+  EXPECT_THROW(shard_from_environment(env_of({{"SLURM_ARRAY_TASK_ID", "0"},
+                                              {"SLURM_ARRAY_TASK_MIN", "0"},
+                                              {"SLURM_ARRAY_TASK_MAX", "12"},
+                                              {"SLURM_ARRAY_TASK_COUNT", "4"}}),
+                                      0),
+               ShardError);
+}
+
+TEST(ShardSpec, IndexOnlyEnvironmentsNeedTheCount) {
+  EXPECT_THROW(shard_from_environment(env_of({{"JOB_COMPLETION_INDEX", "2"}}), 0), ShardError);
+  EXPECT_EQ(shard_from_environment(env_of({{"JOB_COMPLETION_INDEX", "2"}}), 5), (ShardSpec{2, 5}));
+  EXPECT_EQ(shard_from_environment(env_of({{"AWS_BATCH_JOB_ARRAY_INDEX", "0"}}), 3),
+            (ShardSpec{0, 3}));
+  EXPECT_THROW(shard_from_environment(env_of({{"AWS_BATCH_JOB_ARRAY_INDEX", "3"}}), 3), ShardError);
+  EXPECT_THROW(shard_from_environment(env_of({{"AWS_BATCH_JOB_ARRAY_INDEX", "x"}}), 3), ShardError);
+  EXPECT_EQ(shard_from_environment(env_of({}), 4), std::nullopt);
+}
+
+TEST(ShardSpec, RangesAreContiguousCoverEverythingAndDifferByAtMostOne) {
+  for (long total = 0; total <= 60; ++total)
+    for (long count = 1; count <= 11; ++count) {
+      long next = 0, smallest = total, largest = 0;
+      for (long i = 0; i < count; ++i) {
+        const auto r = shard_range(total, {i, count});
+        EXPECT_EQ(r.first, next) << total << " " << i << "/" << count;
+        EXPECT_GE(r.end, r.first);
+        smallest = std::min(smallest, r.size());
+        largest = std::max(largest, r.size());
+        next = r.end;
+      }
+      EXPECT_EQ(next, total);
+      EXPECT_LE(largest - smallest, 1) << total << " in " << count;
+    }
+  // Large sizes do not overflow.
+  EXPECT_EQ(shard_range(1L << 50, {3, 4}).end, 1L << 50);
+}
+
+}  // namespace
+}  // namespace epviz::shard

@@ -1,0 +1,114 @@
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "sweep/atlas.hpp"
+#include "sweep/point_run.hpp"
+#include "sweep/rows_file.hpp"
+
+namespace epviz::sweep {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+// The free rigid body turning about its middle axis is an unstable
+// equilibrium; its neighbours leave at the rate of the linearised Euler
+// equations, lambda = W sqrt((I2 - I1)(I3 - I2) / (I1 I3)) (a textbook
+// result, independent of the code measured), and the FTLE must find it.
+TEST(Ftle, MatchesTheGrowthRateAtTheUnstableMiddleAxis) {
+  sim::RunSpec run;
+  run.body = {{1.0, 2.0, 3.0}, {0.0, 0.0, 0.0}, 0.0};
+  run.initial = {{0.0, 1.5, 0.0}, {0.0, 0.0, 1.0}};
+  // The estimate carries a bias of order log(alignment of the first offset) / T.
+  run.t_end = 200.0;
+  run.samples = 2000;
+  run.tol = 1e-12;
+  const double lambda = 1.5 * std::sqrt((2.0 - 1.0) * (3.0 - 2.0) / (1.0 * 3.0));
+  const auto ftle = finite_time_lyapunov(run, {});
+  ASSERT_TRUE(ftle);
+  EXPECT_NEAR(*ftle, lambda, 0.015 * lambda);
+
+  // About the stable largest axis nothing grows exponentially.
+  run.initial.omega = {0.0, 0.0, 1.5};
+  const auto stable = finite_time_lyapunov(run, {});
+  ASSERT_TRUE(stable);
+  EXPECT_LT(std::abs(*stable), 0.1 * lambda);
+}
+
+TEST(Reference, ARunCloseToItsReferenceIsCloserAtASmallerStep) {
+  sim::RunSpec run;
+  run.case_id = physics::Case::generic;
+  run.body = physics::preset(physics::Case::generic).body;
+  run.initial = physics::preset(physics::Case::generic).initial;
+  run.method = sim::Method::rk4;
+  run.t_end = 5.0;
+  run.samples = 50;
+  ReferenceCache cache;
+  const auto ref = cache.get(run);
+  ASSERT_FALSE(ref->empty());
+  EXPECT_EQ(cache.get(run), ref);  // computed once
+  run.step = 0.02;
+  const double coarse = max_separation(sim::simulate(run).samples, *ref);
+  run.step = 0.01;
+  const double fine = max_separation(sim::simulate(run).samples, *ref);
+  // RK4: halving the step divides the error by about 2^4.
+  EXPECT_GT(coarse / fine, 12.0);
+  EXPECT_LT(coarse / fine, 20.0);
+}
+
+TEST(RowsFile, ResumeKeepsCompleteRowsAndCutsATornLine) {
+  const fs::path p = fs::temp_directory_path() / ("epviz-rows-" + std::to_string(::getpid()));
+  std::ofstream(p) << R"({"index":3,"sweep":"h"})"
+                      "\n"
+                      R"({"index":0,"sweep":"h"})"
+                      "\n"
+                   << R"({"index":1,"sw)";
+  const auto got = resume_rows(p, "h", 10);
+  EXPECT_EQ(got.indices, (std::set<long>{0, 3}));
+  EXPECT_TRUE(got.dropped_torn);
+  EXPECT_EQ(fs::file_size(p), std::string(R"({"index":3,"sweep":"h"})"
+                                          "\n"
+                                          R"({"index":0,"sweep":"h"})"
+                                          "\n")
+                                  .size());
+  EXPECT_THROW(resume_rows(p, "other", 10), RowsFileError);  // rows of another sweep
+  EXPECT_THROW(resume_rows(p, "h", 2), RowsFileError);       // index outside the sweep
+  fs::remove(p);
+}
+
+Json row(long index, const char* method, double step, double energy, bool failed) {
+  return {{"index", index},
+          {"axes", {{"method", method}, {"step", step}, {"energy", energy}}},
+          {"failure", failed ? Json{{"t", 1.0}} : Json(nullptr)},
+          {"t_end", 10.0}};
+}
+
+TEST(Atlas, LargestStableStepPerMethodAndEnergy) {
+  std::vector<Json> rows;
+  long i = 0;
+  for (const char* m : {"rk4", "gauss4"})
+    for (double step : {0.1, 0.2, 0.4})
+      for (double e : {1.0, 2.0})
+        // rk4 fails above 0.2 at energy 2 and everywhere above 0.1 at energy 1... by construction.
+        rows.push_back(
+            row(i++, m, step, e,
+                std::string(m) == "rk4" ? (e == 2.0 ? step > 0.2 : step > 0.1) : step > 0.4));
+  const auto figs = atlas_figures(rows, parse_atlas_option("largest_stable:step:energy:method"));
+  ASSERT_EQ(figs.size(), 1u);
+  const auto& h = figs[0].heat_map;
+  EXPECT_EQ(h.columns, (std::vector<std::string>{"1", "2"}));
+  EXPECT_EQ(h.rows, (std::vector<std::string>{"rk4", "gauss4"}));
+  EXPECT_EQ(h.values, (std::vector<double>{0.1, 0.2, 0.4, 0.4}));
+
+  const auto per_method = atlas_figures(rows, parse_atlas_option("time_to_failure:energy:step"));
+  ASSERT_EQ(per_method.size(), 2u);  // one figure per method
+  EXPECT_THROW(atlas_figures(rows, parse_atlas_option("ftle:energy:nope")), AtlasError);
+  EXPECT_THROW(parse_atlas_option("ftle:energy"), AtlasError);
+}
+
+}  // namespace
+}  // namespace epviz::sweep
