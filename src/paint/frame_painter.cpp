@@ -263,13 +263,14 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
                      glm::vec2(area.x + area.width, area.y + area.height)};
     add_placed_labels(flat, {r}, {style.text}, obstacles, bounds);
   }
-  draw_plane_captions(flat, column, px, style.text, any_exit, any_infinity);
+  draw_plane_captions(flat, column, float(area.y + area.height) + style.tick_length, px, style.text,
+                      any_exit, any_infinity);
   renderer_->draw_2d(flat);
 }
 
 void FramePainter::draw_plane_captions(render::DrawList& flat, const render::Viewport& column,
-                                       float px, const glm::vec4& text, bool any_exit,
-                                       bool any_infinity) {
+                                       float ticks_top, float px, const glm::vec4& text,
+                                       bool any_exit, bool any_infinity) {
   const float font = gui().label_font_px();
   const float centre = float(column.x + column.width / 2);
   const bool wide = column.width >= 360;
@@ -281,14 +282,16 @@ void FramePainter::draw_plane_captions(render::DrawList& flat, const render::Vie
   if (any_infinity)
     legend += std::string(legend.empty() ? "" : "   ") + "inf: through the south pole";
   float y = float(column.y + column.height) - 4 * px;
-  if (!legend.empty() && wide) {
+  // Each line only where it stays below the plot's tick labels.
+  const float lowest_top = ticks_top + font + 4.0f;
+  if (!legend.empty() && wide && y - font >= lowest_top) {
     flat.add_text({{centre, y, 0}, legend, text, TextAnchor::bottom});
     y -= font * 1.25f;
   }
   for (const char* convention :
        {"projected from the south pole: a = -gamma1/(1+gamma3), b = -gamma2/(1+gamma3)",
         "a = -gamma1/(1+gamma3), b = -gamma2/(1+gamma3)", "a = -g1/(1+g3), b = -g2/(1+g3)"})
-    if (gui().text_size(convention).x <= float(column.width) - 8 * px) {
+    if (gui().text_size(convention).x <= float(column.width) - 8 * px && y - font >= lowest_top) {
       flat.add_text({{centre, y, 0}, convention, text, TextAnchor::bottom});
       break;
     }

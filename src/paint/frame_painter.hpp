@@ -103,8 +103,9 @@ class FramePainter {
   void draw_plane(const scene::Frame& f, const render::Viewport& column,
                   const render::Viewport& area, float px);
   // Under the plot: the projection's convention and a legend for its marks.
-  void draw_plane_captions(render::DrawList& flat, const render::Viewport& column, float px,
-                           const glm::vec4& text, bool any_exit, bool any_infinity);
+  // `ticks_top`: where the plot's tick labels start (the captions stay below them).
+  void draw_plane_captions(render::DrawList& flat, const render::Viewport& column, float ticks_top,
+                           float px, const glm::vec4& text, bool any_exit, bool any_infinity);
   // Labels of one part of the picture, placed by place_labels and recorded.
   void add_placed_labels(render::DrawList& flat, const std::vector<LabelRequest>& requests,
                          const std::vector<glm::vec4>& colours, const std::vector<Box>& obstacles,

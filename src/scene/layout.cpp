@@ -33,7 +33,9 @@ FrameLayout layout_in_width(const LayoutRequest& q, int width) {
   if (l.panel_column) {
     const auto& c = *l.panel_column;
     // Room for the title above and the tick labels and legend below.
-    const int margin_bottom = std::max(26, height / 9), margin_top_base = std::max(22, height / 14);
+    // Below the plot: the tick labels and the projection's caption, two lines at least.
+    const int margin_bottom = std::max(int(std::ceil(overlay_font_px(height) * 2.9f)), height / 9);
+    const int margin_top_base = std::max(22, height / 14);
     const int margin_left = std::max(30, c.width / 8), margin_right = std::max(10, c.width / 20);
     auto side_for = [&](int margin_top) {
       return std::min(c.width - margin_left - margin_right, c.height - margin_top - margin_bottom);
