@@ -722,7 +722,7 @@ render::RgbaImage paint_heat_map(render::GlContext& context, const HeatMapSpec& 
     list.add_text(label({float(b.x + b.width) + font_px * 0.45f, y}, t.label, TextAnchor::left));
   }
   list.add_text(
-      label({float(b.x), float(b.y) - font_px * 0.4f}, spec.value_label, TextAnchor::bottom_left));
+      label({float(b.x), float(b.y) - font_px * 0.9f}, spec.value_label, TextAnchor::bottom_left));
   renderer.draw_2d(list);
   return renderer.finish_frame();
 }
