@@ -46,7 +46,8 @@ TEST(BenchCommand, JobMistakesAreUsageErrors) {
   r = run_epviz("bench --quick --job " + (dir / "bad.json").string(), dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("inertia"), std::string::npos) << r.err;
-  std::ofstream(dir / "gallery.json") << R"({"jobs": ["bad.json"]})";
+  std::ofstream(dir / "good.json") << R"({"simulation": {"case": "euler"}})";
+  std::ofstream(dir / "gallery.json") << R"({"jobs": ["good.json"]})";
   r = run_epviz("bench --quick --job " + (dir / "gallery.json").string(), dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("single render job"), std::string::npos) << r.err;
