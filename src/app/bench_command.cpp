@@ -12,6 +12,8 @@
 #include <sstream>
 #include <thread>
 
+#include "app/render_job.hpp"
+#include "app/simulation_fields.hpp"
 #include "app/text_table.hpp"
 #include "app/usage_error.hpp"
 #include "io/atomic_file.hpp"
@@ -48,22 +50,48 @@ std::string compiler() {
 
 // --- Stage 1: the request, checked before any work ---------------------------
 
-std::vector<physics::Case> parse_cases(const std::string& list) {
+// The presets named by --cases; "custom" stands for the body of --job and
+// is accepted only with it.
+std::vector<physics::Case> parse_cases(const std::string& list, bool have_job) {
   std::vector<physics::Case> cases;
   if (list.empty()) return cases;
   std::stringstream s(list);
   std::string item;
   while (std::getline(s, item, ',')) {
     const auto c = physics::case_from_name(item);
-    if (!c || *c == physics::Case::custom) {
+    if (c == physics::Case::custom) {
+      if (!have_job)
+        throw UsageError(
+            "--cases: 'custom' needs --job FILE (a render job whose \"simulation\" gives the "
+            "body)");
+      continue;
+    }
+    if (!c) {
       std::string names;
       for (const auto& p : physics::case_presets()) names += (names.empty() ? "" : ", ") + p.name;
       throw UsageError("--cases: unknown case '" + item + "' (expected a comma-separated list of " +
-                       names + ")");
+                       names + (have_job ? ", custom" : "") + ")");
     }
     cases.push_back(*c);
   }
   return cases;
+}
+
+// The body and initial state of a render job's "simulation" (a single job),
+// checked as `epviz render` checks them.
+study::Problem job_problem(const std::string& file) {
+  if (!fs::is_regular_file(file)) throw UsageError("--job: no such file '" + file + "'");
+  const LoadedJob loaded = load_render_job(file);
+  if (!loaded.single)
+    throw UsageError("--job: '" + file +
+                     "' is a gallery or bench-figures job; expected a single render job");
+  const sim::RunSpec spec = resolve(loaded.single->simulation);
+  study::Problem p;
+  p.id = spec.case_id;
+  p.name = spec.case_id == physics::Case::custom ? "custom" : physics::case_name(spec.case_id);
+  p.body = spec.body;
+  p.initial = spec.initial;
+  return p;
 }
 
 // Checks where the outputs go and creates the --out directory.
@@ -333,7 +361,8 @@ void write_outputs(const BenchRequest& request, const std::vector<StudyRow>& row
 int run_bench(const BenchRequest& request) {
   StudyOptions opts;
   opts.quick = request.quick;
-  opts.cases = parse_cases(request.cases);
+  if (!request.job.empty()) opts.custom = job_problem(request.job);
+  opts.cases = parse_cases(request.cases, !request.job.empty());
   prepare_outputs(request);
   const auto t0 = std::chrono::steady_clock::now();
   const auto rows = run_studies(opts);
@@ -359,7 +388,11 @@ std::function<int()> add_bench_command(CLI::App& app) {
       "--gl", request->gl,
       "offscreen GL backend for the charts: auto, egl or osmesa (default: $EPVIZ_GL or auto)");
   cmd->add_option("--cases", request->cases,
-                  "comma-separated presets for the work-precision and drift studies (default all)");
+                  "comma-separated presets for the work-precision and drift studies (default all; "
+                  "none with --job unless named; custom: the --job body)");
+  cmd->add_option("--job", request->job,
+                  "a render job (JSON) whose \"simulation\" gives a body of one's own: the "
+                  "work-precision study runs on it too");
   return [request] { return run_bench(*request); };
 }
 

@@ -22,6 +22,7 @@ struct BenchRequest {
   std::string out;    // directory for bench.json and the charts ("" for none)
   std::string cases;  // comma-separated presets ("" for all)
   std::string gl;     // GL backend for the charts ("" for $EPVIZ_GL or auto)
+  std::string job;    // a render job whose simulation is a body to study too ("" for none)
 };
 int run_bench(const BenchRequest& request);
 

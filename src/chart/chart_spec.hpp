@@ -19,6 +19,17 @@ struct ChartSeries {
   std::string name;
   std::vector<ChartPoint>
       points;  // drawn in this order; non-finite (or <= 0 on a log axis) points break the line
+  // Series with the same colour key share a colour, with the same marker key a
+  // marker shape (e.g. colour by method, marker by formulation); -1: by the
+  // series' position in the chart.
+  int colour_key = -1;
+  int marker_key = -1;
+};
+
+// What one colour or one marker shape of a chart stands for.
+struct LegendKey {
+  std::string name;
+  int key = 0;
 };
 
 struct ChartSpec {
@@ -28,6 +39,25 @@ struct ChartSpec {
   bool log_x = false;
   bool log_y = false;
   std::vector<ChartSeries> series;
+  // A legend by key instead of by series, where the series are the product
+  // of two things (methods x formulations): a row per colour, then a row per
+  // marker shape. Empty: a row per series.
+  std::vector<LegendKey> colour_legend;
+  std::vector<LegendKey> marker_legend;
+};
+
+// A grid of values, rows by columns, each cell coloured by its value on a
+// sequential colour map with a colour bar to read it (e.g. method x regime,
+// the largest stable step). NaN: no value (drawn hatched, with `missing`).
+struct HeatMapSpec {
+  std::string title;
+  std::string value_label;  // what the colour means, under the colour bar's title
+  std::vector<std::string> rows, columns;
+  std::vector<std::vector<double>> values;  // [row][column]
+  bool log_scale = true;                    // colours by log10 of the value (values > 0)
+  bool larger_is_better = true;             // the map's bright end at the better values
+  std::string missing = "n/a";
+  std::string note;  // one line under the grid: how the values were measured
 };
 
 struct TableSpec {
@@ -39,7 +69,7 @@ struct TableSpec {
 // One picture and the file name it is meant to be saved under ("drift_euler.png").
 struct Figure {
   std::string file_name;
-  std::variant<ChartSpec, TableSpec> content;
+  std::variant<ChartSpec, TableSpec, HeatMapSpec> content;
 };
 
 }  // namespace epviz::chart

@@ -261,9 +261,11 @@ std::optional<long> ObjectReader::integer(const std::string& key, long min_value
       "expected an integer from " + std::to_string(min_value) + " to " + std::to_string(max_value);
   if (!v->is_number_integer()) fail(key, expected + ", got " + describe(*v));
   // An unsigned value past the largest long must not wrap around to a negative one.
-  const bool in_range = v->is_number_unsigned()
-                            ? max_value >= 0 && v->get<std::uint64_t>() <= std::uint64_t(max_value)
-                            : v->get<long>() >= min_value && v->get<long>() <= max_value;
+  const bool in_range =
+      v->is_number_unsigned()
+          ? max_value >= 0 && v->get<std::uint64_t>() <= std::uint64_t(max_value) &&
+                (min_value <= 0 || v->get<std::uint64_t>() >= std::uint64_t(min_value))
+          : v->get<long>() >= min_value && v->get<long>() <= max_value;
   if (!in_range) fail(key, expected + ", got " + describe(*v));
   return v->get<long>();
 }

@@ -286,6 +286,14 @@ const std::vector<Job>& job_entries() {
        [](const JobDocument& d, Json& j) {
          j["view"] = d.scene.view == scene::View::space ? "space" : "body";
        }},
+      {{"trace_axis", ValueType::integer, "3", "1, 2 or 3",
+        "space view: the body axis whose tip the trail follows (2: the tennis-racket flip)"},
+       [](io::ObjectReader& r, JobDocument& d) {
+         if (auto v = r.integer("trace_axis", 1, 3)) d.scene.trace_axis = int(*v);
+       },
+       [](const JobDocument& d, Json& j) {
+         if (d.scene.trace_axis != 3) j["trace_axis"] = d.scene.trace_axis;
+       }},
       {{"theme", ValueType::choice, "dark", "dark, light",
         "the colour set; \"colours\" override its defaults"},
        [](io::ObjectReader& r, JobDocument& d) {

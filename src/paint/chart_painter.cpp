@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "render/colour_map.hpp"
 #include "render/draw_list.hpp"
 #include "render/renderer.hpp"
 
@@ -132,6 +133,19 @@ void add_shape(DrawList& list, glm::vec2 c, MarkerShape shape, float r, const gl
     case MarkerShape::triangle_down:
       poly = {{c.x, c.y + r * 1.15f}, {c.x - r, c.y - r * 0.75f}, {c.x + r, c.y - r * 0.75f}};
       break;
+    case MarkerShape::hexagon:
+      for (int k = 0; k < 6; ++k) {
+        const float a = float(k) * 1.0471976f;
+        poly.emplace_back(c.x + r * std::cos(a), c.y + r * std::sin(a));
+      }
+      break;
+    case MarkerShape::cross: {
+      // Two strokes, no fill: reads apart from every filled shape.
+      const float h = r * 0.9f;
+      list.add_line({c.x - h, c.y - h, 0}, {c.x + h, c.y + h, 0}, fill, std::max(2.0f, r * 0.45f));
+      list.add_line({c.x - h, c.y + h, 0}, {c.x + h, c.y - h, 0}, fill, std::max(2.0f, r * 0.45f));
+      return;
+    }
     case MarkerShape::circle:  // drawn above as a round marker
     case MarkerShape::diamond:
       poly = {{c.x, c.y - r * 1.2f}, {c.x + r, c.y}, {c.x, c.y + r * 1.2f}, {c.x - r, c.y}};
@@ -145,6 +159,38 @@ void add_shape(DrawList& list, glm::vec2 c, MarkerShape shape, float r, const gl
   std::vector<glm::vec3> ring;
   for (const auto& p : poly) ring.emplace_back(p, 0.0f);
   list.add_polyline(ring, outline, 1.0f, true);
+}
+
+// The legend's rows: a row per series, or (keyed legends) a row per colour,
+// then a row per marker shape. `colour` < 0: no line sample; `marker` < 0: none.
+struct LegendRow {
+  std::string name;
+  int colour = -1;
+  int marker = -1;
+  bool gap_before = false;  // half a line of space above (between the two key lists)
+};
+std::vector<LegendRow> legend_rows(const ChartSpec& spec) {
+  std::vector<LegendRow> rows;
+  if (spec.colour_legend.empty() && spec.marker_legend.empty()) {
+    for (std::size_t i = 0; i < spec.series.size(); ++i) {
+      const auto& s = spec.series[i];
+      rows.push_back({s.name, s.colour_key >= 0 ? s.colour_key : int(i),
+                      s.marker_key >= 0 ? s.marker_key : int(i)});
+    }
+    return rows;
+  }
+  for (const auto& k : spec.colour_legend) rows.push_back({k.name, k.key, -1});
+  bool first = true;
+  for (const auto& k : spec.marker_legend) {
+    rows.push_back({k.name, -1, k.key, first && !rows.empty()});
+    first = false;
+  }
+  return rows;
+}
+float legend_height(const std::vector<LegendRow>& rows, float line, float font_px) {
+  float h = font_px * 0.8f;
+  for (const auto& r : rows) h += line * (r.gap_before ? 1.5f : 1.0f);
+  return h;
 }
 
 render::RendererOptions renderer_options(const ChartOptions& options) {
@@ -187,8 +233,10 @@ int points_inside(const ChartSpec& spec, const ChartLayout& l, const Viewport& b
 }  // namespace
 
 glm::vec4 series_colour(std::size_t index) {
-  // Okabe & Ito's colour-blind-safe set (yellow left out: it fades on white).
-  static const std::array<glm::vec4, 7> colours{{
+  // Okabe & Ito's colour-blind-safe set (yellow left out: it fades on white),
+  // then darker and muted tones that stay apart from them on white: enough
+  // for every method of a chart to have its own colour.
+  static const std::array<glm::vec4, kSeriesColours> colours{{
       {0.000f, 0.447f, 0.698f, 1.0f},  // blue
       {0.835f, 0.369f, 0.000f, 1.0f},  // vermillion
       {0.000f, 0.620f, 0.451f, 1.0f},  // bluish green
@@ -196,16 +244,33 @@ glm::vec4 series_colour(std::size_t index) {
       {0.902f, 0.624f, 0.000f, 1.0f},  // orange
       {0.337f, 0.706f, 0.914f, 1.0f},  // sky blue
       {0.15f, 0.15f, 0.15f, 1.0f},     // near black
+      {0.533f, 0.133f, 0.333f, 1.0f},  // wine
+      {0.600f, 0.600f, 0.200f, 1.0f},  // olive
+      {0.200f, 0.133f, 0.533f, 1.0f},  // indigo
+      {0.550f, 0.340f, 0.160f, 1.0f},  // brown
+      {0.267f, 0.667f, 0.600f, 1.0f},  // teal
+      {0.600f, 0.600f, 0.600f, 1.0f},  // grey
+      {0.933f, 0.400f, 0.467f, 1.0f},  // rose
+      {0.067f, 0.467f, 0.200f, 1.0f},  // dark green
+      {0.498f, 0.235f, 0.553f, 1.0f},  // purple
   }};
   return colours[index % colours.size()];
 }
 
 MarkerShape series_marker(std::size_t index) {
-  static const std::array<MarkerShape, 5> shapes{MarkerShape::circle, MarkerShape::square,
-                                                 MarkerShape::triangle_up, MarkerShape::diamond,
-                                                 MarkerShape::triangle_down};
+  static const std::array<MarkerShape, 7> shapes{MarkerShape::circle,        MarkerShape::square,
+                                                 MarkerShape::triangle_up,   MarkerShape::diamond,
+                                                 MarkerShape::triangle_down, MarkerShape::hexagon,
+                                                 MarkerShape::cross};
   // Shapes cycle on a different period from colours, so pairs stay distinct.
   return shapes[index % shapes.size()];
+}
+
+glm::vec4 colour_of(const ChartSeries& s, std::size_t index) {
+  return series_colour(s.colour_key >= 0 ? std::size_t(s.colour_key) : index);
+}
+MarkerShape marker_of(const ChartSeries& s, std::size_t index) {
+  return series_marker(s.marker_key >= 0 ? std::size_t(s.marker_key) : index);
 }
 
 std::string decade_label(int exponent) {
@@ -255,14 +320,19 @@ ChartLayout chart_layout(const ChartSpec& spec, int width, int height, float fon
                                 (spec.y_label.empty() ? 0.0f : line)));
   const int bottom =
       int(std::ceil(font_px * 0.9f + line + (spec.x_label.empty() ? 0.0f : line * 1.1f)));
-  int right = int(std::ceil(font_px * 1.5f));
+  // Room on the right for half the last x tick label, which is centred on the
+  // plot's right edge.
+  float last_x_label = 0.0f;
+  for (const auto& t : axis_ticks(sx.lo, sx.hi, spec.log_x, 10))
+    if (!t.label.empty()) last_x_label = estimate_width(t.label, font_px);
+  int right = int(std::ceil(std::max(font_px * 1.5f, 0.5f * last_x_label + font_px * 0.5f)));
 
-  // Legend: one row per series, a line sample with its marker, then the name.
+  // Legend: a row per series (or per key), a line sample and marker, then the name.
+  const auto rows = legend_rows(spec);
   float widest_name = 0.0f;
-  for (const auto& s : spec.series)
-    widest_name = std::max(widest_name, estimate_width(s.name, font_px));
+  for (const auto& r : rows) widest_name = std::max(widest_name, estimate_width(r.name, font_px));
   const int legend_w = int(std::ceil(font_px * 3.6f + widest_name + font_px * 0.8f));
-  const int legend_h = int(std::ceil(line * float(spec.series.size()) + font_px * 0.8f));
+  const int legend_h = int(std::ceil(legend_height(rows, line, font_px)));
   l.plot_area = {left, top, width - left - right, height - top - bottom};
   if (spec.series.empty()) return l;
 
@@ -282,7 +352,7 @@ ChartLayout chart_layout(const ChartSpec& spec, int width, int height, float fon
         return l;
       }
   // No free corner: the legend goes right of the plot, which narrows.
-  right = legend_w + pad * 2;
+  right = std::max(right, legend_w + pad * 2);
   l.plot_area = {left, top, width - left - right, height - top - bottom};
   l.legend = {l.plot_area.x + l.plot_area.width + pad, l.plot_area.y, legend_w, legend_h};
   l.legend_outside = true;
@@ -357,7 +427,8 @@ render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec,
   const float marker_r = std::max(3.5f, font_px * 0.3f);
   for (std::size_t i = 0; i < spec.series.size(); ++i) {
     const auto& s = spec.series[i];
-    const glm::vec4 colour = series_colour(i);
+    const glm::vec4 colour = colour_of(s, i);
+    const MarkerShape shape = marker_of(s, i);
     std::vector<glm::vec3> run;
     auto flush = [&] {
       if (run.size() >= 2) lines.add_polyline(run, colour, stroke);
@@ -370,7 +441,7 @@ render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec,
         continue;
       }
       run.emplace_back(q, 0.0f);
-      if (s.points.size() <= 60) add_shape(markers, q, series_marker(i), marker_r, colour);
+      if (s.points.size() <= 60) add_shape(markers, q, shape, marker_r, colour);
     }
     flush();
     // Long series (time series) get a few markers only, evenly spaced.
@@ -378,8 +449,7 @@ render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec,
       const std::size_t every = s.points.size() / 12 + 1;
       for (std::size_t k = every / 2; k < s.points.size(); k += every) {
         const glm::vec2 q = l.to_pixel(s.points[k].x, s.points[k].y);
-        if (!std::isnan(q.x) && !std::isnan(q.y))
-          add_shape(markers, q, series_marker(i), marker_r, colour);
+        if (!std::isnan(q.x) && !std::isnan(q.y)) add_shape(markers, q, shape, marker_r, colour);
       }
     }
   }
@@ -398,12 +468,19 @@ render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec,
                                      {float(b.x + b.width), float(b.y + b.height), 0},
                                      {float(b.x), float(b.y + b.height), 0}};
     legend.add_polyline(box, {0.0f, 0.0f, 0.0f, 0.35f}, 1.0f, true);
-    for (std::size_t i = 0; i < spec.series.size(); ++i) {
-      const float cy = float(b.y) + font_px * 0.4f + line * (float(i) + 0.5f);
+    float top = float(b.y) + font_px * 0.4f;
+    const glm::vec4 grey{0.45f, 0.45f, 0.47f, 1.0f};  // marker-only rows: the shape, no colour
+    for (const auto& r : legend_rows(spec)) {
+      if (r.gap_before) top += line * 0.5f;
+      const float cy = top + line * 0.5f;
+      top += line;
       const float lx0 = float(b.x) + font_px * 0.6f, lx1 = lx0 + font_px * 2.4f;
-      legend.add_line({lx0, cy, 0}, {lx1, cy, 0}, series_colour(i), stroke);
-      add_shape(legend, {(lx0 + lx1) * 0.5f, cy}, series_marker(i), marker_r, series_colour(i));
-      legend.add_text(label({lx1 + font_px * 0.6f, cy}, spec.series[i].name, TextAnchor::left));
+      const glm::vec4 colour = r.colour >= 0 ? series_colour(std::size_t(r.colour)) : grey;
+      if (r.colour >= 0) legend.add_line({lx0, cy, 0}, {lx1, cy, 0}, colour, stroke);
+      if (r.marker >= 0)
+        add_shape(legend, {(lx0 + lx1) * 0.5f, cy}, series_marker(std::size_t(r.marker)), marker_r,
+                  colour);
+      legend.add_text(label({lx1 + font_px * 0.6f, cy}, r.name, TextAnchor::left));
     }
     renderer.draw_2d(legend);
   }
@@ -482,17 +559,192 @@ render::RgbaImage paint_table(render::GlContext& context, const TableSpec& spec,
   return renderer.finish_frame();
 }
 
+// --- Heat maps -----------------------------------------------------------------
+
+namespace {
+
+const render::ColourMap& heat_map() {
+  static const render::ColourMap map = render::ColourMap::time();
+  return map;
+}
+
+double plotted(const HeatMapSpec& spec, double v) {
+  if (!std::isfinite(v)) return kNaN;
+  if (spec.log_scale) return v > 0.0 ? std::log10(v) : kNaN;
+  return v;
+}
+
+std::string heat_value_text(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
+
+}  // namespace
+
+HeatMapLayout heat_map_layout(const HeatMapSpec& spec, int width, int height, float font_px) {
+  HeatMapLayout l;
+  Span span;
+  for (const auto& row : spec.values)
+    for (double v : row) span.add(plotted(spec, v));
+  finish_span(span, spec.log_scale);
+  if (!spec.log_scale && !span.empty()) {
+    // finish_span pads a linear range; a colour scale wants the values' own ends.
+    const double pad = (span.hi - span.lo) / 1.08 * 0.04;
+    span.lo += pad;
+    span.hi -= pad;
+  }
+  l.lo = span.lo;
+  l.hi = span.hi;
+
+  const float line = font_px * 1.35f;
+  float widest_row = 0.0f;
+  for (const auto& r : spec.rows) widest_row = std::max(widest_row, estimate_width(r, font_px));
+  float widest_column = 0.0f;
+  for (const auto& c : spec.columns)
+    widest_column = std::max(widest_column, estimate_width(c, font_px));
+  float widest_tick = 0.0f;
+  for (const auto& t : axis_ticks(l.lo, l.hi, spec.log_scale, 8))
+    widest_tick = std::max(widest_tick, estimate_width(t.label, font_px));
+  const float bar_w = font_px * 1.1f;
+  const float right =
+      std::max(estimate_width(spec.value_label, font_px), bar_w + font_px * 0.5f + widest_tick) +
+      font_px * 2.5f;
+  const int left = int(std::ceil(widest_row + font_px * 1.4f));
+  const int top = int(std::ceil(font_px * 0.8f + line * 1.3f + line * 1.2f));
+  const int grid_w = std::max(16, width - left - int(std::ceil(right)));
+  const std::size_t columns = std::max<std::size_t>(1, spec.columns.size());
+  const std::size_t rows = std::max<std::size_t>(1, spec.rows.size());
+  const float cell_w = float(grid_w) / float(columns);
+  l.staggered_columns = widest_column > cell_w * 0.95f;
+  const int bottom = int(std::ceil(font_px * 0.6f + line * (l.staggered_columns ? 2.0f : 1.0f) +
+                                   (spec.note.empty() ? 0.0f : line * 1.4f) + font_px * 0.6f));
+  const float cell_h_max = font_px * 2.6f;
+  const float cell_h =
+      std::min(cell_h_max, float(std::max(16, height - top - bottom)) / float(rows));
+  const int grid_h = int(std::floor(cell_h * float(rows)));
+  l.natural_height = top + int(std::ceil(cell_h_max * float(rows))) + bottom;
+  l.grid = {left, top, grid_w, grid_h};
+  l.cells.assign(spec.rows.size(), {});
+  for (std::size_t i = 0; i < spec.rows.size(); ++i)
+    for (std::size_t j = 0; j < spec.columns.size(); ++j) {
+      const int x0 = left + int(std::round(cell_w * float(j))),
+                x1 = left + int(std::round(cell_w * float(j + 1)));
+      const int y0 = top + int(std::round(cell_h * float(i))),
+                y1 = top + int(std::round(cell_h * float(i + 1)));
+      l.cells[i].push_back({x0, y0, x1 - x0, y1 - y0});
+    }
+  l.colour_bar = {left + grid_w + int(font_px * 1.5f), top, int(bar_w), grid_h};
+  return l;
+}
+
+std::optional<glm::vec4> heat_map_colour(const HeatMapSpec& spec, const HeatMapLayout& l,
+                                         double value) {
+  const double v = plotted(spec, value);
+  if (std::isnan(v)) return std::nullopt;
+  double t = l.hi > l.lo ? (v - l.lo) / (l.hi - l.lo) : 0.5;
+  t = std::clamp(t, 0.0, 1.0);
+  if (!spec.larger_is_better) t = 1.0 - t;
+  return heat_map()(float(t), 1.0f);
+}
+
+render::RgbaImage paint_heat_map(render::GlContext& context, const HeatMapSpec& spec,
+                                 const ChartOptions& options) {
+  context.make_current();
+  render::Renderer renderer(context, renderer_options(options));
+  const float font_px = chart_font_px(options);
+  const float line = font_px * 1.35f;
+  const HeatMapLayout l = heat_map_layout(spec, options.width, options.height, font_px);
+  renderer.begin_frame(kPaper);
+  DrawList list;
+  if (!spec.title.empty())
+    list.add_text(
+        label({float(options.width) * 0.5f, font_px * 0.6f}, spec.title, TextAnchor::top));
+  const glm::vec4 missing{0.88f, 0.88f, 0.89f, 1.0f};
+  for (std::size_t i = 0; i < l.cells.size(); ++i) {
+    const Viewport& first = l.cells[i].empty() ? l.grid : l.cells[i][0];
+    list.add_text(label({float(l.grid.x) - font_px * 0.5f, float(first.y) + first.height * 0.5f},
+                        spec.rows[i], TextAnchor::right));
+    for (std::size_t j = 0; j < l.cells[i].size(); ++j) {
+      const Viewport& c = l.cells[i][j];
+      const double v = j < spec.values[i].size() ? spec.values[i][j] : kNaN;
+      const auto colour = heat_map_colour(spec, l, v);
+      const glm::vec4 fill = colour.value_or(missing);
+      // One pixel of paper between cells.
+      list.add_rect({float(c.x) + 1.0f, float(c.y) + 1.0f},
+                    {float(c.x + c.width) - 1.0f, float(c.y + c.height) - 1.0f}, fill);
+      const bool light = 0.299f * fill.r + 0.587f * fill.g + 0.114f * fill.b > 0.55f;
+      const glm::vec4 ink = light ? kInk : glm::vec4(1.0f);
+      list.add_text(label({float(c.x) + c.width * 0.5f, float(c.y) + c.height * 0.5f},
+                          colour ? heat_value_text(v) : spec.missing, TextAnchor::centre,
+                          colour ? ink : glm::vec4(0.35f, 0.35f, 0.38f, 1.0f)));
+    }
+  }
+  // Column labels under the grid, on two lines where they are wider than a cell.
+  for (std::size_t j = 0; j < spec.columns.size(); ++j) {
+    const Viewport& c = l.cells.empty() ? l.grid : l.cells[0][j];
+    const float y = float(l.grid.y + l.grid.height) + font_px * 0.5f +
+                    (l.staggered_columns && j % 2 == 1 ? line : 0.0f);
+    list.add_text(label({float(c.x) + c.width * 0.5f, y}, spec.columns[j], TextAnchor::top));
+  }
+  if (!spec.note.empty())
+    list.add_text(
+        label({float(l.grid.x), float(l.grid.y + l.grid.height) + font_px * 0.5f +
+                                    line * (l.staggered_columns ? 2.0f : 1.0f) + line * 0.4f},
+              spec.note, TextAnchor::top_left, {0.35f, 0.35f, 0.38f, 1.0f}));
+  // The colour bar: a strip per pixel row, low values at the bottom.
+  const Viewport& b = l.colour_bar;
+  std::vector<render::ColouredVertex> strip;
+  constexpr int kSteps = 64;
+  for (int k = 0; k < kSteps; ++k) {
+    const float y1 = float(b.y + b.height) - float(b.height) * float(k) / kSteps;
+    const float y0 = float(b.y + b.height) - float(b.height) * float(k + 1) / kSteps;
+    const double v = l.lo + (l.hi - l.lo) * (double(k) + 0.5) / kSteps;
+    const double value = spec.log_scale ? std::pow(10.0, v) : v;
+    const glm::vec4 c = heat_map_colour(spec, l, value).value_or(missing);
+    for (const glm::vec2 p :
+         {glm::vec2(b.x, y0), glm::vec2(b.x + b.width, y0), glm::vec2(b.x + b.width, y1),
+          glm::vec2(b.x, y0), glm::vec2(b.x + b.width, y1), glm::vec2(b.x, y1)})
+      strip.push_back({glm::vec3(p, 0), c});
+  }
+  list.add_triangles(strip);
+  const std::vector<glm::vec3> bar_frame{{float(b.x), float(b.y), 0},
+                                         {float(b.x + b.width), float(b.y), 0},
+                                         {float(b.x + b.width), float(b.y + b.height), 0},
+                                         {float(b.x), float(b.y + b.height), 0}};
+  list.add_polyline(bar_frame, kFrame, 1.0f, true);
+  const int max_labels = std::clamp(int(float(b.height) / (font_px * 1.6f)), 2, 8);
+  for (const auto& t : axis_ticks(l.lo, l.hi, spec.log_scale, max_labels)) {
+    if (t.label.empty()) continue;
+    const float y = float(b.y + b.height) - float((t.at - l.lo) / (l.hi - l.lo)) * float(b.height);
+    list.add_line({float(b.x + b.width), y, 0}, {float(b.x + b.width) + font_px * 0.3f, y, 0},
+                  kFrame, 1.0f);
+    list.add_text(label({float(b.x + b.width) + font_px * 0.45f, y}, t.label, TextAnchor::left));
+  }
+  list.add_text(
+      label({float(b.x), float(b.y) - font_px * 0.9f}, spec.value_label, TextAnchor::bottom_left));
+  renderer.draw_2d(list);
+  return renderer.finish_frame();
+}
+
 render::RgbaImage paint_figure(render::GlContext& context, const Figure& figure,
                                const ChartOptions& options) {
   if (const auto* chart = std::get_if<ChartSpec>(&figure.content))
     return paint_chart(context, *chart, options);
+  if (const auto* heat = std::get_if<HeatMapSpec>(&figure.content)) {
+    ChartOptions o = options;
+    o.font_px = chart_font_px(options);
+    o.height =
+        std::min(o.height, heat_map_layout(*heat, o.width, o.height, o.font_px).natural_height);
+    return paint_heat_map(context, *heat, o);
+  }
   const auto& table = std::get<TableSpec>(figure.content);
   ChartOptions o = options;
   // Tall enough for every row: the title, the header, the rules and the
   // margins take five and a half lines (paint_table's layout); one more spare.
   o.font_px = chart_font_px(options);
   const float line = o.font_px * 1.5f;
-  o.height = std::max(o.height, int(std::ceil(line * float(table.rows.size() + 6))));
+  o.height = std::max(o.height, int(std::ceil(line * float(table.rows.size() + 8))));
   return paint_table(context, table, o);
 }
 

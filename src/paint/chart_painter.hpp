@@ -6,6 +6,7 @@
 //
 //   auto context = render::make_gl_context("osmesa", 16, 16);  // size unused
 //   render::RgbaImage img = paint::paint_chart(*context, spec, {.width = 1280, .height = 800});
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,7 @@ using chart::ChartPoint;
 using chart::ChartSeries;
 using chart::ChartSpec;
 using chart::Figure;
+using chart::HeatMapSpec;
 using chart::TableSpec;
 
 struct ChartOptions {
@@ -38,9 +40,13 @@ struct ChartOptions {
 };
 
 // The colour and marker of series i (colour-blind-safe palette, cycling).
-enum class MarkerShape { circle, square, triangle_up, diamond, triangle_down };
+enum class MarkerShape { circle, square, triangle_up, diamond, triangle_down, hexagon, cross };
+constexpr std::size_t kSeriesColours = 16;
 glm::vec4 series_colour(std::size_t index);
 MarkerShape series_marker(std::size_t index);
+// A series' colour and marker: by its keys where it has them, else by its index.
+glm::vec4 colour_of(const ChartSeries& series, std::size_t index);
+MarkerShape marker_of(const ChartSeries& series, std::size_t index);
 
 // Where the plot goes and the data range it shows. Ranges on log axes are in
 // log10 units (whole decades).
@@ -62,12 +68,31 @@ float chart_font_px(const ChartOptions& options);
 // The log10 decade labels: "1" for 1e0, else "1e-8" style.
 std::string decade_label(int exponent);
 
+// Where a heat map's parts go: the cells (rows top to bottom, columns left to
+// right), the vertical colour bar (low values at its bottom) and its range in
+// plotted units (log10 of the values on a log scale, whole decades).
+struct HeatMapLayout {
+  render::Viewport grid;
+  std::vector<std::vector<render::Viewport>> cells;  // [row][column]
+  render::Viewport colour_bar;
+  double lo = 0.0, hi = 1.0;
+  bool staggered_columns = false;  // column labels on two lines (they are wider than a cell)
+  int natural_height = 0;          // the picture's height that fits the grid with no spare room
+};
+HeatMapLayout heat_map_layout(const HeatMapSpec& spec, int width, int height, float font_px);
+// The colour of a cell holding `value` (nullopt: NaN, drawn as missing).
+std::optional<glm::vec4> heat_map_colour(const HeatMapSpec& spec, const HeatMapLayout& layout,
+                                         double value);
+
 // Renders a chart or table figure; `context` must be current (any size).
 render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec,
                               const ChartOptions& options = {});
 render::RgbaImage paint_table(render::GlContext& context, const TableSpec& spec,
                               const ChartOptions& options = {});
-// Either of the two; a table is drawn taller than options.height when its rows need it.
+render::RgbaImage paint_heat_map(render::GlContext& context, const HeatMapSpec& spec,
+                                 const ChartOptions& options = {});
+// Any of them; a table is drawn taller than options.height when its rows need
+// it, a heat map as tall as its grid needs (at most options.height).
 render::RgbaImage paint_figure(render::GlContext& context, const Figure& figure,
                                const ChartOptions& options = {});
 

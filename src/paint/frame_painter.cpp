@@ -5,11 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include "render/colour_map.hpp"
+#include "paint/painter_common.hpp"
+#include "paint/trail_colours.hpp"
+#include "render/imgui_context_scope.hpp"
 #include "render/mesh_data.hpp"
 #include "scene/layout.hpp"
 #include "scene/theme.hpp"
@@ -20,29 +23,17 @@ namespace {
 using render::DrawList;
 using render::TextAnchor;
 
-glm::vec4 to_glm(const scene::Rgba& c) { return {c[0], c[1], c[2], c[3]}; }
-glm::vec3 to_glm(const Eigen::Vector3f& v) { return {v.x(), v.y(), v.z()}; }
-glm::quat to_glm(const Eigen::Quaternionf& q) { return {q.w(), q.x(), q.y(), q.z()}; }
-
 ImVec4 to_imgui(const scene::Rgba& c) { return {c[0], c[1], c[2], c[3]}; }
 
-// The frame's theme; where the job's own background is of the other kind, the
-// built-in theme for that kind of background, so that lines and text still read.
+}  // namespace
+
 const scene::Theme& ink_for(const scene::Frame& f) {
   const scene::Theme& t = scene::theme(f.theme);
   if (scene::is_light(f.colours.background) == t.light) return t;
   return t.light ? scene::dark_theme() : scene::light_theme();
 }
 
-const render::ColourMap& time_map() {
-  static const render::ColourMap map = render::ColourMap::time();
-  return map;
-}
-// Newest points bright and opaque, old ones darker and fading out; the map's
-// top is cut where the theme's background would swallow it.
-glm::vec4 age_colour(float age, float top) {
-  return time_map()((1.0f - age) * top, 0.25f + 0.75f * (1.0f - age));
-}
+namespace {
 
 render::Viewport to_viewport(const scene::Rect& r) { return {r.x, r.y, r.width, r.height}; }
 std::optional<render::Viewport> to_viewport(const std::optional<scene::Rect>& r) {
@@ -93,6 +84,7 @@ FramePainter::FramePainter(render::GlContext& context, int width, int height,
   ro.overlay = true;
   ro.overlay_options.builtin_font = options.builtin_font;
   ro.overlay_options.font_size_px = scene::overlay_font_px(height);
+  ro.overlay_options.ui_scale = scene::ui_scale(height);
   renderer_ = std::make_unique<render::Renderer>(context_, ro);
   glass_ = render::GpuMesh(render::make_uv_sphere(1.0f, 72, 36));
   arrow_ = render::GpuMesh(render::make_arrow(1.0f, 0.018f, 0.045f, 0.12f, 20));
@@ -135,26 +127,15 @@ void FramePainter::draw_body(DrawList& list, const scene::Frame& f, float px) {
     for (int bit : {1, 2, 4})
       if (!(i & bit)) list.add_line(corner(i), corner(i | bit), edge, 1.0f * px);
 
-  // Principal axes from the fixed point.
-  const char* names[] = {"e1", "e2", "e3"};
-  const float length = std::max(0.95f, glm::length(com) + 0.25f);
-  const glm::vec4 label_colour = to_glm(ink.axis_label);
+  // Principal axes from the fixed point (their labels, the fixed point and the
+  // centre of mass are drawn over the view: draw_view_annotations).
+  const float length = axis_length(f);
   for (int i = 0; i < 3; ++i) {
     glm::vec3 axis(0.0f);
     axis[i] = 1.0f;
     const glm::mat4 model =
         rot * render::rotation_from_z_to(axis) * glm::scale(glm::mat4(1.0f), glm::vec3(length));
     list.add_mesh(arrow_, model, {to_glm(ink.axes[i]), 0.3f, 32.0f, 0.0f});
-    list.add_text({glm::vec3(rot * glm::vec4(axis * (length + 0.08f), 1.0f)), names[i],
-                   label_colour, TextAnchor::centre});
-  }
-  // The fixed point, and the centre of mass where it is not the fixed point.
-  list.add_marker({glm::vec3(0.0f), to_glm(ink.fixed_point_fill), to_glm(ink.fixed_point_edge),
-                   4.0f * px, 1.2f * px});
-  if (glm::length(com) > 1e-4f) {
-    const glm::vec3 c = glm::vec3(rot * glm::vec4(com, 1.0f));
-    list.add_marker({c, to_glm(ink.centre_of_mass_fill), to_glm(ink.centre_of_mass_edge), 4.0f * px,
-                     1.2f * px});
   }
 }
 
@@ -175,10 +156,7 @@ void FramePainter::draw_sphere(DrawList& list, const scene::Frame& f, float px) 
   if (trail.size() >= 2) list.add_polyline(trail, 2.2f * px);
   list.add_marker(
       {to_glm(f.current), to_glm(f.colours.marker), to_glm(ink.marker_edge), 5.0f * px, 1.3f * px});
-
-  const glm::vec4 text = to_glm(ink.pole_label);
-  list.add_text({{0, 0, 1.1f}, "N", text, TextAnchor::bottom});
-  list.add_text({{0, 0, -1.1f}, "S", text, TextAnchor::top});
+  // The pole labels N and S are placed over the view (draw_view_annotations).
 }
 
 void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& column,
@@ -199,7 +177,6 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
   plot.draw_axes(flat, style);
   plot.draw_circle(flat, {0.0, 0.0}, 1.0, {style.text.r, style.text.g, style.text.b, 0.85f},
                    1.3f * px);
-  plot.draw_text(flat, {0.0, -1.0}, {{}, "equator", style.text, TextAnchor::top, {0, 2 * px}});
 
   // The path, in runs that do not join across a pass through infinity.
   std::vector<glm::dvec2> run;
@@ -239,65 +216,142 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
         break;
     }
   }
-  if (f.plane_current)
-    plot.draw_marker(flat, {f.plane_current->x(), f.plane_current->y()},
-                     {{}, to_glm(f.colours.marker), to_glm(ink.marker_edge), 4.5f * px, 1.2f * px});
+  std::vector<Box> obstacles;
+  const float marker_r = 4.5f * px;
+  if (f.plane_current) {
+    const glm::dvec2 at(f.plane_current->x(), f.plane_current->y());
+    plot.draw_marker(flat, at,
+                     {{}, to_glm(f.colours.marker), to_glm(ink.marker_edge), marker_r, 1.2f * px});
+    obstacles.push_back(box_around(plot.to_pixel(at), glm::vec2(2.0f * marker_r + 2.0f * px)));
+  }
 
-  plot.draw_text(flat, {0.0, e},
-                 {{},
-                  area.width >= 200 ? "Riccati plane (a, b)" : "(a, b) plane",
-                  style.text,
-                  TextAnchor::bottom,
-                  {0, -6 * px}});
-  plot.draw_text(flat, {e, 0.0},
-                 {{}, "a", style.text, TextAnchor::bottom_right, {-3 * px, -2 * px}});
-  plot.draw_text(flat, {0.0, e}, {{}, "b", style.text, TextAnchor::top_left, {4 * px, 2 * px}});
-  // A legend for the marks that appear, under the plot.
+  // The title above the plot says whose coordinates these are; the caption
+  // under it, how they are made.
+  for (const char* title : {"Riccati plane (a, b) of gamma (body axes)",
+                            "Riccati plane (a, b) of gamma", "(a, b) plane"})
+    if (gui().text_size(title).x <= float(column.width) - 8 * px) {
+      plot.draw_text(flat, {0.0, e}, {{}, title, style.text, TextAnchor::bottom, {0, -6 * px}});
+      break;
+    }
+  // The axis names inside the plot's edges, next to the axes' ends.
+  const glm::vec2 a_at = plot.to_pixel({e, 0.0}), b_at = plot.to_pixel({0.0, e});
+  const glm::vec2 a_size = gui().text_size("a"), b_size = gui().text_size("b");
+  const Box a_box{a_at + glm::vec2(-3 * px - a_size.x, -2 * px - a_size.y),
+                  a_at + glm::vec2(-3 * px, -2 * px)};
+  const Box b_box{b_at + glm::vec2(4 * px, 2 * px), b_at + glm::vec2(4 * px, 2 * px) + b_size};
+  flat.add_text({glm::vec3(a_box.min, 0), "a", style.text, TextAnchor::top_left});
+  flat.add_text({glm::vec3(b_box.min, 0), "b", style.text, TextAnchor::top_left});
+  obstacles.push_back(a_box);
+  obstacles.push_back(b_box);
+  // "equator" next to the unit circle, where the path's marker is not.
+  {
+    const glm::vec2 size = gui().text_size("equator");
+    LabelRequest r{"equator", size, {}};
+    for (double deg : {-90.0, -60.0, -120.0, -30.0, -150.0, 90.0, 60.0, 120.0}) {
+      const double t = deg * M_PI / 180.0;
+      const glm::vec2 on = plot.to_pixel({std::cos(t), std::sin(t)});
+      const glm::vec2 out = on - plot.to_pixel({0.0, 0.0});
+      r.top_lefts.push_back(on + glm::normalize(out) * (2.0f * px) +
+                            glm::vec2(out.x < -1.0f  ? -size.x
+                                      : out.x > 1.0f ? 0.0f
+                                                     : -0.5f * size.x,
+                                      out.y < -1.0f  ? -size.y
+                                      : out.y > 1.0f ? 0.0f
+                                                     : -0.5f * size.y));
+    }
+    const Box bounds{glm::vec2(area.x, area.y),
+                     glm::vec2(area.x + area.width, area.y + area.height)};
+    add_placed_labels(flat, {r}, {style.text}, obstacles, bounds);
+  }
+  draw_plane_captions(flat, column, float(area.y + area.height) + style.tick_length, px, style.text,
+                      any_exit, any_infinity);
+  renderer_->draw_2d(flat);
+}
+
+void FramePainter::draw_plane_captions(render::DrawList& flat, const render::Viewport& column,
+                                       float ticks_top, float px, const glm::vec4& text,
+                                       bool any_exit, bool any_infinity) {
+  const float font = gui().label_font_px();
+  const float centre = float(column.x + column.width / 2);
+  const bool wide = column.width >= 360;
+  // A legend for the marks that appear, at the column's bottom; above it the
+  // projection's convention (docs/math.md (3.1): from the south pole, hence
+  // the minus signs).
   std::string legend;
   if (any_exit) legend += "hollow: leaves, dot: re-enters";
   if (any_infinity)
     legend += std::string(legend.empty() ? "" : "   ") + "inf: through the south pole";
-  if (!legend.empty() && column.width >= 360)
-    flat.add_text(
-        {{float(column.x + column.width / 2), float(column.y + column.height - 4 * px), 0},
-         legend,
-         style.text,
-         TextAnchor::bottom});
-  renderer_->draw_2d(flat);
+  float y = float(column.y + column.height) - 4 * px;
+  // Each line only where it stays below the plot's tick labels.
+  const float lowest_top = ticks_top + font + 4.0f;
+  if (!legend.empty() && wide && y - font >= lowest_top) {
+    flat.add_text({{centre, y, 0}, legend, text, TextAnchor::bottom});
+    y -= font * 1.25f;
+  }
+  for (const char* convention :
+       {"projected from the south pole: a = -gamma1/(1+gamma3), b = -gamma2/(1+gamma3)",
+        "a = -gamma1/(1+gamma3), b = -gamma2/(1+gamma3)", "a = -g1/(1+g3), b = -g2/(1+g3)"})
+    if (gui().text_size(convention).x <= float(column.width) - 8 * px && y - font >= lowest_top) {
+      flat.add_text({{centre, y, 0}, convention, text, TextAnchor::bottom});
+      break;
+    }
 }
 
 render::ImGuiOverlay& FramePainter::gui() { return *renderer_->overlay(); }
 
-void FramePainter::draw_info_window(const scene::Frame& f, const Layout& layout, float px) {
+namespace {
+// The drift readouts' traffic light explained: the level each colour stands
+// for (scene::drift_level's thresholds).
+std::string decade(double v) { return "1e" + std::to_string(int(std::lround(std::log10(v)))); }
+void draw_drift_key(const scene::Theme& ink) {
+  const std::string warn_from = decade(scene::kDriftWarnFrom),
+                    bad_from = decade(scene::kDriftBadFrom);
+  ImGui::TextColored(to_imgui(ink.drift_ok), "<%s", warn_from.c_str());
+  ImGui::SameLine();
+  ImGui::TextColored(to_imgui(ink.drift_warn), "<%s", bad_from.c_str());
+  ImGui::SameLine();
+  ImGui::TextColored(to_imgui(ink.drift_bad), ">=%s", bad_from.c_str());
+}
+}  // namespace
+
+Box FramePainter::info_window_box(const scene::Frame& f, const Layout& layout, float px) {
   const render::Viewport where = layout.overlay_in_column ? *layout.panel_column
                                  : layout.view_3d         ? *layout.view_3d
                                  : layout.panel_column    ? *layout.panel_column
                                                        : render::Viewport{0, 0, width(), height()};
+  // The window's size is computed from this frame's text: ImGui's auto-fit
+  // would use the previous frame's, which belongs to another job in a gallery.
+  const int shown = overlay_lines_shown(f.overlay, height());
+  render::ImGuiContextScope scope(gui().context());
+  const ImGuiStyle& st = ImGui::GetStyle();
+  float text_w = gui().text_size(f.overlay.title).x;
+  for (int i = 0; i < shown; ++i)
+    text_w = std::max(text_w, gui().text_size(f.overlay.lines[std::size_t(i)]).x);
+  if (!f.overlay.drifts.empty())  // "%-12s" name, then "%9.1e" value
+    text_w = std::max(text_w, gui().text_size("xxxxxxxxxxxx  -0.0e+00 ").x);
+  // Title, lines, then the drifts' heading, their rows and the key of their colours.
+  const int rows = 1 + shown + (f.overlay.drifts.empty() ? 0 : 2 + int(f.overlay.drifts.size()));
+  const float h = 2 * st.WindowPadding.y +
+                  float(rows) * (gui().label_font_px() + st.ItemSpacing.y) +
+                  (f.overlay.drifts.empty() ? 0.0f : st.ItemSpacing.y + 1.0f);
+  const glm::vec2 size(text_w + 2 * st.WindowPadding.x, h);
+  // In the panel's column: anchored at its top right, so that a long title
+  // grows to the left instead of being cut at the image's edge. Over the 3D
+  // view: at its top left corner, away from the panel.
+  const glm::vec2 top_left =
+      layout.overlay_in_column
+          ? glm::vec2(float(where.x + where.width) - 6 * px - size.x, float(where.y) + 6 * px)
+          : glm::vec2(float(where.x) + 6 * px, float(where.y) + 6 * px);
+  return {top_left, top_left + size};
+}
+
+void FramePainter::draw_info_window(const scene::Frame& f, const Layout& layout, float px) {
   const scene::Theme& ink = ink_for(f);
   {
-    // The window's size is computed from this frame's text: ImGui's auto-fit
-    // would use the previous frame's, which belongs to another job in a gallery.
+    const Box box = info_window_box(f, layout, px);
     const int shown = overlay_lines_shown(f.overlay, height());
-    const ImGuiStyle& st = ImGui::GetStyle();
-    float text_w = ImGui::CalcTextSize(f.overlay.title.c_str()).x;
-    for (int i = 0; i < shown; ++i)
-      text_w = std::max(text_w, ImGui::CalcTextSize(f.overlay.lines[std::size_t(i)].c_str()).x);
-    if (!f.overlay.drifts.empty())  // "%-12s" name, then "%9.1e" value
-      text_w = std::max(text_w, ImGui::CalcTextSize("xxxxxxxxxxxx  -0.0e+00 ").x);
-    const int rows = 1 + shown + (f.overlay.drifts.empty() ? 0 : 1 + int(f.overlay.drifts.size()));
-    const float h = 2 * st.WindowPadding.y + float(rows) * ImGui::GetTextLineHeightWithSpacing() +
-                    (f.overlay.drifts.empty() ? 0.0f : st.ItemSpacing.y + 1.0f);
-    ImGui::SetNextWindowSize(ImVec2(text_w + 2 * st.WindowPadding.x, h), ImGuiCond_Always);
-    // In the panel's column: anchored at its top right, so that a long title
-    // grows to the left instead of being cut at the image's edge. Over the 3D
-    // view: at its top left corner, away from the panel.
-    if (layout.overlay_in_column)
-      ImGui::SetNextWindowPos(
-          ImVec2(float(where.x + where.width) - 6 * px, float(where.y) + 6 * px), ImGuiCond_Always,
-          ImVec2(1.0f, 0.0f));
-    else
-      ImGui::SetNextWindowPos(ImVec2(float(where.x) + 6 * px, float(where.y) + 6 * px),
-                              ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(box.width(), box.height()), ImGuiCond_Always);
+    ImGui::SetNextWindowPos(ImVec2(box.min.x, box.min.y), ImGuiCond_Always);
     // More see-through where it floats over the 3D view (small pictures).
     ImGui::SetNextWindowBgAlpha(layout.overlay_in_column || !layout.view_3d
                                     ? ink.overlay_alpha_in_column
@@ -329,6 +383,7 @@ void FramePainter::draw_info_window(const scene::Frame& f, const Layout& layout,
         ImGui::SameLine();
         ImGui::TextColored(c, "%9.1e", value);
       }
+      draw_drift_key(ink);
     }
     ImGui::End();
     ImGui::PopStyleColor(pushed);
@@ -342,23 +397,23 @@ const render::RgbaImage& FramePainter::paint(const scene::Frame& f,
   const float px =
       std::max(1.0f, float(h) / 360.0f);  // line widths and marks scale with the picture
   const Layout layout = layout_for(f, w, h, reserved_left_);
+  annotations_ = {};
+  annotations_.map_top = ink_for(f).trail_map_top;
+  annotations_.font_px = gui().label_font_px();
+  // The overlay floating over the 3D view (small pictures) is drawn over
+  // everything: the view's labels keep out of it.
+  floating_overlay_.reset();
+  if (f.layers.overlay && layout.view_3d && !layout.overlay_in_column)
+    floating_overlay_ = info_window_box(f, layout, px);
 
   renderer_->begin_frame(to_glm(f.colours.background));
   if (layout.view_3d) {
     DrawList scene3d;
     if (f.layers.body) draw_body(scene3d, f, px);
     if (f.layers.sphere) draw_sphere(scene3d, f, px);
-    renderer_->draw_3d(scene3d, camera_for(f, *layout.view_3d), *layout.view_3d);
-    if (f.layers.sphere && !f.trail_label.empty()) {
-      DrawList caption;
-      const glm::vec4 text = to_glm(ink_for(f).trail_caption);
-      caption.add_text({{float(layout.view_3d->x) + 8 * px,
-                         float(layout.view_3d->y + layout.view_3d->height) - 6 * px, 0},
-                        "trail: " + f.trail_label,
-                        text,
-                        TextAnchor::bottom_left});
-      renderer_->draw_2d(caption);
-    }
+    const render::Camera camera = camera_for(f, *layout.view_3d);
+    renderer_->draw_3d(scene3d, camera, *layout.view_3d);
+    draw_view_annotations(f, camera, *layout.view_3d, px);
   }
   if (layout.panel_column && f.layers.riccati)
     draw_plane(f, *layout.panel_column, *layout.plot_area, px);

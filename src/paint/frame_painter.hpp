@@ -5,7 +5,10 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
+#include "paint/label_placement.hpp"
 #include "render/gl_context.hpp"
 #include "render/gpu_mesh.hpp"
 #include "render/image.hpp"
@@ -46,6 +49,20 @@ int overlay_lines_shown(const scene::OverlayText& overlay, int height);
 // The camera the painter uses for the 3D view of `frame`.
 render::Camera camera_for(const scene::Frame& frame, const render::Viewport& view);
 
+// What the last paint() placed over the picture, for checks: every label of
+// the 3D view and the plane with its box, and the trail's colour bar.
+struct PaintedAnnotations {
+  struct Label {
+    std::string text;
+    Box box;
+    Box bounds;  // the part of the picture it must stay inside
+  };
+  std::vector<Label> labels;
+  std::optional<Box> colour_bar;  // left end oldest (age 1), right end now
+  float map_top = 1.0f;           // the theme's top of the time colour map
+  float font_px = 0.0f;           // the labels' text height
+};
+
 class FramePainter {
  public:
   // `context` must outlive the painter; it is made current here.
@@ -64,13 +81,38 @@ class FramePainter {
                                  const std::function<void()>& extra_ui = {});
   // The ImGui overlay, for feeding it input and its clock.
   render::ImGuiOverlay& gui();
+  const PaintedAnnotations& annotations() const { return annotations_; }
 
  private:
   void draw_body(render::DrawList& list, const scene::Frame& f, float px);
   void draw_sphere(render::DrawList& list, const scene::Frame& f, float px) const;
+  // Over the 3D view, in image pixels and after it (so never hidden by the
+  // body): the fixed point and the centre of mass, the labels of the axes and
+  // poles placed clear of each other, the key, the colour bar and the caption.
+  void draw_view_annotations(const scene::Frame& f, const render::Camera& camera,
+                             const render::Viewport& view, float px);
+  // The time colour bar and the trail's caption along the view's bottom edge;
+  // returns the boxes they take (for the labels to keep clear of).
+  std::vector<Box> draw_trail_key(render::DrawList& flat, const scene::Frame& f,
+                                  const render::Viewport& view, float px);
+  // The key in the view's top right corner: gravity (space view), fixed
+  // point, centre of mass; returns its box (empty where none is drawn).
+  std::optional<Box> draw_marks_key(render::DrawList& flat, const scene::Frame& f,
+                                    const render::Camera& camera, const render::Viewport& view,
+                                    float px);
   void draw_plane(const scene::Frame& f, const render::Viewport& column,
                   const render::Viewport& area, float px);
+  // Under the plot: the projection's convention and a legend for its marks.
+  // `ticks_top`: where the plot's tick labels start (the captions stay below them).
+  void draw_plane_captions(render::DrawList& flat, const render::Viewport& column, float ticks_top,
+                           float px, const glm::vec4& text, bool any_exit, bool any_infinity);
+  // Labels of one part of the picture, placed by place_labels and recorded.
+  void add_placed_labels(render::DrawList& flat, const std::vector<LabelRequest>& requests,
+                         const std::vector<glm::vec4>& colours, const std::vector<Box>& obstacles,
+                         const Box& bounds);
   void draw_info_window(const scene::Frame& f, const Layout& layout, float px);
+  // Where the overlay window goes and how large it is (from this frame's text).
+  Box info_window_box(const scene::Frame& f, const Layout& layout, float px);
 
   render::GlContext& context_;
   PainterOptions options_;
@@ -81,6 +123,8 @@ class FramePainter {
   std::vector<std::vector<glm::vec3>> grid_;
   render::RgbaImage image_;
   int reserved_left_ = 0;
+  PaintedAnnotations annotations_;
+  std::optional<Box> floating_overlay_;  // this frame's overlay window where it covers the 3D view
 };
 
 }  // namespace epviz::paint

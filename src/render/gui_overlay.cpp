@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <stdexcept>
@@ -55,6 +56,7 @@ ImGuiOverlay::ImGuiOverlay(const OverlayOptions& options) : options_(options) {
   else
     ImGui::StyleColorsDark();
   ImGui::GetStyle().WindowRounding = 4.0f;
+  if (options.ui_scale > 1.0f) ImGui::GetStyle().ScaleAllSizes(options.ui_scale);
 
   std::filesystem::path file = options.builtin_font ? std::filesystem::path() : options.font_file;
   if (!options.builtin_font && file.empty()) file = default_font_file();
@@ -67,6 +69,8 @@ ImGuiOverlay::ImGuiOverlay(const OverlayOptions& options) : options_(options) {
   if (font_ == nullptr) {
     font_ = io.Fonts->AddFontDefault();
     font_source_ = "builtin";
+    // A bitmap font: whole magnifications keep its glyphs crisp.
+    io.FontGlobalScale = std::max(1.0f, std::round(options.ui_scale));
   }
   try {
     gl_renderer_ = std::make_unique<ImGuiGlRenderer>();
@@ -80,6 +84,16 @@ ImGuiOverlay::~ImGuiOverlay() {
   ImGuiContextScope scope(context_);
   gl_renderer_.reset();  // needs the ImGui context alive
   ImGui::DestroyContext(context_);
+}
+
+float ImGuiOverlay::label_font_px() const {
+  ImGuiContextScope scope(context_);
+  return font_->FontSize * ImGui::GetIO().FontGlobalScale;
+}
+
+glm::vec2 ImGuiOverlay::text_size(const std::string& text) const {
+  const ImVec2 s = font_->CalcTextSizeA(label_font_px(), FLT_MAX, 0.0f, text.c_str());
+  return {s.x, s.y};
 }
 
 void ImGuiOverlay::begin(int width, int height) {

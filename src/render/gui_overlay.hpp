@@ -25,6 +25,9 @@ struct OverlayOptions {
   // they do not depend on which fonts a machine has.
   bool builtin_font = false;
   float font_size_px = 16.0f;
+  // Paddings, spacings and roundings are multiplied by this (big pictures);
+  // the built-in font, which has one size, is magnified by its whole part.
+  float ui_scale = 1.0f;
   bool light_style = false;  // ImGui's light colours instead of dark
   float delta_time_s = 1.0f / 30.0f;
 };
@@ -55,6 +58,11 @@ class ImGuiOverlay {
   ImFont* font() const { return font_; }
   const std::string& font_source() const { return font_source_; }
   ImGuiContext* context() const { return context_; }
+  // The size of `text` as labels and windows draw it, in pixels; usable
+  // outside an ImGui frame (label placement happens before the overlay runs).
+  glm::vec2 text_size(const std::string& text) const;
+  // The height of a line of label text.
+  float label_font_px() const;
   // The time step ImGui is told for the next frames (interactive use passes
   // the wall-clock time between frames; renders keep the fixed one).
   void set_delta_time(float seconds) { options_.delta_time_s = seconds; }

@@ -98,6 +98,7 @@ struct Frame {
   std::vector<TrailPoint> trail;
   Eigen::Vector3f current = Eigen::Vector3f::UnitZ();
   std::string trail_label;  // "gamma (body axes)" or "body axis 3 (space)"
+  double trail_time = 0.0;  // simulation time from age 0 to age 1 (the colour bar's span); 0: none
 
   // Riccati plane: stereographic (a, b) of gamma; the panel shows
   // [-plane_extent, plane_extent]^2 with the unit circle (the equator).

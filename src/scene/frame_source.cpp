@@ -1,5 +1,6 @@
 #include "scene/frame_source.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <cstdio>
@@ -46,7 +47,7 @@ void FrameSource::take(const sim::Sample& s) {
   HistoryPoint p;
   p.t = s.t;
   const Eigen::Vector3d on_sphere = settings_.view == View::space && s.attitude
-                                        ? Eigen::Vector3d(*s.attitude * Eigen::Vector3d::UnitZ())
+                                        ? Eigen::Vector3d(*s.attitude * traced_axis())
                                         : s.gamma;
   p.sphere = on_sphere.cast<float>();
   if (auto ab = physics::stereographic(s.gamma)) p.plane = ab->cast<float>();
@@ -62,6 +63,10 @@ Frame FrameSource::frame(int index) {
   }
   history_.forget_before(latest_.t - trail_window());
   return compose(index);
+}
+
+Eigen::Vector3d FrameSource::traced_axis() const {
+  return Eigen::Vector3d::Unit(std::clamp(settings_.trace_axis, 1, 3) - 1);
 }
 
 double FrameSource::trail_window() const {
@@ -96,12 +101,13 @@ Frame FrameSource::compose(int index) const {
 
   if (settings_.view == View::space && latest_.attitude) {
     f.body_rotation = latest_.attitude->cast<float>();
-    f.current = (*latest_.attitude * Eigen::Vector3d::UnitZ()).cast<float>();
-    f.trail_label = "body axis 3 (space frame)";
+    f.current = (*latest_.attitude * traced_axis()).cast<float>();
+    f.trail_label = "body axis " + std::to_string(settings_.trace_axis) + " (space frame)";
   } else {
     f.current = latest_.gamma.cast<float>();
     f.trail_label = "gamma (body frame)";
   }
+  f.trail_time = window;
   const auto& pts = history_.points();
   f.trail.reserve(pts.size() + 1);
   for (const auto& p : pts) f.trail.push_back({p.sphere, age(p.t)});

@@ -34,7 +34,8 @@ class FrameSource {
  private:
   void take(const sim::Sample& s);
   Frame compose(int index) const;
-  double trail_window() const;  // simulation time the trail covers
+  double trail_window() const;          // simulation time the trail covers
+  Eigen::Vector3d traced_axis() const;  // space view: the body axis the trail follows
 
   ScenePlan plan_;
   SceneSettings settings_;

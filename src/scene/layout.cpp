@@ -6,10 +6,14 @@
 namespace epviz::scene {
 namespace {
 
-// Height of the overlay window: title, shown lines, and the drift table.
-int overlay_height(const OverlayShape& o, int height) {
-  const int rows = 1 + overlay_lines_shown(o.lines, height) + (o.drifts == 0 ? 0 : 1 + o.drifts);
-  return int(std::ceil(overlay_font_px(height) * 1.36f * float(rows) + 18.0f));
+// Height reserved for the overlay window: the title, the lines a picture of
+// this height shows, the drift table's heading, its rows and its key. Fixed
+// (kOverlayReserved), not this frame's: the plot must stay put from job to
+// job so that the tiles of a gallery line up.
+int overlay_height(int height) {
+  const OverlayShape o = kOverlayReserved;
+  const int rows = 1 + overlay_lines_shown(o.lines, height) + 2 + o.drifts;
+  return int(std::ceil(overlay_font_px(height) * 1.36f * float(rows) + 18.0f * ui_scale(height)));
 }
 
 FrameLayout layout_in_width(const LayoutRequest& q, int width) {
@@ -29,7 +33,9 @@ FrameLayout layout_in_width(const LayoutRequest& q, int width) {
   if (l.panel_column) {
     const auto& c = *l.panel_column;
     // Room for the title above and the tick labels and legend below.
-    const int margin_bottom = std::max(26, height / 9), margin_top_base = std::max(22, height / 14);
+    // Below the plot: the tick labels and the projection's caption, two lines at least.
+    const int margin_bottom = std::max(int(std::ceil(overlay_font_px(height) * 2.9f)), height / 9);
+    const int margin_top_base = std::max(22, height / 14);
     const int margin_left = std::max(30, c.width / 8), margin_right = std::max(10, c.width / 20);
     auto side_for = [&](int margin_top) {
       return std::min(c.width - margin_left - margin_right, c.height - margin_top - margin_bottom);
@@ -37,7 +43,7 @@ FrameLayout layout_in_width(const LayoutRequest& q, int width) {
     // The overlay takes the top of the panel's column when the plot keeps at
     // least 35 % of the height there, so that it does not cover the sphere;
     // otherwise (small pictures) it floats over the 3D view's corner.
-    const int overlay_px = l.view_3d && q.layers.overlay ? overlay_height(q.overlay, height) : 0;
+    const int overlay_px = l.view_3d && q.layers.overlay ? overlay_height(height) : 0;
     l.overlay_in_column =
         overlay_px > 0 && side_for(margin_top_base + overlay_px) >= height * 35 / 100;
     const int margin_top = margin_top_base + (l.overlay_in_column ? overlay_px : 0);
@@ -65,7 +71,11 @@ OverlayShape overlay_shape(const OverlayText& o) {
   return {int(o.lines.size()), int(o.drifts.size())};
 }
 
-float overlay_font_px(int height) { return std::clamp(float(height) / 48.0f, 13.0f, 28.0f); }
+// Text grows with the picture (a 4K still reads like the 720p one scaled up);
+// below 13 px it would not read at all.
+float overlay_font_px(int height) { return std::max(float(height) / 48.0f, 13.0f); }
+
+float ui_scale(int height) { return std::max(1.0f, float(height) / 720.0f); }
 
 int overlay_lines_shown(int lines, int height) { return std::min(lines, height < 480 ? 2 : lines); }
 

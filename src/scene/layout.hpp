@@ -23,11 +23,15 @@ struct OverlayShape {
   int drifts = 0;
 };
 OverlayShape overlay_shape(const OverlayText& overlay);
+// The overlay the layout keeps room for, whatever a frame's overlay holds:
+// five lines and four drift rows (FrameSource's), so that the panel has the
+// same rectangle in every job.
+constexpr OverlayShape kOverlayReserved{5, 4};
 
 struct LayoutRequest {
   int width = 1280, height = 720;
   Layers layers;
-  OverlayShape overlay;
+  OverlayShape overlay;          // informative only: the layout reserves kOverlayReserved
   double camera_distance = 3.4;  // sphere radii (CameraSettings::distance)
   float plane_extent = 2.5f;     // the panel shows [-extent, extent]^2
   int reserved_left = 0;         // kept free at the left edge (interactive panels)
@@ -57,6 +61,9 @@ float camera_distance_for(double distance_setting, float aspect);
 // The overlay's font size at this picture height, and how many of its lines
 // fit (below 480 rows, gallery tiles, only the time and the method).
 float overlay_font_px(int height);
+// What line widths, marks and paddings are multiplied by at this picture
+// height: 1 up to 720 rows, then in proportion (3 at 2160).
+float ui_scale(int height);
 int overlay_lines_shown(int lines, int height);
 
 }  // namespace epviz::scene

@@ -19,6 +19,7 @@ struct SceneSettings {
   bool auto_tolerance = true;      // derive the tolerance from the resolution
   bool formulation_given = false;  // the job chose the formulation itself
   std::string title;               // overrides the case's title when not empty
+  int trace_axis = 3;              // space view: the body axis (1, 2 or 3) the trail follows
 
   int frame_count() const;  // round(fps * duration), at least 1
 };

@@ -5,6 +5,9 @@
 #include <cstdio>
 #include <map>
 #include <string>
+#include <string_view>
+
+#include "sim/run_spec.hpp"
 
 namespace epviz::study {
 namespace {
@@ -30,6 +33,49 @@ std::string series_name(const RunRecord& r) {
   if (!r.formulation.empty() && r.formulation != "direct") name = r.formulation + " " + name;
   if (!r.impl.empty() && r.impl != "epviz") name += " (" + r.impl + ")";
   return name;
+}
+
+// Colour keys: epviz's methods in their table order, so that a method has the
+// same colour in every chart; other names (peers' methods) after them, in the
+// order first met.
+class StyleKeys {
+ public:
+  int colour(const std::string& method) {
+    const auto& all = sim::all_methods();
+    for (std::size_t i = 0; i < all.size(); ++i)
+      if (sim::name(all[i]) == method) return int(i);
+    return other(colours_, method, int(all.size()));
+  }
+  // Marker keys: epviz's formulations, then other implementations (one shape
+  // per peer library, whatever its formulation).
+  int marker(const RunRecord& r) {
+    const auto& all = sim::all_formulations();
+    if (r.impl.empty() || r.impl == "epviz")
+      for (std::size_t i = 0; i < all.size(); ++i)
+        if (sim::name(all[i]) == r.formulation) return int(i);
+    return other(markers_, r.impl, int(all.size()));
+  }
+
+ private:
+  static int other(std::vector<std::string>& seen, const std::string& name, int first) {
+    const auto it = std::find(seen.begin(), seen.end(), name);
+    if (it != seen.end()) return first + int(it - seen.begin());
+    seen.push_back(name);
+    return first + int(seen.size()) - 1;
+  }
+  std::vector<std::string> colours_, markers_;
+};
+
+// The legend of a chart whose series carry keys: each key once, named.
+void add_legend_key(std::vector<chart::LegendKey>& legend, int key, const std::string& name) {
+  for (const auto& k : legend)
+    if (k.key == key) return;
+  legend.push_back({name, key});
+}
+
+std::string marker_name(const RunRecord& r) {
+  if (!r.impl.empty() && r.impl != "epviz") return r.impl;
+  return r.formulation.empty() ? "direct" : r.formulation;
 }
 
 void sort_by_x(ChartSeries& s) {
@@ -61,12 +107,12 @@ std::vector<std::string> table_row(const char* study, const RunRecord& r, const 
 
 }  // namespace
 
-TableSpec stability_table(const std::vector<StudyRow>& rows) {
+TableSpec stability_table(const std::vector<StudyRow>& rows, bool with_heat_mapped) {
   TableSpec t;
   t.title = "Stability studies";
   t.header = {"study", "case", "method", "formulation", "status", "result"};
   for (const auto& row : rows) {
-    if (const auto* max_step = std::get_if<MaxStepRow>(&row)) {
+    if (const auto* max_step = std::get_if<MaxStepRow>(&row); max_step && with_heat_mapped) {
       const auto result = Result()
                               .add("max step", max_step->max_step)
                               .add("h/period", max_step->max_step_over_period);
@@ -75,7 +121,8 @@ TableSpec stability_table(const std::vector<StudyRow>& rows) {
     } else if (const auto* pole = std::get_if<PolePassageRow>(&row)) {
       t.rows.push_back(table_row("pole", pole->run,
                                  Result().add("variant", pole->variant).add("error", pole->error)));
-    } else if (const auto* separatrix = std::get_if<SeparatrixRow>(&row)) {
+    } else if (const auto* separatrix = std::get_if<SeparatrixRow>(&row);
+               separatrix && with_heat_mapped) {
       t.rows.push_back(table_row("separatrix", separatrix->run,
                                  Result()
                                      .add("step", separatrix->run.step)
@@ -86,7 +133,7 @@ TableSpec stability_table(const std::vector<StudyRow>& rows) {
                                      .add("step", sleeping->run.step)
                                      .add("gamma err", sleeping->gamma_error)
                                      .add("reached", sleeping->reached ? "yes" : "no")));
-    } else if (const auto* chaos = std::get_if<ChaosRow>(&row)) {
+    } else if (const auto* chaos = std::get_if<ChaosRow>(&row); chaos && with_heat_mapped) {
       t.rows.push_back(table_row("chaos", chaos->run,
                                  Result()
                                      .add("step", chaos->run.step)
@@ -97,16 +144,128 @@ TableSpec stability_table(const std::vector<StudyRow>& rows) {
   return t;
 }
 
+chart::HeatMapSpec stability_heat_map(const std::vector<StudyRow>& rows) {
+  chart::HeatMapSpec h;
+  h.title = "Stability: largest fixed step that keeps the motion";
+  h.value_label = "step / fastest period";
+  h.note =
+      "bisection on the step over t = 20; fails on blow-up, drift of energy or |gamma|^2 > 1, or "
+      "error > 0.1";
+  const auto max_step = rows_of<MaxStepRow>(rows);
+  auto index_of = [](std::vector<std::string>& names, const std::string& n) {
+    const auto it = std::find(names.begin(), names.end(), n);
+    if (it != names.end()) return std::size_t(it - names.begin());
+    names.push_back(n);
+    return names.size() - 1;
+  };
+  for (const auto* r : max_step) {
+    index_of(h.rows, r->formulation.empty() || r->formulation == "direct"
+                         ? r->method
+                         : r->method + " (" + r->formulation + ")");
+    index_of(h.columns, r->case_name);
+  }
+  h.values.assign(h.rows.size(), std::vector<double>(h.columns.size(), kNaN));
+  for (const auto* r : max_step) {
+    const std::size_t i = index_of(h.rows, r->formulation.empty() || r->formulation == "direct"
+                                               ? r->method
+                                               : r->method + " (" + r->formulation + ")");
+    const std::size_t j = index_of(h.columns, r->case_name);
+    h.values[i][j] = r->max_step_over_period;
+  }
+  h.missing = "fails";
+  return h;
+}
+
+namespace {
+
+std::size_t index_in(std::vector<std::string>& names, const std::string& n) {
+  const auto it = std::find(names.begin(), names.end(), n);
+  if (it != names.end()) return std::size_t(it - names.begin());
+  names.push_back(n);
+  return names.size() - 1;
+}
+
+// A heat map of method x accuracy level: each method's runs in the order the
+// study made them (coarsest first), a column per level, labelled with the
+// steps and tolerances it stands for.
+template <class Row, class Value>
+chart::HeatMapSpec accuracy_heat_map(const std::vector<const Row*>& runs, Value value) {
+  chart::HeatMapSpec h;
+  std::vector<std::vector<double>> steps, tols;  // per column: the levels used there
+  std::vector<std::size_t> next;                 // per row: its next column
+  for (const auto* r : runs) {
+    const std::size_t i = index_in(h.rows, r->run.method);
+    if (next.size() <= i) next.resize(i + 1, 0);
+    const std::size_t j = next[i]++;
+    if (h.values.size() <= i) h.values.resize(i + 1);
+    if (h.values[i].size() <= j) h.values[i].resize(j + 1, kNaN);
+    h.values[i][j] = value(*r);
+    if (steps.size() <= j) {
+      steps.resize(j + 1);
+      tols.resize(j + 1);
+    }
+    auto& used = std::isfinite(r->run.tol) ? tols[j] : steps[j];
+    const double level = std::isfinite(r->run.tol) ? r->run.tol : r->run.step;
+    if (std::isfinite(level) && std::find(used.begin(), used.end(), level) == used.end())
+      used.push_back(level);
+  }
+  for (std::size_t j = 0; j < steps.size(); ++j) {
+    std::string label;
+    for (double v : steps[j]) label += (label.empty() ? "h " : ", ") + cell_number(v);
+    std::string tol;
+    for (double v : tols[j]) tol += (tol.empty() ? "tol " : ", ") + cell_number(v);
+    h.columns.push_back(label + (label.empty() || tol.empty() ? "" : " | ") + tol);
+  }
+  for (auto& row : h.values) row.resize(h.columns.size(), kNaN);
+  return h;
+}
+
+}  // namespace
+
+chart::HeatMapSpec chaos_heat_map(const std::vector<StudyRow>& rows) {
+  const auto runs = rows_of<ChaosRow>(rows);
+  auto h = accuracy_heat_map(
+      runs, [](const ChaosRow& r) { return r.run.ok && r.separated ? r.separation_time : kNaN; });
+  h.title = "Stability: time until a chaotic motion leaves the reference";
+  h.value_label = "time of separation";
+  h.missing = "none";
+  const double t_end = runs.empty() ? kNaN : runs.front()->run.t_end;
+  h.note =
+      "generic body from a strongly chaotic state; separated: error > 1e-3; none: not within t = " +
+      cell_number(t_end);
+  return h;
+}
+
+chart::HeatMapSpec separatrix_heat_map(const std::vector<StudyRow>& rows) {
+  // Errors below 1e-16 (an exact hit) are drawn as 1e-16, which a log scale can show.
+  auto h = accuracy_heat_map(rows_of<SeparatrixRow>(rows), [](const SeparatrixRow& r) {
+    const double e = r.flip_time_error;
+    return r.run.ok && std::isfinite(e) ? std::max(e, 1e-16) : kNaN;
+  });
+  h.title = "Stability: Euler top near the separatrix, error of the first flip's time";
+  h.value_label = "|flip time - reference|";
+  h.larger_is_better = false;
+  h.missing = "no flip";
+  h.note = "errors below 1e-16 shown as 1e-16; no flip: the run never flipped";
+  return h;
+}
+
 std::vector<chart::Figure> bench_figures(const std::vector<StudyRow>& rows) {
   std::vector<chart::Figure> figures;
+  StyleKeys keys;
   // case -> series name -> (cost, error) points, for both cost measures.
   std::map<std::string, std::map<std::string, std::pair<ChartSeries, ChartSeries>>> wp;
   std::map<std::string, std::vector<ChartSeries>> drift;
+  std::map<std::string, std::pair<std::string, std::string>>
+      legend_names;  // series: method, marker
   for (const auto* r : rows_of<WorkPrecisionRow>(rows)) {
     if (!r->run.ok || !(r->error > 0.0)) continue;
     const std::string name = series_name(r->run);
     auto& [by_cpu, by_evals] = wp[r->run.case_name][name];
     by_cpu.name = by_evals.name = name;
+    by_cpu.colour_key = by_evals.colour_key = keys.colour(r->run.method);
+    by_cpu.marker_key = by_evals.marker_key = keys.marker(r->run);
+    legend_names[name] = {r->run.method, marker_name(r->run)};
     if (r->run.cpu_ms > 0.0) by_cpu.points.push_back({r->run.cpu_ms, r->error});
     if (r->run.rhs_evals > 0) by_evals.points.push_back({double(r->run.rhs_evals), r->error});
   }
@@ -115,6 +274,8 @@ std::vector<chart::Figure> bench_figures(const std::vector<StudyRow>& rows) {
                                        std::pair{&r->series_drift_extra, "4th integral"}}) {
       ChartSeries s;
       s.name = series_name(r->run) + ", " + what;
+      s.colour_key = keys.colour(r->run.method);
+      s.marker_key = std::string_view(what) == "C1" ? 0 : 1;
       for (std::size_t i = 0; i < std::min(r->series_t.size(), values->size()); ++i)
         if (std::isfinite(r->series_t[i]) && std::isfinite((*values)[i]))
           s.points.push_back({r->series_t[i], std::abs((*values)[i])});
@@ -122,24 +283,55 @@ std::vector<chart::Figure> bench_figures(const std::vector<StudyRow>& rows) {
     }
   }
   for (auto& [c, by_name] : wp) {
-    ChartSpec cpu{"Work-precision: " + c, "CPU time [ms]", "error at t_end", true, true, {}};
-    ChartSpec evals{
-        "Work-precision: " + c, "right-hand side evaluations", "error at t_end", true, true, {}};
+    ChartSpec cpu{
+        "Work-precision: " + c, "CPU time [ms]", "error at t_end", true, true, {}, {}, {}};
+    ChartSpec evals{"Work-precision: " + c,
+                    "right-hand side evaluations",
+                    "error at t_end",
+                    true,
+                    true,
+                    {},
+                    {},
+                    {}};
     for (auto& [name, pair] : by_name) {
       sort_by_x(pair.first);
       sort_by_x(pair.second);
+      for (ChartSpec* chart : {&cpu, &evals}) {
+        add_legend_key(chart->colour_legend, pair.first.colour_key, legend_names[name].first);
+        add_legend_key(chart->marker_legend, pair.first.marker_key, legend_names[name].second);
+      }
       if (!pair.first.points.empty()) cpu.series.push_back(pair.first);
       if (!pair.second.points.empty()) evals.series.push_back(pair.second);
     }
+    // Keys in order: epviz's methods and formulations first, then the peers'.
+    for (ChartSpec* chart : {&cpu, &evals})
+      for (auto* legend : {&chart->colour_legend, &chart->marker_legend})
+        std::sort(
+            legend->begin(), legend->end(),
+            [](const chart::LegendKey& a, const chart::LegendKey& b) { return a.key < b.key; });
     figures.push_back({"work_precision_" + c + ".png", std::move(cpu)});
     figures.push_back({"work_precision_evals_" + c + ".png", std::move(evals)});
   }
-  for (auto& [c, series] : drift)
-    figures.push_back(
-        {"drift_" + c + ".png", ChartSpec{"Relative drift of the integrals: " + c, "time",
-                                          "relative drift", false, true, std::move(series)}});
-  auto table = stability_table(rows);
-  if (!table.rows.empty()) figures.push_back({"stability.png", std::move(table)});
+  for (auto& [c, series] : drift) {
+    ChartSpec chart{
+        "Relative drift of the integrals: " + c, "time", "relative drift", false, true, {}, {}, {}};
+    for (const auto& one : series) {
+      add_legend_key(chart.colour_legend, one.colour_key, one.name.substr(0, one.name.find(", ")));
+      add_legend_key(chart.marker_legend, one.marker_key,
+                     one.marker_key == 0 ? "C1" : "4th integral");
+    }
+    chart.series = std::move(series);
+    figures.push_back({"drift_" + c + ".png", std::move(chart)});
+  }
+  auto heat = stability_heat_map(rows);
+  if (!heat.rows.empty()) figures.push_back({"stability.png", std::move(heat)});
+  auto chaos = chaos_heat_map(rows);
+  if (!chaos.rows.empty()) figures.push_back({"stability_chaos.png", std::move(chaos)});
+  auto separatrix = separatrix_heat_map(rows);
+  if (!separatrix.rows.empty())
+    figures.push_back({"stability_separatrix.png", std::move(separatrix)});
+  auto table = stability_table(rows, false);
+  if (!table.rows.empty()) figures.push_back({"stability_runs.png", std::move(table)});
   return figures;
 }
 

@@ -15,7 +15,8 @@ std::vector<DriftRow> drift_study(const StudyOptions& o) {
   // Budget: evaluations (rhs + exact sub-flows) per time unit, the same for every method.
   const double budget = 200.0;
   for (const auto c : {physics::Case::kovalevskaya, physics::Case::goryachev_chaplygin}) {
-    if (!o.cases.empty() && std::find(o.cases.begin(), o.cases.end(), c) == o.cases.end()) continue;
+    const auto studied = cases_of(o);
+    if (std::find(studied.begin(), studied.end(), c) == studied.end()) continue;
     const auto& p = physics::preset(c);
     for (const auto m : methods_of(o)) {
       if (sim::incompatibility(m, sim::Formulation::direct)) continue;

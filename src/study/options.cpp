@@ -11,10 +11,35 @@ const std::vector<sim::Formulation>& formulations_of(const StudyOptions& o) {
 }
 
 std::vector<physics::Case> cases_of(const StudyOptions& o) {
-  if (!o.cases.empty()) return o.cases;
+  if (!o.cases.empty() || o.custom) return o.cases;
   std::vector<physics::Case> all;
   for (const auto& p : physics::case_presets()) all.push_back(p.id);
   return all;
+}
+
+Problem preset_problem(physics::Case c) {
+  const auto& p = physics::preset(c);
+  return {c, p.name, p.body, p.initial};
+}
+
+std::vector<Problem> problems_of(const StudyOptions& o) {
+  std::vector<Problem> all;
+  for (const auto c : cases_of(o)) all.push_back(preset_problem(c));
+  if (o.custom) all.push_back(*o.custom);
+  return all;
+}
+
+sim::RunSpec problem_run(const Problem& p, sim::Method m, sim::Formulation f, double t_end,
+                         int samples) {
+  sim::RunSpec s;
+  s.case_id = p.id;
+  s.body = p.body;
+  s.initial = p.initial;
+  s.method = m;
+  s.formulation = f;
+  s.t_end = t_end;
+  s.samples = samples;
+  return s;
 }
 
 int repeats_of(const StudyOptions& o) { return o.repeats > 0 ? o.repeats : (o.quick ? 3 : 5); }

@@ -23,9 +23,8 @@ std::vector<StudyRow> work_precision_study(const StudyOptions& o) {
               : std::vector<double>{1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12};
   const int max_points = o.quick ? 5 : 8;
   const long cost_cap = o.quick ? 400'000 : 4'000'000;
-  for (const auto c : cases_of(o)) {
-    const auto& p = physics::preset(c);
-    const double t_end = wp_t_end(c);
+  for (const auto& p : problems_of(o)) {
+    const double t_end = wp_t_end(p.id);
     tell(o, "work-precision: reference for " + p.name);
     const auto ref = compute_reference(p.body, p.initial, t_end, 1, reference_step(p.initial));
     const sim::Sample& ref_end = ref.samples.back();
@@ -46,7 +45,7 @@ std::vector<StudyRow> work_precision_study(const StudyOptions& o) {
           runs.push_back(row);
           return std::pair{row.error, t.cost};
         };
-        auto spec = sim::preset_run(c, m, f, t_end, 1);
+        auto spec = problem_run(p, m, f, t_end, 1);
         if (sim::is_adaptive(m)) {
           for (const double tol : tols) {
             spec.tol = tol;

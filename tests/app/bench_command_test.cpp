@@ -30,6 +30,45 @@ TEST(BenchCommand, BadOptionsAreUsageErrors) {
   EXPECT_EQ(dir.file_count(), 1u);  // only "file": nothing written
 }
 
+// --job: a body of one's own from a render job; its mistakes are usage
+// errors naming the option or the job's key, before any work.
+TEST(BenchCommand, JobMistakesAreUsageErrors) {
+  TempDir dir;
+  auto r = run_epviz("bench --quick --cases custom", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--cases"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--job"), std::string::npos) << r.err;
+  r = run_epviz("bench --quick --job " + (dir / "missing.json").string(), dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--job"), std::string::npos) << r.err;
+  std::ofstream(dir / "bad.json")
+      << R"({"simulation": {"inertia": [1, 2, -3], "omega": [0, 1, 0], "gamma": [0, 0, 1]}})";
+  r = run_epviz("bench --quick --job " + (dir / "bad.json").string(), dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("inertia"), std::string::npos) << r.err;
+  std::ofstream(dir / "good.json") << R"({"simulation": {"case": "euler"}})";
+  std::ofstream(dir / "gallery.json") << R"({"jobs": ["good.json"]})";
+  r = run_epviz("bench --quick --job " + (dir / "gallery.json").string(), dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("single render job"), std::string::npos) << r.err;
+}
+
+TEST(BenchCommand, JobBodyGetsWorkPrecisionRows) {
+  TempDir dir;
+  std::ofstream(dir / "top.json") << R"({"simulation": {"inertia": [1, 1.7, 2.3],
+      "com": [0.2, -0.1, 0.4], "omega": [0.5, 1.2, -0.3], "gamma": [0, 0.6, 0.8]}})";
+  const auto json_path = dir / "bench.json";
+  const auto r = run_epviz(
+      "bench --quick --job " + (dir / "top.json").string() + " --json " + json_path.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(test::slurp(json_path));
+  int custom = 0, presets = 0;
+  for (const auto& row : doc.at("rows"))
+    if (row.at("study") == "work_precision") (row.at("case") == "custom" ? custom : presets)++;
+  EXPECT_GT(custom, 10);
+  EXPECT_EQ(presets, 0);  // --job alone studies the job's body only
+}
+
 bool is_number(const nlohmann::json& j) { return j.is_number() && std::isfinite(j.get<double>()); }
 
 TEST(BenchCommand, QuickRunWritesCompleteRows) {

@@ -15,9 +15,14 @@ constexpr paint::ChartOptions kSmall{
     .width = 480, .height = 300, .msaa_samples = 0, .builtin_font = true};
 
 chart::Figure work_precision_figure() {
-  chart::ChartSpec spec{"Work-precision: euler", "CPU time [ms]", "error at t_end", true, true, {}};
+  chart::ChartSpec spec;
+  spec.title = "Work-precision: euler";
+  spec.x_label = "CPU time [ms]";
+  spec.y_label = "error at t_end";
+  spec.log_x = spec.log_y = true;
   for (const char* method : {"rk4", "dop853"}) {
-    chart::ChartSeries s{method, {}};
+    chart::ChartSeries s;
+    s.name = method;
     for (int k = 0; k < 3; ++k)
       s.points.push_back({0.01 * (k + 1), std::pow(10.0, -3.0 - 2.0 * k)});
     spec.series.push_back(s);

@@ -20,7 +20,9 @@ paint::ChartSpec two_series() {
   s.x_label = "CPU time [ms]";
   s.y_label = "error";
   s.log_x = s.log_y = true;
-  paint::ChartSeries a{"rk4", {}}, b{"gauss6", {}};
+  paint::ChartSeries a, b;
+  a.name = "rk4";
+  b.name = "gauss6";
   for (int i = 0; i < 6; ++i) {
     const double x = std::pow(10.0, -2.0 + 0.6 * i);
     a.points.push_back({x, 1e-2 * std::pow(x, -4.0) * 1e-6});
@@ -115,6 +117,103 @@ TEST(ChartPainter, TableFigureMatchesTheReviewedGolden) {
     if (img.pixels[i] < 128) ++ink;
   EXPECT_GT(ink, 500);
   EXPECT_TRUE(et::matches_snapshot("chart_table", img.width, img.height, img.pixels));
+}
+
+// Series that share a colour key share a colour (colour by method), whatever
+// their position; the keyed legend shows each colour once.
+TEST(ChartPainter, SeriesWithOneColourKeyShareTheColour) {
+  auto spec = two_series();
+  spec.series[0].colour_key = 9;
+  spec.series[1].colour_key = 9;
+  spec.series[0].marker_key = 0;
+  spec.series[1].marker_key = 1;
+  spec.colour_legend = {{"rk4", 9}};
+  spec.marker_legend = {{"direct", 0}, {"riccati", 1}};
+  const auto img = paint::paint_chart(et::shared_gl_context(), spec, test_options());
+  const auto l = paint::chart_layout(spec, W, H, 13.0f);
+  for (const auto& s : spec.series)
+    for (const auto& p : s.points)
+      EXPECT_TRUE(colour_near(img, l.to_pixel(p.x, p.y), paint::series_colour(9)));
+  EXPECT_EQ(paint::colour_of(spec.series[1], 1), paint::series_colour(9));
+  EXPECT_EQ(paint::colour_of(paint::ChartSeries{}, 4), paint::series_colour(4));
+  EXPECT_GT(colour_count(img, l.legend, paint::series_colour(9)), 10);
+  EXPECT_EQ(colour_count(img, l.legend, paint::series_colour(0)), 0);
+}
+
+// Sixteen colours before one repeats: enough for every method of the bench
+// (nine of epviz, six of the peers).
+TEST(ChartPainter, PaletteColoursAreDistinct) {
+  for (std::size_t i = 0; i < paint::kSeriesColours; ++i)
+    for (std::size_t j = i + 1; j < paint::kSeriesColours; ++j)
+      EXPECT_GT(et::max_channel_difference(paint::series_colour(i), paint::series_colour(j)), 0.1f)
+          << i << " vs " << j;
+}
+
+// The last x tick label is centred on the plot's right edge: the margin
+// leaves room for its right half.
+TEST(ChartPainter, LastXLabelIsNotClipped) {
+  paint::ChartSpec s;
+  s.log_x = s.log_y = true;
+  paint::ChartSeries a;
+  a.name = "a";
+  a.points = {{1e-3, 1.0}, {123456.0, 1e-9}};
+  s.series = {a};
+  const float font = 13.0f;
+  const auto l = paint::chart_layout(s, W, H, font);
+  const float last_label_w = float(paint::decade_label(int(l.range.x_max)).size()) * font * 0.58f;
+  EXPECT_GE(float(W - (l.plot_area.x + l.plot_area.width)), 0.5f * last_label_w);
+}
+
+paint::HeatMapSpec heat_spec() {
+  paint::HeatMapSpec h;
+  h.title = "Stability (test)";
+  h.value_label = "step / period";
+  h.rows = {"rk4", "gauss4", "midpoint"};
+  h.columns = {"kovalevskaya", "lagrange"};
+  h.values = {{0.01, 0.1}, {1.0, std::nan("")}, {0.03, 0.3}};
+  return h;
+}
+
+// Each cell has the colour of its value on the map (log scale: a decade is a
+// fixed step along it), missing values are grey, and the layout fits.
+TEST(ChartPainter, HeatMapCellsFollowTheirValues) {
+  const auto spec = heat_spec();
+  const auto o = test_options();
+  const auto img = paint::paint_heat_map(et::shared_gl_context(), spec, o);
+  const auto l = paint::heat_map_layout(spec, W, H, 13.0f);
+  EXPECT_DOUBLE_EQ(l.lo, -2.0);
+  EXPECT_DOUBLE_EQ(l.hi, 0.0);
+  ASSERT_EQ(l.cells.size(), 3u);
+  std::vector<float> lightness;
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 2; ++j) {
+      const auto& c = l.cells[i][j];
+      // A corner of the cell, away from its text.
+      const glm::vec4 got = et::pixel_colour(img, c.x + 3, c.y + 3);
+      const auto expected = paint::heat_map_colour(spec, l, spec.values[i][j]);
+      if (!expected) {
+        EXPECT_LT(et::max_channel_difference(got, glm::vec4(0.88f, 0.88f, 0.89f, 1.0f)), 0.03f);
+        continue;
+      }
+      EXPECT_LT(et::max_channel_difference(got, *expected), 0.03f) << i << "," << j;
+    }
+  // Larger steps are better: brighter. 0.01 < 0.03 < 0.1 < 0.3 < 1.
+  const double ordered[] = {0.01, 0.03, 0.1, 0.3, 1.0};
+  for (int k = 0; k + 1 < 5; ++k)
+    EXPECT_LT(et::luminance(*paint::heat_map_colour(spec, l, ordered[k])),
+              et::luminance(*paint::heat_map_colour(spec, l, ordered[k + 1])));
+  // The ends of the map at the ends of the range.
+  EXPECT_EQ(*paint::heat_map_colour(spec, l, 0.01), *paint::heat_map_colour(spec, l, 1e-5));
+  // The colour bar: its top has the colour of the largest value, its bottom of the smallest.
+  const auto& b = l.colour_bar;
+  EXPECT_LT(et::max_channel_difference(et::pixel_colour(img, b.x + b.width / 2, b.y + 2),
+                                       *paint::heat_map_colour(spec, l, 1.0)),
+            0.06f);
+  EXPECT_LT(et::max_channel_difference(et::pixel_colour(img, b.x + b.width / 2, b.y + b.height - 3),
+                                       *paint::heat_map_colour(spec, l, 0.01)),
+            0.06f);
+  EXPECT_LE(b.x + b.width, W);
+  EXPECT_LE(l.grid.y + l.grid.height, H);
 }
 
 }  // namespace

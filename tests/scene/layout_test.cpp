@@ -105,5 +105,43 @@ TEST(Layout, PlaneScaleIsThePlotSideOverTheExtent) {
   EXPECT_DOUBLE_EQ(l.plane_px_per_unit * 4.0, double(l.plot_area->width));
 }
 
+// Gallery tiles line up: the panel's rectangles do not depend on how many
+// lines and drift rows a job's overlay has, only on the picture's size.
+TEST(Layout, PanelIsTheSameWhateverTheOverlayHolds) {
+  for (auto [w, h] : {std::pair{1280, 720}, std::pair{480, 270}, std::pair{3840, 2160}}) {
+    auto one = request(w, h), eight = request(w, h);
+    one.overlay = {1, 0};
+    eight.overlay = {8, 8};
+    const auto a = scene::frame_layout(one), b = scene::frame_layout(eight);
+    ASSERT_TRUE(a.plot_area && b.plot_area);
+    for (auto [ra, rb] :
+         {std::pair{*a.plot_area, *b.plot_area}, std::pair{*a.panel_column, *b.panel_column},
+          std::pair{*a.view_3d, *b.view_3d}}) {
+      EXPECT_EQ(ra.x, rb.x) << w << "x" << h;
+      EXPECT_EQ(ra.y, rb.y) << w << "x" << h;
+      EXPECT_EQ(ra.width, rb.width) << w << "x" << h;
+      EXPECT_EQ(ra.height, rb.height) << w << "x" << h;
+    }
+    EXPECT_EQ(a.overlay_in_column, b.overlay_in_column);
+  }
+}
+
+// A 4K still reads like the 720p one scaled up: text, marks and paddings grow
+// with the picture's height (3x), not by a smaller factor.
+TEST(Layout, TextAndMarksScaleWithThePicture) {
+  const double ratio = 2160.0 / 720.0;
+  EXPECT_NEAR(scene::overlay_font_px(2160) / scene::overlay_font_px(720), ratio, 0.1 * ratio);
+  EXPECT_NEAR(scene::ui_scale(2160) / scene::ui_scale(720), ratio, 0.1 * ratio);
+  // And the layout keeps its proportions: the plot is the same fraction of the picture.
+  const auto small = scene::frame_layout(request(1280, 720));
+  const auto big = scene::frame_layout(request(3840, 2160));
+  EXPECT_NEAR(double(big.plot_area->width) / small.plot_area->width, ratio, 0.02 * ratio);
+  EXPECT_NEAR(double(big.plot_area->y) / small.plot_area->y, ratio, 0.05 * ratio);
+  EXPECT_EQ(big.overlay_in_column, small.overlay_in_column);
+  // Never below a readable size in small tiles.
+  EXPECT_GE(scene::overlay_font_px(120), 13.0f);
+  EXPECT_EQ(scene::ui_scale(240), 1.0f);
+}
+
 }  // namespace
 }  // namespace epviz

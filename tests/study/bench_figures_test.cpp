@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 
 #include "study/bench_figures.hpp"
 
@@ -56,7 +57,8 @@ TEST(BenchFigures, ChartsFromRows) {
   EXPECT_EQ(figures[0].file_name, "work_precision_euler.png");
   EXPECT_EQ(figures[1].file_name, "work_precision_evals_euler.png");
   EXPECT_EQ(figures[2].file_name, "drift_kovalevskaya.png");
-  EXPECT_EQ(figures[3].file_name, "stability.png");
+  EXPECT_EQ(figures[3].file_name, "stability.png");  // a heat map; no other stability rows
+  EXPECT_TRUE(std::holds_alternative<chart::HeatMapSpec>(figures[3].content));
 
   const auto& cpu = std::get<chart::ChartSpec>(figures[0].content);
   EXPECT_TRUE(cpu.log_x && cpu.log_y);
@@ -75,6 +77,73 @@ TEST(BenchFigures, ChartsFromRows) {
   EXPECT_EQ(drift.series[1].name, "rk4, 4th integral");
   EXPECT_DOUBLE_EQ(drift.series[0].points[0].y, 1e-10);  // drifts shown as magnitudes
   EXPECT_EQ(drift.series[1].points.size(), 19u);         // the NaN point is left out
+}
+
+// Colour by method, marker by formulation: a method keeps its colour across
+// formulations and charts, and the legend names each colour and shape once.
+TEST(BenchFigures, ColourByMethodMarkerByFormulation) {
+  std::vector<StudyRow> rows;
+  for (const char* f : {"direct", "riccati"})
+    for (const char* method : {"rk4", "dop853"}) {
+      study::WorkPrecisionRow r;
+      r.run.case_name = "euler";
+      r.run.method = method;
+      r.run.formulation = f;
+      r.error = 1e-6;
+      r.run.cpu_ms = 1.0;
+      r.run.rhs_evals = 100;
+      rows.emplace_back(r);
+    }
+  const auto figures = study::bench_figures(rows);
+  const auto& cpu = std::get<chart::ChartSpec>(figures[0].content);
+  ASSERT_EQ(cpu.series.size(), 4u);
+  std::map<std::string, int> colour_of_method;
+  std::map<std::string, int> marker_of_formulation;
+  for (const auto& s : cpu.series) {
+    const bool riccati = s.name.find("riccati") != std::string::npos;
+    const std::string method = s.name.find("rk4") != std::string::npos ? "rk4" : "dop853";
+    ASSERT_GE(s.colour_key, 0);
+    ASSERT_GE(s.marker_key, 0);
+    auto [c, new_c] = colour_of_method.emplace(method, s.colour_key);
+    EXPECT_EQ(c->second, s.colour_key) << s.name;
+    auto [m, new_m] = marker_of_formulation.emplace(riccati ? "riccati" : "direct", s.marker_key);
+    EXPECT_EQ(m->second, s.marker_key) << s.name;
+  }
+  EXPECT_NE(colour_of_method["rk4"], colour_of_method["dop853"]);
+  EXPECT_NE(marker_of_formulation["direct"], marker_of_formulation["riccati"]);
+  EXPECT_EQ(cpu.colour_legend.size(), 2u);
+  EXPECT_EQ(cpu.marker_legend.size(), 2u);
+  // The drift chart colours rk4 as the work-precision chart does.
+  const auto drift = study::bench_figures(tiny_bench());
+  const auto& d = std::get<chart::ChartSpec>(drift[2].content);
+  EXPECT_EQ(d.series[0].colour_key, colour_of_method["rk4"]);
+  EXPECT_NE(d.series[0].marker_key, d.series[1].marker_key);  // C1 and the 4th integral
+}
+
+TEST(BenchFigures, StabilityHeatMapIsMethodByCase) {
+  std::vector<StudyRow> rows;
+  auto add = [&](const char* c, const char* m, double h_over_period) {
+    study::MaxStepRow r;
+    r.case_name = c;
+    r.method = m;
+    r.max_step_over_period = h_over_period;
+    rows.emplace_back(r);
+  };
+  add("kovalevskaya", "rk4", 0.08);
+  add("kovalevskaya", "gauss4", 0.3);
+  add("lagrange", "rk4", 0.05);
+  add("lagrange", "gauss4", study::kNaN);  // fails even at the smallest step
+  const auto h = study::stability_heat_map(rows);
+  EXPECT_EQ(h.rows, (std::vector<std::string>{"rk4", "gauss4"}));
+  EXPECT_EQ(h.columns, (std::vector<std::string>{"kovalevskaya", "lagrange"}));
+  ASSERT_EQ(h.values.size(), 2u);
+  EXPECT_DOUBLE_EQ(h.values[0][0], 0.08);
+  EXPECT_DOUBLE_EQ(h.values[0][1], 0.05);
+  EXPECT_DOUBLE_EQ(h.values[1][0], 0.3);
+  EXPECT_TRUE(std::isnan(h.values[1][1]));
+  // The table of the other studies leaves the largest-step rows to the heat map.
+  EXPECT_TRUE(study::stability_table(rows, false).rows.empty());
+  EXPECT_EQ(study::stability_table(rows).rows.size(), 4u);
 }
 
 TEST(BenchFigures, StabilityTable) {

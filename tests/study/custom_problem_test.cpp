@@ -1,0 +1,61 @@
+// The work-precision study on a body of one's own (`epviz bench --job`): its
+// rows are named "custom", measured against a reference of that body, and
+// the presets are left out unless asked for.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "physics/cases.hpp"
+#include "study/work_precision.hpp"
+
+namespace epviz {
+namespace {
+
+study::StudyOptions custom_options() {
+  study::StudyOptions o;
+  o.quick = true;
+  o.repeats = 1;
+  o.methods = {sim::Method::dop853, sim::Method::rk4};
+  o.formulations = {sim::Formulation::direct};
+  study::Problem p;
+  p.id = physics::Case::custom;
+  p.name = "custom";
+  p.body = {Eigen::Vector3d(1.0, 1.7, 2.3), Eigen::Vector3d(0.2, -0.1, 0.4), 1.0};
+  p.initial = {Eigen::Vector3d(0.5, 1.2, -0.3), Eigen::Vector3d(0.0, 0.6, 0.8)};
+  o.custom = p;
+  return o;
+}
+
+TEST(CustomProblem, OnlyTheCustomBodyUnlessPresetsAreNamed) {
+  auto o = custom_options();
+  EXPECT_TRUE(study::cases_of(o).empty());
+  ASSERT_EQ(study::problems_of(o).size(), 1u);
+  o.cases = {physics::Case::euler};
+  const auto both = study::problems_of(o);
+  ASSERT_EQ(both.size(), 2u);
+  EXPECT_EQ(both[0].name, "euler");
+  EXPECT_EQ(both[1].name, "custom");
+  // Without a custom body, no cases means every preset.
+  EXPECT_EQ(study::cases_of(study::StudyOptions{}).size(), physics::case_presets().size());
+}
+
+TEST(CustomProblem, WorkPrecisionRowsOfTheCustomBody) {
+  const auto rows = study::work_precision_study(custom_options());
+  const auto runs = study::rows_of<study::WorkPrecisionRow>(rows);
+  const auto refs = study::rows_of<study::ReferenceRow>(rows);
+  ASSERT_EQ(refs.size(), 1u);
+  EXPECT_EQ(refs[0]->case_name, "custom");
+  ASSERT_GE(runs.size(), 6u);
+  std::vector<double> dop853_errors;
+  for (const auto* r : runs) {
+    EXPECT_EQ(r->run.case_name, "custom");
+    if (r->run.method == "dop853" && r->run.ok) dop853_errors.push_back(r->error);
+  }
+  // The error falls as the tolerance tightens: it is measured, not made up.
+  ASSERT_GE(dop853_errors.size(), 3u);
+  EXPECT_LT(dop853_errors.back(), 1e-3 * dop853_errors.front());
+  for (double e : dop853_errors) EXPECT_TRUE(std::isfinite(e));
+}
+
+}  // namespace
+}  // namespace epviz
