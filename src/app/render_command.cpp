@@ -42,6 +42,7 @@ struct PreparedJob {
   RenderJob job;
   scene::ScenePlan plan;
   io::FrameRange range;
+  std::string caption;  // under every frame (gallery tiles)
 };
 
 // --format, checked; nullopt when not given.
@@ -108,6 +109,7 @@ struct RenderStats {
   double seconds = 0.0;
   std::optional<numerics::Failure> failure;
   std::optional<render::RgbaImage> kept;  // the last frame drawn (for galleries)
+  nlohmann::json runs;                    // app::runs_report after the last frame
 };
 
 // Renders the prepared job's frame range to its output. Frames before the
@@ -121,6 +123,7 @@ RenderStats render_frames(const PreparedJob& p, paint::FramePainter& painter,
   // Temporaries of runs killed before they could clean up (SIGKILL).
   io::remove_stale_temporaries(job.output.dir);
   JobFrameDrawer drawer(p.plan, s);
+  drawer.set_caption(p.caption);
 
   std::unique_ptr<io::AsyncPngWriter> pngs;
   std::unique_ptr<io::VideoWriter> video;
@@ -158,11 +161,21 @@ RenderStats render_frames(const PreparedJob& p, paint::FramePainter& painter,
     stats.failure = e.failure();
   }
   progress.finish();
+  stats.runs = runs_report(drawer.source());
   if (pngs) pngs->close();
   if (video && !stats.failure)
     video->finish();  // a failed video is not kept (its destructor removes it)
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return stats;
+}
+
+// Per run: the step or tolerance used, the work and the drifts; the first
+// run's step and pixel-true horizon also at the top level.
+void add_runs_report(nlohmann::json& j, const nlohmann::json& runs) {
+  if (!runs.is_array() || runs.empty()) return;
+  j["effective_step"] = runs[0]["effective_step"];
+  j["pixel_true_until"] = runs[0]["pixel_true_until"];
+  j["runs"] = runs;
 }
 
 nlohmann::json job_report(const PreparedJob& p, const RenderStats& st) {
@@ -183,6 +196,7 @@ nlohmann::json job_report(const PreparedJob& p, const RenderStats& st) {
                             : nlohmann::json(nullptr);
   j["failure_kind"] = st.failure ? nlohmann::json(std::string(numerics::name(st.failure->kind)))
                                  : nlohmann::json(nullptr);
+  add_runs_report(j, st.runs);
   return j;
 }
 
@@ -250,6 +264,7 @@ int render_gallery(GalleryJob g, const RenderOptions& o) {
     auto ps = prepare(still, job_opts);
     const int at = int(std::lround(g.at * (ps.plan.frames - 1)));
     ps.range = {at, at};
+    ps.caption = tile_caption(ps.job, ps.plan);
     stills.push_back(std::move(ps));
     if (g.videos) {
       job.output.format = *g.videos;

@@ -13,6 +13,7 @@ RenderJob read_single(const nlohmann::json& j, const std::filesystem::path& file
   RenderJob job;
   job.file = file;
   job.simulation = std::move(d.simulation);
+  job.runs = std::move(d.runs);
   job.scene = std::move(d.scene);
   job.output = std::move(d.output);
   if (job.output.name.empty())

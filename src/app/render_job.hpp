@@ -21,6 +21,7 @@ using job::OutputSettings;
 struct RenderJob {
   std::filesystem::path file;
   SimulationFields simulation;
+  std::vector<job::RunFields> runs;  // a comparison scene's runs over `simulation`; empty: one run
   scene::SceneSettings scene;
   OutputSettings output;
 };
