@@ -19,6 +19,13 @@ std::vector<scene::RunRequest> run_requests(const RenderJob& job) {
   for (const auto& r : job.runs) {
     SimulationFields fields = job.simulation;
     fields.overlay(r.simulation);
+    // A run that picks its own method drops the job's accuracy setting of the
+    // other kind (the job's step for an adaptive run, its tol for a fixed one).
+    if (r.simulation.method)
+      if (auto m = sim::method_from_name(*r.simulation.method)) {
+        if (sim::is_adaptive(*m) && !r.simulation.step) fields.step = {};
+        if (!sim::is_adaptive(*m) && !r.simulation.tol) fields.tol = {};
+      }
     scene::RunRequest q;
     q.run = resolve(fields);
     q.label = r.label;
