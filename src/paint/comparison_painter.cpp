@@ -120,12 +120,15 @@ bool draw_run_annotations(render::DrawList& flat, const scene::Frame& f,
   const bool chart = f.comparison && layout.chart_area;
   if (rows.empty() && !chart && f.caption.empty()) return false;
   if (!f.caption.empty()) {
-    // At the top centre: the bottom holds the legend, the top's corners the overlay.
-    int right = 0;
+    // At the bottom right, under the plane's tick labels: the bottom left
+    // holds the trail's caption and the legend, the top the overlay.
+    int right = 0, bottom = 0;
     for (const auto& r : {layout.view_3d, layout.panel_column})
-      if (r) right = std::max(right, r->right());
-    render::TextLabel label{
-        {float(right) / 2.0f, 4.0f * px, 0.0f}, f.caption, to_glm(ink.title), TextAnchor::top};
+      if (r) right = std::max(right, r->right()), bottom = std::max(bottom, r->bottom());
+    render::TextLabel label{{float(right) - 6.0f * px, float(bottom) - 4.0f * px, 0.0f},
+                            f.caption,
+                            to_glm(ink.title),
+                            TextAnchor::bottom_right};
     label.background = to_glm(ink.panel_background);
     label.background.a = 0.85f;
     flat.add_text(std::move(label));
