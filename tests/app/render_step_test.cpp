@@ -125,5 +125,37 @@ TEST(RenderRuns, RefusesAnUnknownKeyInARunWithExitTwo) {
   EXPECT_FALSE(fs::exists(dir / "frames"));
 }
 
+// A gallery's grid video: every job's frames tiled side by side in one MP4.
+nlohmann::json grid_gallery(const test::TempDir& dir, int tile_width, int columns) {
+  for (const char* name : {"a.json", "b.json"}) {
+    auto j = kovalevskaya_job(dir / "unused", 0.25);
+    j["duration"] = 1;
+    std::ofstream(dir / name) << j.dump();
+  }
+  return {{"jobs", {"a.json", "b.json"}},
+          {"tile", {{"width", tile_width}, {"height", 120}, {"columns", columns}}},
+          {"grid_video", true},
+          {"dir", (dir / "gallery").string()}};
+}
+
+TEST(GalleryGrid, TilesEveryJobIntoOneVideo) {
+  test::TempDir dir;
+  if (std::system("command -v ffmpeg >/dev/null 2>&1") != 0) GTEST_SKIP() << "no ffmpeg";
+  std::ofstream(dir / "g.json") << grid_gallery(dir, 160, 2).dump();
+  const auto r = test::run_epviz("render " + (dir / "g.json").string() + " --quiet", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(fs::file_size(dir / "gallery" / "grid.mp4"), 1000u);
+  EXPECT_NE(r.out.find("5 frames of 2 jobs"), std::string::npos) << r.out;
+}
+
+TEST(GalleryGrid, RefusesAnOddGridBeforeAnyWork) {
+  test::TempDir dir;
+  std::ofstream(dir / "g.json") << grid_gallery(dir, 161, 1).dump();  // 8 + 161 pixels wide
+  const auto r = test::run_epviz("render " + (dir / "g.json").string(), dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("grid_video"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "gallery"));
+}
+
 }  // namespace
 }  // namespace epviz
