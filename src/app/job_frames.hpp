@@ -4,6 +4,7 @@
 // Shared by `epviz render` (frames to files) and `epviz check` (frames in
 // memory, compared with goldens).
 #include <mutex>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <span>
 #include <vector>
@@ -21,6 +22,11 @@ namespace epviz::app {
 // resolution). Throws UsageError naming the job file when it cannot be drawn.
 scene::ScenePlan plan_job(const RenderJob& job);
 
+// What the render report (--report-json) says of each run of a scene after
+// its frames: method, the step used (fixed) or tolerance (adaptive), steps,
+// evaluations, the drift of its steps, and its pixel-true horizon.
+nlohmann::json runs_report(const scene::FrameSource& source);
+
 // Draws frames of one job in increasing order; the simulation runs through
 // the frames in between without drawing them.
 class JobFrameDrawer {
@@ -30,10 +36,17 @@ class JobFrameDrawer {
   // paint. Throws numerics::IntegrationError on a numerical failure.
   const render::RgbaImage& draw(int index, paint::FramePainter& painter,
                                 std::mutex* paint_lock = nullptr);
+  const scene::FrameSource& source() const { return source_; }
+  // A caption drawn under every frame (gallery tiles).
+  void set_caption(std::string caption) { caption_ = std::move(caption); }
 
  private:
   scene::FrameSource source_;
+  std::string caption_;
 };
+
+// A gallery tile's caption: the job's name, method and accuracy.
+std::string tile_caption(const RenderJob& job, const scene::ScenePlan& plan);
 
 struct RenderedFrames {
   std::vector<render::RgbaImage> images;  // one per frame asked for, until a failure

@@ -1,6 +1,7 @@
 #include "app/render_command.hpp"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -43,6 +44,7 @@ struct PreparedJob {
   RenderJob job;
   scene::ScenePlan plan;
   io::FrameRange range;
+  std::string caption;  // under every frame (gallery tiles)
 };
 
 // --format, checked; nullopt when not given.
@@ -109,6 +111,7 @@ struct RenderStats {
   double seconds = 0.0;
   std::optional<numerics::Failure> failure;
   std::optional<render::RgbaImage> kept;  // the last frame drawn (for galleries)
+  nlohmann::json runs;                    // app::runs_report after the last frame
 };
 
 // Renders the prepared job's frame range to its output. Frames before the
@@ -122,6 +125,7 @@ RenderStats render_frames(const PreparedJob& p, paint::FramePainter& painter,
   // Temporaries of runs killed before they could clean up (SIGKILL).
   io::remove_stale_temporaries(job.output.dir);
   JobFrameDrawer drawer(p.plan, s);
+  drawer.set_caption(p.caption);
 
   std::unique_ptr<io::AsyncPngWriter> pngs;
   std::unique_ptr<io::VideoWriter> video;
@@ -159,11 +163,21 @@ RenderStats render_frames(const PreparedJob& p, paint::FramePainter& painter,
     stats.failure = e.failure();
   }
   progress.finish();
+  stats.runs = runs_report(drawer.source());
   if (pngs) pngs->close();
   if (video && !stats.failure)
     video->finish();  // a failed video is not kept (its destructor removes it)
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return stats;
+}
+
+// Per run: the step or tolerance used, the work and the drifts; the first
+// run's step and pixel-true horizon also at the top level.
+void add_runs_report(nlohmann::json& j, const nlohmann::json& runs) {
+  if (!runs.is_array() || runs.empty()) return;
+  j["effective_step"] = runs[0]["effective_step"];
+  j["pixel_true_until"] = runs[0]["pixel_true_until"];
+  j["runs"] = runs;
 }
 
 nlohmann::json job_report(const PreparedJob& p, const RenderStats& st) {
@@ -184,6 +198,7 @@ nlohmann::json job_report(const PreparedJob& p, const RenderStats& st) {
                             : nlohmann::json(nullptr);
   j["failure_kind"] = st.failure ? nlohmann::json(std::string(numerics::name(st.failure->kind)))
                                  : nlohmann::json(nullptr);
+  add_runs_report(j, st.runs);
   return j;
 }
 
@@ -239,6 +254,80 @@ int render_single(RenderJob job, const RenderOptions& o) {
   return report_failure(st.failure);
 }
 
+// The gallery's tiling of its figure and grid video.
+io::TilingOptions gallery_tiling(const GalleryJob& g) {
+  io::TilingOptions tiling;
+  tiling.cols = g.columns;
+  tiling.gap = 4;
+  tiling.margin = 4;
+  tiling.background = {16, 18, 22, 255};
+  return tiling;
+}
+
+// The grid video's size in pixels, checked before any work: a video needs
+// an even width and height.
+std::pair<int, int> grid_size(const GalleryJob& g, int jobs) {
+  const auto tiling = gallery_tiling(g);
+  const int cols = std::min(g.columns, jobs);
+  const int rows = (jobs + cols - 1) / cols;
+  const int width = 2 * tiling.margin + cols * g.tile_width + (cols - 1) * tiling.gap;
+  const int height = 2 * tiling.margin + rows * g.tile_height + (rows - 1) * tiling.gap;
+  if (width % 2 || height % 2)
+    throw UsageError(g.file.string() + ": grid_video: the grid is " + std::to_string(width) + "x" +
+                     std::to_string(height) +
+                     " pixels; a video needs an even width and height (change the tile size)");
+  return {width, height};
+}
+
+// Every job of the gallery at once, tiled frame by frame into one MP4
+// (grid.mp4): frame i of each job side by side, a job that has ended held
+// at its last frame. Returns the failures (a failed job's tile stays at its
+// last good frame).
+int render_grid_video(const GalleryJob& g, const std::vector<PreparedJob>& jobs,
+                      paint::FramePainter& painter, const RenderOptions& o) {
+  std::vector<std::unique_ptr<JobFrameDrawer>> drawers;
+  std::vector<render::RgbaImage> tiles;
+  std::vector<bool> failed(jobs.size(), false);
+  int frames = 0;
+  const double fps = jobs.front().job.scene.fps;  // the first job's: the tiles share one clock
+  for (const auto& p : jobs) {
+    drawers.push_back(std::make_unique<JobFrameDrawer>(p.plan, p.job.scene));
+    drawers.back()->set_caption(p.caption);
+    tiles.push_back({g.tile_width, g.tile_height,
+                     std::vector<std::uint8_t>(std::size_t(g.tile_width) * g.tile_height * 4, 0)});
+    frames = std::max(frames, p.plan.frames);
+  }
+  const auto tiling = gallery_tiling(g);
+  const auto [width, height] = grid_size(g, int(jobs.size()));
+  io::VideoWriter video(g.dir / "grid.mp4", io::VideoFormat::mp4, width, height, fps);
+  io::ProgressOptions po;
+  po.mode = progress_mode(o);
+  po.label = "grid";
+  io::ProgressLine progress(frames, po);
+  for (int i = 0; i < frames; ++i) {
+    for (std::size_t k = 0; k < jobs.size(); ++k) {
+      if (failed[k]) continue;
+      try {
+        tiles[k] = drawers[k]->draw(std::min(i, jobs[k].plan.frames - 1), painter);
+      } catch (const numerics::IntegrationError& e) {
+        failed[k] = true;
+        report_failure(e.failure());
+      }
+    }
+    std::vector<std::span<const std::uint8_t>> spans;
+    for (const auto& t : tiles) spans.emplace_back(t.pixels);
+    const auto grid = io::tile_images(spans, g.tile_width, g.tile_height, tiling);
+    video.write_frame(grid.pixels.data());
+    progress.advance();
+  }
+  progress.finish();
+  video.finish();
+  std::fprintf(summary_stream(o), "%s: %d frames of %zu jobs tiled into %s (%dx%d)\n",
+               g.file.string().c_str(), frames, jobs.size(), (g.dir / "grid.mp4").string().c_str(),
+               width, height);
+  return int(std::count(failed.begin(), failed.end(), true));
+}
+
 int render_gallery(GalleryJob g, const RenderOptions& o) {
   if (!o.frames.empty())
     throw UsageError("--frames: a gallery renders whole jobs; give --frames to a single job");
@@ -261,12 +350,19 @@ int render_gallery(GalleryJob g, const RenderOptions& o) {
     auto ps = prepare(still, job_opts);
     const int at = int(std::lround(g.at * (ps.plan.frames - 1)));
     ps.range = {at, at};
+    ps.caption = tile_caption(ps.job, ps.plan);
     stills.push_back(std::move(ps));
     if (g.videos) {
       job.output.format = *g.videos;
       job.output.name = job.file.stem().string();
       videos.push_back(prepare(job, job_opts));
     }
+  }
+  if (g.grid_video) {
+    grid_size(g, int(stills.size()));
+    if (!io::ffmpeg_available())
+      throw UsageError(g.file.string() +
+                       ": grid_video: ffmpeg not found on PATH; install the Debian package ffmpeg");
   }
   fs::create_directories(g.dir);
   io::remove_stale_temporaries(g.dir);
@@ -287,11 +383,7 @@ int render_gallery(GalleryJob g, const RenderOptions& o) {
   }
   std::vector<std::span<const std::uint8_t>> spans;
   for (const auto& t : tiles) spans.emplace_back(t.pixels);
-  io::TilingOptions tiling;
-  tiling.cols = g.columns;
-  tiling.gap = 4;
-  tiling.margin = 4;
-  tiling.background = {16, 18, 22, 255};
+  const io::TilingOptions tiling = gallery_tiling(g);
   const auto figure = io::tile_images(spans, g.tile_width, g.tile_height, tiling);
   const fs::path figure_path = g.dir / "gallery.png";
   io::write_png_rgba(figure_path, figure.width, figure.height, figure.pixels);
@@ -305,6 +397,7 @@ int render_gallery(GalleryJob g, const RenderOptions& o) {
     add_gl_report(reports.back(), *context);
     failures += report_failure(st.failure) != 0;
   }
+  if (g.grid_video) failures += render_grid_video(g, stills, painter, o);
   if (!o.report_json.empty()) io::write_file_atomically(o.report_json, reports.dump(2) + "\n");
   return failures ? 3 : 0;
 }

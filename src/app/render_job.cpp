@@ -13,6 +13,7 @@ RenderJob read_single(const nlohmann::json& j, const std::filesystem::path& file
   RenderJob job;
   job.file = file;
   job.simulation = std::move(d.simulation);
+  job.runs = std::move(d.runs);
   job.scene = std::move(d.scene);
   job.output = std::move(d.output);
   if (job.output.name.empty())
@@ -75,6 +76,7 @@ LoadedJob load_render_job(const std::filesystem::path& path) {
     }
     if (auto v = r.choice("videos", {"none", "mp4", "webm", "gif"}))
       g.videos = *v == "none" ? std::nullopt : output_format_from_name(*v);
+    if (auto v = r.boolean("grid_video")) g.grid_video = *v;
     if (auto v = r.string("dir")) g.dir = *v;
     r.finish();
     loaded.gallery = std::move(g);

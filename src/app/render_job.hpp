@@ -21,6 +21,7 @@ using job::OutputSettings;
 struct RenderJob {
   std::filesystem::path file;
   SimulationFields simulation;
+  std::vector<job::RunFields> runs;  // a comparison scene's runs over `simulation`; empty: one run
   scene::SceneSettings scene;
   OutputSettings output;
 };
@@ -33,6 +34,7 @@ struct GalleryJob {
   int tile_width = 640, tile_height = 360, columns = 3;
   double at = 0.6;                     // which frame to tile, as a fraction of each run
   std::optional<OutputFormat> videos;  // a video per job in this format (none: stills only)
+  bool grid_video = false;             // also one MP4 of all jobs tiled, frame by frame (grid.mp4)
   std::filesystem::path dir = "out/gallery";
 };
 

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "scene/settings.hpp"
 
@@ -51,9 +52,21 @@ struct OutputSettings {
       name;  // video file stem, or PNG frame prefix ("frame" -> frame_0042.png); empty: not given
 };
 
+// One run of a comparison scene (a job's "runs" list): a label and the
+// simulation fields that replace the job's own for this run.
+struct RunFields {
+  std::string label;            // empty: not given (the run is named by its method)
+  SimulationFields simulation;  // over the job's "simulation"
+  bool auto_tolerance = false;  // "tol": "auto" in this run
+};
+
+// Runs at most in one comparison scene: each has its own colour and legend row.
+inline constexpr int max_runs = 6;
+
 struct JobDocument {
   SimulationFields simulation;
-  scene::SceneSettings scene;  // auto_tolerance: "tol" is "auto" or absent
+  std::vector<RunFields> runs;  // empty: the one run of "simulation"
+  scene::SceneSettings scene;   // auto_tolerance: "tol" is "auto" or absent
   OutputSettings output;
 };
 

@@ -247,6 +247,48 @@ std::string joined(const std::vector<std::string>& v) {
   return s;
 }
 
+// "runs": [{"label": ..., <simulation keys>}, ...]. Every run shares the
+// job's frame times, so t_end and samples stay the job's.
+void read_runs(io::ObjectReader& r, JobDocument& d) {
+  const auto* list = r.raw("runs");
+  if (!list) return;
+  const std::string allowed =
+      "an array of 1 to " + std::to_string(max_runs) + " objects (\"label\" and simulation keys)";
+  if (!list->is_array() || list->empty() || list->size() > std::size_t(max_runs))
+    r.fail("runs", "expected " + allowed + ", got " + io::describe(*list));
+  // The reader names its file only in messages: take it from one.
+  const std::string here = r.where("runs");
+  const std::string file = here.substr(0, here.rfind(": key '"));
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const auto& item = (*list)[i];
+    const std::string key = "runs[" + std::to_string(i) + "]";
+    if (!item.is_object()) r.fail("runs", "item " + std::to_string(i) + ": expected an object");
+    io::ObjectReader o(item, file, key);
+    RunFields run;
+    if (auto v = o.string("label")) run.label = *v;
+    for (const char* shared : {"t_end", "samples"})
+      if (o.has(shared))
+        o.fail(shared, "every run of a job shares its frame times: give " + std::string(shared) +
+                           " in \"simulation\" only");
+    run.simulation = read_simulation_fields(o, &run.auto_tolerance);
+    o.finish();
+    d.runs.push_back(std::move(run));
+  }
+}
+
+void write_runs(const JobDocument& d, Json& j) {
+  if (d.runs.empty()) return;
+  Json list = Json::array();
+  for (const auto& run : d.runs) {
+    Json o = Json::object();
+    if (!run.label.empty()) o["label"] = run.label;
+    write_entries(simulation_entries(), run.simulation, o);
+    if (run.auto_tolerance && !run.simulation.tol) o["tol"] = "auto";
+    list.push_back(std::move(o));
+  }
+  j["runs"] = std::move(list);
+}
+
 const std::vector<Job>& job_entries() {
   static const scene::SceneSettings defaults;
   static const std::vector<Job> entries{
@@ -277,6 +319,13 @@ const std::vector<Job>& job_entries() {
          if (d.scene.auto_tolerance && !d.simulation.tol && !d.simulation.step) sim["tol"] = "auto";
          j["simulation"] = std::move(sim);
        }},
+      {{"runs", ValueType::object, "",
+        "an array of 1 to " + std::to_string(max_runs) +
+            " objects: \"label\" and any simulation key but t_end and samples",
+        "a comparison scene: each run overrides the job's simulation (method, step, tol, "
+        "formulation, initial state, body) and all are drawn together, the first solid"},
+       read_runs,
+       write_runs},
       {{"view", ValueType::choice, "body", "body, space",
         "body: the body fixed, gamma moves; space: the vertical fixed, the body turns"},
        [](io::ObjectReader& r, JobDocument& d) {

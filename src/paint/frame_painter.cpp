@@ -10,8 +10,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "paint/comparison_painter.hpp"
 #include "paint/painter_common.hpp"
 #include "paint/trail_colours.hpp"
+#include "render/colour_map.hpp"
 #include "render/imgui_context_scope.hpp"
 #include "render/mesh_data.hpp"
 #include "scene/layout.hpp"
@@ -152,8 +154,10 @@ void FramePainter::draw_sphere(DrawList& list, const scene::Frame& f, float px) 
   std::vector<render::LineVertex> trail;
   trail.reserve(f.trail.size());
   for (const auto& p : f.trail)
-    trail.push_back({to_glm(p.p), age_colour(p.age, ink.trail_map_top)});
+    trail.push_back(
+        {to_glm(p.p), first_run_colour(f, p.age, age_colour(p.age, ink.trail_map_top))});
   if (trail.size() >= 2) list.add_polyline(trail, 2.2f * px);
+  draw_other_runs_3d(list, f, px);
   list.add_marker(
       {to_glm(f.current), to_glm(f.colours.marker), to_glm(ink.marker_edge), 5.0f * px, 1.3f * px});
   // The pole labels N and S are placed over the view (draw_view_annotations).
@@ -189,9 +193,10 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
   for (const auto& p : f.plane_path) {
     if (p.break_before) flush();
     run.emplace_back(p.ab.x(), p.ab.y());
-    colours.push_back(age_colour(p.age, ink.trail_map_top));
+    colours.push_back(first_run_colour(f, p.age, age_colour(p.age, ink.trail_map_top)));
   }
   flush();
+  draw_other_runs_plane(flat, plot, f, px);
 
   bool any_infinity = false, any_exit = false;
   for (const auto& m : f.plane_marks) {
@@ -417,6 +422,10 @@ const render::RgbaImage& FramePainter::paint(const scene::Frame& f,
   }
   if (layout.panel_column && f.layers.riccati)
     draw_plane(f, *layout.panel_column, *layout.plot_area, px);
+  if (DrawList notes; draw_run_annotations(
+          notes, f, scene::frame_layout(scene::layout_request(f, w, h, reserved_left_)), ink_for(f),
+          px))
+    renderer_->draw_2d(notes);
   if (f.layers.overlay || extra_ui)
     renderer_->draw_overlay([&] {
       if (f.layers.overlay) draw_info_window(f, layout, px);

@@ -79,6 +79,30 @@ struct OverlayText {
   std::vector<std::pair<std::string, double>> drifts;
 };
 
+// One run of a comparison scene beyond the first (the first run's trail,
+// current point and path are the single-run fields of Frame): drawn in its
+// own colour, its body as a ghost marker.
+struct RunTrace {
+  std::vector<TrailPoint> trail;
+  Eigen::Vector3f current = Eigen::Vector3f::UnitZ();
+  std::vector<PlanePoint> plane_path;
+  std::optional<Eigen::Vector2f> plane_current;
+  // Separation of this run's gamma from the first run's, |delta gamma|, at the
+  // samples so far: (t, separation).
+  std::vector<Eigen::Vector2f> separation;
+  std::optional<double> pixel_true_until;  // as Frame::pixel_true_until, for this run
+  std::optional<float> untrue_age;
+};
+
+// What a comparison scene (a job's "runs") adds to a frame.
+struct Comparison {
+  // Legend rows, one per run, the first run first: "rk4, step 0.2".
+  std::vector<std::string> labels;
+  std::vector<Rgba> colours;     // one per run: a qualitative palette (scene/run_palette.hpp)
+  std::vector<RunTrace> others;  // runs 2, 3, ...
+  double t_end = 0.0;            // the separation chart's time axis
+};
+
 struct Frame {
   int index = 0;
   double t = 0.0;
@@ -109,6 +133,20 @@ struct Frame {
       plane_current;  // empty when gamma is at the south pole or off the panel
 
   OverlayText overlay;
+
+  // The time after which the (first) run's drawn trajectory may differ from
+  // the true one by more than half a pixel (sim error estimated against a
+  // shadow run): empty while it is pixel-true. The painter fades the trail
+  // after it and says so.
+  std::optional<double> pixel_true_until;
+  std::optional<float> untrue_age;  // trail points newer than this age lie after it
+  // What the overlay says of it: "beyond t = 41.7: not pixel-accurate (chaos)".
+  std::string pixel_true_note;
+
+  std::optional<Comparison> comparison;  // comparison scenes only
+
+  // A line under the picture naming what it shows (gallery tiles); empty: none.
+  std::string caption;
 };
 
 }  // namespace epviz::scene

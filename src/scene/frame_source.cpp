@@ -4,11 +4,14 @@
 #include <cassert>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "physics/format.hpp"
 #include "physics/stereographic.hpp"
 #include "scene/body_shape.hpp"
 #include "scene/plane_path.hpp"
+#include "scene/run_palette.hpp"
+#include "scene/theme.hpp"
 
 namespace epviz::scene {
 namespace {
@@ -29,44 +32,60 @@ int overlay_drift_rows(const sim::RunSpec& run) {
   return 3 + (sim::InvariantMonitor(run.body, run.case_id, run.initial).no_drift().extra ? 1 : 0);
 }
 
-FrameSource::FrameSource(const ScenePlan& plan, const SceneSettings& settings)
-    : plan_(plan),
-      settings_(settings),
-      trajectory_(sim::Trajectory::start(plan.run)),
-      monitor_(plan.run.body, plan.run.case_id, plan.run.initial),
-      history_(plan.trail_sphere_px, plan.trail_plane_px),
-      shape_(body_shape(plan.run.body)) {
-  max_drift_ = monitor_.no_drift();
-  take(trajectory_->initial());
+int overlay_drift_rows(const std::vector<sim::RunSpec>& runs) {
+  if (runs.size() == 1) return overlay_drift_rows(runs.front());
+  int rows = 0;
+  for (const auto& r : runs) rows += overlay_drift_rows(r) - 2;  // C1 and the fourth integral
+  return rows;
 }
 
-void FrameSource::take(const sim::Sample& s) {
-  latest_ = s;
-  monitor_.worsen(max_drift_, s);
+std::string run_legend(const std::string& label, const sim::RunSpec& run,
+                       const std::string& accuracy_note, bool with_formulation) {
+  std::string s = label.empty() ? "" : label + ": ";
+  s += std::string(sim::name(run.method)) + ", " + accuracy_note;
+  if (with_formulation) s += ", " + std::string(sim::name(run.formulation));
+  return s;
+}
 
-  HistoryPoint p;
-  p.t = s.t;
-  const Eigen::Vector3d on_sphere = settings_.view == View::space && s.attitude
-                                        ? Eigen::Vector3d(*s.attitude * traced_axis())
-                                        : s.gamma;
-  p.sphere = on_sphere.cast<float>();
-  if (auto ab = physics::stereographic(s.gamma)) p.plane = ab->cast<float>();
-  p.gamma3 = float(s.gamma.z());
-  history_.offer(p);
+std::string pixel_true_note(double until, const sim::RunSpec& run) {
+  // An error-controlled run that still parts from its shadow does so because
+  // the motion amplifies every small error; a fixed step's error is its own.
+  char line[120];
+  std::snprintf(line, sizeof line, "beyond t = %.3g: not pixel-accurate (%s)", until,
+                sim::is_adaptive(run.method) ? "chaos" : "step too coarse");
+  return line;
+}
+
+FrameSource::FrameSource(const ScenePlan& plan, const SceneSettings& settings)
+    : plan_(plan), settings_(settings), shape_(body_shape(plan.run.body)) {
+  // The shadow runs estimate the drawn error for the report and the overlay;
+  // an open-ended (interactive) scene has no run to report on.
+  const bool shadowed = plan.shadow && !plan.open_ended;
+  const double ppg = pixels_per_gamma(plan.layout, settings.plane_extent);
+  auto add = [&](const sim::RunSpec& spec) {
+    tracks_.push_back(std::make_unique<RunTrack>(spec, settings.view, settings.trace_axis, plan.trail_sphere_px,
+                                                 plan.trail_plane_px, ppg, shadowed));
+  };
+  add(plan.run);
+  for (const auto& other : plan.others) add(other.run);
+  separation_.resize(plan.others.size());
+}
+
+void FrameSource::advance() {
+  for (auto& track : tracks_) track->advance();
+  ++sample_index_;
+  const auto& first = tracks_.front()->latest();
+  for (std::size_t i = 1; i < tracks_.size(); ++i) {
+    const auto& s = tracks_[i]->latest();
+    separation_[i - 1].emplace_back(float(s.t), float((s.gamma - first.gamma).norm()));
+  }
 }
 
 Frame FrameSource::frame(int index) {
   const long target = long(index) * plan_.samples_per_frame;
-  while (sample_index_ < target) {
-    take(trajectory_->next());
-    ++sample_index_;
-  }
-  history_.forget_before(latest_.t - trail_window());
+  while (sample_index_ < target) advance();
+  for (auto& track : tracks_) track->forget_before(time() - trail_window());
   return compose(index);
-}
-
-Eigen::Vector3d FrameSource::traced_axis() const {
-  return Eigen::Vector3d::Unit(std::clamp(settings_.trace_axis, 1, 3) - 1);
 }
 
 double FrameSource::trail_window() const {
@@ -74,20 +93,18 @@ double FrameSource::trail_window() const {
 }
 
 Frame FrameSource::frame_at_time(double t) {
-  const double spacing = trajectory_->spacing();
+  const double spacing = trajectory().spacing();
   // Half a spacing of slack: the sample nearest to t is taken, never one after it.
-  while (latest_.t + 0.5 * spacing <= t) {
-    take(trajectory_->next());
-    ++sample_index_;
-  }
-  history_.forget_before(latest_.t - trail_window());
+  while (time() + 0.5 * spacing <= t) advance();
+  for (auto& track : tracks_) track->forget_before(time() - trail_window());
   return compose(++frames_composed_);
 }
 
 Frame FrameSource::compose(int index) const {
   Frame f;
+  const sim::Sample& last = latest();
   f.index = index;
-  f.t = latest_.t;
+  f.t = last.t;
   f.view = settings_.view;
   f.layers = settings_.layers;
   f.camera = settings_.camera;
@@ -97,18 +114,18 @@ Frame FrameSource::compose(int index) const {
   f.plane_extent = settings_.plane_extent;
 
   const double window = trail_window();
-  auto age = [&](double t) { return float(std::clamp((latest_.t - t) / window, 0.0, 1.0)); };
+  auto age = [&](double t) { return float(std::clamp((last.t - t) / window, 0.0, 1.0)); };
 
-  if (settings_.view == View::space && latest_.attitude) {
-    f.body_rotation = latest_.attitude->cast<float>();
-    f.current = (*latest_.attitude * traced_axis()).cast<float>();
+  if (settings_.view == View::space && last.attitude) {
+    f.body_rotation = last.attitude->cast<float>();
+    f.current = tracks_.front()->on_sphere(last).cast<float>();
     f.trail_label = "body axis " + std::to_string(settings_.trace_axis) + " (space frame)";
   } else {
-    f.current = latest_.gamma.cast<float>();
+    f.current = last.gamma.cast<float>();
     f.trail_label = "gamma (body frame)";
   }
   f.trail_time = window;
-  const auto& pts = history_.points();
+  const auto& pts = tracks_.front()->history().points();
   f.trail.reserve(pts.size() + 1);
   for (const auto& p : pts) f.trail.push_back({p.sphere, age(p.t)});
   f.trail.push_back({f.current, 0.0f});
@@ -116,7 +133,7 @@ Frame FrameSource::compose(int index) const {
   auto path = build_plane_path(pts, f.plane_extent, age);
   f.plane_path = std::move(path.points);
   f.plane_marks = std::move(path.marks);
-  if (auto ab = physics::stereographic(latest_.gamma)) {
+  if (auto ab = physics::stereographic(last.gamma)) {
     const Eigen::Vector2f now = ab->cast<float>();
     f.plane_path.push_back({now, 0.0f, false});
     if (inside_panel(now, f.plane_extent)) f.plane_current = now;
@@ -127,9 +144,9 @@ Frame FrameSource::compose(int index) const {
   // Most important first: a small picture shows only the first lines.
   char line[160];
   if (plan_.open_ended)
-    std::snprintf(line, sizeof line, "t = %.3f", latest_.t);
+    std::snprintf(line, sizeof line, "t = %.3f", last.t);
   else
-    std::snprintf(line, sizeof line, "t = %.3f / %g", latest_.t, run.t_end);
+    std::snprintf(line, sizeof line, "t = %.3f / %g", last.t, run.t_end);
   f.overlay.lines.emplace_back(line);
   f.overlay.lines.push_back(std::string(sim::name(run.method)) + ", " + plan_.accuracy_note);
   f.overlay.lines.push_back(std::string(sim::name(run.formulation)) + " formulation");
@@ -139,12 +156,69 @@ Frame FrameSource::compose(int index) const {
                 run.body.weight);
   f.overlay.lines.emplace_back(line);
   assert(int(f.overlay.lines.size()) == kOverlayLines);
-  f.overlay.drifts = {{"|gamma|^2", max_drift_.gamma_norm2},
-                      {"C0 (area)", max_drift_.area},
-                      {"C1 (energy)", max_drift_.energy}};
-  if (max_drift_.extra)
-    f.overlay.drifts.emplace_back(extra_integral_symbol(run.case_id), *max_drift_.extra);
+  const sim::Drifts& drift = max_drift();
+  if (const auto& until = tracks_.front()->pixel_true_until()) {
+    f.pixel_true_until = *until;
+    f.untrue_age = age(*until);
+    f.pixel_true_note = pixel_true_note(*until, run);
+  }
+  if (plan_.comparison()) {
+    compose_comparison(f);
+    return f;
+  }
+  f.overlay.drifts = {
+      {"|gamma|^2", drift.gamma_norm2}, {"C0 (area)", drift.area}, {"C1 (energy)", drift.energy}};
+  if (drift.extra) f.overlay.drifts.emplace_back(extra_integral_symbol(run.case_id), *drift.extra);
   return f;
+}
+
+void FrameSource::compose_comparison(Frame& f) const {
+  const double window = trail_window();
+  const double now = time();
+  auto age = [&](double t) { return float(std::clamp((now - t) / window, 0.0, 1.0)); };
+  Comparison c;
+  c.t_end = plan_.run.t_end;
+  bool formulations_differ = false;
+  for (const auto& o : plan_.others)
+    formulations_differ |= o.run.formulation != plan_.run.formulation;
+  const bool light = is_light(settings_.colours.background);
+  for (int i = 0; i < run_count(); ++i) {
+    const auto& track = run(i);
+    const std::string& label = i == 0 ? plan_.label : plan_.others[std::size_t(i - 1)].label;
+    const std::string& note =
+        i == 0 ? plan_.accuracy_note : plan_.others[std::size_t(i - 1)].accuracy_note;
+    c.labels.push_back(run_legend(label, track.spec(), note, formulations_differ));
+    c.colours.push_back(run_colour(i, light));
+    // The energy's drift and the fourth integral's, per run.
+    const auto& d = track.max_drift();
+    const std::string n = std::to_string(i + 1) + ": ";
+    f.overlay.drifts.emplace_back(n + "C1", d.energy);
+    if (d.extra)
+      f.overlay.drifts.emplace_back(n + extra_integral_symbol(track.spec().case_id), *d.extra);
+    if (i == 0) continue;
+
+    RunTrace r;
+    const auto& latest = track.latest();
+    r.current = track.on_sphere(latest).cast<float>();
+    const auto& pts = track.history().points();
+    r.trail.reserve(pts.size() + 1);
+    for (const auto& p : pts) r.trail.push_back({p.sphere, age(p.t)});
+    r.trail.push_back({r.current, 0.0f});
+    auto path = build_plane_path(pts, f.plane_extent, age);
+    r.plane_path = std::move(path.points);
+    if (auto ab = physics::stereographic(latest.gamma)) {
+      const Eigen::Vector2f p = ab->cast<float>();
+      r.plane_path.push_back({p, 0.0f, false});
+      if (inside_panel(p, f.plane_extent)) r.plane_current = p;
+    }
+    r.separation = separation_[std::size_t(i - 1)];
+    if (const auto& until = track.pixel_true_until()) {
+      r.pixel_true_until = *until;
+      r.untrue_age = age(*until);
+    }
+    c.others.push_back(std::move(r));
+  }
+  f.comparison = std::move(c);
 }
 
 }  // namespace epviz::scene

@@ -2,10 +2,11 @@
 // Runs the simulation ahead of the renderer and hands out one scene::Frame per
 // frame time, with bounded memory (the trail keeps only what the screen shows).
 #include <memory>
+#include <vector>
 
 #include "scene/frame.hpp"
 #include "scene/plan.hpp"
-#include "scene/trail.hpp"
+#include "scene/run_track.hpp"
 #include "sim/drift.hpp"
 #include "sim/trajectory.hpp"
 
@@ -14,6 +15,7 @@ namespace epviz::scene {
 class FrameSource {
  public:
   FrameSource(const ScenePlan& plan, const SceneSettings& settings);
+  // The trajectory reports its steps to this object: it stays where it was built.
 
   int frame_count() const { return plan_.frames; }
   // Frame `index`; indices must not decrease (skipped frames are still
@@ -25,25 +27,27 @@ class FrameSource {
   // to simulation time `t` (never backwards) and composes the next frame.
   Frame frame_at_time(double t);
 
-  const sim::Trajectory& trajectory() const { return *trajectory_; }
-  const sim::Drifts& max_drift() const { return max_drift_; }
+  // The first run (the only one outside comparison scenes).
+  const sim::Trajectory& trajectory() const { return tracks_.front()->trajectory(); }
+  const sim::Drifts& max_drift() const { return tracks_.front()->max_drift(); }
   const ScenePlan& plan() const { return plan_; }
-  double time() const { return latest_.t; }
-  const sim::Sample& latest() const { return latest_; }
+  double time() const { return latest().t; }
+  const sim::Sample& latest() const { return tracks_.front()->latest(); }
+  // Every run: the first, then plan().others in order.
+  int run_count() const { return int(tracks_.size()); }
+  const RunTrack& run(int i) const { return *tracks_[std::size_t(i)]; }
 
  private:
-  void take(const sim::Sample& s);
+  void advance();
   Frame compose(int index) const;
-  double trail_window() const;          // simulation time the trail covers
-  Eigen::Vector3d traced_axis() const;  // space view: the body axis the trail follows
+  void compose_comparison(Frame& f) const;
+  double trail_window() const;  // simulation time the trail covers
 
   ScenePlan plan_;
   SceneSettings settings_;
-  std::unique_ptr<sim::Trajectory> trajectory_;
-  sim::InvariantMonitor monitor_;
-  sim::Drifts max_drift_;
-  TrailHistory history_;
-  sim::Sample latest_;
+  std::vector<std::unique_ptr<RunTrack>> tracks_;
+  // Comparison scenes: |delta gamma| of each further run from the first, per sample.
+  std::vector<std::vector<Eigen::Vector2f>> separation_;
   long sample_index_ = 0;
   int frames_composed_ = 0;
   BodyShape shape_;
@@ -51,8 +55,18 @@ class FrameSource {
 
 // The overlay a FrameSource composes has this many text lines, and a drift row
 // per invariant it monitors for the run (the plan lays the picture out for it).
+// A comparison scene has the energy's row and the fourth integral's (if any)
+// for each run.
 constexpr int kOverlayLines = 5;
 int overlay_drift_rows(const sim::RunSpec& run);
+int overlay_drift_rows(const std::vector<sim::RunSpec>& runs);
+// The legend's name of a comparison run: "label: method, accuracy" (the
+// formulation added where the runs differ in it).
+std::string run_legend(const std::string& label, const sim::RunSpec& run,
+                       const std::string& accuracy_note, bool with_formulation);
+
+// The overlay's note on a run's pixel-true horizon `until`.
+std::string pixel_true_note(double until, const sim::RunSpec& run);
 
 // "Kovalevskaya top", "Heavy top" for a custom body, ...
 std::string case_title(physics::Case c);

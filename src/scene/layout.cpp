@@ -33,8 +33,10 @@ FrameLayout layout_in_width(const LayoutRequest& q, int width) {
   if (l.panel_column) {
     const auto& c = *l.panel_column;
     // Room for the title above and the tick labels and legend below.
-    // Below the plot: the tick labels and the projection's caption, two lines at least.
-    const int margin_bottom = std::max(int(std::ceil(overlay_font_px(height) * 2.9f)), height / 9);
+    // Below the plot: the tick labels and the projection's caption, two lines
+    // at least, and the separation chart of a comparison scene.
+    const int margin_bottom =
+        std::max(int(std::ceil(overlay_font_px(height) * 2.9f)), height / 9) + q.chart_height;
     const int margin_top_base = std::max(22, height / 14);
     const int margin_left = std::max(30, c.width / 8), margin_right = std::max(10, c.width / 20);
     auto side_for = [&](int margin_top) {
@@ -51,6 +53,9 @@ FrameLayout layout_in_width(const LayoutRequest& q, int width) {
     const int x = c.x + margin_left + (c.width - margin_left - margin_right - side) / 2;
     const int y = c.y + margin_top + (c.height - margin_top - margin_bottom - side) / 2;
     l.plot_area = Rect{x, y, side, side};
+    if (q.chart_height > 0)  // below the plot's tick labels
+      l.chart_area =
+          Rect{x, y + side + margin_bottom - q.chart_height, side, q.chart_height * 4 / 5};
     l.plane_px_per_unit = double(side) / (2.0 * double(q.plane_extent));
   }
   if (l.view_3d) {
@@ -86,16 +91,24 @@ float camera_distance_for(double distance_setting, float aspect) {
   return float(distance_setting) * (1.22f / half) / 3.4f;
 }
 
+int comparison_chart_height(int height) { return std::max(60, height / 5); }
+
 LayoutRequest layout_request(const Frame& f, int width, int height, int reserved_left) {
-  return {width,          height,       f.layers, overlay_shape(f.overlay), f.camera.distance,
-          f.plane_extent, reserved_left};
+  return {width,
+          height,
+          f.layers,
+          overlay_shape(f.overlay),
+          f.camera.distance,
+          f.plane_extent,
+          reserved_left,
+          f.comparison ? comparison_chart_height(height) : 0};
 }
 
 FrameLayout frame_layout(const LayoutRequest& q) {
   const int reserved_left = std::clamp(q.reserved_left, 0, q.width - 16);
   FrameLayout l = layout_in_width(q, q.width - reserved_left);
   if (reserved_left == 0) return l;
-  for (auto* r : {&l.view_3d, &l.panel_column, &l.plot_area})
+  for (auto* r : {&l.view_3d, &l.panel_column, &l.plot_area, &l.chart_area})
     if (*r) (*r)->x += reserved_left;
   return l;
 }

@@ -35,12 +35,14 @@ struct LayoutRequest {
   double camera_distance = 3.4;  // sphere radii (CameraSettings::distance)
   float plane_extent = 2.5f;     // the panel shows [-extent, extent]^2
   int reserved_left = 0;         // kept free at the left edge (interactive panels)
+  int chart_height = 0;          // comparison scenes: the separation chart under the plot
 };
 
 struct FrameLayout {
   std::optional<Rect> view_3d;       // body and sphere
   std::optional<Rect> panel_column;  // the Riccati panel's column
   std::optional<Rect> plot_area;     // the panel's square plot inside its column
+  std::optional<Rect> chart_area;    // comparison scenes: under the plot (paint/separation_chart)
   bool overlay_in_column = false;    // the overlay sits above the plot (else over the 3D view)
   // Pixels per unit of gamma at the sphere's centre, and per unit of a or b in
   // the plot; 0 where the picture has no such part.
@@ -49,6 +51,8 @@ struct FrameLayout {
 };
 
 FrameLayout frame_layout(const LayoutRequest& request);
+// The separation chart's height in a comparison scene of this picture height.
+int comparison_chart_height(int height);
 // What a frame asks of a picture of this size.
 LayoutRequest layout_request(const Frame& frame, int width, int height, int reserved_left = 0);
 

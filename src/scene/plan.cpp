@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "scene/frame_source.hpp"
 
@@ -15,13 +16,18 @@ double ScenePlan::frame_time(int frame) const {
 }
 
 FrameLayout planned_layout(const SceneSettings& s, const sim::RunSpec& run) {
+  return planned_layout(s, std::vector<sim::RunSpec>{run});
+}
+
+FrameLayout planned_layout(const SceneSettings& s, const std::vector<sim::RunSpec>& runs) {
   LayoutRequest q;
   q.width = s.width;
   q.height = s.height;
   q.layers = s.layers;
-  q.overlay = {kOverlayLines, overlay_drift_rows(run)};
+  q.overlay = {kOverlayLines, overlay_drift_rows(runs)};
   q.camera_distance = s.camera.distance;
   q.plane_extent = s.plane_extent;
+  q.chart_height = runs.size() > 1 ? comparison_chart_height(s.height) : 0;
   return frame_layout(q);
 }
 
@@ -48,41 +54,92 @@ double tolerance_for_layout(const FrameLayout& l, float plane_extent, double t_e
   return std::clamp(tol, 1e-13, 1e-4);
 }
 
-ScenePlan plan_scene(sim::RunSpec run, const SceneSettings& s) {
-  ScenePlan plan;
+sim::RunSpec shadow_run(const sim::RunSpec& run) {
+  sim::RunSpec shadow = run;
+  if (sim::is_adaptive(run.method))
+    shadow.tol = std::max(run.tol * 1e-2, 1e-15);
+  else
+    shadow.step = run.step * 0.5;
+  // The shadow only measures: it must not end the scene where the run itself goes on.
+  shadow.max_drift = std::numeric_limits<double>::infinity();
+  return shadow;
+}
+
+double shadow_error_factor(const sim::RunSpec& run) {
+  if (sim::is_adaptive(run.method)) return 1.0;
+  const double gain = std::pow(2.0, sim::order(run.method));
+  return gain / (gain - 1.0);
+}
+
+namespace {
+
+// The formulation the view needs and the accuracy the layout needs, for one
+// run; `note` says which accuracy was chosen and how.
+sim::RunSpec resolve_run(sim::RunSpec run, bool formulation_given, bool auto_tolerance,
+                         const SceneSettings& s, const FrameLayout& layout, std::string& note) {
   const bool needs_attitude = s.view == View::space;
   if (needs_attitude) {
-    if (s.formulation_given && run.formulation != sim::Formulation::spinor)
+    if (formulation_given && run.formulation != sim::Formulation::spinor)
       throw PlanError(
           "view 'space' draws the body turning in space and needs its attitude, which only "
           "formulation spinor integrates; got formulation " +
           std::string(sim::name(run.formulation)));
     run.formulation = sim::Formulation::spinor;
-  } else if (!s.formulation_given) {
+  } else if (!formulation_given) {
     // gamma alone: the 6-dimensional direct state is the least the scene needs
     // that every method accepts.
     run.formulation = sim::Formulation::direct;
   }
   if (auto why = sim::incompatibility(run.method, run.formulation)) throw PlanError(*why);
-  plan.layout = planned_layout(s, run);
-  trail_pixel_scales(s, plan.trail_sphere_px, plan.trail_plane_px);
 
-  char note[160];
+  char text[160];
   if (sim::is_adaptive(run.method)) {
-    if (s.auto_tolerance) {
-      run.tol = tolerance_for_layout(plan.layout, s.plane_extent, run.t_end);
-      std::snprintf(note, sizeof note, "tol %.2g (auto)", run.tol);
+    if (auto_tolerance) {
+      run.tol = tolerance_for_layout(layout, s.plane_extent, run.t_end);
+      std::snprintf(text, sizeof text, "tol %.2g (auto)", run.tol);
     } else {
-      std::snprintf(note, sizeof note, "tol %.2g", run.tol);
+      std::snprintf(text, sizeof text, "tol %.2g", run.tol);
     }
   } else {
-    std::snprintf(note, sizeof note, "step %.3g", run.step);
+    // The step is taken as given (sim::Trajectory): the note is the step used.
+    std::snprintf(text, sizeof text, "step %.3g", run.step);
   }
-  plan.accuracy_note = note;
+  note = text;
+  return run;
+}
 
+}  // namespace
+
+ScenePlan plan_scene(sim::RunSpec run, const SceneSettings& s) {
+  return plan_scene(std::vector<RunRequest>{{run, "", s.formulation_given, s.auto_tolerance}}, s);
+}
+
+ScenePlan plan_scene(std::vector<RunRequest> runs, const SceneSettings& s) {
+  if (runs.empty()) throw PlanError("a scene needs at least one run");
+  ScenePlan plan;
   plan.frames = s.frame_count();
-  plan.run = run;
-  plan.run.samples = std::max(1, plan.frames - 1) * plan.samples_per_frame;
+  const int samples = std::max(1, plan.frames - 1) * plan.samples_per_frame;
+  std::vector<sim::RunSpec> specs;
+  for (auto& r : runs) {
+    // Every run shares the first's frame times.
+    r.run.t_end = runs.front().run.t_end;
+    r.run.samples = samples;
+    specs.push_back(r.run);
+  }
+  plan.layout = planned_layout(s, specs);
+  trail_pixel_scales(s, plan.trail_sphere_px, plan.trail_plane_px);
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    std::string note;
+    const auto& r = runs[i];
+    auto resolved = resolve_run(r.run, r.formulation_given, r.auto_tolerance, s, plan.layout, note);
+    if (i == 0) {
+      plan.run = resolved;
+      plan.accuracy_note = note;
+      plan.label = runs.size() > 1 ? r.label : std::string();
+    } else {
+      plan.others.push_back({resolved, r.label, note});
+    }
+  }
   return plan;
 }
 

@@ -3,6 +3,7 @@
 // tolerance the resolution needs, and the output times of frames and trails.
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "scene/layout.hpp"
 #include "scene/settings.hpp"
@@ -13,6 +14,22 @@ namespace epviz::scene {
 class PlanError : public std::invalid_argument {
  public:
   using std::invalid_argument::invalid_argument;
+};
+
+// A run of a comparison scene beyond the first: same frame times, its own
+// method, accuracy, formulation, body or initial state.
+struct PlannedRun {
+  sim::RunSpec run;
+  std::string label;          // the legend's name ("" when the job gave none)
+  std::string accuracy_note;  // as ScenePlan::accuracy_note
+};
+
+// What a job asks of one run before the plan resolves it.
+struct RunRequest {
+  sim::RunSpec run;
+  std::string label;
+  bool formulation_given = false;  // else the view picks it
+  bool auto_tolerance = true;      // adaptive methods: tolerance from the resolution
 };
 
 struct ScenePlan {
@@ -27,11 +44,30 @@ struct ScenePlan {
   // trails are decimated for (see trail_pixel_scales).
   double trail_sphere_px = 0.0, trail_plane_px = 0.0;
   double frame_time(int frame) const;  // simulation time shown by a frame
+
+  // Comparison scenes (a job's "runs"): the first run is `run`, named `label`;
+  // the others follow, integrated to the same sample times.
+  std::string label;
+  std::vector<PlannedRun> others;
+  bool comparison() const { return !others.empty(); }
+  // Each run is shadowed by a more accurate one (tolerance / 100, or half the
+  // step) to find where its picture stops being true to half a pixel.
+  bool shadow = true;
 };
+
+// The relative error of a shadow run, against that of the run it shadows
+// (fixed step: half the step; adaptive: a hundredth of the tolerance).
+sim::RunSpec shadow_run(const sim::RunSpec& run);
+// How much larger the run's own error is than its distance from the shadow
+// (Richardson: 2^p / (2^p - 1) for a fixed step of order p).
+double shadow_error_factor(const sim::RunSpec& run);
 
 // The layout of the frames of this job: the painter's own (scene::frame_layout),
 // with the overlay FrameSource composes for this run.
 FrameLayout planned_layout(const SceneSettings& s, const sim::RunSpec& run);
+// The same for a comparison scene of these runs (the overlay's drift rows per
+// run, the separation chart under the plane).
+FrameLayout planned_layout(const SceneSettings& s, const std::vector<sim::RunSpec>& runs);
 
 // The largest scale the sphere and the plane take in a picture of this size:
 // each alone in it. Trails are decimated for these, so that a layer switched
@@ -51,5 +87,8 @@ double pixels_per_gamma(const FrameLayout& layout, float plane_extent);
 // Throws PlanError when the job asks for something the view cannot show (the
 // space view needs the attitude, i.e. the spinor formulation).
 ScenePlan plan_scene(sim::RunSpec run, const SceneSettings& s);
+// A comparison scene: every run resolved as above (the first decides the
+// layout together with the others' count), all to the same frame times.
+ScenePlan plan_scene(std::vector<RunRequest> runs, const SceneSettings& s);
 
 }  // namespace epviz::scene

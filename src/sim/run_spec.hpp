@@ -42,7 +42,7 @@ struct RunSpec {
   Method method = Method::dop853;
   double tol = 1e-10;  // adaptive methods: relative and absolute tolerance
   double step =
-      1e-2;  // fixed-step methods: largest step; shortened so that it divides the sample spacing
+      1e-2;  // fixed-step methods: the step, taken exactly (outputs between steps interpolate)
   double t_end = 20.0;
   int samples = 200;             // samples + 1 equally spaced output times from 0 to t_end
   bool chart_switch = true;      // Riccati only: Moebius chart switch near the south pole

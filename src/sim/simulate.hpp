@@ -32,7 +32,8 @@ struct RunResult {
 // Integrates spec and samples the state at spec.samples + 1 equally spaced
 // instants from 0 to spec.t_end (a loop over sim::Trajectory).
 // Adaptive methods sample by dense output, so output times never force steps;
-// fixed-step methods shorten spec.step so that it divides the sample spacing.
+// fixed-step methods take steps of exactly spec.step and interpolate the
+// output times between steps (cubic Hermite, sim/trajectory_steppers.hpp).
 // Numerical failure is not thrown: it ends the run and is returned in `failure`
 // (a sample that lost the motion, sim/drift.hpp, is one; samples hold only
 // those before it).

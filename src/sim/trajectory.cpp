@@ -1,5 +1,6 @@
 #include "sim/trajectory.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -31,6 +32,8 @@ class CheckedTrajectory final : public Trajectory {
   numerics::Stats stats() const override { return inner_->stats(); }
   long chart_switches() const override { return inner_->chart_switches(); }
   double effective_step() const override { return inner_->effective_step(); }
+  long interpolation_evals() const override { return inner_->interpolation_evals(); }
+  void observe_steps(StepObserver observer) override { inner_->observe_steps(std::move(observer)); }
 
  private:
   std::unique_ptr<Trajectory> inner_;
@@ -54,6 +57,8 @@ std::unique_ptr<Trajectory> Trajectory::start(const RunSpec& spec) {
   if (!(spec.t_end > 0.0) || spec.samples < 1)
     throw std::invalid_argument("t_end must be positive and samples at least 1");
   if (!(spec.max_drift > 0.0)) throw std::invalid_argument("max_drift must be positive");
+  if (!is_adaptive(spec.method) && !(spec.step > 0.0 && std::isfinite(spec.step)))
+    throw std::invalid_argument("step must be positive and finite");
   return std::make_unique<CheckedTrajectory>(start_unchecked(spec), spec);
 }
 

@@ -2,6 +2,7 @@
 // A simulation that runs ahead one output time at a time, so that a renderer
 // can consume it frame by frame with flat memory, and a batch run is just a
 // loop over it.
+#include <functional>
 #include <memory>
 
 #include "numerics/system.hpp"
@@ -18,7 +19,8 @@ class Trajectory {
   virtual Sample initial() const = 0;
   // Advances to the next output time t_k = k * spacing (k = 1, 2, ...) and
   // returns its sample. Adaptive methods sample by dense output; fixed-step
-  // methods take steps that divide the spacing. Throws numerics::IntegrationError,
+  // methods take steps of exactly spec.step and interpolate between them
+  // (cubic Hermite), so that the output spacing never changes the integration. Throws numerics::IntegrationError,
   // also for a sample that is not finite or lost the motion (sim::MotionCheck
   // with spec.max_drift): a trajectory hands out only samples that keep it.
   virtual Sample next() = 0;
@@ -26,6 +28,16 @@ class Trajectory {
   virtual numerics::Stats stats() const = 0;
   virtual long chart_switches() const = 0;
   virtual double effective_step() const = 0;  // 0 for adaptive methods
+  // Right-hand side evaluations spent on interpolating between fixed steps
+  // (not in stats(): they are no part of the method).
+  virtual long interpolation_evals() const { return 0; }
+
+  // Called with the state at the end of every accepted step, before the
+  // output time that needed it is handed out: the invariants' drift of a run
+  // is that of its steps, whatever the output spacing (render and simulate
+  // then agree).
+  using StepObserver = std::function<void(const Sample&)>;
+  virtual void observe_steps(StepObserver observer) { step_observer_ = std::move(observer); }
   double spacing() const { return spacing_; }
 
   // Output spacing spec.t_end / spec.samples. Throws std::invalid_argument for
@@ -34,7 +46,11 @@ class Trajectory {
 
  protected:
   explicit Trajectory(double spacing) : spacing_(spacing) {}
+  void notify_step(const Sample& s) const {
+    if (step_observer_) step_observer_(s);
+  }
   double spacing_;
+  StepObserver step_observer_;
 };
 
 }  // namespace epviz::sim

@@ -37,34 +37,91 @@ long chart_switches_of(const Sys& sys) {
     return 0;
 }
 
-// Fixed-step methods: `substeps` equal steps per output interval, so that the
-// steps land on the output times.
+// Fixed-step methods: steps of exactly spec.step from t = 0, whatever the
+// output spacing. An output time on a step (within rounding) gets that step's
+// state; one between two steps gets the cubic Hermite interpolant of the
+// states and derivatives at both ends (error O(h^4) per step, the order of
+// rk4 and gauss4: the drawn curve is as good as the steps, never better).
 template <class Stepper>
 class FixedStepTrajectory final : public Trajectory {
+  using Sys = std::decay_t<decltype(std::declval<Stepper&>().system())>;
+  using State = typename Sys::State;
+  static constexpr bool kHasCharts = requires(const Sys& s) { s.chart_switches(); };
+  // An output time this close to a step, in units of the step, is on it.
+  static constexpr double kOnStep = 1e-9;
+
  public:
   FixedStepTrajectory(Stepper stepper, const RunSpec& spec)
-      : Trajectory(spec.t_end / spec.samples), stepper_(std::move(stepper)) {
-    substeps_ = std::max(1L, long(std::ceil(spacing_ / spec.step * (1.0 - 1e-12))));
-    h_ = spacing_ / double(substeps_);
-    x_ = stepper_.system().pack(spec.initial);
+      : Trajectory(spec.t_end / spec.samples), stepper_(std::move(stepper)), h_(spec.step) {
+    x1_ = stepper_.system().pack(spec.initial);
   }
-  Sample initial() const override { return make_sample(stepper_.system(), 0.0, x_); }
+  Sample initial() const override { return make_sample(stepper_.system(), 0.0, x1_); }
   Sample next() override {
-    const double t0 = double(k_) * spacing_;
-    for (long j = 0; j < substeps_; ++j) stepper_.step(x_, t0 + double(j) * h_, h_);
-    ++k_;
-    return make_sample(stepper_.system(), double(k_) * spacing_, x_);
+    const double t = double(++k_) * spacing_;
+    while (t1() < t - kOnStep * h_) advance();
+    const auto& sys = stepper_.system();
+    if (t >= t1() - kOnStep * h_) return make_sample(sys, t, x1_);
+    return make_sample(sys, t, hermite(t));
   }
   numerics::Stats stats() const override { return stepper_.stats(); }
   long chart_switches() const override { return chart_switches_of(stepper_.system()); }
   double effective_step() const override { return h_; }
+  long interpolation_evals() const override { return interpolation_evals_; }
 
  private:
+  double t1() const { return double(n_) * h_; }
+
+  void advance() {
+    const double t0 = t1();
+    x0_ = x1_;
+    // The derivative at the old step end serves as the next start's, unless
+    // the step remaps the state (below).
+    d0_ = d1_;
+    have_d0_ = have_d1_;
+    have_d1_ = false;
+    if constexpr (kHasCharts) {
+      // A chart switch at the start of the step remaps the state; the
+      // interpolant needs both ends in the chart the step ran in, so the start
+      // is remapped the same way (by a copy of the system before the step).
+      Sys before = stepper_.system();
+      stepper_.step(x1_, t0, h_);
+      if (stepper_.system().chart_switches() != before.chart_switches()) {
+        numerics::detail::regularize(before, x0_);
+        have_d0_ = false;
+      }
+    } else {
+      stepper_.step(x1_, t0, h_);
+    }
+    ++n_;
+    notify_step(make_sample(stepper_.system(), t1(), x1_));
+  }
+
+  State hermite(double t) {
+    const auto& sys = stepper_.system();
+    const double t0 = t1() - h_;
+    if (!have_d0_) {
+      sys.rhs(t0, x0_, d0_);
+      ++interpolation_evals_;
+      have_d0_ = true;
+    }
+    if (!have_d1_) {
+      sys.rhs(t1(), x1_, d1_);
+      ++interpolation_evals_;
+      have_d1_ = true;
+    }
+    const double s = (t - t0) / h_, r = 1.0 - s;
+    const double h00 = (1.0 + 2.0 * s) * r * r, h10 = s * r * r;
+    const double h01 = s * s * (3.0 - 2.0 * s), h11 = -s * s * r;
+    return State(h00 * x0_ + (h10 * h_) * d0_ + h01 * x1_ + (h11 * h_) * d1_);
+  }
+
   Stepper stepper_;
-  typename std::decay_t<decltype(std::declval<Stepper&>().system())>::State x_;
-  long substeps_ = 1;
-  double h_ = 0.0;
-  long k_ = 0;
+  double h_;
+  State x0_, x1_, d0_, d1_;
+  bool have_d0_ = false, have_d1_ = false;
+  long n_ = 0;  // steps taken: x1_ is the state at n_ * h_
+  long k_ = 0;  // output times handed out
+  long interpolation_evals_ = 0;
 };
 
 // Adaptive methods: steps as the error control wants; output by dense output.
@@ -78,7 +135,10 @@ class AdaptiveTrajectory final : public Trajectory {
   Sample initial() const override { return make_sample(stepper_.system(), 0.0, stepper_.state()); }
   Sample next() override {
     const double t = double(++k_) * spacing_;
-    while (stepper_.t() < t) stepper_.step();
+    while (stepper_.t() < t) {
+      stepper_.step();
+      notify_step(make_sample(stepper_.system(), stepper_.t(), stepper_.state()));
+    }
     // The system's chart is the one the last step ran in, so the dense state
     // and the chart agree.
     return make_sample(stepper_.system(), t, stepper_.dense(t));

@@ -1,0 +1,60 @@
+#include "paint/separation_chart.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "render/panel_2d.hpp"
+
+namespace epviz::paint {
+namespace {
+
+glm::vec4 to_glm(const scene::Rgba& c) { return {c[0], c[1], c[2], c[3]}; }
+
+// Separations below this are shown at it: identical runs (zero) stay on the chart.
+constexpr double kFloor = 1e-16;
+
+}  // namespace
+
+void draw_separation_chart(render::DrawList& flat, const scene::Comparison& c,
+                           const scene::Rect& area, const scene::Theme& ink, float px) {
+  if (area.width < 40 || area.height < 30 || c.others.empty()) return;
+  // Log scale: from the smallest separation drawn (a decade below) to |delta gamma| = 2.
+  double lo = 0.0;
+  for (const auto& run : c.others)
+    for (const auto& p : run.separation)
+      lo = std::min(lo, std::floor(std::log10(std::max(double(p.y()), kFloor))));
+  lo = std::max(std::min(lo, -3.0), std::log10(kFloor));
+  const double hi = std::log10(2.0);
+  // The title above, the time axis's labels below.
+  const int title_px = int(14 * px), ticks_px = int(14 * px);
+  const render::Viewport plot_area{area.x, area.y + title_px, area.width,
+                                   std::max(10, area.height - title_px - ticks_px)};
+  const render::Panel2D plot(plot_area, {0.0, std::max(c.t_end, 1e-9), lo, hi}, false);
+  render::PanelStyle style;
+  style.background = to_glm(ink.panel_background);
+  style.frame = to_glm(ink.panel_frame);
+  style.grid = to_glm(ink.panel_grid);
+  style.axis = {0, 0, 0, 0};
+  style.text = to_glm(ink.panel_text);
+  style.tick_length = 3.0f * px;
+  style.frame_width = 1.0f * px;
+  style.tick_count = 4;
+  style.min_tick_spacing_px = 12.0f * px;
+  plot.draw_axes(flat, style);
+  for (std::size_t i = 0; i < c.others.size(); ++i) {
+    const auto& sep = c.others[i].separation;
+    std::vector<glm::dvec2> points;
+    points.reserve(sep.size());
+    for (const auto& p : sep)
+      points.emplace_back(p.x(), std::log10(std::max(double(p.y()), kFloor)));
+    const glm::vec4 colour = to_glm(c.colours[std::min(i + 1, c.colours.size() - 1)]);
+    if (points.size() >= 2) plot.draw_polyline(flat, points, std::span(&colour, 1), 1.4f * px);
+  }
+  flat.add_text({{float(area.x), float(area.y), 0.0f},
+                 "log10 |gamma - gamma of run 1|  over t",
+                 style.text,
+                 render::TextAnchor::top_left});
+}
+
+}  // namespace epviz::paint

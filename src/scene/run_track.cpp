@@ -1,0 +1,72 @@
+#include "scene/run_track.hpp"
+
+#include <algorithm>
+
+#include "physics/stereographic.hpp"
+#include "scene/plan.hpp"
+
+namespace epviz::scene {
+
+RunTrack::RunTrack(const sim::RunSpec& spec, View view, int trace_axis, double sphere_px,
+                   double plane_px, double px_per_gamma, bool shadowed)
+    : spec_(spec),
+      view_(view),
+      traced_axis_(Eigen::Vector3d::Unit(std::clamp(trace_axis, 1, 3) - 1)),
+      trajectory_(sim::Trajectory::start(spec)),
+      error_scale_px_(px_per_gamma * shadow_error_factor(spec)),
+      monitor_(spec.body, spec.case_id, spec.initial),
+      history_(sphere_px, plane_px) {
+  max_drift_ = monitor_.no_drift();
+  // The drift shown is that of the integrator's steps (sim::Trajectory::observe_steps),
+  // so that it does not depend on how often the frames sample the run.
+  trajectory_->observe_steps([this](const sim::Sample& s) { monitor_.worsen(max_drift_, s); });
+  if (shadowed) shadow_ = sim::Trajectory::start(shadow_run(spec));
+  take(trajectory_->initial());
+}
+
+Eigen::Vector3d RunTrack::on_sphere(const sim::Sample& s) const {
+  return view_ == View::space && s.attitude
+             ? Eigen::Vector3d(*s.attitude * traced_axis_)
+             : s.gamma;
+}
+
+const sim::Sample& RunTrack::advance() {
+  take(trajectory_->next());
+  compare_with_shadow(latest_);
+  return latest_;
+}
+
+void RunTrack::take(const sim::Sample& s) {
+  latest_ = s;
+  HistoryPoint p;
+  p.t = s.t;
+  p.sphere = on_sphere(s).cast<float>();
+  if (auto ab = physics::stereographic(s.gamma)) p.plane = ab->cast<float>();
+  p.gamma3 = float(s.gamma.z());
+  history_.offer(p);
+}
+
+void RunTrack::compare_with_shadow(const sim::Sample& s) {
+  if (!shadow_) return;
+  double d = 0.0;
+  try {
+    const sim::Sample t = shadow_->next();
+    // gamma moves both the sphere's point and the plane's; in the space view
+    // the sphere shows the apex, whose error counts too.
+    d = (s.gamma - t.gamma).norm();
+    if (view_ == View::space) d = std::max(d, (on_sphere(s) - on_sphere(t)).norm());
+  } catch (const numerics::IntegrationError&) {
+    // The estimate ends here; the run itself goes on. From now on nothing is
+    // known, so the picture is not claimed to be true beyond this time.
+    shadow_.reset();
+    shadow_failed_ = true;
+    if (!pixel_true_until_) pixel_true_until_ = s.t;
+    return;
+  }
+  const double px = d * error_scale_px_;
+  max_error_px_ = std::max(max_error_px_, px);
+  if (px > 0.5 && !pixel_true_until_)
+    pixel_true_until_ = std::max(0.0, s.t - trajectory_->spacing());
+}
+
+}  // namespace epviz::scene

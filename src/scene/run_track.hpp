@@ -1,0 +1,70 @@
+#pragma once
+// One run of a scene as the frame source follows it: its trajectory, the
+// drift of its steps, its trail history, and a shadow run that estimates how
+// far its picture is from the true motion.
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "scene/frame.hpp"
+#include "scene/trail.hpp"
+#include "sim/drift.hpp"
+#include "sim/trajectory.hpp"
+
+namespace epviz::scene {
+
+class RunTrack {
+ public:
+  // `trace_axis` (1, 2 or 3): the body axis whose tip the space view traces;
+  // `px_per_gamma`: the largest pixels per unit of gamma in the picture
+  // (scene::pixels_per_gamma); `shadowed`: follow a shadow run (scene::shadow_run).
+  RunTrack(const sim::RunSpec& spec, View view, int trace_axis, double sphere_px, double plane_px,
+           double px_per_gamma, bool shadowed);
+  RunTrack(const RunTrack&) = delete;  // the trajectory reports its steps to this object
+  RunTrack& operator=(const RunTrack&) = delete;
+
+  // Advances to the next sample time. Throws numerics::IntegrationError from
+  // the run (a failing shadow only ends the error estimate).
+  const sim::Sample& advance();
+  void forget_before(double t) { history_.forget_before(t); }
+
+  const sim::RunSpec& spec() const { return spec_; }
+  const sim::Trajectory& trajectory() const { return *trajectory_; }
+  sim::Trajectory& trajectory() { return *trajectory_; }
+  const sim::Drifts& max_drift() const { return max_drift_; }
+  const sim::Sample& latest() const { return latest_; }
+  const TrailHistory& history() const { return history_; }
+  // The point drawn on the sphere for a sample (gamma, or the apex in the space view).
+  Eigen::Vector3d on_sphere(const sim::Sample& s) const;
+
+  // The last sample time up to which the estimated error of the drawn point
+  // stayed within half a pixel, once it has not; empty while it has.
+  const std::optional<double>& pixel_true_until() const { return pixel_true_until_; }
+  // The largest estimated error so far, in pixels (0 without a shadow).
+  double max_error_px() const { return max_error_px_; }
+  bool shadowed() const { return shadow_ != nullptr || shadow_failed_; }
+  bool shadow_failed() const { return shadow_failed_; }
+  const sim::Trajectory* shadow() const { return shadow_.get(); }
+
+ private:
+  void take(const sim::Sample& s);
+  void compare_with_shadow(const sim::Sample& s);
+
+  sim::RunSpec spec_;
+  View view_;
+  Eigen::Vector3d traced_axis_;  // body axes
+  std::unique_ptr<sim::Trajectory> trajectory_;
+  std::unique_ptr<sim::Trajectory> shadow_;
+  bool shadow_failed_ = false;
+  double error_scale_px_;  // estimated error in pixels per unit of |run - shadow|
+  sim::InvariantMonitor monitor_;
+  sim::Drifts max_drift_;
+  TrailHistory history_;
+  sim::Sample latest_;
+  std::optional<double> pixel_true_until_;
+  double max_error_px_ = 0.0;
+};
+
+}  // namespace epviz::scene
