@@ -21,7 +21,7 @@ std::optional<double> live_tolerance(const LiveSetup& setup) {
   if (!sim::is_adaptive(setup.run.method) || !setup.scene.auto_tolerance) return std::nullopt;
   sim::RunSpec run = setup.run;
   run.t_end = std::max(run.t_end, kLiveToleranceHorizon);
-  return scene::plan_scene(run, setup.scene).run.tol;
+  return scene::plan_scene(run, setup.scene, scene::Horizon::none).run.tol;
 }
 
 job::JobDocument job_document(const LiveSetup& setup, const std::string& name,

@@ -28,7 +28,7 @@ std::unique_ptr<scene::FrameSource> LiveScene::make_source(const LiveSetup& setu
   // The panels have no control for the drift limit and a saved job does not
   // carry one: the live run stops where a render of its saved job would.
   run.max_drift = sim::kDefaultMaxDrift;
-  scene::ScenePlan plan = scene::plan_scene(run, setup.scene);
+  scene::ScenePlan plan = scene::plan_scene(run, setup.scene, scene::Horizon::none);
   plan.open_ended = true;
   const double spacing = std::max(setup.speed, 1e-3) / kSamplesPerWallSecond;
   plan.run.samples = kOpenEndedSamples;

@@ -63,8 +63,9 @@ FrameSource::FrameSource(const ScenePlan& plan, const SceneSettings& settings)
   const bool shadowed = plan.shadow && !plan.open_ended;
   const double ppg = pixels_per_gamma(plan.layout, settings.plane_extent);
   auto add = [&](const sim::RunSpec& spec) {
-    tracks_.push_back(std::make_unique<RunTrack>(spec, settings.view, settings.trace_axis, plan.trail_sphere_px,
-                                                 plan.trail_plane_px, ppg, shadowed));
+    tracks_.push_back(std::make_unique<RunTrack>(spec, settings.view, settings.trace_axis,
+                                                 plan.trail_sphere_px, plan.trail_plane_px, ppg,
+                                                 shadowed));
   };
   add(plan.run);
   for (const auto& other : plan.others) add(other.run);

@@ -5,7 +5,9 @@
 #include <cstdio>
 #include <limits>
 
+#include "numerics/failure.hpp"
 #include "scene/frame_source.hpp"
+#include "scene/run_track.hpp"
 
 namespace epviz::scene {
 
@@ -108,13 +110,44 @@ sim::RunSpec resolve_run(sim::RunSpec run, bool formulation_given, bool auto_tol
   return run;
 }
 
-}  // namespace
-
-ScenePlan plan_scene(sim::RunSpec run, const SceneSettings& s) {
-  return plan_scene(std::vector<RunRequest>{{run, "", s.formulation_given, s.auto_tolerance}}, s);
+// The auto tolerance whose picture stays true longest (see plan_scene), for a
+// run already resolved at the resolution's tolerance. The look-ahead is the
+// render's own run and shadow (RunTrack) over the same samples, so the
+// horizon it finds is the one the render reports; it stops at the first
+// sample past half a pixel, and integrating costs little next to drawing.
+double longest_true_tolerance(const sim::RunSpec& run, const SceneSettings& s,
+                              const ScenePlan& plan) {
+  const double ppg = pixels_per_gamma(plan.layout, s.plane_extent);
+  double best_tol = run.tol, best_until = -1.0;
+  for (double tol = run.tol;; tol = std::max(tol * 1e-2, kTightestAutoTolerance)) {
+    sim::RunSpec trial = run;
+    trial.tol = tol;
+    RunTrack track(trial, s.view, s.trace_axis, plan.trail_sphere_px, plan.trail_plane_px, ppg,
+                   true);
+    double until = trial.t_end;
+    try {
+      for (int i = 0; i < trial.samples && !track.pixel_true_until(); ++i) track.advance();
+      if (track.pixel_true_until()) until = *track.pixel_true_until();
+    } catch (const numerics::IntegrationError&) {
+      until = track.latest().t;  // the render stops here too, whatever the tolerance
+    }
+    if (!track.pixel_true_until() && until >= trial.t_end) return tol;
+    if (until > best_until) {
+      best_until = until;
+      best_tol = tol;
+    }
+    if (tol <= kTightestAutoTolerance) return best_tol;
+  }
 }
 
-ScenePlan plan_scene(std::vector<RunRequest> runs, const SceneSettings& s) {
+}  // namespace
+
+ScenePlan plan_scene(sim::RunSpec run, const SceneSettings& s, Horizon h) {
+  return plan_scene(std::vector<RunRequest>{{run, "", s.formulation_given, s.auto_tolerance}}, s,
+                    h);
+}
+
+ScenePlan plan_scene(std::vector<RunRequest> runs, const SceneSettings& s, Horizon h) {
   if (runs.empty()) throw PlanError("a scene needs at least one run");
   ScenePlan plan;
   plan.frames = s.frame_count();
@@ -132,6 +165,15 @@ ScenePlan plan_scene(std::vector<RunRequest> runs, const SceneSettings& s) {
     std::string note;
     const auto& r = runs[i];
     auto resolved = resolve_run(r.run, r.formulation_given, r.auto_tolerance, s, plan.layout, note);
+    if (h == Horizon::search && r.auto_tolerance && sim::is_adaptive(resolved.method)) {
+      const double tol = longest_true_tolerance(resolved, s, plan);
+      if (tol != resolved.tol) {
+        resolved.tol = tol;
+        char text[64];
+        std::snprintf(text, sizeof text, "tol %.2g (auto, tightened for chaos)", tol);
+        note = text;
+      }
+    }
     if (i == 0) {
       plan.run = resolved;
       plan.accuracy_note = note;

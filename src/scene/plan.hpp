@@ -84,11 +84,26 @@ double tolerance_for_layout(const FrameLayout& layout, float plane_extent, doubl
 // The largest pixels per unit of gamma anywhere in the picture (the plane's at its edge).
 double pixels_per_gamma(const FrameLayout& layout, float plane_extent);
 
+// Whether "auto" tolerances look ahead for the picture's horizon: a render
+// does (its runs end), an interactive scene does not (its run has no end).
+enum class Horizon { search, none };
+
+// The tightest tolerance "auto" goes to when chaos shortens the horizon: the
+// shadow, a hundred times tighter, is then still above round-off.
+inline constexpr double kTightestAutoTolerance = 1e-12;
+
 // Throws PlanError when the job asks for something the view cannot show (the
 // space view needs the attitude, i.e. the spinor formulation).
-ScenePlan plan_scene(sim::RunSpec run, const SceneSettings& s);
+// With Horizon::search, an "auto" tolerance is the resolution's
+// (tolerance_for_layout) when its picture stays true to half a pixel to the
+// end (the shadow run says); else, as on chaotic runs, the tolerance a
+// hundredfold tighter at a time down to kTightestAutoTolerance whose picture
+// stays true longest: as long as the numbers allow, and the report and
+// overlay give the honest horizon after that.
+ScenePlan plan_scene(sim::RunSpec run, const SceneSettings& s, Horizon h = Horizon::search);
 // A comparison scene: every run resolved as above (the first decides the
 // layout together with the others' count), all to the same frame times.
-ScenePlan plan_scene(std::vector<RunRequest> runs, const SceneSettings& s);
+ScenePlan plan_scene(std::vector<RunRequest> runs, const SceneSettings& s,
+                     Horizon h = Horizon::search);
 
 }  // namespace epviz::scene

@@ -25,9 +25,7 @@ RunTrack::RunTrack(const sim::RunSpec& spec, View view, int trace_axis, double s
 }
 
 Eigen::Vector3d RunTrack::on_sphere(const sim::Sample& s) const {
-  return view_ == View::space && s.attitude
-             ? Eigen::Vector3d(*s.attitude * traced_axis_)
-             : s.gamma;
+  return view_ == View::space && s.attitude ? Eigen::Vector3d(*s.attitude * traced_axis_) : s.gamma;
 }
 
 const sim::Sample& RunTrack::advance() {
