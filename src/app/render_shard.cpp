@@ -42,7 +42,7 @@ std::optional<RenderShard> plan_render_shard(const std::string& shard_option,
   s.output_name = video ? job.output.name + "." + shard::shard_tag(*spec) : job.output.name;
 
   // The batch is the job as drawn: its canonical keys with the options applied.
-  job::JobDocument doc{job.simulation, job.scene, job.output};
+  job::JobDocument doc{job.simulation, job.runs, job.scene, job.output};
   doc.output.dir = "";
   auto& m = s.manifest;
   m.kind = "render";
