@@ -20,7 +20,7 @@
 #include "sweep/atlas.hpp"
 #include "sweep/sweep_spec.hpp"
 #ifdef EPVIZ_HAVE_RENDER
-#include "paint/heat_map_painter.hpp"
+#include "paint/chart_painter.hpp"
 #include "render/gl_context.hpp"
 #endif
 
@@ -137,7 +137,8 @@ void draw_atlases(const std::vector<Json>& rows, const std::vector<sweep::AtlasR
     paint::ChartOptions options;
     options.width = 1280;
     options.height = 900;
-    const auto image = paint::paint_heat_map(*context, f.heat_map, options);
+    // As a figure: no taller than the grid needs (a few rows leave no blank band).
+    const auto image = paint::paint_figure(*context, {f.file_name, f.heat_map}, options);
     const fs::path path = out_dir / f.file_name;
     io::write_png_rgba(path, image.width, image.height, image.pixels);
     std::printf("  atlas %s\n", path.string().c_str());

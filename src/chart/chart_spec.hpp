@@ -4,6 +4,7 @@
 // what the numbers mean (the bench studies) builds these; the painter
 // (paint/chart_painter.hpp) draws them without knowing what they mean. No GL
 // here, so that modules without a renderer can describe figures too.
+#include <limits>
 #include <string>
 #include <variant>
 #include <vector>
@@ -48,16 +49,29 @@ struct ChartSpec {
 
 // A grid of values, rows by columns, each cell coloured by its value on a
 // sequential colour map with a colour bar to read it (e.g. method x regime,
-// the largest stable step). NaN: no value (drawn hatched, with `missing`).
+// the largest stable step; a sweep's metric over two of its axes). NaN (or a
+// value <= 0 on a log scale): no value, drawn grey with `missing`.
+//
+// Rows are listed top to bottom as drawn, columns left to right. A numeric
+// y axis that should read upwards (small values at the bottom) therefore
+// lists its largest value first. Cells show their value as text where it
+// fits; on large grids (64 x 64) only their colour, and the column and row
+// labels are thinned so that they never overlap.
 struct HeatMapSpec {
   std::string title;
-  std::string value_label;  // what the colour means, under the colour bar's title
+  std::string x_label;      // the columns' axis title, under their labels
+  std::string y_label;      // the rows' axis title, above their labels
+  std::string value_label;  // what the colour means, over the colour bar
   std::vector<std::string> rows, columns;
-  std::vector<std::vector<double>> values;  // [row][column]
+  std::vector<std::vector<double>> values;  // [row][column], row 0 at the top
   bool log_scale = true;                    // colours by log10 of the value (values > 0)
   bool larger_is_better = true;             // the map's bright end at the better values
-  std::string missing = "n/a";
-  std::string note;  // one line under the grid: how the values were measured
+  // The colour bar's range, in values (values beyond take its end colours),
+  // so that several maps compare by colour; NaN: the values' own range.
+  double range_min = std::numeric_limits<double>::quiet_NaN();
+  double range_max = std::numeric_limits<double>::quiet_NaN();
+  std::string missing = "n/a";  // in a cell without a value, or in a key under a text-less grid
+  std::string note;             // one line under the grid: how the values were measured
 };
 
 struct TableSpec {

@@ -70,13 +70,20 @@ std::string decade_label(int exponent);
 
 // Where a heat map's parts go: the cells (rows top to bottom, columns left to
 // right), the vertical colour bar (low values at its bottom) and its range in
-// plotted units (log10 of the values on a log scale, whole decades).
+// plotted units (log10 of the values on a log scale; whole decades unless the
+// spec fixes the range). Labels are thinned to every k-th column or row where
+// they would overlap, and cells carry their value as text only where every
+// value fits its cell.
 struct HeatMapLayout {
   render::Viewport grid;
   std::vector<std::vector<render::Viewport>> cells;  // [row][column]
   render::Viewport colour_bar;
   double lo = 0.0, hi = 1.0;
   bool staggered_columns = false;  // column labels on two lines (they are wider than a cell)
+  std::size_t column_stride = 1;   // every k-th column labelled (labels wider than two cells)
+  std::size_t row_stride = 1;      // every k-th row labelled (rows lower than a line of text)
+  bool value_text = true;          // each cell shows its value (and `missing`) as text
+  bool missing_key = false;        // a key under the grid says what a grey cell means
   int natural_height = 0;          // the picture's height that fits the grid with no spare room
 };
 HeatMapLayout heat_map_layout(const HeatMapSpec& spec, int width, int height, float font_px);

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <set>
 
 namespace epviz::sweep {
 namespace {
@@ -111,14 +112,31 @@ std::vector<AtlasFigure> atlas_figures(const std::vector<Json>& rows, const Atla
   }
   std::map<std::string, std::vector<std::string>> values;  // labels in order
   std::map<std::string, std::map<std::string, std::size_t>> position;
+  std::map<std::string, std::map<std::string, double>> number;  // of numeric axes' labels
+  std::set<std::string> numeric(names.begin(), names.end());
   for (const auto& r : sorted)
     for (const auto& n : names) {
-      const std::string l = label_of(r["axes"][n]);
+      const Json& v = r["axes"][n];
+      const std::string l = label_of(v);
+      if (v.is_number())
+        number[n].emplace(l, v.get<double>());
+      else
+        numeric.erase(n);
       if (!position[n].count(l)) {
         position[n][l] = values[n].size();
         values[n].push_back(l);
       }
     }
+  // Numeric x and y axes ascend (left to right, bottom to top) whatever the
+  // sweep's order (the stability atlas lists its steps from the largest).
+  for (const auto* n : {&q.x, &q.y}) {
+    if (!numeric.count(*n)) continue;
+    auto& v = values[*n];
+    std::stable_sort(v.begin(), v.end(), [&](const std::string& a, const std::string& b) {
+      return number[*n][a] < number[*n][b];
+    });
+    for (std::size_t k = 0; k < v.size(); ++k) position[*n][v[k]] = k;
+  }
   // One figure per combination of the axes that are left over.
   std::map<std::string, std::vector<const Json*>> groups;
   for (const auto& r : sorted) {
@@ -133,7 +151,13 @@ std::vector<AtlasFigure> atlas_figures(const std::vector<Json>& rows, const Atla
     AtlasFigure f;
     auto& h = f.heat_map;
     h.columns = values[q.x];
-    h.rows = values[q.y];
+    // The heat map lists rows top down: a numeric y axis from its largest
+    // value, so that it reads upwards; names (methods) in the sweep's order.
+    const bool upwards = numeric.count(q.y) > 0;
+    if (upwards)
+      h.rows.assign(values[q.y].rbegin(), values[q.y].rend());
+    else
+      h.rows = values[q.y];
     h.x_label = q.x;
     h.y_label = q.y;
     h.value_label = reduced.empty() ? q.metric : "largest stable " + reduced;
@@ -146,14 +170,13 @@ std::vector<AtlasFigure> atlas_figures(const std::vector<Json>& rows, const Atla
         fixed += ", " + n + "=" + values[n][0];
     if (!key.empty() || !fixed.empty())
       h.title += " (" + (key.empty() ? fixed.substr(2) : key.substr(1) + fixed) + ")";
-    h.missing_label = reduced.empty()
-                          ? (q.metric == "ftle" ? "no value (a run failed)" : "no value")
-                          : "every " + reduced + " failed";
-    h.values.assign(h.columns.size() * h.rows.size(), kNaN);
+    h.missing = reduced.empty() ? (q.metric == "ftle" ? "no value (a run failed)" : "no value")
+                                : "every " + reduced + " failed";
+    h.values.assign(h.rows.size(), std::vector<double>(h.columns.size(), kNaN));
     for (const Json* r : members) {
       const std::size_t i = position[q.x][label_of((*r)["axes"][q.x])];
       const std::size_t j = position[q.y][label_of((*r)["axes"][q.y])];
-      double& cell = h.values[j * h.columns.size() + i];
+      double& cell = h.values[upwards ? h.rows.size() - 1 - j : j][i];
       if (!reduced.empty()) {
         const bool failed = !(*r)["failure"].is_null();
         const Json& v = (*r)["axes"][reduced];
@@ -165,15 +188,16 @@ std::vector<AtlasFigure> atlas_figures(const std::vector<Json>& rows, const Atla
     // Positive values spread over more than two decades read best in log10.
     double lo = HUGE_VAL, hi = 0.0;
     bool positive = true;
-    for (double v : h.values)
-      if (std::isfinite(v)) {
-        positive &= v > 0.0;
-        lo = std::min(lo, v);
-        hi = std::max(hi, v);
-      }
+    for (const auto& row : h.values)
+      for (double v : row)
+        if (std::isfinite(v)) {
+          positive &= v > 0.0;
+          lo = std::min(lo, v);
+          hi = std::max(hi, v);
+        }
     // (a largest step on a log grid reads best in log10 whatever its spread).
-    h.log_values = positive && hi > 0.0 && lo > 0.0 &&
-                   (hi / lo > 100.0 || (!reduced.empty() && hi / lo > 4.0));
+    h.log_scale = positive && hi > 0.0 && lo > 0.0 &&
+                  (hi / lo > 100.0 || (!reduced.empty() && hi / lo > 4.0));
     h.range_min = q.min;
     h.range_max = q.max;
     f.file_name = safe("atlas_" + q.metric + "_" + q.x + "_" + q.y + key + ".png");

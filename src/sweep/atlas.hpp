@@ -12,7 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "chart/heat_map_spec.hpp"
+#include "chart/chart_spec.hpp"
 #include "sweep/sweep_spec.hpp"
 
 namespace epviz::sweep {
@@ -22,6 +22,11 @@ class AtlasError : public std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
+// The heat map's columns are the x axis's values left to right, its rows the
+// y axis's top to bottom (chart::HeatMapSpec's order). A numeric axis
+// ascends whatever the sweep's order: x to the right, y upwards (its largest
+// value in the first row); an axis of names (methods) keeps the sweep's
+// order, the first name in the first row (at the top) and column.
 struct AtlasFigure {
   std::string file_name;  // "atlas_ftle_gamma0_gamma1.png", made safe for file systems
   chart::HeatMapSpec heat_map;

@@ -101,8 +101,9 @@ TEST(Atlas, LargestStableStepPerMethodAndEnergy) {
   ASSERT_EQ(figs.size(), 1u);
   const auto& h = figs[0].heat_map;
   EXPECT_EQ(h.columns, (std::vector<std::string>{"1", "2"}));
+  // Rows top down: methods in the sweep's order.
   EXPECT_EQ(h.rows, (std::vector<std::string>{"rk4", "gauss4"}));
-  EXPECT_EQ(h.values, (std::vector<double>{0.1, 0.2, 0.4, 0.4}));
+  EXPECT_EQ(h.values, (std::vector<std::vector<double>>{{0.1, 0.2}, {0.4, 0.4}}));
 
   const auto per_method = atlas_figures(rows, parse_atlas_option("time_to_failure:energy:step"));
   ASSERT_EQ(per_method.size(), 2u);  // one figure per method
