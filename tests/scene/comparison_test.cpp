@@ -100,11 +100,17 @@ Rendered render_to_end(const sim::RunSpec& run) {
   return r;
 }
 
+// Long enough that no tolerance keeps the generic body's picture true to the end.
+constexpr double kPastEveryHorizon = 300.0;
+
 TEST(PixelTrue, AChaoticRunIsTrueUntilItsHorizonAndSaysSo) {
-  const auto r = render_to_end(preset(physics::Case::generic, sim::Method::dop853, 60.0));
+  const auto r =
+      render_to_end(preset(physics::Case::generic, sim::Method::dop853, kPastEveryHorizon));
   ASSERT_TRUE(r.until) << "max error " << r.max_error_px << " px";
-  EXPECT_LT(*r.until, 60.0);
+  EXPECT_LT(*r.until, kPastEveryHorizon);
   EXPECT_GT(*r.until, 1.0);
+  // "auto" went as tight as it goes: the horizon is as late as the numbers allow.
+  EXPECT_EQ(r.plan.run.tol, scene::kTightestAutoTolerance);
   // Independently: the auto-tolerance run against DOP853 at tol 1e-13 stays
   // within half a pixel up to the horizon.
   auto run = r.plan.run;
@@ -123,6 +129,37 @@ TEST(PixelTrue, AChaoticRunIsTrueUntilItsHorizonAndSaysSo) {
   EXPECT_LT(worst_before, 0.5);
   // And the horizon is not needlessly early: the true error does pass half a pixel.
   EXPECT_GT(worst_after, 0.5);
+}
+
+TEST(PixelTrue, AutoTightensAChaoticRunUntilItsPictureIsTrueToTheEnd) {
+  // At the resolution's tolerance the generic body's picture parts from the
+  // truth by t = 60 (chaos); a tighter tolerance keeps it true to the end.
+  const auto run = preset(physics::Case::generic, sim::Method::dop853, 60.0);
+  scene::SceneSettings s;
+  s.width = 1280, s.height = 720, s.fps = 10, s.duration = 6;
+  const auto resolution = scene::plan_scene(run, s, scene::Horizon::none);
+  const auto r = render_to_end(run);
+  EXPECT_LT(r.plan.run.tol, resolution.run.tol);
+  EXPECT_NE(r.plan.accuracy_note.find("tightened"), std::string::npos) << r.plan.accuracy_note;
+  EXPECT_FALSE(r.until) << "until " << *r.until;
+  {
+    // The resolution's tolerance alone would not have been true to the end.
+    scene::FrameSource src(resolution, s);
+    src.frame(src.frame_count() - 1);
+    EXPECT_TRUE(src.run(0).pixel_true_until());
+  }
+  // Independently: the drawn run against DOP853 at tol 1e-13, over the whole run.
+  auto drawn_spec = r.plan.run;
+  const auto drawn = sim::simulate(drawn_spec);
+  drawn_spec.tol = 1e-13;
+  const auto truth = sim::simulate(drawn_spec);
+  ASSERT_FALSE(drawn.failure);
+  ASSERT_FALSE(truth.failure);
+  const double px = scene::pixels_per_gamma(r.plan.layout, 2.5f);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < drawn.samples.size(); ++i)
+    worst = std::max(worst, (drawn.samples[i].gamma - truth.samples[i].gamma).norm() * px);
+  EXPECT_LT(worst, 0.5);
 }
 
 TEST(PixelTrue, AnIntegrableRunIsTrueThroughout) {
