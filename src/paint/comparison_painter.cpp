@@ -93,8 +93,8 @@ void draw_other_runs_plane(render::DrawList& flat, const render::Panel2D& plot,
   }
 }
 
-bool draw_run_annotations(render::DrawList& flat, const scene::Frame& f,
-                          const scene::FrameLayout& layout, const scene::Theme& ink, float px) {
+std::vector<std::pair<std::string, glm::vec4>> run_legend_rows(const scene::Frame& f,
+                                                               const scene::Theme& ink) {
   // Rows from the bottom up: the horizon's note (single run), then the legend.
   std::vector<std::pair<std::string, glm::vec4>> rows;
   if (f.comparison) {
@@ -115,6 +115,15 @@ bool draw_run_annotations(render::DrawList& flat, const scene::Frame& f,
   } else if (!f.pixel_true_note.empty()) {
     rows.emplace_back(f.pixel_true_note, to_glm(ink.drift_warn));
   }
+  return rows;
+}
+
+float run_legend_line(float px) { return 15.0f * px; }
+
+bool draw_run_annotations(render::DrawList& flat, const scene::Frame& f,
+                          const scene::FrameLayout& layout, const scene::Theme& ink, float px,
+                          std::optional<float> rows_bottom) {
+  const auto rows = run_legend_rows(f, ink);
   const bool chart = f.comparison && layout.chart_area;
   if (rows.empty() && !chart && f.caption.empty()) return false;
   if (!f.caption.empty()) {
@@ -134,12 +143,16 @@ bool draw_run_annotations(render::DrawList& flat, const scene::Frame& f,
 
   if (!rows.empty() && (layout.view_3d || layout.panel_column)) {
     const scene::Rect where = layout.view_3d ? *layout.view_3d : *layout.panel_column;
-    // Above the trail's caption, which sits at the view's bottom left.
-    const float line = 15.0f * px;
-    float y = float(where.bottom()) - 6.0f * px - 1.3f * line;
+    // Above the trail's key (its caption and colour bar) at the view's bottom
+    // left, each row on a box of the panel's colour so that it reads over the
+    // sphere's lines.
+    const float line = run_legend_line(px);
+    float y = rows_bottom.value_or(float(where.bottom()) - 6.0f * px - 1.3f * line);
     for (auto it = rows.rbegin(); it != rows.rend(); ++it, y -= line) {
       render::TextLabel label{
           {float(where.x) + 8.0f * px, y, 0.0f}, it->first, it->second, TextAnchor::bottom_left};
+      label.background = to_glm(ink.panel_background);
+      label.background.a = 0.8f;
       flat.add_text(std::move(label));
     }
   }

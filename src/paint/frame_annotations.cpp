@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "paint/comparison_painter.hpp"
 #include "paint/frame_painter.hpp"
 #include "paint/painter_common.hpp"
 #include "paint/trail_colours.hpp"
@@ -72,10 +73,12 @@ std::vector<Box> FramePainter::draw_trail_key(DrawList& flat, const scene::Frame
   const float left = float(view.x) + 8 * px, bottom = float(view.y + view.height) - 6 * px;
   const float room = float(view.width) - 16 * px;
 
-  // The caption on the bottom line, as long as the view is wide.
+  // The caption on the bottom line, as long as the view is wide. In a
+  // comparison scene the colours name the runs (the legend), not the time.
+  const std::string colouring = f.comparison ? ", one colour per run" : ", coloured by time";
   std::string caption;
   for (const std::string& c :
-       {"trail: " + f.trail_label + ", coloured by time", "trail: " + f.trail_label, f.trail_label})
+       {"trail: " + f.trail_label + colouring, "trail: " + f.trail_label, f.trail_label})
     if (gui().text_size(c).x <= room) {
       caption = c;
       break;
@@ -87,6 +90,7 @@ std::vector<Box> FramePainter::draw_trail_key(DrawList& flat, const scene::Frame
     taken.push_back({{left, y - size.y}, {left + size.x, y}});
     y -= size.y + 2 * px;
   }
+  if (f.comparison) return taken;
 
   // The colour bar above it: the trail's colours from its oldest point (left)
   // to now (right), with the time before now under its ends and middle.
@@ -174,6 +178,16 @@ void FramePainter::draw_view_annotations(const scene::Frame& f, const render::Ca
   };
   DrawList flat;
   std::vector<Box> obstacles = draw_trail_key(flat, f, view, px);
+  // The legend and horizon note (paint/comparison_painter.hpp) go above the
+  // trail's key; the labels keep clear of the room they take.
+  float key_top = float(view.y + view.height) - 6 * px;
+  for (const Box& b : obstacles) key_top = std::min(key_top, b.min.y);
+  annotations_.legend_bottom = key_top - 2 * px;
+  if (const auto rows = run_legend_rows(f, ink); !rows.empty()) {
+    const float height = float(rows.size()) * run_legend_line(px);
+    obstacles.push_back({{float(view.x), *annotations_.legend_bottom - height},
+                         {float(view.x) + 0.6f * float(view.width), *annotations_.legend_bottom}});
+  }
   if (auto key = draw_marks_key(flat, f, camera, view, px)) obstacles.push_back(*key);
   if (floating_overlay_) obstacles.push_back(*floating_overlay_);
 

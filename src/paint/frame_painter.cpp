@@ -424,7 +424,7 @@ const render::RgbaImage& FramePainter::paint(const scene::Frame& f,
     draw_plane(f, *layout.panel_column, *layout.plot_area, px);
   if (DrawList notes; draw_run_annotations(
           notes, f, scene::frame_layout(scene::layout_request(f, w, h, reserved_left_)), ink_for(f),
-          px))
+          px, layout.view_3d ? annotations_.legend_bottom : std::nullopt))
     renderer_->draw_2d(notes);
   if (f.layers.overlay || extra_ui)
     renderer_->draw_overlay([&] {

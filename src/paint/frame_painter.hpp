@@ -61,6 +61,8 @@ struct PaintedAnnotations {
   std::optional<Box> colour_bar;  // left end oldest (age 1), right end now
   float map_top = 1.0f;           // the theme's top of the time colour map
   float font_px = 0.0f;           // the labels' text height
+  // Where the legend or horizon note ends, above the trail's key (3D view only).
+  std::optional<float> legend_bottom;
 };
 
 class FramePainter {
