@@ -10,5 +10,6 @@ ctest --test-dir build --output-on-failure -j2
 # the committed corpora, 60 s each (clang; its own build directory).
 bash scripts/fuzz.sh 60
 # EPVIZ_SANITIZERS=all, asan or tsan adds the sanitizer passes. They are off by
-# default until their time on a fresh 2-core machine is measured (docs/architecture.md).
+# default: the ASan build alone takes about half of CI's hour on 2 cores
+# (docs/architecture.md, "Sanitizers", has the measurements).
 bash tests/sanitizers/run.sh "${EPVIZ_SANITIZERS:-none}"

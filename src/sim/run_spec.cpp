@@ -78,10 +78,15 @@ std::optional<std::string> incompatibility(Method m, Formulation f) {
 
 RunSpec preset_run(physics::Case c, Method m, Formulation f, double t_end, int samples) {
   const auto& p = physics::preset(c);
+  return body_run(c, p.body, p.initial, m, f, t_end, samples);
+}
+
+RunSpec body_run(physics::Case c, const physics::Body& body, const physics::InitialState& initial,
+                 Method m, Formulation f, double t_end, int samples) {
   RunSpec s;
   s.case_id = c;
-  s.body = p.body;
-  s.initial = p.initial;
+  s.body = body;
+  s.initial = initial;
   s.method = m;
   s.formulation = f;
   s.t_end = t_end;

@@ -52,8 +52,11 @@ struct RunSpec {
   double max_drift = kDefaultMaxDrift;
 };
 
-// The run of case `c`'s preset body and initial state with one method and
-// formulation; tol and step keep their defaults.
+// The run of a body from an initial state with one method and formulation
+// (`c`: the case it is, or custom); tol and step keep their defaults.
+RunSpec body_run(physics::Case c, const physics::Body& body, const physics::InitialState& initial,
+                 Method m, Formulation f, double t_end, int samples);
+// The same for case `c`'s preset body and initial state.
 RunSpec preset_run(physics::Case c, Method m, Formulation f, double t_end, int samples);
 
 }  // namespace epviz::sim

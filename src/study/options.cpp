@@ -31,15 +31,7 @@ std::vector<Problem> problems_of(const StudyOptions& o) {
 
 sim::RunSpec problem_run(const Problem& p, sim::Method m, sim::Formulation f, double t_end,
                          int samples) {
-  sim::RunSpec s;
-  s.case_id = p.id;
-  s.body = p.body;
-  s.initial = p.initial;
-  s.method = m;
-  s.formulation = f;
-  s.t_end = t_end;
-  s.samples = samples;
-  return s;
+  return sim::body_run(p.id, p.body, p.initial, m, f, t_end, samples);
 }
 
 int repeats_of(const StudyOptions& o) { return o.repeats > 0 ? o.repeats : (o.quick ? 3 : 5); }

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds epviz under the sanitizers and runs the tests that mean something there
 # (docs/architecture.md, "Sanitizers"). scripts/test.sh runs it after the Release
-# build and its tests (EPVIZ_SANITIZERS=asan|tsan|none there picks; all by default);
+# build and its tests (EPVIZ_SANITIZERS=all|asan|tsan there picks; none by default);
 # run it alone with `bash tests/sanitizers/run.sh [all|asan|tsan]`.
 #   asan: build-asan/, AddressSanitizer + LeakSanitizer + UBSan at -O1, the suite
 #         less the tests listed in asan_excluded below;

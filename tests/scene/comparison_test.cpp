@@ -2,6 +2,10 @@
 // of each run, estimated against its shadow run.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <utility>
+#include <vector>
+
 #include "physics/cases.hpp"
 #include "scene/frame_source.hpp"
 #include "sim/simulate.hpp"
@@ -100,6 +104,23 @@ Rendered render_to_end(const sim::RunSpec& run) {
   return r;
 }
 
+// The drawn run's distance from an independent DOP853 run at tol 1e-13 at
+// each sample time, in pixels of the picture: (t, error).
+std::vector<std::pair<double, double>> true_error_px(const scene::ScenePlan& plan) {
+  auto spec = plan.run;
+  const auto drawn = sim::simulate(spec);
+  spec.tol = 1e-13;
+  const auto truth = sim::simulate(spec);
+  EXPECT_FALSE(drawn.failure);
+  EXPECT_FALSE(truth.failure);
+  const double px = scene::pixels_per_gamma(plan.layout, 2.5f);
+  std::vector<std::pair<double, double>> errors;
+  for (std::size_t i = 0; i < std::min(drawn.samples.size(), truth.samples.size()); ++i)
+    errors.emplace_back(drawn.samples[i].t,
+                        (drawn.samples[i].gamma - truth.samples[i].gamma).norm() * px);
+  return errors;
+}
+
 // Long enough that no tolerance keeps the generic body's picture true to the end.
 constexpr double kPastEveryHorizon = 300.0;
 
@@ -113,17 +134,9 @@ TEST(PixelTrue, AChaoticRunIsTrueUntilItsHorizonAndSaysSo) {
   EXPECT_EQ(r.plan.run.tol, scene::kTightestAutoTolerance);
   // Independently: the auto-tolerance run against DOP853 at tol 1e-13 stays
   // within half a pixel up to the horizon.
-  auto run = r.plan.run;
-  const auto drawn = sim::simulate(run);
-  run.tol = 1e-13;
-  const auto truth = sim::simulate(run);
-  ASSERT_FALSE(drawn.failure);
-  ASSERT_FALSE(truth.failure);
-  const double px = scene::pixels_per_gamma(r.plan.layout, 2.5f);
   double worst_before = 0.0, worst_after = 0.0;
-  for (std::size_t i = 0; i < drawn.samples.size(); ++i) {
-    const double e = (drawn.samples[i].gamma - truth.samples[i].gamma).norm() * px;
-    double& worst = drawn.samples[i].t <= *r.until ? worst_before : worst_after;
+  for (const auto& [t, e] : true_error_px(r.plan)) {
+    double& worst = t <= *r.until ? worst_before : worst_after;
     worst = std::max(worst, e);
   }
   EXPECT_LT(worst_before, 0.5);
@@ -149,16 +162,8 @@ TEST(PixelTrue, AutoTightensAChaoticRunUntilItsPictureIsTrueToTheEnd) {
     EXPECT_TRUE(src.run(0).pixel_true_until());
   }
   // Independently: the drawn run against DOP853 at tol 1e-13, over the whole run.
-  auto drawn_spec = r.plan.run;
-  const auto drawn = sim::simulate(drawn_spec);
-  drawn_spec.tol = 1e-13;
-  const auto truth = sim::simulate(drawn_spec);
-  ASSERT_FALSE(drawn.failure);
-  ASSERT_FALSE(truth.failure);
-  const double px = scene::pixels_per_gamma(r.plan.layout, 2.5f);
   double worst = 0.0;
-  for (std::size_t i = 0; i < drawn.samples.size(); ++i)
-    worst = std::max(worst, (drawn.samples[i].gamma - truth.samples[i].gamma).norm() * px);
+  for (const auto& [t, e] : true_error_px(r.plan)) worst = std::max(worst, e);
   EXPECT_LT(worst, 0.5);
 }
 
