@@ -139,7 +139,7 @@ TEST(HeatMap, AxisTitles) {
   auto titled = s;
   titled.x_label = "energy";
   titled.y_label = "a long axis title";
-  const auto& gl = et::shared_gl_context();
+  auto& gl = et::shared_gl_context();
   const float line = kFont * 1.35f;
   for (const auto* spec : {&s, &titled}) {
     const auto img = paint::paint_heat_map(gl, *spec, options());
