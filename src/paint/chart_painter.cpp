@@ -726,9 +726,11 @@ render::RgbaImage paint_heat_map(render::GlContext& context, const HeatMapSpec& 
       const double v = cell_value(spec, i, j);
       const auto colour = heat_map_colour(spec, l, v);
       const glm::vec4 fill = colour.value_or(missing);
-      // One pixel of paper between cells.
-      const glm::vec2 a{float(c.x) + 1.0f, float(c.y) + 1.0f};
-      const glm::vec2 b{float(c.x + c.width) - 1.0f, float(c.y + c.height) - 1.0f};
+      // One pixel of paper between cells that hold text (a table of values);
+      // colour-only cells touch, so that a large grid reads as one picture.
+      const float gap = l.value_text ? 1.0f : 0.0f;
+      const glm::vec2 a{float(c.x) + gap, float(c.y) + gap};
+      const glm::vec2 b{float(c.x + c.width) - gap, float(c.y + c.height) - gap};
       list.add_rect(a, b, fill);
       if (!l.value_text) {
         // No text to say so: a diagonal marks the grey as no value rather than a colour.
