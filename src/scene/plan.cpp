@@ -170,7 +170,7 @@ ScenePlan plan_scene(std::vector<RunRequest> runs, const SceneSettings& s, Horiz
       if (tol != resolved.tol) {
         resolved.tol = tol;
         char text[64];
-        std::snprintf(text, sizeof text, "tol %.2g (auto, tightened for chaos)", tol);
+        std::snprintf(text, sizeof text, "tol %.2g (auto, tightened)", tol);
         note = text;
       }
     }

@@ -96,7 +96,7 @@ inline constexpr double kTightestAutoTolerance = 1e-12;
 // space view needs the attitude, i.e. the spinor formulation).
 // With Horizon::search, an "auto" tolerance is the resolution's
 // (tolerance_for_layout) when its picture stays true to half a pixel to the
-// end (the shadow run says); else, as on chaotic runs, the tolerance a
+// end (the shadow run says); else (chaotic runs, long runs) the tolerance a
 // hundredfold tighter at a time down to kTightestAutoTolerance whose picture
 // stays true longest: as long as the numbers allow, and the report and
 // overlay give the honest horizon after that.
