@@ -127,15 +127,16 @@ bool draw_run_annotations(render::DrawList& flat, const scene::Frame& f,
   const bool chart = f.comparison && layout.chart_area;
   if (rows.empty() && !chart && f.caption.empty()) return false;
   if (!f.caption.empty()) {
-    // At the bottom right, under the plane's tick labels: the bottom left
-    // holds the trail's caption and the legend, the top the overlay.
-    int right = 0, bottom = 0;
+    // At the top right, above the plane's title: the bottom right holds the
+    // plane's convention, the bottom left the trail's key and the legend,
+    // the top left the overlay.
+    int right = 0, top = 1 << 30;
     for (const auto& r : {layout.view_3d, layout.panel_column})
-      if (r) right = std::max(right, r->right()), bottom = std::max(bottom, r->bottom());
-    render::TextLabel label{{float(right) - 6.0f * px, float(bottom) - 4.0f * px, 0.0f},
+      if (r) right = std::max(right, r->right()), top = std::min(top, r->y);
+    render::TextLabel label{{float(right) - 6.0f * px, float(top) + 3.0f * px, 0.0f},
                             f.caption,
                             to_glm(ink.title),
-                            TextAnchor::bottom_right};
+                            TextAnchor::top_right};
     label.background = to_glm(ink.panel_background);
     label.background.a = 0.85f;
     flat.add_text(std::move(label));
