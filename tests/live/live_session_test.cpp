@@ -12,12 +12,7 @@ namespace epviz::live {
 namespace {
 
 using testing::SessionDriver;
-
-SessionOptions starting_with(physics::Case c) {
-  SessionOptions o;
-  o.initial = preset_setup(c);
-  return o;
-}
+using testing::starting_with;
 
 TEST(LiveSession, DrawsTheSceneWithPanelsAndNamesItsControls) {
   SessionDriver d(starting_with(physics::Case::generic));

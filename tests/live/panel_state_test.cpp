@@ -17,12 +17,7 @@ namespace epviz::live {
 namespace {
 
 using testing::SessionDriver;
-
-SessionOptions starting_with(physics::Case c) {
-  SessionOptions o;
-  o.initial = preset_setup(c);
-  return o;
-}
+using testing::starting_with;
 
 Rect centre_of(const Rect& r) { return {r[0] + r[2] / 2, r[1] + r[3] / 2, 0, 0}; }
 

@@ -9,9 +9,17 @@
 #include <string>
 
 #include "live/live_session.hpp"
+#include "physics/cases.hpp"
 #include "render/gl_context.hpp"
 
 namespace epviz::live::testing {
+
+// A session that starts from case `c`'s preset.
+inline SessionOptions starting_with(physics::Case c) {
+  SessionOptions o;
+  o.initial = preset_setup(c);
+  return o;
+}
 
 inline render::GlContext& shared_gl() {
   static std::unique_ptr<render::GlContext> gl =
