@@ -9,6 +9,7 @@
 #include "physics/cases.hpp"
 #include "scene/frame_source.hpp"
 #include "sim/simulate.hpp"
+#include "true_error.hpp"
 
 namespace epviz {
 namespace {
@@ -104,22 +105,7 @@ Rendered render_to_end(const sim::RunSpec& run) {
   return r;
 }
 
-// The drawn run's distance from an independent DOP853 run at tol 1e-13 at
-// each sample time, in pixels of the picture: (t, error).
-std::vector<std::pair<double, double>> true_error_px(const scene::ScenePlan& plan) {
-  auto spec = plan.run;
-  const auto drawn = sim::simulate(spec);
-  spec.tol = 1e-13;
-  const auto truth = sim::simulate(spec);
-  EXPECT_FALSE(drawn.failure);
-  EXPECT_FALSE(truth.failure);
-  const double px = scene::pixels_per_gamma(plan.layout, 2.5f);
-  std::vector<std::pair<double, double>> errors;
-  for (std::size_t i = 0; i < std::min(drawn.samples.size(), truth.samples.size()); ++i)
-    errors.emplace_back(drawn.samples[i].t,
-                        (drawn.samples[i].gamma - truth.samples[i].gamma).norm() * px);
-  return errors;
-}
+using testing::true_error_px;
 
 // Long enough that no tolerance keeps the generic body's picture true to the end.
 constexpr double kPastEveryHorizon = 300.0;

@@ -4,6 +4,7 @@
 #include "scene/frame_source.hpp"
 #include "scene/plan.hpp"
 #include "sim/simulate.hpp"
+#include "true_error.hpp"
 
 namespace epviz {
 namespace {
@@ -105,19 +106,10 @@ TEST_P(AutoToleranceIsEnough, ErrorBelowHalfAPixel) {
   scene::SceneSettings s;
   s.width = 1280, s.height = 720;
   const auto plan = scene::plan_scene(preset_run(GetParam(), 30), s);
-  auto run = plan.run;
-  const auto coarse = sim::simulate(run);
-  run.tol = 1e-13;
-  const auto fine = sim::simulate(run);
-  ASSERT_FALSE(coarse.failure);
-  ASSERT_FALSE(fine.failure);
-  double worst = 0.0;
-  for (std::size_t i = 0; i < coarse.samples.size(); ++i)
-    worst = std::max(worst, (coarse.samples[i].gamma - fine.samples[i].gamma).norm());
-  const double e = s.plane_extent;
-  const double px =
-      std::max(plan.layout.sphere_px_per_unit, plan.layout.plane_px_per_unit * (1 + e * e) / 2);
-  EXPECT_LT(worst * px, 0.5) << "tol " << plan.run.tol;
+  double worst_px = 0.0;
+  for (const auto& [t, e] : testing::true_error_px(plan, s.plane_extent))
+    worst_px = std::max(worst_px, e);
+  EXPECT_LT(worst_px, 0.5) << "tol " << plan.run.tol;
 }
 
 INSTANTIATE_TEST_SUITE_P(Integrable, AutoToleranceIsEnough,
