@@ -179,23 +179,36 @@ class EmbeddedRk {
   // code (results are bitwise unchanged).
   static constexpr int D = Sys::dim;
 
-  template <const Row& W, std::size_t Nterms>
+  // A row of weights as a template argument, named by a type whose member w
+  // is the row: clang 14 takes neither an element of an array nor a double as
+  // a template argument (GCC takes both), and the sanitizer builds use clang.
+  template <const auto& Rows, std::size_t I>
+  struct RowOf {
+    static constexpr const Row& w = Rows[I];
+  };
+  template <const Row& R>
+  struct RowIs {
+    static constexpr const Row& w = R;
+  };
+
+  template <class W, std::size_t Nterms>
   struct Terms {
-    static constexpr std::size_t count = detail::count_nonzero(W, Nterms);
+    static constexpr std::size_t count = detail::count_nonzero(W::w, Nterms);
     static_assert(count > 0, "weights must not all vanish");
-    static constexpr std::array<std::size_t, count> idx = detail::nonzero_indices<count>(W, Nterms);
+    static constexpr std::array<std::size_t, count> idx =
+        detail::nonzero_indices<count>(W::w, Nterms);
   };
 
   // sum_j W[j] k[j][i] over the nonzero weights, left to right.
-  template <const Row& W, std::size_t Nterms, std::size_t... J>
+  template <class W, std::size_t Nterms, std::size_t... J>
   [[gnu::always_inline]] static inline double dot_impl(const Stages& k, int i,
                                                        std::index_sequence<J...>) noexcept {
     constexpr const auto& idx = Terms<W, Nterms>::idx;
-    double sum = W[idx[0]] * k[idx[0]].coeff(i);
-    ((sum += W[idx[J + 1]] * k[idx[J + 1]].coeff(i)), ...);
+    double sum = W::w[idx[0]] * k[idx[0]].coeff(i);
+    ((sum += W::w[idx[J + 1]] * k[idx[J + 1]].coeff(i)), ...);
     return sum;
   }
-  template <const Row& W, std::size_t Nterms>
+  template <class W, std::size_t Nterms>
   [[gnu::always_inline]] static inline double dot(const Stages& k, int i) noexcept {
     return dot_impl<W, Nterms>(k, i, std::make_index_sequence<Terms<W, Nterms>::count - 1>{});
   }
@@ -214,17 +227,18 @@ class EmbeddedRk {
     std::memcpy(&v, p, sizeof v);
     return v;
   }
-  template <double w>
+  template <class W, std::size_t J>
   [[gnu::always_inline]] static inline void add_term(V2* v, const State& kj) noexcept {
+    constexpr double w = W::w[J];
     for (int p = 0; p < D / 2; ++p) v[p] += w * load2(kj.data() + 2 * p);
   }
-  template <const Row& W, std::size_t Nterms, std::size_t... J>
+  template <class W, std::size_t Nterms, std::size_t... J>
   [[gnu::always_inline]] static inline void sums_packed(double* s, const Stages& k,
                                                         std::index_sequence<J...>) noexcept {
     constexpr const auto& idx = Terms<W, Nterms>::idx;
     V2 v[D / 2];
-    for (int p = 0; p < D / 2; ++p) v[p] = W[idx[0]] * load2(k[idx[0]].data() + 2 * p);
-    (add_term<W[idx[J + 1]]>(v, k[idx[J + 1]]), ...);
+    for (int p = 0; p < D / 2; ++p) v[p] = W::w[idx[0]] * load2(k[idx[0]].data() + 2 * p);
+    (add_term<W, idx[J + 1]>(v, k[idx[J + 1]]), ...);
     std::memcpy(s, v, sizeof v);
   }
 #else
@@ -232,7 +246,7 @@ class EmbeddedRk {
 #endif
 
   // s[i] = sum_{j < Nterms} W[j] k[j][i] for every component i.
-  template <const Row& W, std::size_t Nterms>
+  template <class W, std::size_t Nterms>
   [[gnu::always_inline]] static inline void sums(double* s, const Stages& k) noexcept {
 #if defined(__GNUC__)
     if constexpr (packed) {
@@ -244,7 +258,7 @@ class EmbeddedRk {
   }
 
   // acc = sum_{j < Nterms} W[j] k[j].
-  template <const Row& W, std::size_t Nterms>
+  template <class W, std::size_t Nterms>
   [[gnu::always_inline]] static inline void weighted_sum(State& acc, const Stages& k) noexcept {
     double s[D];
     sums<W, Nterms>(s, k);
@@ -253,7 +267,7 @@ class EmbeddedRk {
 
   // out = x0 + h sum with sum = sum_{j < Nterms} W[j] k[j], also stored in
   // *sum_out when given (out may alias x0, not k).
-  template <const Row& W, std::size_t Nterms>
+  template <class W, std::size_t Nterms>
   [[gnu::always_inline]] static inline void advance(State& out, const State& x0, double h,
                                                     const Stages& k,
                                                     State* sum_out = nullptr) noexcept {
@@ -269,7 +283,7 @@ class EmbeddedRk {
   template <std::size_t I>
   [[gnu::always_inline]] inline void stage(double t0, const State& x0, double h, Stages& k,
                                            State& tmp) const {
-    advance<Tableau::a[I], I>(tmp, x0, h, k);
+    advance<RowOf<Tableau::a, I>, I>(tmp, x0, h, k);
     sys_.rhs(t0 + Tableau::c[I] * h, tmp, k[I]);
   }
 
@@ -284,7 +298,7 @@ class EmbeddedRk {
   // acc_ = sum_j b_j k_j.
   [[gnu::always_inline]] inline void stages_and_solution(double t, const State& x, double h) {
     stages_from(t, x, h, k_, tmp_, detail::index_range<1, S>{});
-    advance<Tableau::b, S>(xnew_, x, h, k_, &acc_);
+    advance<RowIs<Tableau::b>, S>(xnew_, x, h, k_, &acc_);
   }
 
   // Hairer's error norm of the step from x_ to xnew_ (needs acc_ as left by
@@ -300,8 +314,8 @@ class EmbeddedRk {
       // 3rd-order estimator as b-sum minus the (sparse) embedded weights bhh.
       Arr q3, q5;
       for (int i = 0; i < D; ++i) {
-        const double e3 = (acc_.coeff(i) - dot<Tableau::bhh, S>(k_, i)) * inv_sk[i];
-        const double e5 = dot<Tableau::e2, error_terms>(k_, i) * inv_sk[i];
+        const double e3 = (acc_.coeff(i) - dot<RowIs<Tableau::bhh>, S>(k_, i)) * inv_sk[i];
+        const double e5 = dot<RowIs<Tableau::e2>, error_terms>(k_, i) * inv_sk[i];
         q3[i] = e3 * e3;
         q5[i] = e5 * e5;
       }
@@ -312,7 +326,7 @@ class EmbeddedRk {
     } else {
       Arr q;
       for (int i = 0; i < D; ++i) {
-        const double e = dot<Tableau::e, error_terms>(k_, i) * inv_sk[i];
+        const double e = dot<RowIs<Tableau::e>, error_terms>(k_, i) * inv_sk[i];
         q[i] = e * e;
       }
       return std::abs(h) * std::sqrt(q.sum() / n);
@@ -498,7 +512,7 @@ void EmbeddedRk<Sys, Tableau>::prepare_dense() const {
   cont_[2] = h * k_[0] - cont_[1];
   cont_[3] = cont_[1] - h * k_[S] - cont_[2];
   detail::static_for<0, Tableau::dense_rows>([&](auto r) {
-    weighted_sum<Tableau::d[r], N>(acc, k_);
+    weighted_sum<RowOf<Tableau::d, r>, N>(acc, k_);
     cont_[4 + r] = h * acc;
   });
   dense_ = DenseState::ready;
