@@ -1,15 +1,17 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets of fuzz/ with clang in their own build
-# directory and runs each for a bounded time, starting from its committed
-# corpus (fuzz/corpus/<target>/); exits 1 if any target finds a crash, a
-# sanitizer report, a timeout or an out-of-memory. A crashing input is kept
-# in the build directory's artifacts/ folder: add it to a regression test.
+# Builds the libFuzzer targets of fuzz/ with clang and runs each for a bounded
+# time, two at a time (one per core), starting from its committed corpus
+# (fuzz/corpus/<target>/); exits 1 if any target finds a crash, a sanitizer
+# report, a timeout or an out-of-memory. A crashing input is kept in the build
+# directory's artifacts/ folder: add it to a regression test.
 #
 #   scripts/fuzz.sh [SECONDS] [TARGET...]
 #
 # SECONDS per target (default 60); TARGETs default to all. Environment:
-# EPVIZ_FUZZ_BUILD (build directory, default build-fuzz), EPVIZ_FUZZ_JOBS
-# (parallel compiles, default 2).
+# EPVIZ_FUZZ_BUILD (build directory, default build-fuzz: configured with only
+# what the targets need; a directory already configured with
+# EPVIZ_BUILD_FUZZ=ON, such as the sanitizer pass's build-asan, is used as it
+# is), EPVIZ_FUZZ_JOBS (parallel compiles and fuzzers, default 2).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 seconds=${1:-60}
@@ -30,29 +32,54 @@ max_len() {
   esac
 }
 
-launcher=()
-command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-# Only what the targets need: no renderer, tests or benchmarks.
-CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DEPVIZ_BUILD_FUZZ=ON -DEPVIZ_BUILD_RENDER=OFF -DEPVIZ_BUILD_TESTS=OFF \
-  -DEPVIZ_BUILD_BENCH=OFF "${launcher[@]}" >/dev/null
-ninja -C "$build" -j"${EPVIZ_FUZZ_JOBS:-2}" "${targets[@]}"
+jobs=${EPVIZ_FUZZ_JOBS:-2}
+if ! grep -qs '^EPVIZ_BUILD_FUZZ:BOOL=ON' "$build/CMakeCache.txt"; then
+  launcher=()
+  command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  # Only what the targets need: no renderer, tests or benchmarks.
+  CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DEPVIZ_BUILD_FUZZ=ON -DEPVIZ_BUILD_RENDER=OFF -DEPVIZ_BUILD_TESTS=OFF \
+    -DEPVIZ_BUILD_BENCH=OFF "${launcher[@]}" >/dev/null
+fi
+ninja -C "$build" -j"$jobs" "${targets[@]}"
 
 mkdir -p "$build/artifacts"
-failed=()
-for t in "${targets[@]}"; do
+# One target's run; its log in $build/<target>.log, its status as the exit code.
+fuzz_one() {
+  local t=$1 scratch
   # New inputs the fuzzer finds go to a scratch corpus, not into the committed one.
   scratch=$(mktemp -d)
-  echo "fuzz: $t for ${seconds} s"
-  if ! "$build/fuzz/$t" -max_total_time="$seconds" -max_len="$(max_len "$t")" -timeout=10 \
+  local status=0
+  "$build/fuzz/$t" -max_total_time="$seconds" -max_len="$(max_len "$t")" -timeout=10 \
     -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$build/artifacts/$t-" \
-    "$scratch" "$root/fuzz/corpus/$t" 2>"$build/$t.log"; then
+    "$scratch" "$root/fuzz/corpus/$t" 2>"$build/$t.log" || status=$?
+  rm -rf "$scratch"
+  return $status
+}
+
+failed=()
+pids=()
+names=()
+# Waits for the oldest running target and reports it.
+reap() {
+  local t=${names[0]} status=0
+  wait "${pids[0]}" || status=$?
+  pids=("${pids[@]:1}")
+  names=("${names[@]:1}")
+  if [ "$status" -ne 0 ]; then
     failed+=("$t")
     tail -n 40 "$build/$t.log" >&2
   fi
   grep -E '^stat::(number_of_executed_units|peak_rss_mb)' "$build/$t.log" | sed "s/^/  $t /" || true
-  rm -rf "$scratch"
+}
+for t in "${targets[@]}"; do
+  [ ${#pids[@]} -lt "$jobs" ] || reap
+  echo "fuzz: $t for ${seconds} s"
+  fuzz_one "$t" &
+  pids+=($!)
+  names+=("$t")
 done
+while [ ${#pids[@]} -gt 0 ]; do reap; done
 if [ ${#failed[@]} -gt 0 ]; then
   echo "fuzz: FAILED: ${failed[*]} (inputs in $build/artifacts/)" >&2
   exit 1

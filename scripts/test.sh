@@ -1,15 +1,21 @@
 #!/usr/bin/env bash
-# The README's second command (and CI's): set up, build, and run the whole test
-# suite; with EPVIZ_SANITIZERS, build it again under the sanitizers (ASan + UBSan,
-# and TSan for the server) and run the tests that mean something there.
+# The README's second command (and CI's): set up, build and run the whole test
+# suite, then build it again under the sanitizers and run it there, and fuzz
+# the parsers of untrusted input.
+#
+#   EPVIZ_SANITIZERS=all|asan|tsan|none   which sanitizer passes (default all)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 EPVIZ_WERROR=ON bash scripts/build.sh
 ctest --test-dir build --output-on-failure -j2
-# libFuzzer on the job reader, simulate's options and the page protocol, from
-# the committed corpora, 60 s each (clang; its own build directory).
-bash scripts/fuzz.sh 60
-# EPVIZ_SANITIZERS=all, asan or tsan adds the sanitizer passes. They are off by
-# default: the ASan build alone takes about half of CI's hour on 2 cores
-# (docs/architecture.md, "Sanitizers", has the measurements).
-bash tests/sanitizers/run.sh "${EPVIZ_SANITIZERS:-none}"
+# ASan + UBSan on the suite (build-asan/, clang, which also builds the fuzz
+# targets) and TSan on the server's tests (build-tsan/); docs/architecture.md,
+# "Sanitizers", has what runs where and what it costs.
+sanitizers=${EPVIZ_SANITIZERS:-all}
+bash tests/sanitizers/run.sh "$sanitizers"
+# libFuzzer on the job reader, simulate's options, the page protocol and the
+# sweep reader, from the committed corpora, 60 s each, two at a time; in the
+# ASan tree when the sanitizer pass built it, else in build-fuzz/.
+fuzz_build=build-fuzz
+case "$sanitizers" in all | asan) fuzz_build=build-asan ;; esac
+EPVIZ_FUZZ_BUILD=$fuzz_build bash scripts/fuzz.sh 60

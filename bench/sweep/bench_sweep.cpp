@@ -3,11 +3,14 @@
 //   bare loop        sim::simulate in a plain loop: the integration alone
 //   sweep in-process sweep::run_points on one thread: rows built and appended
 //   epviz sweep      the command, as a process (-j 1), start-up and reading included
-//   shell loop       `epviz simulate` once per run, as a shell loop would
-// and the ratios to the bare loop, per core.
+//   shell loop       `epviz simulate` once per run, in a bash for loop
+// and the ratios to the bare loop, per core; each the median of 3 rounds,
+// after 200 runs that take the process's first-touch page faults.
 //
-//   epviz_sweep_bench [POINTS] [SHELL_RUNS]      (default 2000 and 40)
+//   epviz_sweep_bench [POINTS] [SHELL_RUNS]      (default 10000 and 100)
 #include <unistd.h>
+
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -47,69 +50,89 @@ sim::RunSpec run_of(double w0) {
   return r;
 }
 
+// Seconds for one call of `f`: the median of `rounds` calls.
+template <class F>
+double median_seconds(int rounds, F&& f) {
+  std::vector<double> t;
+  for (int i = 0; i < rounds; ++i) {
+    const auto t0 = Clock::now();
+    f();
+    t.push_back(seconds_since(t0));
+  }
+  std::sort(t.begin(), t.end());
+  return t[t.size() / 2];
+}
+
+void must_succeed(const io::ProcessOutput& r, const char* what) {
+  if (r.status.success()) return;
+  std::fprintf(stderr, "%s %s: %s\n", what, r.status.describe().c_str(), r.err.c_str());
+  std::exit(1);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  const long points = argc > 1 ? std::atol(argv[1]) : 2000;
-  const long shell_runs = argc > 2 ? std::atol(argv[2]) : 40;
+  const long points = argc > 1 ? std::atol(argv[1]) : 10000;
+  const long shell_runs = argc > 2 ? std::atol(argv[2]) : 100;
+  constexpr int kRounds = 3;
   const std::string epviz = EPVIZ_BINARY;
   const fs::path dir =
       fs::temp_directory_path() / ("epviz-sweep-bench-" + std::to_string(::getpid()));
   fs::create_directories(dir);
 
+  // The first runs in a process pay for its first-touch page faults: not
+  // part of what a point costs.
+  for (long i = 0; i < 200; ++i) sim::simulate(run_of(omega0(i, 200)));
+
   // Bare loop.
-  auto t0 = Clock::now();
   long steps = 0;
-  for (long i = 0; i < points; ++i) steps += sim::simulate(run_of(omega0(i, points))).stats.steps;
-  const double bare = seconds_since(t0);
+  const double bare = median_seconds(kRounds, [&] {
+    steps = 0;
+    for (long i = 0; i < points; ++i) steps += sim::simulate(run_of(omega0(i, points))).stats.steps;
+  });
 
   // In-process sweep on one thread.
   sweep::SweepSpec spec;
   spec.hash = "bench";
   std::vector<sweep::PreparedPoint> prepared;
   for (long i = 0; i < points; ++i) {
-    sweep::PreparedPoint p;
-    p.point.index = i;
-    p.point.axis_values["omega[0]"] = omega0(i, points);
-    p.run = run_of(omega0(i, points));
-    prepared.push_back(std::move(p));
+    sweep::PointFields fields;
+    fields.index = i;
+    fields.axis_values["omega[0]"] = omega0(i, points);
+    prepared.push_back(sweep::prepared_point(fields, run_of(omega0(i, points))));
   }
-  t0 = Clock::now();
-  {
+  const double in_process = median_seconds(kRounds, [&] {
+    fs::remove(dir / "rows.jsonl");
     sweep::RowAppender rows(dir / "rows.jsonl");
     sweep::run_points(spec, prepared, 1, rows);
-  }
-  const double in_process = seconds_since(t0);
+  });
 
   // The command.
   std::ofstream(dir / "bench.sweep.json")
       << R"({"simulation": {"case": "kovalevskaya", "t_end": 10, "samples": 100, "method": "dop853", "tol": 1e-10},
             "axes": [{"field": "omega[0]", "from": 0.5, "to": 1.5, "count": )"
       << points << "}]}";
-  t0 = Clock::now();
-  auto r = io::run_process({epviz, "sweep", (dir / "bench.sweep.json").string(), "--out",
-                            (dir / "cmd.jsonl").string(), "-j", "1", "--quiet"});
-  const double command = seconds_since(t0);
-  if (!r.status.success()) {
-    std::fprintf(stderr, "epviz sweep %s: %s\n", r.status.describe().c_str(), r.err.c_str());
-    return 1;
-  }
+  const double command = median_seconds(kRounds, [&] {
+    fs::remove(dir / "cmd.jsonl");
+    must_succeed(io::run_process({epviz, "sweep", (dir / "bench.sweep.json").string(), "--out",
+                                  (dir / "cmd.jsonl").string(), "-j", "1", "--quiet"}),
+                 "epviz sweep");
+  });
 
-  // A shell loop of epviz simulate (a few runs: each is a process start).
-  t0 = Clock::now();
-  for (long i = 0; i < shell_runs; ++i) {
-    char w[96];
-    std::snprintf(w, sizeof w, "%.17g,%.17g,%.17g", omega0(i, shell_runs),
-                  run_of(0).initial.omega[1], run_of(0).initial.omega[2]);
-    auto s = io::run_process({epviz, "simulate", "--case", "kovalevskaya", "--t-end", "10",
-                              "--samples", "100", "--method", "dop853", "--tol", "1e-10", "--omega",
-                              w, "--report-json", (dir / "r.json").string()});
-    if (!s.status.success()) {
-      std::fprintf(stderr, "epviz simulate %s: %s\n", s.status.describe().c_str(), s.err.c_str());
-      return 1;
-    }
+  // A shell loop of epviz simulate, as a user would write it (fewer runs:
+  // each is a process start).
+  {
+    std::ofstream loop(dir / "loop.sh");
+    loop << "for w in";
+    for (long i = 0; i < shell_runs; ++i) loop << ' ' << omega0(i, shell_runs);
+    loop << "; do\n  '" << epviz
+         << "' simulate --case kovalevskaya --t-end 10 --samples 100 --method dop853 --tol 1e-10 "
+            "--omega \"$w,0.3,1.5\" --report-json '"
+         << (dir / "r.json").string() << "' >/dev/null || exit 1\ndone\n";
   }
-  const double shell = seconds_since(t0);
+  const double shell = median_seconds(kRounds, [&] {
+    must_succeed(io::run_process({"/bin/bash", (dir / "loop.sh").string()}), "shell loop");
+  });
   fs::remove_all(dir);
 
   const double base = double(points) / bare;
@@ -119,8 +142,9 @@ int main(int argc, char** argv) {
                 s, rate, base / rate);
   };
   std::printf(
-      "Kovalevskaya, T = 10, dop853 tol 1e-10, 100 samples; %.0f steps per run on average\n",
-      double(steps) / double(points));
+      "Kovalevskaya, T = 10, dop853 tol 1e-10, 100 samples; %.0f steps per run on average; "
+      "medians of %d\n",
+      double(steps) / double(points), kRounds);
   line("bare loop", points, bare);
   line("sweep, in-process", points, in_process);
   line("epviz sweep -j 1", points, command);

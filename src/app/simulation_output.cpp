@@ -4,7 +4,9 @@
 #include <nlohmann/json.hpp>
 
 #include "app/failure_advice.hpp"
+#include "io/json_line.hpp"
 #include "physics/stereographic.hpp"
+#include "sweep/run_record.hpp"
 
 namespace epviz::app {
 namespace {
@@ -13,10 +15,6 @@ void put(std::string& out, double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.17g", x);
   out += buf;
-}
-
-nlohmann::json number_or_null(double x) {
-  return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
 }
 
 constexpr const char* kCsvHeader =
@@ -82,16 +80,12 @@ void SamplesCsvWriter::flush() {
 
 nlohmann::json run_report(const sim::RunSpec& spec, const sim::RunResult& r,
                           const sim::Drifts& drift) {
-  nlohmann::json j;
-  j["case"] = physics::case_name(spec.case_id);
-  j["formulation"] = std::string(sim::name(spec.formulation));
-  j["method"] = std::string(sim::name(spec.method));
-  if (sim::is_adaptive(spec.method)) {
-    j["tol"] = spec.tol;
-  } else {
-    j["step"] = spec.step;
-    j["effective_step"] = r.effective_step;
-  }
+  // The members a sweep's row has too, then the report's own.
+  io::JsonLine shared;
+  shared.begin_object();
+  sweep::write_run_record(shared, spec, r, drift);
+  shared.end_object();
+  nlohmann::json j = nlohmann::json::parse(shared.str());
   if (spec.formulation == sim::Formulation::riccati) {
     j["chart_switch"] = spec.chart_switch;
     j["chart_switches"] = r.chart_switches;
@@ -99,21 +93,9 @@ nlohmann::json run_report(const sim::RunSpec& spec, const sim::RunResult& r,
   j["body"] = {{"inertia", {spec.body.inertia[0], spec.body.inertia[1], spec.body.inertia[2]}},
                {"com", {spec.body.com[0], spec.body.com[1], spec.body.com[2]}},
                {"weight", spec.body.weight}};
-  j["initial"] = {{"omega", {spec.initial.omega[0], spec.initial.omega[1], spec.initial.omega[2]}},
-                  {"gamma", {spec.initial.gamma[0], spec.initial.gamma[1], spec.initial.gamma[2]}}};
-  j["t_end"] = spec.t_end;
   j["samples"] = spec.samples;
-  j["samples_written"] = r.samples_written;
-  j["steps"] = r.stats.steps;
-  j["rhs_evals"] = r.stats.rhs_evals;
-  j["rejected_steps"] = r.stats.rejected_steps;
   j["solver_iterations"] = r.stats.solver_iterations;
-  j["cpu_seconds"] = r.cpu_seconds;
-  nlohmann::json d = {{"gamma_norm2", number_or_null(drift.gamma_norm2)},
-                      {"area", number_or_null(drift.area)},
-                      {"energy", number_or_null(drift.energy)}};
-  d["extra_integral"] = drift.extra ? number_or_null(*drift.extra) : nlohmann::json(nullptr);
-  j["max_relative_drift"] = d;
+  j["failure"] = nullptr;
   if (r.failure) {
     const bool adaptive = sim::is_adaptive(spec.method);
     j["failure"] = {{"t", r.failure->t},
@@ -121,10 +103,6 @@ nlohmann::json run_report(const sim::RunSpec& spec, const sim::RunResult& r,
                     {"detail", r.failure->detail},
                     {"advice", failure_advice(r.failure->kind, r.failure->method, adaptive)},
                     {"message", failure_line(*r.failure)}};
-    j["failure_kind"] = std::string(numerics::name(r.failure->kind));
-  } else {
-    j["failure"] = nullptr;
-    j["failure_kind"] = nullptr;
   }
   return j;
 }

@@ -63,7 +63,7 @@ int run_sweep(const SweepOptions& o) {
     try {
       auto p = sweep::point_fields(spec, i);
       auto run = sweep::resolve_point(p, [](const SimulationFields& f) { return resolve(f); });
-      points.push_back({std::move(p), std::move(run)});
+      points.push_back(sweep::prepared_point(p, std::move(run)));
     } catch (const io::JobError& e) {
       throw UsageError(e.what());
     } catch (const std::invalid_argument& e) {
@@ -94,7 +94,7 @@ int run_sweep(const SweepOptions& o) {
                        std::to_string(range.end - 1) + "; give another --out");
   std::vector<sweep::PreparedPoint> pending;
   for (long i = range.first; i < range.end; ++i)
-    if (!existing.indices.count(i)) pending.push_back(points[std::size_t(i)]);
+    if (!existing.indices.count(i)) pending.push_back(std::move(points[std::size_t(i)]));
 
   shard::Manifest manifest;
   fs::path manifest_path;
@@ -125,6 +125,7 @@ int run_sweep(const SweepOptions& o) {
   {
     sweep::RowAppender rows(out);
     totals = sweep::run_points(spec, pending, threads, rows, [&] { progress.advance(); });
+    rows.flush();
   }
   progress.finish();
   const double seconds =

@@ -5,15 +5,10 @@
 
 #include "sim/drift.hpp"
 #include "sim/trajectory.hpp"
+#include "sweep/run_record.hpp"
 
 namespace epviz::sweep {
 namespace {
-
-using Row = nlohmann::ordered_json;
-
-Row number_or_null(double x) { return std::isfinite(x) ? Row(x) : Row(nullptr); }
-
-Row vec(const Eigen::Vector3d& v) { return Row::array({v[0], v[1], v[2]}); }
 
 std::string key_of(const sim::RunSpec& r) {
   std::string k;
@@ -137,9 +132,13 @@ std::optional<double> finite_time_lyapunov(const sim::RunSpec& run, const FtleSe
   return sum / (double(windows) * window);
 }
 
-nlohmann::ordered_json run_point(const PointFields& point, const sim::RunSpec& run,
-                                 const std::string& sweep_hash, bool reference,
-                                 const std::optional<FtleSettings>& ftle, ReferenceCache* cache) {
+PreparedPoint prepared_point(const PointFields& fields, sim::RunSpec run) {
+  return {fields.index, fields.axis_values.dump(), fields.ignored, std::move(run)};
+}
+
+PointRow run_point(const PreparedPoint& point, const std::string& sweep_hash, bool reference,
+                   const std::optional<FtleSettings>& ftle, ReferenceCache* cache) {
+  const sim::RunSpec& run = point.run;
   const sim::InvariantMonitor monitor(run.body, run.case_id, run.initial);
   sim::Drifts drift = monitor.no_drift();
   std::vector<sim::Sample> kept;
@@ -166,57 +165,58 @@ nlohmann::ordered_json run_point(const PointFields& point, const sim::RunSpec& r
     });
   }
 
-  Row row;
-  row["index"] = point.index;
-  row["sweep"] = sweep_hash;
-  row["axes"] = point.axis_values;
-  if (!point.ignored.empty()) row["ignored"] = point.ignored;
-  row["case"] = physics::case_name(run.case_id);
-  row["formulation"] = std::string(sim::name(run.formulation));
-  row["method"] = std::string(sim::name(run.method));
-  if (sim::is_adaptive(run.method)) {
-    row["tol"] = run.tol;
-  } else {
-    row["step"] = run.step;
-    row["effective_step"] = result.effective_step;
+  io::JsonLine row;
+  row.begin_object();
+  row.key("index").value(point.index);
+  row.key("sweep").value(sweep_hash);
+  row.key("axes").raw(point.axes);
+  if (!point.ignored.empty()) {
+    row.key("ignored").begin_array();
+    for (const auto& name : point.ignored) row.value(name);
+    row.end_array();
   }
-  row["initial"] = {{"omega", vec(run.initial.omega)}, {"gamma", vec(run.initial.gamma)}};
-  row["energy"] =
+  row.key("energy").value(
       physics::invariants(run.body, physics::Case::custom, run.initial.omega, run.initial.gamma)
-          .energy;
-  row["t_end"] = run.t_end;
+          .energy);
+  write_run_record(row, run, result, drift);
+  row.key("failure");
   if (result.failure) {
-    row["failure_kind"] = std::string(numerics::name(result.failure->kind));
-    row["failure"] = {{"t", result.failure->t}, {"detail", result.failure->detail}};
+    row.begin_object();
+    row.key("t").value(result.failure->t);
+    row.key("detail").value(result.failure->detail);
+    row.end_object();
   } else {
-    row["failure_kind"] = nullptr;
-    row["failure"] = nullptr;
+    row.null();
   }
-  row["max_relative_drift"] = {
-      {"gamma_norm2", number_or_null(drift.gamma_norm2)},
-      {"area", number_or_null(drift.area)},
-      {"energy", number_or_null(drift.energy)},
-      {"extra_integral", drift.extra ? number_or_null(*drift.extra) : Row(nullptr)}};
-  if (any)
-    row["final"] = {{"t", last.t}, {"omega", vec(last.omega)}, {"gamma", vec(last.gamma)}};
-  else
-    row["final"] = nullptr;
-  row["samples_written"] = result.samples_written;
-  row["steps"] = result.stats.steps;
-  row["rhs_evals"] = result.stats.rhs_evals;
-  row["rejected_steps"] = result.stats.rejected_steps;
-  row["cpu_seconds"] = result.cpu_seconds;
+  row.key("final");
+  if (any) {
+    row.begin_object();
+    row.key("t").value(last.t);
+    row.key("omega").triple(last.omega[0], last.omega[1], last.omega[2]);
+    row.key("gamma").triple(last.gamma[0], last.gamma[1], last.gamma[2]);
+    row.end_object();
+  } else {
+    row.null();
+  }
   if (reference) {
     ReferenceCache local;
     const auto ref = (cache ? *cache : local).get(run);
-    row["reference_error"] =
-        ref->empty() ? Row(nullptr) : number_or_null(max_separation(kept, *ref));
+    row.key("reference_error");
+    if (ref->empty())
+      row.null();
+    else
+      row.value(max_separation(kept, *ref));
   }
   if (ftle) {
     const auto l = finite_time_lyapunov(run, *ftle);
-    row["ftle"] = l ? number_or_null(*l) : Row(nullptr);
+    row.key("ftle");
+    if (l)
+      row.value(*l);
+    else
+      row.null();
   }
-  return row;
+  row.end_object();
+  return {row.take(), result.failure.has_value()};
 }
 
 }  // namespace epviz::sweep

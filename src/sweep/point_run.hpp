@@ -44,9 +44,23 @@ double max_separation(const std::vector<sim::Sample>& a, const std::vector<sim::
 // nullopt when either state's integration fails.
 std::optional<double> finite_time_lyapunov(const sim::RunSpec& run, const FtleSettings& settings);
 
-// One row (a JSON object without a line break when dumped).
-nlohmann::ordered_json run_point(const PointFields& point, const sim::RunSpec& run,
-                                 const std::string& sweep_hash, bool reference,
-                                 const std::optional<FtleSettings>& ftle, ReferenceCache* cache);
+// A point ready to run: what its row says of it besides the run's results,
+// and its resolved run. Kept for every point of a sweep before any runs, so
+// it holds no more than that (not the point's job fields).
+struct PreparedPoint {
+  long index = 0;
+  std::string axes = "{}";           // the point's axis values, one JSON object
+  std::vector<std::string> ignored;  // PointFields::ignored
+  sim::RunSpec run;
+};
+PreparedPoint prepared_point(const PointFields& fields, sim::RunSpec run);
+
+struct PointRow {
+  std::string line;     // a JSON object on one line, without the line break
+  bool failed = false;  // the run ended in a numerical failure
+};
+
+PointRow run_point(const PreparedPoint& point, const std::string& sweep_hash, bool reference,
+                   const std::optional<FtleSettings>& ftle, ReferenceCache* cache);
 
 }  // namespace epviz::sweep

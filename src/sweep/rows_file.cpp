@@ -69,20 +69,45 @@ RowAppender::RowAppender(const fs::path& path) : path_(path) {
 }
 
 RowAppender::~RowAppender() {
-  if (fd_ >= 0) ::close(fd_);
+  if (fd_ < 0) return;
+  try {
+    flush();
+  } catch (const RowsFileError&) {
+    // Already failing (or being unwound): the rows not written are recomputed on resume.
+  }
+  ::close(fd_);
 }
 
+namespace {
+constexpr std::size_t kGatherBytes = 64 * 1024;
+constexpr auto kGatherTime = std::chrono::milliseconds(200);
+}  // namespace
+
 void RowAppender::append(const std::string& line) {
-  const std::string data = line + "\n";
   std::lock_guard lock(mutex_);
+  gathered_ += line;
+  gathered_ += '\n';
+  if (gathered_.size() >= kGatherBytes ||
+      std::chrono::steady_clock::now() - last_write_ >= kGatherTime)
+    write_gathered();
+}
+
+void RowAppender::flush() {
+  std::lock_guard lock(mutex_);
+  write_gathered();
+}
+
+void RowAppender::write_gathered() {
   std::size_t done = 0;
-  while (done < data.size()) {
-    const ssize_t n = ::write(fd_, data.data() + done, data.size() - done);
+  while (done < gathered_.size()) {
+    const ssize_t n = ::write(fd_, gathered_.data() + done, gathered_.size() - done);
     if (n < 0 && errno == EINTR) continue;
     if (n < 0)
       throw RowsFileError(path_.string() + ": write failed (" + std::strerror(errno) + ")");
     done += std::size_t(n);
   }
+  gathered_.clear();
+  last_write_ = std::chrono::steady_clock::now();
 }
 
 }  // namespace epviz::sweep

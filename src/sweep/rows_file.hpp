@@ -1,9 +1,11 @@
 #pragma once
-// The JSON Lines file a sweep writes: one row per point, appended and flushed
-// as each point finishes (in whatever order the threads finish them), so that
-// a sweep that is killed loses at most the rows being computed. Starting again
-// on the same file resumes: complete rows are kept and their points skipped;
-// a last line cut short by the kill is removed.
+// The JSON Lines file a sweep writes: one row per point, appended as points
+// finish (in whatever order the threads finish them) and written out at least
+// every 0.2 s, so that a sweep that is killed loses at most the rows being
+// computed and those finished since the last write. Starting again on the
+// same file resumes: complete rows are kept and their points skipped; a last
+// line cut short by the kill is removed.
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <mutex>
@@ -30,8 +32,11 @@ struct ExistingRows {
 ExistingRows resume_rows(const std::filesystem::path& path, const std::string& sweep_hash,
                          long points);
 
-// Appends lines to a regular file (created if missing); each append is one
-// write(2) of a whole line, made under a lock, so rows never interleave.
+// Appends lines to a regular file (created if missing). Rows that finish
+// within 0.2 s of the last write are gathered (up to 64 KiB) and written
+// together, whole lines only, under a lock, so rows never interleave: short
+// points then cost no system call each. flush() writes what is gathered (the
+// destructor does too, ignoring errors).
 class RowAppender {
  public:
   explicit RowAppender(const std::filesystem::path& path);
@@ -39,11 +44,15 @@ class RowAppender {
   RowAppender(const RowAppender&) = delete;
   RowAppender& operator=(const RowAppender&) = delete;
   void append(const std::string& line);  // `line` without its '\n'
+  void flush();
 
  private:
+  void write_gathered();  // with mutex_ held
   std::filesystem::path path_;
   int fd_ = -1;
   std::mutex mutex_;
+  std::string gathered_;
+  std::chrono::steady_clock::time_point last_write_ = std::chrono::steady_clock::now();
 };
 
 }  // namespace epviz::sweep

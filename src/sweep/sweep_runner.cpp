@@ -21,10 +21,9 @@ SweepTotals run_points(const SweepSpec& spec, const std::vector<PreparedPoint>& 
       if (i >= points.size() || stop) return;
       try {
         const auto& p = points[i];
-        const auto row =
-            run_point(p.point, p.run, spec.hash, spec.reference, spec.ftle, &references);
-        if (!row["failure"].is_null()) ++failures;
-        rows.append(row.dump());
+        const auto row = run_point(p, spec.hash, spec.reference, spec.ftle, &references);
+        if (row.failed) ++failures;
+        rows.append(row.line);
         if (on_row) {
           std::lock_guard g(lock);
           on_row();

@@ -8,14 +8,8 @@
 #include "sim/run_spec.hpp"
 #include "sweep/point_run.hpp"
 #include "sweep/rows_file.hpp"
-#include "sweep/sweep_point.hpp"
 
 namespace epviz::sweep {
-
-struct PreparedPoint {
-  PointFields point;
-  sim::RunSpec run;
-};
 
 struct SweepTotals {
   long points = 0;

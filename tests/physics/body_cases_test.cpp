@@ -47,7 +47,7 @@ TEST(ValidateBody, RejectsBadMoments) {
     EXPECT_TRUE(contains(msg, "inertia must be three positive finite numbers; got (")) << msg;
   }
   const auto [field, msg] = error_of([&] {
-    validate_body(Body{Vector3d(1, -2, 3), {}, 1}, false);
+    validate_body(Body{Vector3d(1, -2, 3), Vector3d::Zero(), 1}, false);
   });
   EXPECT_EQ(msg, "inertia must be three positive finite numbers; got (1, -2, 3)");
 }
@@ -55,7 +55,7 @@ TEST(ValidateBody, RejectsBadMoments) {
 TEST(ValidateBody, TriangleInequalityAndOverride) {
   {
     const auto [field, msg] = error_of([&] {
-      validate_body(Body{Vector3d(1, 1, 3), {}, 1}, false);
+      validate_body(Body{Vector3d(1, 1, 3), Vector3d::Zero(), 1}, false);
     });
     EXPECT_EQ(field, "inertia");
     EXPECT_EQ(msg,
@@ -63,18 +63,19 @@ TEST(ValidateBody, TriangleInequalityAndOverride) {
   }
   {
     const auto [field, msg] = error_of([&] {
-      validate_body(Body{Vector3d(5, 1, 3), {}, 1}, false);
+      validate_body(Body{Vector3d(5, 1, 3), Vector3d::Zero(), 1}, false);
     });
     EXPECT_TRUE(contains(msg, "I2 + I3 >= I1")) << msg;
   }
   {
     const auto [field, msg] = error_of([&] {
-      validate_body(Body{Vector3d(1, 4.5, 3), {}, 1}, false);
+      validate_body(Body{Vector3d(1, 4.5, 3), Vector3d::Zero(), 1}, false);
     });
     EXPECT_TRUE(contains(msg, "I1 + I3 >= I2")) << msg;
   }
-  EXPECT_NO_THROW(validate_body(Body{Vector3d(1, 1, 3), {}, 1}, true));
-  EXPECT_NO_THROW(validate_body(Body{Vector3d(1, 2, 3), {}, 1}, false));  // equality is a flat body
+  EXPECT_NO_THROW(validate_body(Body{Vector3d(1, 1, 3), Vector3d::Zero(), 1}, true));
+  EXPECT_NO_THROW(validate_body(Body{Vector3d(1, 2, 3), Vector3d::Zero(), 1},
+                                false));  // equality is a flat body
 }
 
 TEST(ValidateBody, RejectsBadComAndWeight) {
@@ -83,10 +84,14 @@ TEST(ValidateBody, RejectsBadComAndWeight) {
   });
   EXPECT_EQ(field, "com");
   EXPECT_TRUE(contains(msg, "finite")) << msg;
-  std::tie(field, msg) = error_of([&] { validate_body(Body{Vector3d(1, 2, 3), {}, -1}, false); });
+  std::tie(field, msg) = error_of([&] {
+    validate_body(Body{Vector3d(1, 2, 3), Vector3d::Zero(), -1}, false);
+  });
   EXPECT_EQ(field, "weight");
   EXPECT_TRUE(contains(msg, "non-negative")) << msg;
-  std::tie(field, msg) = error_of([&] { validate_body(Body{Vector3d(1, 2, 3), {}, kInf}, true); });
+  std::tie(field, msg) = error_of([&] {
+    validate_body(Body{Vector3d(1, 2, 3), Vector3d::Zero(), kInf}, true);
+  });
   EXPECT_EQ(field, "weight");
 }
 

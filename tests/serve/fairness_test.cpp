@@ -69,7 +69,9 @@ TEST(ServeFairness, TwelveClientsFourOfThemLargeAllKeepAFrameRate) {
   constexpr long budget = 3840L * 2160;
   TestServer server([](ServerOptions& o) { o.pixel_budget = budget; }, /*always_wants=*/true);
   // 100 ms per megapixel: a full 3840x2160 frame costs ~0.8 s, so four of
-  // them a round would leave every page waiting over 3 s for each frame.
+  // them a round would leave every page waiting over 3.3 s for each frame.
+  // Fair rounds cost one budget (~0.8 s) plus the real work of twelve small
+  // frames: well under a second optimised, about 2 s under AddressSanitizer.
   server.probe->render_ms_per_megapixel = 100;
   std::vector<std::unique_ptr<Viewer>> viewers;
   for (int i = 0; i < 12; ++i) {
@@ -94,7 +96,8 @@ TEST(ServeFairness, TwelveClientsFourOfThemLargeAllKeepAFrameRate) {
     double longest = std::chrono::duration<double>(times.front() - from).count();
     for (std::size_t k = 1; k < times.size(); ++k)
       longest = std::max(longest, std::chrono::duration<double>(times[k] - times[k - 1]).count());
-    EXPECT_LT(longest, 2.0) << "a page waited this long (s) for a frame";
+    // Between a fair round (at most ~2 s, sanitizers included) and an unfair one (over 3.3 s).
+    EXPECT_LT(longest, 2.7) << "a page waited this long (s) for a frame";
   }
   // The large views were scaled alike, keeping their shape, within the budget.
   const auto [w, h] = viewers[0]->last_size();
