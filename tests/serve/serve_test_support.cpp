@@ -1,5 +1,6 @@
 #include "serve_test_support.hpp"
 
+#include <cstdlib>
 #include <fstream>
 #include <stdexcept>
 
@@ -157,6 +158,12 @@ TestServer::~TestServer() {
   server.reset();
   std::error_code ignored;
   std::filesystem::remove(page, ignored);
+}
+
+int slowdown() {
+  const char* s = std::getenv("EPVIZ_TEST_SLOWDOWN");
+  const int n = s ? std::atoi(s) : 1;
+  return n >= 1 ? n : 1;
 }
 
 bool TestServer::eventually(const std::function<bool()>& condition,

@@ -31,8 +31,13 @@ namespace epviz::serve::testing {
 
 using namespace std::chrono_literals;
 
+// How many times slower than the optimised build the server runs here: 1,
+// or EPVIZ_TEST_SLOWDOWN (the ThreadSanitizer pass sets it). Tests that give
+// the server a wall-clock time to do something multiply it by this.
+int slowdown();
+
 // Long enough for a loaded two-core machine; a passing run never waits this long.
-inline constexpr auto expect_within = 10s;
+inline const std::chrono::milliseconds expect_within = 10s * slowdown();
 // How long "nothing arrives" is watched for.
 inline constexpr auto quiet_period = 300ms;
 
