@@ -9,6 +9,7 @@
 //   io::JsonLine j;
 //   j.begin_object().key("t").value(1.5).key("v").begin_array().value(1L).end_array().end_object();
 //   j.str()  ->  {"t":1.5,"v":[1]}
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,6 +33,8 @@ class JsonLine {
   JsonLine& value(const char* s) { return value(std::string_view(s)); }
   JsonLine& value(const std::string& s) { return value(std::string_view(s)); }
   JsonLine& null();
+  // The number, or null when there is none.
+  JsonLine& value(const std::optional<double>& x) { return x ? value(*x) : null(); }
   // A value already written as JSON (e.g. by nlohmann's dump), taken as it is.
   JsonLine& raw(std::string_view json);
   // Three doubles as an array.

@@ -4,12 +4,11 @@
 #include <cmath>
 #include <vector>
 
+#include "paint/painter_common.hpp"
 #include "render/panel_2d.hpp"
 
 namespace epviz::paint {
 namespace {
-
-glm::vec4 to_glm(const scene::Rgba& c) { return {c[0], c[1], c[2], c[3]}; }
 
 // Separations below this are shown at it: identical runs (zero) stay on the chart.
 constexpr double kFloor = 1e-16;

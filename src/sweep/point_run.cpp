@@ -201,19 +201,11 @@ PointRow run_point(const PreparedPoint& point, const std::string& sweep_hash, bo
   if (reference) {
     ReferenceCache local;
     const auto ref = (cache ? *cache : local).get(run);
-    row.key("reference_error");
-    if (ref->empty())
-      row.null();
-    else
-      row.value(max_separation(kept, *ref));
+    row.key("reference_error")
+        .value(ref->empty() ? std::nullopt : std::optional(max_separation(kept, *ref)));
   }
   if (ftle) {
-    const auto l = finite_time_lyapunov(run, *ftle);
-    row.key("ftle");
-    if (l)
-      row.value(*l);
-    else
-      row.null();
+    row.key("ftle").value(finite_time_lyapunov(run, *ftle));
   }
   row.end_object();
   return {row.take(), result.failure.has_value()};

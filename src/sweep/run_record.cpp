@@ -31,11 +31,7 @@ void write_run_record(io::JsonLine& j, const sim::RunSpec& spec, const sim::RunR
   j.key("gamma_norm2").value(drift.gamma_norm2);
   j.key("area").value(drift.area);
   j.key("energy").value(drift.energy);
-  j.key("extra_integral");
-  if (drift.extra)
-    j.value(*drift.extra);
-  else
-    j.null();
+  j.key("extra_integral").value(drift.extra);
   j.end_object();
   j.key("samples_written").value(r.samples_written);
   j.key("steps").value(r.stats.steps);

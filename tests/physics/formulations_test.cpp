@@ -16,6 +16,7 @@ namespace {
 
 using cd = std::complex<double>;
 using test::Random;
+using test::random_body;
 
 // math.md (3.4), sigma = 1.
 template <class T>
@@ -39,10 +40,6 @@ Eigen::Matrix<T, 3, 1> hopf(T pr, T pi, T qr, T qi) {
 }
 
 constexpr double kStep = 1e-30;  // complex step: exact derivatives, no cancellation
-
-Body random_body(Random& rng) {
-  return Body{rng.vec(0.5, 3.0), rng.vec(-1.0, 1.0), rng.uniform(0.5, 2.0)};
-}
 
 TEST(Riccati, ChainRuleNorthChartGivesPoisson) {
   Random rng;

@@ -1,8 +1,10 @@
 #pragma once
-// Test-only helpers: a classical RK4 written independently of src/, and random states.
+// Test-only helpers: a classical RK4 written independently of src/, and random states and bodies.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <random>
+
+#include "physics/body.hpp"
 
 namespace epviz::physics::test {
 
@@ -39,5 +41,11 @@ struct Random {
     return v.normalized();
   }
 };
+
+// A body with moments in [0.5, 3], centre of mass in [-1, 1]^3 and weight in
+// [0.5, 2]: generic, with no symmetry to hide a wrong term.
+inline Body random_body(Random& rng) {
+  return Body{rng.vec(0.5, 3.0), rng.vec(-1.0, 1.0), rng.uniform(0.5, 2.0)};
+}
 
 }  // namespace epviz::physics::test

@@ -115,13 +115,9 @@ Deriv d_hess(const Body& b, const Point& p) {
   return a.get();
 }
 
-Body random_body(test::Random& rng) {
-  return Body{rng.vec(0.5, 3.0), rng.vec(-1.0, 1.0), rng.uniform(0.5, 2.0)};
-}
-
 TEST(Invariants, ValuesMatchFormulas) {
   test::Random rng;
-  const Body body = random_body(rng);
+  const Body body = test::random_body(rng);
   const Vector3d w = rng.vec(), g = rng.unit();
   const Invariants v = invariants(body, Case::custom, w, g);
   EXPECT_DOUBLE_EQ(v.gamma_norm2, g.dot(g));
@@ -139,7 +135,7 @@ TEST(Invariants, ValuesMatchFormulas) {
 TEST(Invariants, CasimirsAndEnergyAreConservedByTheRhs) {
   test::Random rng;
   for (int trial = 0; trial < 500; ++trial) {
-    const Body body = random_body(rng);
+    const Body body = test::random_body(rng);
     // gamma need not be unit for these identities.
     const Point p = at(body, rng.vec(), rng.vec(-1, 1));
     for (const Deriv d : {d_gamma2(p), d_area(body, p), d_energy(body, p)})
@@ -150,7 +146,7 @@ TEST(Invariants, CasimirsAndEnergyAreConservedByTheRhs) {
 TEST(Invariants, DerivativeTestCanFail) {
   // The same check on a perturbed vector field (gamma' off by 1e-6) fails.
   test::Random rng;
-  const Body body = random_body(rng);
+  const Body body = test::random_body(rng);
   Point p = at(body, rng.vec(), rng.unit());
   p.dg.x() += 1e-6;
   const Deriv d = d_area(body, p);

@@ -104,9 +104,16 @@ TEST(ServeFlowLimits, ForgedAcksDoNotGrowTheOutbox) {
     std::this_thread::sleep_for(2ms);
   }
   const ServerStats stats = server.server->stats();
+  // Counts, not rates: how many frames fit in the window depends on the
+  // machine and the build (a third as many under ASan). Round-robin gives the
+  // reading page one frame per round, as many as the forger's renders.
+  const int forger_renders = server.probe->large_renders - renders_before;
+  EXPECT_GT(forger_renders, 3 * ServerOptions{}.max_frames_in_flight)
+      << "the forged acks never opened the forger's window: the test shows nothing";
   EXPECT_LE(stats.outbox_bytes_peak, long(4 * frame_bytes + 64 * 1024))
       << "frames piled up for a page that reads none (frame " << frame_bytes << " bytes)";
-  EXPECT_GE(bystander.frames(), 20) << "the reading page lost its frame rate";
+  EXPECT_GE(bystander.frames(), forger_renders / 2)
+      << "the reading page lost its share of the rounds (forger rendered " << forger_renders << ")";
   EXPECT_EQ(stats.protocol_errors, 0) << server.log->all();
 }
 
