@@ -26,11 +26,12 @@ void read_sweep(std::string_view text) {
   const auto spec = sweep::read_sweep(io::parse_json_text(text, "fuzz.json"), "fuzz.json");
   const long n = spec.point_count();
   if (n < 1 || n > sweep::max_points) std::abort();
+  sweep::PointReader read_point(spec);
   for (long i = 0; i < n && i < kPointsTried; ++i) {
     const auto c = spec.coordinates(i);
     for (std::size_t k = 0; k < c.size(); ++k)
       if (c[k] >= spec.axes[k].values.size()) std::abort();
-    const auto p = sweep::point_fields(spec, i);
+    const auto p = read_point(i);
     (void)sweep::resolve_point(p, [](const job::SimulationFields& f) { return app::resolve(f); });
   }
 }

@@ -59,9 +59,10 @@ int run_sweep(const SweepOptions& o) {
   const long total = spec.point_count();
   std::vector<sweep::PreparedPoint> points;
   points.reserve(std::size_t(total));
+  sweep::PointReader read_point(spec);
   for (long i = 0; i < total; ++i) {
     try {
-      auto p = sweep::point_fields(spec, i);
+      auto p = read_point(i);
       auto run = sweep::resolve_point(p, [](const SimulationFields& f) { return resolve(f); });
       points.push_back(sweep::prepared_point(p, std::move(run)));
     } catch (const io::JobError& e) {

@@ -1,10 +1,12 @@
 #include "io/json_reader.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <set>
 
 #include "io/printable.hpp"
 
@@ -225,8 +227,12 @@ std::optional<std::string> ObjectReader::peek_string(const std::string& key) con
   return it->get<std::string>();
 }
 
+void ObjectReader::remember(const std::string& key) {
+  if (std::find(read_.begin(), read_.end(), key) == read_.end()) read_.push_back(key);
+}
+
 const Json* ObjectReader::get(const std::string& key) {
-  read_.insert(key);
+  remember(key);
   auto it = object_->find(key);
   return it == object_->end() ? nullptr : &*it;
 }
@@ -317,9 +323,11 @@ std::optional<ObjectReader> ObjectReader::object(const std::string& key) {
 
 void ObjectReader::finish() const {
   for (auto it = object_->begin(); it != object_->end(); ++it) {
-    if (read_.count(it.key())) continue;
+    if (std::find(read_.begin(), read_.end(), it.key()) != read_.end()) continue;
+    std::vector<std::string> keys = read_;
+    std::sort(keys.begin(), keys.end());
     std::string allowed;
-    for (const auto& k : read_) allowed += (allowed.empty() ? "" : ", ") + k;
+    for (const auto& k : keys) allowed += (allowed.empty() ? "" : ", ") + k;
     fail(it.key(), "unknown key (allowed here: " + allowed + ")");
   }
 }

@@ -8,7 +8,6 @@
 #include <cstddef>
 #include <filesystem>
 #include <optional>
-#include <set>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -52,7 +51,7 @@ class ObjectReader {
   // The string at `key` without marking it read (nullopt if absent or not a string).
   std::optional<std::string> peek_string(const std::string& key) const;
   // Marks a key as handled by the caller.
-  void mark_read(const std::string& key) { read_.insert(key); }
+  void mark_read(const std::string& key) { remember(key); }
   // The raw value (nullptr if absent), marked read.
   const nlohmann::json* raw(const std::string& key) { return get(key); }
   std::optional<double> number(const std::string& key);
@@ -78,11 +77,14 @@ class ObjectReader {
 
  private:
   const nlohmann::json* get(const std::string& key);
+  void remember(const std::string& key);
 
   const nlohmann::json* object_;
   std::string file_;
   std::string path_;
-  std::set<std::string> read_;
+  // The keys asked for: a few dozen at most, where a search of a vector
+  // costs less than a tree's allocations (a sweep reads once per point).
+  std::vector<std::string> read_;
 };
 
 }  // namespace epviz::io

@@ -13,13 +13,17 @@ namespace {
 
 using Json = nlohmann::json;
 
+// The vector field called `name` ("inertia", "com", "omega" or "gamma").
+job::Given<std::array<double, 3>>& vector_field(job::SimulationFields& f, const std::string& name) {
+  return name == "inertia" ? f.inertia
+         : name == "com"   ? f.com
+         : name == "omega" ? f.omega
+                           : f.gamma;
+}
+
 // The vector field `name` as the point has it so far: given, or the preset's.
-std::array<double, 3> current_vector(const job::SimulationFields& f, const std::string& name) {
-  const job::Given<std::array<double, 3>>* given = name == "inertia" ? &f.inertia
-                                                   : name == "com"   ? &f.com
-                                                   : name == "omega" ? &f.omega
-                                                                     : &f.gamma;
-  if (*given) return **given;
+std::array<double, 3> current_vector(job::SimulationFields& f, const std::string& name) {
+  if (const auto& given = vector_field(f, name)) return *given;
   auto c = f.case_name ? physics::case_from_name(*f.case_name) : std::nullopt;
   if (!c || *c == physics::Case::custom) c = physics::Case::generic;
   const auto& p = physics::preset(*c);
@@ -28,6 +32,29 @@ std::array<double, 3> current_vector(const job::SimulationFields& f, const std::
                             : name == "omega" ? p.initial.omega
                                               : p.initial.gamma;
   return {v[0], v[1], v[2]};
+}
+
+// The one field `name` of `f` was given by `origin`, so messages about it name the axis.
+void set_origin(job::SimulationFields& f, const std::string& name, const std::string& origin) {
+  if (name == "inertia" || name == "com" || name == "omega" || name == "gamma")
+    vector_field(f, name).origin = origin;
+  if (name == "weight") f.weight.origin = origin;
+  if (name == "case") f.case_name.origin = origin;
+  if (name == "method") f.method.origin = origin;
+  if (name == "formulation") f.formulation.origin = origin;
+  if (name == "step") f.step.origin = origin;
+  if (name == "tol") f.tol.origin = origin;
+}
+
+// {name: value} read by the job format's reader: the fields it gives.
+job::SimulationFields read_one(const SweepSpec& spec, const Axis& axis, const std::string& name,
+                               const Json& value) {
+  Json one = Json::object();
+  one[name] = value;
+  io::ObjectReader r(one, spec.file, axis.key);
+  job::SimulationFields given = job::read_simulation_fields(r);
+  r.finish();
+  return given;
 }
 
 std::optional<bool> method_is_adaptive(const job::SimulationFields& f) {
@@ -39,52 +66,59 @@ std::optional<bool> method_is_adaptive(const job::SimulationFields& f) {
 
 }  // namespace
 
-PointFields point_fields(const SweepSpec& spec, long index) {
+PointReader::PointReader(const SweepSpec& spec) : spec_(spec) {
+  for (const Axis& axis : spec.axes) values_.emplace_back(axis.values.size());
+}
+
+const PointReader::ReadValue& PointReader::value(std::size_t axis_index, std::size_t value_index) {
+  ReadValue& v = values_[axis_index][value_index];
+  if (v.read) return v;
+  const Axis& axis = spec_.axes[axis_index];
+  const Json& value = axis.values[value_index];
+  v.origin = spec_.file + ": key '" + axis.key + "' (" + axis.field + " = " + value.dump() + ")";
+  const auto bracket = axis.field.find('[');
+  if (axis.field != "energy" && bracket == std::string::npos) {
+    v.fields = read_one(spec_, axis, axis.field, value);
+    set_origin(v.fields, axis.field, v.origin);
+  }
+  // A component is checked in the vector it goes into, by operator() at the
+  // first point that takes it.
+  v.read = true;
+  return v;
+}
+
+PointFields PointReader::operator()(long index) {
   PointFields p;
   p.index = index;
-  p.fields = spec.base;
-  const auto at = spec.coordinates(index);
+  p.fields = spec_.base;
+  const auto at = spec_.coordinates(index);
   // Plain fields first, then components (which start from the vector the
   // plain fields and the case give), so that the order of the axes does not matter.
   for (int pass = 0; pass < 2; ++pass) {
-    for (std::size_t k = 0; k < spec.axes.size(); ++k) {
-      const auto& axis = spec.axes[k];
-      const Json& value = axis.values[at[k]];
+    for (std::size_t k = 0; k < spec_.axes.size(); ++k) {
+      const Axis& axis = spec_.axes[k];
       const auto bracket = axis.field.find('[');
       if ((bracket != std::string::npos) != (pass == 1)) continue;
+      const Json& value = axis.values[at[k]];
       p.axis_values[axis.field] = value;
-      const std::string origin =
-          spec.file + ": key '" + axis.key + "' (" + axis.field + " = " + value.dump() + ")";
+      const ReadValue& read = this->value(k, at[k]);
       if (axis.field == "energy") {
         p.energy = value.get<double>();
-        p.energy_origin = origin;
-        continue;
-      }
-      Json one = Json::object();
-      std::string name = axis.field;
-      if (bracket != std::string::npos) {
-        name = axis.field.substr(0, bracket);
+        p.energy_origin = read.origin;
+      } else if (bracket == std::string::npos) {
+        p.fields.overlay(read.fields);
+      } else {
+        const std::string name = axis.field.substr(0, bracket);
         auto v = current_vector(p.fields, name);
         v[std::size_t(axis.field[bracket + 1] - '0')] = value.get<double>();
-        one[name] = v;
-      } else {
-        one[name] = value;
+        if (!read.checked_with_vector) {
+          // The vector's range holds per component, and the other components
+          // are valid (given, or the preset's): one check per value does.
+          read_one(spec_, axis, name, Json(v));
+          values_[k][at[k]].checked_with_vector = true;
+        }
+        vector_field(p.fields, name).set(v, read.origin);
       }
-      io::ObjectReader r(one, spec.file, axis.key);
-      job::SimulationFields given = job::read_simulation_fields(r);
-      r.finish();
-      p.fields.overlay(given);
-      // Messages about the value (resolve's) name the axis and the value.
-      if (name == "inertia") p.fields.inertia.origin = origin;
-      if (name == "com") p.fields.com.origin = origin;
-      if (name == "omega") p.fields.omega.origin = origin;
-      if (name == "gamma") p.fields.gamma.origin = origin;
-      if (name == "weight") p.fields.weight.origin = origin;
-      if (name == "case") p.fields.case_name.origin = origin;
-      if (name == "method") p.fields.method.origin = origin;
-      if (name == "formulation") p.fields.formulation.origin = origin;
-      if (name == "step") p.fields.step.origin = origin;
-      if (name == "tol") p.fields.tol.origin = origin;
     }
   }
   // A step means nothing to an adaptive method, a tolerance nothing to a
@@ -102,6 +136,8 @@ PointFields point_fields(const SweepSpec& spec, long index) {
   }
   return p;
 }
+
+PointFields point_fields(const SweepSpec& spec, long index) { return PointReader(spec)(index); }
 
 void set_energy(sim::RunSpec& spec, double energy, const std::string& origin) {
   const auto inv =

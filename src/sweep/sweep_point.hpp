@@ -27,8 +27,31 @@ struct PointFields {
   std::vector<std::string> ignored;
 };
 
-// Throws io::JobError naming the sweep file and the axis for a value the
-// field does not accept.
+// Reads a sweep's points in turn. Each axis value is read by the job
+// format's reader once, when a point first takes it, not once per point: a
+// sweep of a million points over a few hundred values reads a few hundred
+// (the reader, not the run, was a short run's largest cost outside the
+// integration). operator() throws io::JobError naming the sweep file and the
+// axis for a value the field does not accept.
+class PointReader {
+ public:
+  explicit PointReader(const SweepSpec& spec);  // `spec` must outlive the reader
+  PointFields operator()(long index);
+
+ private:
+  struct ReadValue {
+    bool read = false;
+    std::string origin;                // "FILE: key 'axes[1]' (step = 0.01)"
+    job::SimulationFields fields;      // what a plain field's value gives
+    bool checked_with_vector = false;  // a component's range, checked in its vector
+  };
+  const ReadValue& value(std::size_t axis_index, std::size_t value_index);
+
+  const SweepSpec& spec_;
+  std::vector<std::vector<ReadValue>> values_;  // [axis][value]
+};
+
+// One point, read alone (a PointReader for many).
 PointFields point_fields(const SweepSpec& spec, long index);
 
 // Scales spec.initial.omega so that the total energy C1 is `energy`, keeping

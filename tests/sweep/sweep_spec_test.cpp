@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "io/json_reader.hpp"
+#include "job/schema.hpp"
 #include "sweep/sweep_point.hpp"
 #include "sweep/sweep_spec.hpp"
 
@@ -103,6 +104,59 @@ TEST(SweepPoint, ComponentAxesChangeOneComponentOfThePresetsVector) {
   EXPECT_EQ((*p.fields.inertia)[2], generic[2]);
   EXPECT_EQ(p.axis_values["inertia[1]"], 1.9);
   EXPECT_NE(p.fields.inertia.origin.find("axes[0]"), std::string::npos);
+}
+
+// The simulation fields as a job file would hold them, origins aside.
+Json written(const job::SimulationFields& fields) {
+  job::JobDocument d;
+  d.simulation = fields;
+  return job::write_job(d)["simulation"];
+}
+
+TEST(SweepPoint, AReaderOfManyPointsGivesEachAsReadAlone) {
+  // Plain, component and energy axes, values met again and again: the
+  // reader keeps what it read of each value, which must not leak from one
+  // point into the next.
+  const auto s = parse(R"({"simulation": {"case": "generic", "omega": [1, 0.5, 0.2]},
+      "axes": [{"field": "method", "values": ["rk4", "dop853"]},
+               {"field": "omega[1]", "from": -1, "to": 1, "count": 3},
+               {"field": "step", "values": [0.01, 0.02]},
+               {"field": "energy", "values": [4, 5]},
+               {"field": "weight", "values": [1, 2]}]})");
+  PointReader read(s);
+  for (long i = 0; i < s.point_count(); ++i) {
+    SCOPED_TRACE("point " + std::to_string(i));
+    const PointFields many = read(i);
+    const PointFields alone = point_fields(s, i);
+    EXPECT_EQ(written(many.fields), written(alone.fields));
+    EXPECT_EQ(many.fields.omega.origin, alone.fields.omega.origin);
+    EXPECT_EQ(many.fields.weight.origin, alone.fields.weight.origin);
+    EXPECT_EQ(many.axis_values, alone.axis_values);
+    EXPECT_EQ(many.energy, alone.energy);
+    EXPECT_EQ(many.energy_origin, alone.energy_origin);
+    EXPECT_EQ(many.ignored, alone.ignored);
+  }
+  // And what the points are, independently of the reader: the last point.
+  const PointFields last = read(s.point_count() - 1);
+  EXPECT_EQ(*last.fields.method, "dop853");
+  EXPECT_EQ((*last.fields.omega)[0], 1.0);
+  EXPECT_EQ((*last.fields.omega)[1], 1.0);
+  EXPECT_EQ(*last.fields.weight, 2.0);
+  EXPECT_EQ(last.energy, 5.0);
+  EXPECT_EQ(last.ignored, std::vector<std::string>{"step"});
+}
+
+TEST(SweepPoint, AReaderChecksAComponentsValueAtTheFirstPointThatTakesIt) {
+  const auto s = parse(R"({"axes": [{"field": "omega[2]", "values": [0.5, 1e300]}]})");
+  PointReader read(s);
+  EXPECT_NO_THROW(read(0));
+  try {
+    read(1);
+    ADD_FAILURE() << "an omega component of 1e300 was taken";
+  } catch (const io::JobError& e) {
+    EXPECT_NE(std::string(e.what()).find("axes[0]"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(read(0));
 }
 
 TEST(SweepPoint, AStepAxisDoesNotApplyToAdaptiveMethods) {
