@@ -16,29 +16,34 @@ void JsonLine::separate() {
   }
 }
 
-JsonLine& JsonLine::begin_object() {
+void JsonLine::open(char bracket) {
   separate();
-  out_ += '{';
+  out_ += bracket;
   first_.push_back(true);
+}
+
+void JsonLine::close(char bracket) {
+  out_ += bracket;
+  first_.pop_back();
+}
+
+JsonLine& JsonLine::begin_object() {
+  open('{');
   return *this;
 }
 
 JsonLine& JsonLine::end_object() {
-  out_ += '}';
-  first_.pop_back();
+  close('}');
   return *this;
 }
 
 JsonLine& JsonLine::begin_array() {
-  separate();
-  out_ += '[';
-  first_.push_back(true);
+  open('[');
   return *this;
 }
 
 JsonLine& JsonLine::end_array() {
-  out_ += ']';
-  first_.pop_back();
+  close(']');
   return *this;
 }
 

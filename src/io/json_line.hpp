@@ -44,7 +44,9 @@ class JsonLine {
   std::string take() { return std::move(out_); }
 
  private:
-  void separate();  // the comma before a value or key that is not its container's first
+  void separate();           // the comma before a value or key that is not its container's first
+  void open(char bracket);   // a container inside the current one
+  void close(char bracket);  // the innermost open container
   std::string out_;
   std::vector<bool> first_;  // one entry per open container: nothing written in it yet
   bool after_key_ = false;
