@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -61,15 +62,28 @@ ExistingRows resume_rows(const fs::path& path, const std::string& sweep_hash, lo
   return out;
 }
 
+namespace {
+// A row waits at most this long to be written; rows that finish within it are
+// written together (up to kGatherBytes), so short points cost no system call each.
+constexpr auto kGatherTime = std::chrono::milliseconds(200);
+constexpr std::size_t kGatherBytes = 64 * 1024;
+}  // namespace
+
 RowAppender::RowAppender(const fs::path& path) : path_(path) {
   fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
   if (fd_ < 0)
     throw RowsFileError(path.string() + ": cannot open for appending (" + std::strerror(errno) +
                         ")");
+  writer_ = std::thread([this] { write_periodically(); });
 }
 
 RowAppender::~RowAppender() {
-  if (fd_ < 0) return;
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  wake_.notify_all();
+  writer_.join();
   try {
     flush();
   } catch (const RowsFileError&) {
@@ -78,22 +92,30 @@ RowAppender::~RowAppender() {
   ::close(fd_);
 }
 
-namespace {
-constexpr std::size_t kGatherBytes = 64 * 1024;
-constexpr auto kGatherTime = std::chrono::milliseconds(200);
-}  // namespace
+void RowAppender::write_periodically() {
+  std::unique_lock lock(mutex_);
+  while (!stopping_) {
+    wake_.wait_for(lock, kGatherTime);
+    if (gathered_.empty() || error_) continue;
+    try {
+      write_gathered();
+    } catch (const RowsFileError&) {
+      error_ = std::current_exception();  // the next append or flush reports it
+    }
+  }
+}
 
 void RowAppender::append(const std::string& line) {
   std::lock_guard lock(mutex_);
+  if (error_) std::rethrow_exception(error_);
   gathered_ += line;
   gathered_ += '\n';
-  if (gathered_.size() >= kGatherBytes ||
-      std::chrono::steady_clock::now() - last_write_ >= kGatherTime)
-    write_gathered();
+  if (gathered_.size() >= kGatherBytes) write_gathered();
 }
 
 void RowAppender::flush() {
   std::lock_guard lock(mutex_);
+  if (error_) std::rethrow_exception(error_);
   write_gathered();
 }
 
@@ -107,7 +129,6 @@ void RowAppender::write_gathered() {
     done += std::size_t(n);
   }
   gathered_.clear();
-  last_write_ = std::chrono::steady_clock::now();
 }
 
 }  // namespace epviz::sweep

@@ -1,17 +1,19 @@
 #pragma once
 // The JSON Lines file a sweep writes: one row per point, appended as points
-// finish (in whatever order the threads finish them) and written out at least
-// every 0.2 s, so that a sweep that is killed loses at most the rows being
-// computed and those finished since the last write. Starting again on the
+// finish (in whatever order the threads finish them) and written within 0.2 s
+// of finishing, so that a sweep that is killed loses at most the rows being
+// computed and those of the last 0.2 s. Starting again on the
 // same file resumes: complete rows are kept and their points skipped; a last
 // line cut short by the kill is removed.
-#include <chrono>
+#include <condition_variable>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <mutex>
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 namespace epviz::sweep {
 
@@ -32,10 +34,11 @@ struct ExistingRows {
 ExistingRows resume_rows(const std::filesystem::path& path, const std::string& sweep_hash,
                          long points);
 
-// Appends lines to a regular file (created if missing). Rows that finish
-// within 0.2 s of the last write are gathered (up to 64 KiB) and written
-// together, whole lines only, under a lock, so rows never interleave: short
-// points then cost no system call each. flush() writes what is gathered (the
+// Appends lines to a regular file (created if missing). Lines are gathered
+// and written together, whole lines only, under a lock, so rows never
+// interleave: by a thread of its own every 0.2 s, or at once when 64 KiB are
+// gathered; short points then cost no system call each. A failed write is
+// thrown by the next append or flush. flush() writes what is gathered (the
 // destructor does too, ignoring errors).
 class RowAppender {
  public:
@@ -47,12 +50,16 @@ class RowAppender {
   void flush();
 
  private:
-  void write_gathered();  // with mutex_ held
+  void write_gathered();      // with mutex_ held
+  void write_periodically();  // the writer thread
   std::filesystem::path path_;
   int fd_ = -1;
   std::mutex mutex_;
+  std::condition_variable wake_;  // the destructor stops the writer through it
   std::string gathered_;
-  std::chrono::steady_clock::time_point last_write_ = std::chrono::steady_clock::now();
+  std::exception_ptr error_;  // a write the writer thread could not make
+  bool stopping_ = false;
+  std::thread writer_;
 };
 
 }  // namespace epviz::sweep

@@ -1,9 +1,12 @@
 #include <gtest/gtest.h>
 
 #include <unistd.h>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <thread>
 
 #include "sweep/atlas.hpp"
 #include "sweep/point_run.hpp"
@@ -77,6 +80,34 @@ TEST(RowsFile, ResumeKeepsCompleteRowsAndCutsATornLine) {
                                   .size());
   EXPECT_THROW(resume_rows(p, "other", 10), RowsFileError);  // rows of another sweep
   EXPECT_THROW(resume_rows(p, "h", 2), RowsFileError);       // index outside the sweep
+  fs::remove(p);
+}
+
+std::string contents(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// A finished row reaches the file soon, with no further row to push it out
+// (a killed sweep then loses only what it was computing), and rows appended
+// together arrive whole and in order.
+TEST(RowsFile, AppendedRowsAreOnDiskWithinAFractionOfASecond) {
+  const fs::path p =
+      fs::temp_directory_path() / ("epviz-rows-append-" + std::to_string(::getpid()));
+  fs::remove(p);
+  {
+    RowAppender rows(p);
+    rows.append(R"({"index":0})");
+    rows.append(R"({"index":1})");
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(2);
+    while (contents(p).empty() && std::chrono::steady_clock::now() < deadline)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    EXPECT_EQ(contents(p), "{\"index\":0}\n{\"index\":1}\n")
+        << "rows still held back after 2 s (the writer writes every 0.2 s)";
+    rows.append(R"({"index":2})");
+  }
+  EXPECT_EQ(contents(p), "{\"index\":0}\n{\"index\":1}\n{\"index\":2}\n")
+      << "the last row was not written when the appender closed";
   fs::remove(p);
 }
 
