@@ -5,31 +5,27 @@
 #include <gtest/gtest.h>
 
 #include "paint/frame_painter.hpp"
+#include "paint/preset_frame.hpp"
 #include "paint/trail_colours.hpp"
 #include "physics/cases.hpp"
 #include "render/render_test_support.hpp"
-#include "scene/frame_source.hpp"
 
 namespace epviz {
 namespace {
 
 namespace et = epviz::testing;
 
-// A frame at 60 % of a short run of a preset, as `epviz render` builds it at this size.
+// A frame of a preset's short run, at this size, view and camera.
 scene::Frame frame_of(physics::Case c, scene::View view, int w, int h, double distance = 3.4,
                       int trace_axis = 3) {
-  const auto run = sim::preset_run(c, sim::Method::dop853, sim::Formulation::direct, 12.0, 200);
   scene::SceneSettings s;
   s.width = w;
   s.height = h;
-  s.fps = 10;
-  s.duration = 3;
   s.view = view;
   s.camera.distance = distance;
   s.trace_axis = trace_axis;
   s.trail_length = 6.0;
-  scene::FrameSource source(scene::plan_scene(run, s), s);
-  return source.frame(18);
+  return et::preset_frame(c, s);
 }
 
 paint::Box box_of(const render::Viewport& v) {

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "paint/frame_painter.hpp"
+#include "paint/preset_frame.hpp"
 #include "physics/cases.hpp"
 #include "render/render_test_support.hpp"
 #include "render/snapshot.hpp"
@@ -24,19 +25,15 @@ paint::FramePainter& painter() {
   return p;
 }
 
-// A frame of the given case at 60 % of a short run, as `epviz render` builds it.
+// A frame of a preset's short run at the goldens' size.
 scene::Frame case_frame(physics::Case c, scene::View view = scene::View::body,
                         scene::Layers layers = {}) {
-  const auto run = sim::preset_run(c, sim::Method::dop853, sim::Formulation::direct, 12.0, 200);
   scene::SceneSettings s;
   s.width = W;
   s.height = H;
-  s.fps = 10;
-  s.duration = 3;
   s.view = view;
   s.layers = layers;
-  scene::FrameSource source(scene::plan_scene(run, s), s);
-  return source.frame(18);
+  return et::preset_frame(c, s);
 }
 
 glm::vec4 px(const render::RgbaImage& img, glm::vec2 at) {
