@@ -7,7 +7,8 @@
 #   asan: build-asan/, AddressSanitizer + LeakSanitizer + UBSan at -O1, the
 #         suite less the tests listed in asan_excluded below; the libFuzzer
 #         targets are built in the same tree (scripts/fuzz.sh runs them);
-#   tsan: build-tsan/, ThreadSanitizer at -O1, the server's tests (test_serve).
+#   tsan: build-tsan/, ThreadSanitizer at -O1, the tests of the code with
+#         threads: the server (test_serve) and the sweep (test_sweep).
 # A report fails the test it occurs in, so ctest names it.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -63,12 +64,14 @@ fi
 
 if [ "$which" != asan ]; then
   configure build-tsan -DEPVIZ_SANITIZE=thread
-  cmake --build build-tsan --target test_serve
-  # The gtest binary directly: ctest would also list the programs not built here.
+  cmake --build build-tsan --target test_serve test_sweep
+  # The gtest binaries directly: ctest would also list the programs not built here.
   # Left out: a test that runs the epviz command (its option parsing, single
   # threaded), which only the ASan tree builds. EPVIZ_TEST_SLOWDOWN stretches
   # the wall-clock times the tests give the server: under TSan it runs several
   # times slower (measured: a third of the frames in the same time, or less).
   EPVIZ_TEST_SLOWDOWN=10 TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \
     build-tsan/tests/test_serve --gtest_filter=-ServeOrigin.AMalformedAllowOriginIsABadOption
+  # The sweep's pool of threads and its row writer.
+  TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 build-tsan/tests/test_sweep
 fi

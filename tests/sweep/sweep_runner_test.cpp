@@ -1,0 +1,85 @@
+// The pool of threads that runs a sweep's points: every point's row is
+// written once, whole, and says what one thread would have said; failures
+// are counted. (The sanitizer pass runs this under ThreadSanitizer too.)
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+
+#include "physics/cases.hpp"
+#include "sweep/sweep_runner.hpp"
+
+namespace epviz::sweep {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+// Short runs of the generic body with omega[0] varied; every fifth has a
+// step budget it cannot meet, so it fails (a row, not an error).
+std::vector<PreparedPoint> points(long n) {
+  std::vector<PreparedPoint> out;
+  for (long i = 0; i < n; ++i) {
+    PointFields f;
+    f.index = i;
+    f.axis_values["omega[0]"] = 0.5 + 0.05 * double(i);
+    sim::RunSpec run = sim::preset_run(physics::Case::generic, sim::Method::dop853,
+                                       sim::Formulation::direct, 2.0, 20);
+    run.initial.omega[0] = 0.5 + 0.05 * double(i);
+    if (i % 5 == 4) run.max_steps = 3;
+    out.push_back(prepared_point(f, run));
+  }
+  return out;
+}
+
+// The rows of a file by index, without the CPU time (which differs from run to run).
+std::map<long, Json> rows_by_index(const fs::path& p) {
+  std::map<long, Json> rows;
+  std::ifstream in(p);
+  std::string line;
+  while (std::getline(in, line)) {
+    Json row = Json::parse(line);
+    row.erase("cpu_seconds");
+    const long index = row["index"].get<long>();
+    EXPECT_FALSE(rows.count(index)) << "point " << index << " written twice";
+    rows[index] = row;
+  }
+  return rows;
+}
+
+TEST(SweepRunner, FourThreadsWriteEveryRowOnceAsOneThreadDoes) {
+  const fs::path dir = fs::temp_directory_path() / ("epviz-runner-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  SweepSpec spec;
+  spec.hash = "h";
+  const auto prepared = points(40);
+  SweepTotals one, four;
+  {
+    RowAppender rows(dir / "one.jsonl");
+    one = run_points(spec, prepared, 1, rows);
+  }
+  int reported = 0;
+  {
+    RowAppender rows(dir / "four.jsonl");
+    four = run_points(spec, prepared, 4, rows, [&] { ++reported; });
+  }
+  EXPECT_EQ(one.points, 40);
+  EXPECT_EQ(four.points, 40);
+  EXPECT_EQ(one.failures, 8);
+  EXPECT_EQ(four.failures, 8);
+  EXPECT_EQ(reported, 40);
+  const auto a = rows_by_index(dir / "one.jsonl");
+  const auto b = rows_by_index(dir / "four.jsonl");
+  ASSERT_EQ(a.size(), 40u);
+  EXPECT_EQ(a, b);
+  EXPECT_EQ(b.at(4)["failure_kind"], "step_budget");
+  EXPECT_TRUE(b.at(3)["failure"].is_null());
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace epviz::sweep
