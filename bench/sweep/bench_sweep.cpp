@@ -22,6 +22,7 @@
 #include "io/subprocess.hpp"
 #include "physics/cases.hpp"
 #include "sim/simulate.hpp"
+#include "study/timing.hpp"
 #include "sweep/sweep_runner.hpp"
 
 namespace {
@@ -59,8 +60,7 @@ double median_seconds(int rounds, F&& f) {
     f();
     t.push_back(seconds_since(t0));
   }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
+  return study::median(std::move(t));
 }
 
 void must_succeed(const io::ProcessOutput& r, const char* what) {

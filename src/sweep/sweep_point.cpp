@@ -67,23 +67,35 @@ std::optional<bool> method_is_adaptive(const job::SimulationFields& f) {
 }  // namespace
 
 PointReader::PointReader(const SweepSpec& spec) : spec_(spec) {
-  for (const Axis& axis : spec.axes) values_.emplace_back(axis.values.size());
+  for (const Axis& axis : spec.axes) {
+    AxisTarget t;
+    if (axis.field == "energy") {
+      t.kind = AxisTarget::Kind::energy;
+    } else if (const auto bracket = axis.field.find('['); bracket != std::string::npos) {
+      // "omega[1]": the axis reader accepts only this form.
+      t.kind = AxisTarget::Kind::component;
+      t.vector = axis.field.substr(0, bracket);
+      t.component = std::size_t(axis.field[bracket + 1] - '0');
+    }
+    targets_.push_back(t);
+    values_.emplace_back(axis.values.size());
+  }
 }
 
-const PointReader::ReadValue& PointReader::value(std::size_t axis_index, std::size_t value_index) {
+PointReader::ReadValue& PointReader::value(std::size_t axis_index, std::size_t value_index) {
   ReadValue& v = values_[axis_index][value_index];
-  if (v.read) return v;
+  if (!v.origin.empty()) return v;
   const Axis& axis = spec_.axes[axis_index];
   const Json& value = axis.values[value_index];
-  v.origin = spec_.file + ": key '" + axis.key + "' (" + axis.field + " = " + value.dump() + ")";
-  const auto bracket = axis.field.find('[');
-  if (axis.field != "energy" && bracket == std::string::npos) {
-    v.fields = read_one(spec_, axis, axis.field, value);
-    set_origin(v.fields, axis.field, v.origin);
-  }
+  std::string origin =
+      spec_.file + ": key '" + axis.key + "' (" + axis.field + " = " + value.dump() + ")";
   // A component is checked in the vector it goes into, by operator() at the
   // first point that takes it.
-  v.read = true;
+  if (targets_[axis_index].kind == AxisTarget::Kind::field) {
+    v.fields = read_one(spec_, axis, axis.field, value);
+    set_origin(v.fields, axis.field, origin);
+  }
+  v.origin = std::move(origin);
   return v;
 }
 
@@ -96,28 +108,30 @@ PointFields PointReader::operator()(long index) {
   // plain fields and the case give), so that the order of the axes does not matter.
   for (int pass = 0; pass < 2; ++pass) {
     for (std::size_t k = 0; k < spec_.axes.size(); ++k) {
+      const AxisTarget& target = targets_[k];
+      if ((target.kind == AxisTarget::Kind::component) != (pass == 1)) continue;
       const Axis& axis = spec_.axes[k];
-      const auto bracket = axis.field.find('[');
-      if ((bracket != std::string::npos) != (pass == 1)) continue;
       const Json& value = axis.values[at[k]];
       p.axis_values[axis.field] = value;
-      const ReadValue& read = this->value(k, at[k]);
-      if (axis.field == "energy") {
-        p.energy = value.get<double>();
-        p.energy_origin = read.origin;
-      } else if (bracket == std::string::npos) {
-        p.fields.overlay(read.fields);
-      } else {
-        const std::string name = axis.field.substr(0, bracket);
-        auto v = current_vector(p.fields, name);
-        v[std::size_t(axis.field[bracket + 1] - '0')] = value.get<double>();
-        if (!read.checked_with_vector) {
-          // The vector's range holds per component, and the other components
-          // are valid (given, or the preset's): one check per value does.
-          read_one(spec_, axis, name, Json(v));
-          values_[k][at[k]].checked_with_vector = true;
+      ReadValue& read = this->value(k, at[k]);
+      switch (target.kind) {
+        case AxisTarget::Kind::energy:
+          p.energy = value.get<double>();
+          p.energy_origin = read.origin;
+          break;
+        case AxisTarget::Kind::field: p.fields.overlay(read.fields); break;
+        case AxisTarget::Kind::component: {
+          auto v = current_vector(p.fields, target.vector);
+          v[target.component] = value.get<double>();
+          if (!read.checked_in_vector) {
+            // The vector's range holds per component, and the other components
+            // are valid (given, or the preset's): one check per value does.
+            read_one(spec_, axis, target.vector, Json(v));
+            read.checked_in_vector = true;
+          }
+          vector_field(p.fields, target.vector).set(v, read.origin);
+          break;
         }
-        vector_field(p.fields, name).set(v, read.origin);
       }
     }
   }

@@ -39,15 +39,21 @@ class PointReader {
   PointFields operator()(long index);
 
  private:
-  struct ReadValue {
-    bool read = false;
-    std::string origin;                // "FILE: key 'axes[1]' (step = 0.01)"
-    job::SimulationFields fields;      // what a plain field's value gives
-    bool checked_with_vector = false;  // a component's range, checked in its vector
+  // Where an axis's values go, from its field name, worked out once.
+  struct AxisTarget {
+    enum class Kind { field, component, energy } kind = Kind::field;
+    std::string vector;         // a component's vector: "inertia", "com", "omega" or "gamma"
+    std::size_t component = 0;  // and its index, 0 to 2
   };
-  const ReadValue& value(std::size_t axis_index, std::size_t value_index);
+  struct ReadValue {
+    std::string origin;              // "FILE: key 'axes[1]' (step = 0.01)"; empty: not read yet
+    job::SimulationFields fields;    // what a plain field's value gives
+    bool checked_in_vector = false;  // a component's range, checked in its vector
+  };
+  ReadValue& value(std::size_t axis_index, std::size_t value_index);
 
   const SweepSpec& spec_;
+  std::vector<AxisTarget> targets_;             // [axis]
   std::vector<std::vector<ReadValue>> values_;  // [axis][value]
 };
 

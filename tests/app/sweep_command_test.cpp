@@ -6,34 +6,20 @@
 #include <signal.h>
 #include <chrono>
 #include <fstream>
-#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <thread>
 
 #include "app/cli_runner.hpp"
 #include "io/subprocess.hpp"
+#include "sweep/rows_by_index.hpp"
 
 namespace epviz::test {
 namespace {
 
 using Json = nlohmann::json;
+using epviz::testing::rows_by_index;
 namespace fs = std::filesystem;
-
-// Rows by index, without what differs between two runs of the same point (CPU time).
-std::map<long, Json> rows_of(const fs::path& file) {
-  std::map<long, Json> rows;
-  std::ifstream in(file);
-  std::string line;
-  while (std::getline(in, line)) {
-    auto r = Json::parse(line);
-    r.erase("cpu_seconds");
-    const long i = r["index"].get<long>();
-    EXPECT_FALSE(rows.count(i)) << "point " << i << " twice in " << file;
-    rows[i] = r;
-  }
-  return rows;
-}
 
 long line_count(const fs::path& file) {
   std::ifstream in(file);
@@ -53,7 +39,7 @@ TEST(SweepCommand, RowsEqualTheReportsOfSingleSimulateRuns) {
       "sweep " + (d / "s.sweep.json").string() + " --out " + (d / "rows.jsonl").string() + " -j 2",
       d);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto rows = rows_of(d / "rows.jsonl");
+  const auto rows = rows_by_index(d / "rows.jsonl");
   ASSERT_EQ(rows.size(), 8u);
   int failed = 0;
   for (const auto& [i, row] : rows) {
@@ -139,7 +125,7 @@ TEST(SweepCommand, AKilledSweepResumesToTheSameRows) {
   EXPECT_NE(resumed.out.find(std::to_string(kept) + " already in"), std::string::npos)
       << resumed.out;
   EXPECT_NE(resumed.out.find("torn last line dropped"), std::string::npos) << resumed.out;
-  EXPECT_EQ(rows_of(part), rows_of(d / "whole.jsonl"));
+  EXPECT_EQ(rows_by_index(part), rows_by_index(d / "whole.jsonl"));
   EXPECT_EQ(line_count(part), 200);
 }
 
@@ -162,7 +148,7 @@ TEST(SweepCommand, ShardsMergeToTheUnshardedRows) {
   ASSERT_EQ(run_epviz("sweep " + sweep + " --out " + out + " --shard 2/3", d).exit_code, 0);
   auto m = run_epviz("merge " + (d / "shards").string(), d);
   ASSERT_EQ(m.exit_code, 0) << m.err;
-  EXPECT_EQ(rows_of(d / "shards" / "rows.jsonl"), rows_of(d / "whole.jsonl"));
+  EXPECT_EQ(rows_by_index(d / "shards" / "rows.jsonl"), rows_by_index(d / "whole.jsonl"));
   // Merged rows are in point order.
   std::ifstream in(d / "shards" / "rows.jsonl");
   std::string line;

@@ -29,6 +29,12 @@ std::pair<std::string, std::string> error_of(F&& f) {
   return {"", "(no exception)"};
 }
 
+// A body with its centre of mass at the fixed point (an Eigen vector given as
+// {} would be left uninitialised).
+Body centred(const Vector3d& inertia, double weight) {
+  return Body{inertia, Vector3d::Zero(), weight};
+}
+
 bool contains(const std::string& s, const std::string& part) {
   return s.find(part) != std::string::npos;
 }
@@ -42,40 +48,35 @@ TEST(ValidateBody, AcceptsAPhysicalBody) {
 TEST(ValidateBody, RejectsBadMoments) {
   for (const Vector3d& I :
        {Vector3d(1, -2, 3), Vector3d(0, 2, 3), Vector3d(1, kNaN, 3), Vector3d(kInf, 2, 3)}) {
-    const auto [field, msg] = error_of([&] { validate_body(Body{I, Vector3d::Zero(), 1}, true); });
+    const auto [field, msg] = error_of([&] { validate_body(centred(I, 1), true); });
     EXPECT_EQ(field, "inertia") << msg;
     EXPECT_TRUE(contains(msg, "inertia must be three positive finite numbers; got (")) << msg;
   }
-  const auto [field, msg] = error_of([&] {
-    validate_body(Body{Vector3d(1, -2, 3), Vector3d::Zero(), 1}, false);
-  });
+  const auto [field, msg] = error_of([&] { validate_body(centred(Vector3d(1, -2, 3), 1), false); });
   EXPECT_EQ(msg, "inertia must be three positive finite numbers; got (1, -2, 3)");
 }
 
 TEST(ValidateBody, TriangleInequalityAndOverride) {
   {
-    const auto [field, msg] = error_of([&] {
-      validate_body(Body{Vector3d(1, 1, 3), Vector3d::Zero(), 1}, false);
-    });
+    const auto [field, msg] =
+        error_of([&] { validate_body(centred(Vector3d(1, 1, 3), 1), false); });
     EXPECT_EQ(field, "inertia");
     EXPECT_EQ(msg,
               "inertia (1, 1, 3) breaks the triangle inequality I1 + I2 >= I3 (not a rigid body)");
   }
   {
-    const auto [field, msg] = error_of([&] {
-      validate_body(Body{Vector3d(5, 1, 3), Vector3d::Zero(), 1}, false);
-    });
+    const auto [field, msg] =
+        error_of([&] { validate_body(centred(Vector3d(5, 1, 3), 1), false); });
     EXPECT_TRUE(contains(msg, "I2 + I3 >= I1")) << msg;
   }
   {
-    const auto [field, msg] = error_of([&] {
-      validate_body(Body{Vector3d(1, 4.5, 3), Vector3d::Zero(), 1}, false);
-    });
+    const auto [field, msg] =
+        error_of([&] { validate_body(centred(Vector3d(1, 4.5, 3), 1), false); });
     EXPECT_TRUE(contains(msg, "I1 + I3 >= I2")) << msg;
   }
-  EXPECT_NO_THROW(validate_body(Body{Vector3d(1, 1, 3), Vector3d::Zero(), 1}, true));
-  EXPECT_NO_THROW(validate_body(Body{Vector3d(1, 2, 3), Vector3d::Zero(), 1},
-                                false));  // equality is a flat body
+  EXPECT_NO_THROW(validate_body(centred(Vector3d(1, 1, 3), 1), true));
+  // Equality is a flat body.
+  EXPECT_NO_THROW(validate_body(centred(Vector3d(1, 2, 3), 1), false));
 }
 
 TEST(ValidateBody, RejectsBadComAndWeight) {
@@ -84,14 +85,10 @@ TEST(ValidateBody, RejectsBadComAndWeight) {
   });
   EXPECT_EQ(field, "com");
   EXPECT_TRUE(contains(msg, "finite")) << msg;
-  std::tie(field, msg) = error_of([&] {
-    validate_body(Body{Vector3d(1, 2, 3), Vector3d::Zero(), -1}, false);
-  });
+  std::tie(field, msg) = error_of([&] { validate_body(centred(Vector3d(1, 2, 3), -1), false); });
   EXPECT_EQ(field, "weight");
   EXPECT_TRUE(contains(msg, "non-negative")) << msg;
-  std::tie(field, msg) = error_of([&] {
-    validate_body(Body{Vector3d(1, 2, 3), Vector3d::Zero(), kInf}, true);
-  });
+  std::tie(field, msg) = error_of([&] { validate_body(centred(Vector3d(1, 2, 3), kInf), true); });
   EXPECT_EQ(field, "weight");
 }
 

@@ -6,11 +6,10 @@
 #include <unistd.h>
 
 #include <filesystem>
-#include <fstream>
-#include <map>
 #include <string>
 
 #include "physics/cases.hpp"
+#include "sweep/rows_by_index.hpp"
 #include "sweep/sweep_runner.hpp"
 
 namespace epviz::sweep {
@@ -18,6 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
+using epviz::testing::rows_by_index;
 
 // Short runs of the generic body with omega[0] varied; every fifth has a
 // step budget it cannot meet, so it fails (a row, not an error).
@@ -34,21 +34,6 @@ std::vector<PreparedPoint> points(long n) {
     out.push_back(prepared_point(f, run));
   }
   return out;
-}
-
-// The rows of a file by index, without the CPU time (which differs from run to run).
-std::map<long, Json> rows_by_index(const fs::path& p) {
-  std::map<long, Json> rows;
-  std::ifstream in(p);
-  std::string line;
-  while (std::getline(in, line)) {
-    Json row = Json::parse(line);
-    row.erase("cpu_seconds");
-    const long index = row["index"].get<long>();
-    EXPECT_FALSE(rows.count(index)) << "point " << index << " written twice";
-    rows[index] = row;
-  }
-  return rows;
 }
 
 TEST(SweepRunner, FourThreadsWriteEveryRowOnceAsOneThreadDoes) {
