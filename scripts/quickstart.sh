@@ -5,6 +5,6 @@
 # per case in out/gallery/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/build.sh
+bash scripts/build.sh --epviz-only
 ./build/epviz simulate --case all --t-end 100
 ./build/epviz render render_jobs/gallery.json

@@ -1,19 +1,53 @@
 #!/usr/bin/env bash
-# Installs every Debian package epviz needs to build, test and run.
-# Idempotent: packages already present are not reinstalled. Runs as root or via sudo.
+# Installs the Debian packages epviz needs. Idempotent: packages already present
+# are not reinstalled. Runs as root or via sudo.
+#
+#   scripts/setup.sh --runtime   what running an installed epviz needs (GL
+#                                drivers, ffmpeg, the font): a user's CI that
+#                                only runs `epviz check` from the .deb
+#   scripts/setup.sh --build     --runtime plus what building the epviz binary
+#                                needs (the README's quick start)
+#   scripts/setup.sh [--test]    --build plus what the test suite, the
+#                                benchmarks, the sanitizer passes, the browser
+#                                tests and the Slurm test need (the default;
+#                                scripts/test.sh and CI)
 set -euo pipefail
 
-packages=(
+mode=test
+case "${1:---test}" in
+  --runtime) mode=runtime ;;
+  --build) mode=build ;;
+  --test) mode=test ;;
+  *)
+    echo "scripts/setup.sh: the option must be --runtime, --build or --test, not '$1'" >&2
+    exit 2
+    ;;
+esac
+
+# libegl-mesa0 is the EGL driver libegl1 dispatches to; without it only OSMesa draws.
+runtime_packages=(
+  libegl1 libegl-mesa0 libosmesa6 ffmpeg fonts-dejavu-core
+  libturbojpeg0 libstb0 zlib1g
+)
+build_packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libboost-dev
   libcli11-dev nlohmann-json3-dev
+  libosmesa6-dev libgl-dev libegl-dev libglm-dev libimgui-dev libstb-dev zlib1g-dev
+  libturbojpeg0-dev
+)
+test_packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
-  libosmesa6-dev libgl-dev libegl-dev libegl-mesa0 libegl1 libglm-dev libimgui-dev libstb-dev zlib1g-dev
-  ffmpeg libgsl-dev python3-scipy
-  libturbojpeg0-dev chromium fonts-dejavu-core
+  libgsl-dev python3-scipy
+  chromium
   clang-format python3 clang libclang-rt-14-dev
   slurmctld slurmd slurm-client munge
 )
+packages=("${runtime_packages[@]}")
+case "$mode" in
+  build) packages+=("${build_packages[@]}") ;;
+  test) packages+=("${build_packages[@]}" "${test_packages[@]}") ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do
@@ -37,6 +71,10 @@ if [ ${#missing[@]} -eq 0 ]; then
 else
   echo "setup: installing ${missing[*]}"
   apt_install "${missing[@]}"
+fi
+
+if [ "$mode" != test ]; then
+  exit 0
 fi
 
 # Browser tests of `epviz serve` (tests/e2e) run Node.js with playwright-core
