@@ -3,6 +3,8 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <string_view>
 #include <cfloat>
 #include <cmath>
 #include <stdexcept>
@@ -17,18 +19,30 @@
 namespace epviz::render {
 namespace {
 
-// The font the overlay uses when the caller names none: one shipped in assets/
-// if the project has one, then a common system font, else ImGui's own.
-std::filesystem::path default_font_file() {
-  std::vector<std::filesystem::path> candidates;
-  if (auto shipped = io::find_data_path("assets/fonts/overlay.ttf"); !shipped.empty())
-    candidates.push_back(shipped);
-  candidates.emplace_back("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf");
-  for (const auto& candidate : candidates) {
-    std::error_code error;
-    if (std::filesystem::is_regular_file(candidate, error)) return candidate;
+constexpr const char* kDejaVuSans = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+
+// The font the overlay uses when the caller names none: $EPVIZ_FONT if set (a
+// file, or "builtin" for ImGui's bitmap font), else one shipped in assets/ if
+// the project has one, else DejaVu Sans. Never a silent fallback: pictures
+// drawn with another font differ from every golden made with this one, so a
+// machine without the font fails here, naming the package that brings it.
+std::filesystem::path default_font_file(bool& builtin) {
+  if (const char* chosen = std::getenv("EPVIZ_FONT"); chosen != nullptr && *chosen != '\0') {
+    if (std::string_view(chosen) == "builtin") {
+      builtin = true;
+      return {};
+    }
+    return chosen;
   }
-  return {};
+  if (auto shipped = io::find_data_path("assets/fonts/overlay.ttf"); !shipped.empty())
+    return shipped;
+  const std::filesystem::path dejavu = kDejaVuSans;
+  std::error_code error;
+  if (std::filesystem::is_regular_file(dejavu, error)) return dejavu;
+  throw std::runtime_error(
+      "no font for the text in pictures: " + dejavu.string() +
+      " is missing; install the Debian package fonts-dejavu-core, or set EPVIZ_FONT to a "
+      "TTF file (or to 'builtin' for ImGui's bitmap font, which renders differently)");
 }
 
 ImU32 to_imgui_colour(const glm::vec4& c) {
@@ -58,15 +72,27 @@ ImGuiOverlay::ImGuiOverlay(const OverlayOptions& options) : options_(options) {
   ImGui::GetStyle().WindowRounding = 4.0f;
   if (options.ui_scale > 1.0f) ImGui::GetStyle().ScaleAllSizes(options.ui_scale);
 
-  std::filesystem::path file = options.builtin_font ? std::filesystem::path() : options.font_file;
-  if (!options.builtin_font && file.empty()) file = default_font_file();
-  if (!file.empty()) {
-    font_ = io.Fonts->AddFontFromFileTTF(file.c_str(), options.font_size_px);
-    if (font_ == nullptr && !options.font_file.empty())
-      throw std::runtime_error("cannot load overlay font '" + file.string() + "'");
-    if (font_ != nullptr) font_source_ = file.string();
+  bool builtin = options.builtin_font;
+  std::filesystem::path file = builtin ? std::filesystem::path() : options.font_file;
+  if (!builtin && file.empty()) {
+    try {
+      file = default_font_file(builtin);
+    } catch (...) {
+      ImGui::DestroyContext(context_);
+      throw;
+    }
   }
-  if (font_ == nullptr) {
+  if (!builtin) {
+    std::error_code error;
+    if (std::filesystem::is_regular_file(file, error))
+      font_ = io.Fonts->AddFontFromFileTTF(file.c_str(), options.font_size_px);
+    if (font_ == nullptr) {
+      ImGui::DestroyContext(context_);
+      throw std::runtime_error("cannot load the font '" + file.string() +
+                               "' for the text in pictures (a TTF or OTF file)");
+    }
+    font_source_ = file.string();
+  } else {
     font_ = io.Fonts->AddFontDefault();
     font_source_ = "builtin";
     // A bitmap font: whole magnifications keep its glyphs crisp.

@@ -18,8 +18,9 @@ namespace epviz::render {
 class ImGuiGlRenderer;
 
 struct OverlayOptions {
-  // Font file (TTF/OTF). Empty: the first of assets/fonts/overlay.ttf and the
-  // system's DejaVu Sans that exists, else ImGui's built-in font.
+  // Font file (TTF/OTF). Empty: $EPVIZ_FONT, else assets/fonts/overlay.ttf if
+  // shipped, else the system's DejaVu Sans; none of them: the constructor
+  // throws, naming the package (no silent fallback to another font).
   std::filesystem::path font_file;
   // Force ImGui's built-in bitmap font (13 px); snapshot tests use it so that
   // they do not depend on which fonts a machine has.
