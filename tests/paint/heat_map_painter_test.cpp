@@ -1,13 +1,15 @@
-// Heat maps (paint_heat_map in paint/chart_painter.hpp) checked on the
-// pixels: cells coloured in value order at their column and row, cells
-// without a value grey; a fixed colour range; axis titles; and a 64 x 64 grid
-// whose cells carry no text and whose labels are thinned so they never overlap.
+// Heat maps (paint/heat_map_painter.hpp) checked on the pixels: cells
+// coloured in value order at their column and row and where the layout puts
+// them, cells without a value grey, the colour bar; a fixed colour range; axis
+// titles; and a 64 x 64 grid whose cells carry no text and whose labels are
+// thinned so they never overlap.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
-#include "paint/chart_painter.hpp"
+#include "paint/figure_fixtures.hpp"
+#include "paint/heat_map_painter.hpp"
 #include "render/colour_map.hpp"
 #include "render/render_test_support.hpp"
 
@@ -20,7 +22,7 @@ constexpr float kFont = 13.0f;  // the built-in font
 const glm::vec4 kMissingGrey{0.88f, 0.88f, 0.89f, 1.0f};
 
 paint::ChartOptions options(int width = W, int height = H) {
-  return {.width = width, .height = height, .builtin_font = true};
+  return et::builtin_font_options(width, height);
 }
 
 bool near(const render::RgbaImage& img, int x, int y, const glm::vec4& c) {
@@ -92,6 +94,57 @@ TEST(HeatMap, CellsFollowTheirValuesAtTheirColumnAndRow) {
   EXPECT_NEAR(double(th0), double(bl0), 1.0);  // both rows start at the grid's left edge
   // The grey cell says what grey means: its text is inside it.
   EXPECT_GT(ink_in(img, bl1 + 1, top, bh0, bottom + 1), 0);
+}
+
+paint::HeatMapSpec heat_spec() {
+  paint::HeatMapSpec h;
+  h.title = "Stability (test)";
+  h.value_label = "step / period";
+  h.rows = {"rk4", "gauss4", "midpoint"};
+  h.columns = {"kovalevskaya", "lagrange"};
+  h.values = {{0.01, 0.1}, {1.0, std::nan("")}, {0.03, 0.3}};
+  return h;
+}
+
+// Each cell has the colour of its value on the map (log scale: a decade is a
+// fixed step along it), missing values are grey, and the layout fits.
+TEST(HeatMap, CellsAndColourBarFollowTheLayout) {
+  const auto spec = heat_spec();
+  const auto img = paint::paint_heat_map(et::shared_gl_context(), spec, options());
+  const auto l = paint::heat_map_layout(spec, W, H, kFont);
+  EXPECT_DOUBLE_EQ(l.lo, -2.0);
+  EXPECT_DOUBLE_EQ(l.hi, 0.0);
+  ASSERT_EQ(l.cells.size(), 3u);
+  std::vector<float> lightness;
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 2; ++j) {
+      const auto& c = l.cells[i][j];
+      // A corner of the cell, away from its text.
+      const glm::vec4 got = et::pixel_colour(img, c.x + 3, c.y + 3);
+      const auto expected = paint::heat_map_colour(spec, l, spec.values[i][j]);
+      if (!expected) {
+        EXPECT_LT(et::max_channel_difference(got, glm::vec4(0.88f, 0.88f, 0.89f, 1.0f)), 0.03f);
+        continue;
+      }
+      EXPECT_LT(et::max_channel_difference(got, *expected), 0.03f) << i << "," << j;
+    }
+  // Larger steps are better: brighter. 0.01 < 0.03 < 0.1 < 0.3 < 1.
+  const double ordered[] = {0.01, 0.03, 0.1, 0.3, 1.0};
+  for (int k = 0; k + 1 < 5; ++k)
+    EXPECT_LT(et::luminance(*paint::heat_map_colour(spec, l, ordered[k])),
+              et::luminance(*paint::heat_map_colour(spec, l, ordered[k + 1])));
+  // The ends of the map at the ends of the range.
+  EXPECT_EQ(*paint::heat_map_colour(spec, l, 0.01), *paint::heat_map_colour(spec, l, 1e-5));
+  // The colour bar: its top has the colour of the largest value, its bottom of the smallest.
+  const auto& b = l.colour_bar;
+  EXPECT_LT(et::max_channel_difference(et::pixel_colour(img, b.x + b.width / 2, b.y + 2),
+                                       *paint::heat_map_colour(spec, l, 1.0)),
+            0.06f);
+  EXPECT_LT(et::max_channel_difference(et::pixel_colour(img, b.x + b.width / 2, b.y + b.height - 3),
+                                       *paint::heat_map_colour(spec, l, 0.01)),
+            0.06f);
+  EXPECT_LE(b.x + b.width, W);
+  EXPECT_LE(l.grid.y + l.grid.height, H);
 }
 
 // A fixed range is the colour bar's, as given: values beyond it take its end
