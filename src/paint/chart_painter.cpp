@@ -186,7 +186,8 @@ glm::vec2 ChartLayout::to_pixel(double x, double y) const {
           float(plot_area.y + (1.0 - fy) * plot_area.height)};
 }
 
-ChartLayout chart_layout(const ChartSpec& spec, int width, int height, float font_px) {
+ChartLayout chart_layout(const ChartSpec& spec, int width, int height, const ChartFont& font) {
+  const float font_px = font.px;
   ChartLayout l;
   l.log_x = spec.log_x;
   l.log_y = spec.log_y;
@@ -206,7 +207,7 @@ ChartLayout chart_layout(const ChartSpec& spec, int width, int height, float fon
   // title and the y label (written horizontally above the axis) on top.
   float widest_y = 0.0f;
   for (const auto& t : axis_ticks(sy.lo, sy.hi, spec.log_y, 8))
-    widest_y = std::max(widest_y, estimate_width(t.label, font_px));
+    widest_y = std::max(widest_y, font.width(t.label));
   const float line = font_px * 1.35f;
   const int left = int(std::ceil(widest_y + font_px * 1.6f));
   const int top = int(std::ceil(font_px * 0.8f + (spec.title.empty() ? 0.0f : line * 1.3f) +
@@ -217,13 +218,13 @@ ChartLayout chart_layout(const ChartSpec& spec, int width, int height, float fon
   // plot's right edge.
   float last_x_label = 0.0f;
   for (const auto& t : axis_ticks(sx.lo, sx.hi, spec.log_x, 10))
-    if (!t.label.empty()) last_x_label = estimate_width(t.label, font_px);
+    if (!t.label.empty()) last_x_label = font.width(t.label);
   int right = int(std::ceil(std::max(font_px * 1.5f, 0.5f * last_x_label + font_px * 0.5f)));
 
   // Legend: a row per series (or per key), a line sample and marker, then the name.
   const auto rows = legend_rows(spec);
   float widest_name = 0.0f;
-  for (const auto& r : rows) widest_name = std::max(widest_name, estimate_width(r.name, font_px));
+  for (const auto& r : rows) widest_name = std::max(widest_name, font.width(r.name));
   const int legend_w = int(std::ceil(font_px * 3.6f + widest_name + font_px * 0.8f));
   const int legend_h = int(std::ceil(legend_height(rows, line, font_px)));
   l.plot_area = {left, top, width - left - right, height - top - bottom};
@@ -258,15 +259,17 @@ render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec,
   // Keep the requested font size, but grow the picture downwards when a long
   // legend (many series) would not fit beside the plot: nothing is cut off.
   ChartOptions options = requested;
-  const float font_px = chart_font_px(requested);
-  options.font_px = font_px;
-  ChartLayout l = chart_layout(spec, options.width, options.height, font_px);
+  options.font_px = chart_font_px(requested);
+  render::Renderer renderer(context, renderer_options(options));
+  const ChartFont font = chart_font(*renderer.overlay());
+  const float font_px = font.px;
+  ChartLayout l = chart_layout(spec, options.width, options.height, font);
   const int legend_bottom = l.legend.y + l.legend.height + int(font_px);
   if (l.legend_outside && legend_bottom > options.height) {
     options.height = legend_bottom;
-    l = chart_layout(spec, options.width, options.height, font_px);
+    renderer.resize(options.width, options.height);
+    l = chart_layout(spec, options.width, options.height, font);
   }
-  render::Renderer renderer(context, renderer_options(options));
   const Viewport& a = l.plot_area;
   const float line = font_px * 1.35f;
   const float tick = std::max(4.0f, font_px * 0.45f);

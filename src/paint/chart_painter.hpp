@@ -40,8 +40,8 @@ struct ChartLayout {
   // Image pixel of a data point (given unlogged); NaN for points a log axis cannot show.
   glm::vec2 to_pixel(double x, double y) const;
 };
-// The layout paint_chart uses for `spec` at width x height (text widths estimated from `font_px`).
-ChartLayout chart_layout(const ChartSpec& spec, int width, int height, float font_px);
+// The layout paint_chart uses for `spec` at width x height with the labels in `font`.
+ChartLayout chart_layout(const ChartSpec& spec, int width, int height, const ChartFont& font);
 
 // Renders a chart; `context` must be current (any size). The picture grows
 // downwards when a legend beside the plot is taller than it.

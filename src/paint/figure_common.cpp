@@ -13,8 +13,9 @@ float chart_font_px(const ChartOptions& options) {
   return std::clamp(float(options.height) / 40.0f, 13.0f, 30.0f);
 }
 
-float estimate_width(const std::string& s, float font_px) {
-  return float(s.size()) * font_px * 0.58f;
+ChartFont chart_font(const render::ImGuiOverlay& overlay) {
+  return {overlay.label_font_px(),
+          [&overlay](const std::string& text) { return overlay.text_size(text).x; }};
 }
 
 std::string decade_label(int exponent) {

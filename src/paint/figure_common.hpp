@@ -38,8 +38,14 @@ struct ChartOptions {
 // The font size the painters use for a picture of this height.
 float chart_font_px(const ChartOptions& options);
 
-// A guess at how wide a text is drawn.
-float estimate_width(const std::string& s, float font_px);
+// The labels' font as a layout needs it: the height of a line of text, and
+// how wide a text is drawn, measured on the font the labels are drawn with.
+struct ChartFont {
+  float px = 13.0f;
+  std::function<float(const std::string&)> width;
+};
+// The font `overlay` draws labels with; the overlay must outlive the result.
+ChartFont chart_font(const render::ImGuiOverlay& overlay);
 
 // The log10 decade labels: "1" for 1e0, else "1e-8" style.
 std::string decade_label(int exponent);

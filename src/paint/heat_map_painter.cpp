@@ -40,7 +40,9 @@ std::string heat_value_text(double v) {
 
 }  // namespace
 
-HeatMapLayout heat_map_layout(const HeatMapSpec& spec, int width, int height, float font_px) {
+HeatMapLayout heat_map_layout(const HeatMapSpec& spec, int width, int height,
+                              const ChartFont& font) {
+  const float font_px = font.px;
   HeatMapLayout l;
   Span span;
   bool any_missing = false;
@@ -66,24 +68,22 @@ HeatMapLayout heat_map_layout(const HeatMapSpec& spec, int width, int height, fl
   l.hi = span.hi;
 
   const float line = font_px * 1.35f;
-  float widest_row = estimate_width(spec.y_label, font_px);
-  for (const auto& r : spec.rows) widest_row = std::max(widest_row, estimate_width(r, font_px));
+  float widest_row = font.width(spec.y_label);
+  for (const auto& r : spec.rows) widest_row = std::max(widest_row, font.width(r));
   float widest_column = 0.0f;
-  for (const auto& c : spec.columns)
-    widest_column = std::max(widest_column, estimate_width(c, font_px));
+  for (const auto& c : spec.columns) widest_column = std::max(widest_column, font.width(c));
   float widest_tick = 0.0f;
   for (const auto& t : axis_ticks(l.lo, l.hi, spec.log_scale, 8))
-    widest_tick = std::max(widest_tick, estimate_width(t.label, font_px));
+    widest_tick = std::max(widest_tick, font.width(t.label));
   float widest_value = 0.0f;
   for (const auto& row : spec.values)
     for (double v : row)
       if (!std::isnan(plotted(spec, v)))
-        widest_value = std::max(widest_value, estimate_width(heat_value_text(v), font_px));
-  if (any_missing) widest_value = std::max(widest_value, estimate_width(spec.missing, font_px));
+        widest_value = std::max(widest_value, font.width(heat_value_text(v)));
+  if (any_missing) widest_value = std::max(widest_value, font.width(spec.missing));
   const float bar_w = font_px * 1.1f;
   const float right =
-      std::max(estimate_width(spec.value_label, font_px), bar_w + font_px * 0.5f + widest_tick) +
-      font_px * 2.5f;
+      std::max(font.width(spec.value_label), bar_w + font_px * 0.5f + widest_tick) + font_px * 2.5f;
   const int left = int(std::ceil(widest_row + font_px * 1.4f));
   const int top = int(std::ceil(font_px * 0.8f + line * 1.3f + line * 1.2f));
   const int grid_w = std::max(16, width - left - int(std::ceil(right)));
@@ -146,13 +146,21 @@ std::optional<glm::vec4> heat_map_colour(const HeatMapSpec& spec, const HeatMapL
   return heat_map()(float(t), 1.0f);
 }
 
-render::RgbaImage paint_heat_map(render::GlContext& context, const HeatMapSpec& spec,
-                                 const ChartOptions& options) {
+namespace {
+
+// `fit_grid`: the picture no taller than the grid needs.
+render::RgbaImage draw_heat_map(render::GlContext& context, const HeatMapSpec& spec,
+                                const ChartOptions& options, bool fit_grid) {
   context.make_current();
   render::Renderer renderer(context, renderer_options(options));
-  const float font_px = chart_font_px(options);
+  const ChartFont font = chart_font(*renderer.overlay());
+  const float font_px = font.px;
   const float line = font_px * 1.35f;
-  const HeatMapLayout l = heat_map_layout(spec, options.width, options.height, font_px);
+  HeatMapLayout l = heat_map_layout(spec, options.width, options.height, font);
+  if (fit_grid && l.natural_height < options.height) {
+    renderer.resize(options.width, l.natural_height);
+    l = heat_map_layout(spec, options.width, l.natural_height, font);
+  }
   renderer.begin_frame(kPaper);
   DrawList list;
   if (!spec.title.empty())
@@ -262,6 +270,18 @@ render::RgbaImage paint_heat_map(render::GlContext& context, const HeatMapSpec& 
       label({float(b.x), float(b.y) - font_px * 0.9f}, spec.value_label, TextAnchor::bottom_left));
   renderer.draw_2d(list);
   return renderer.finish_frame();
+}
+
+}  // namespace
+
+render::RgbaImage paint_heat_map(render::GlContext& context, const HeatMapSpec& spec,
+                                 const ChartOptions& options) {
+  return draw_heat_map(context, spec, options, false);
+}
+
+render::RgbaImage paint_heat_map_fitted(render::GlContext& context, const HeatMapSpec& spec,
+                                        const ChartOptions& options) {
+  return draw_heat_map(context, spec, options, true);
 }
 
 }  // namespace epviz::paint

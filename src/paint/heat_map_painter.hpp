@@ -33,7 +33,9 @@ struct HeatMapLayout {
   bool missing_key = false;        // a key under the grid says what a grey cell means
   int natural_height = 0;          // the picture's height that fits the grid with no spare room
 };
-HeatMapLayout heat_map_layout(const HeatMapSpec& spec, int width, int height, float font_px);
+// The layout paint_heat_map uses for `spec` at width x height with the labels in `font`.
+HeatMapLayout heat_map_layout(const HeatMapSpec& spec, int width, int height,
+                              const ChartFont& font);
 // The colour of a cell holding `value` (nullopt: NaN, drawn as missing).
 std::optional<glm::vec4> heat_map_colour(const HeatMapSpec& spec, const HeatMapLayout& layout,
                                          double value);
@@ -41,5 +43,9 @@ std::optional<glm::vec4> heat_map_colour(const HeatMapSpec& spec, const HeatMapL
 // Renders a heat map; `context` must be current (any size).
 render::RgbaImage paint_heat_map(render::GlContext& context, const HeatMapSpec& spec,
                                  const ChartOptions& options = {});
+// The same, in a picture no taller than the grid needs (HeatMapLayout::natural_height),
+// at most options.height: a figure's height.
+render::RgbaImage paint_heat_map_fitted(render::GlContext& context, const HeatMapSpec& spec,
+                                        const ChartOptions& options = {});
 
 }  // namespace epviz::paint

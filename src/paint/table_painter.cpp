@@ -19,7 +19,8 @@ render::RgbaImage paint_table(render::GlContext& context, const TableSpec& spec,
                               const ChartOptions& options) {
   context.make_current();
   render::Renderer renderer(context, renderer_options(options));
-  const float font_px = chart_font_px(options);
+  const ChartFont font = chart_font(*renderer.overlay());
+  const float font_px = font.px;
   const float line = font_px * 1.5f;
   std::size_t columns = spec.header.size();
   for (const auto& r : spec.rows) columns = std::max(columns, r.size());
@@ -30,9 +31,8 @@ render::RgbaImage paint_table(render::GlContext& context, const TableSpec& spec,
   // Column widths from the longest cell, scaled down together if the table is too wide.
   std::vector<float> widths(columns, 0.0f);
   for (std::size_t c = 0; c < columns; ++c) {
-    widths[c] = estimate_width(cell(spec.header, c), font_px);
-    for (const auto& r : spec.rows)
-      widths[c] = std::max(widths[c], estimate_width(cell(r, c), font_px));
+    widths[c] = font.width(cell(spec.header, c));
+    for (const auto& r : spec.rows) widths[c] = std::max(widths[c], font.width(cell(r, c)));
     widths[c] += font_px * 1.2f;
   }
   const float margin = font_px * 1.5f;

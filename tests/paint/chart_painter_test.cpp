@@ -45,7 +45,7 @@ TEST(ChartPainter, DecadeLabels) {
 
 TEST(ChartPainter, LogLayoutCoversWholeDecades) {
   const auto spec = et::two_series();
-  const auto l = paint::chart_layout(spec, W, H, 13.0f);
+  const auto l = paint::chart_layout(spec, W, H, et::builtin_chart_font());
   EXPECT_EQ(l.range.x_min, std::floor(l.range.x_min));
   EXPECT_EQ(l.range.y_max, std::floor(l.range.y_max));
   for (const auto& s : spec.series)
@@ -64,7 +64,7 @@ TEST(ChartPainter, SeriesAppearAtTheirPointsAndInTheLegend) {
   const auto img = paint::paint_chart(et::shared_gl_context(), spec, test_options());
   ASSERT_EQ(img.width, W);
   ASSERT_EQ(img.height, H);
-  const auto l = paint::chart_layout(spec, W, H, 13.0f);
+  const auto l = paint::chart_layout(spec, W, H, et::builtin_chart_font());
   for (std::size_t i = 0; i < spec.series.size(); ++i)
     for (const auto& p : spec.series[i].points)
       EXPECT_TRUE(colour_near(img, l.to_pixel(p.x, p.y), paint::series_colour(i)))
@@ -98,7 +98,7 @@ TEST(ChartPainter, SeriesWithOneColourKeyShareTheColour) {
   spec.colour_legend = {{"rk4", 9}};
   spec.marker_legend = {{"direct", 0}, {"riccati", 1}};
   const auto img = paint::paint_chart(et::shared_gl_context(), spec, test_options());
-  const auto l = paint::chart_layout(spec, W, H, 13.0f);
+  const auto l = paint::chart_layout(spec, W, H, et::builtin_chart_font());
   for (const auto& s : spec.series)
     for (const auto& p : s.points)
       EXPECT_TRUE(colour_near(img, l.to_pixel(p.x, p.y), paint::series_colour(9)));
@@ -126,9 +126,9 @@ TEST(ChartPainter, LastXLabelIsNotClipped) {
   a.name = "a";
   a.points = {{1e-3, 1.0}, {123456.0, 1e-9}};
   s.series = {a};
-  const float font = 13.0f;
+  const auto& font = et::builtin_chart_font();
   const auto l = paint::chart_layout(s, W, H, font);
-  const float last_label_w = float(paint::decade_label(int(l.range.x_max)).size()) * font * 0.58f;
+  const float last_label_w = font.width(paint::decade_label(int(l.range.x_max)));
   EXPECT_GE(float(W - (l.plot_area.x + l.plot_area.width)), 0.5f * last_label_w);
 }
 

@@ -4,11 +4,25 @@
 #include <cmath>
 
 #include "paint/figure_common.hpp"
+#include "render/gui_overlay.hpp"
+#include "render/render_test_support.hpp"
 
 namespace epviz::testing {
 
 inline paint::ChartOptions builtin_font_options(int width = 640, int height = 400) {
   return {.width = width, .height = height, .msaa_samples = 4, .builtin_font = true};
+}
+
+// The built-in font as the painters measure it: on the overlay that draws it.
+inline const paint::ChartFont& builtin_chart_font() {
+  shared_gl_context();  // the overlay needs a current context
+  static const render::ImGuiOverlay overlay([] {
+    render::OverlayOptions o;
+    o.builtin_font = true;
+    return o;
+  }());
+  static const paint::ChartFont font = paint::chart_font(overlay);
+  return font;
 }
 
 // Two power laws on log-log axes, a work-precision chart's shape.

@@ -111,7 +111,7 @@ paint::HeatMapSpec heat_spec() {
 TEST(HeatMap, CellsAndColourBarFollowTheLayout) {
   const auto spec = heat_spec();
   const auto img = paint::paint_heat_map(et::shared_gl_context(), spec, options());
-  const auto l = paint::heat_map_layout(spec, W, H, kFont);
+  const auto l = paint::heat_map_layout(spec, W, H, et::builtin_chart_font());
   EXPECT_DOUBLE_EQ(l.lo, -2.0);
   EXPECT_DOUBLE_EQ(l.hi, 0.0);
   ASSERT_EQ(l.cells.size(), 3u);
@@ -159,8 +159,8 @@ TEST(HeatMap, FixedColourRange) {
   a.range_max = 0.3;
   auto b = a;
   b.values = {{0.1, 0.4, -1.0}};
-  const auto la = paint::heat_map_layout(a, W, H, kFont);
-  const auto lb = paint::heat_map_layout(b, W, H, kFont);
+  const auto la = paint::heat_map_layout(a, W, H, et::builtin_chart_font());
+  const auto lb = paint::heat_map_layout(b, W, H, et::builtin_chart_font());
   EXPECT_DOUBLE_EQ(la.lo, 0.0);
   EXPECT_DOUBLE_EQ(la.hi, 0.3);
   EXPECT_EQ(*paint::heat_map_colour(a, la, 0.1), *paint::heat_map_colour(b, lb, 0.1));
@@ -172,13 +172,13 @@ TEST(HeatMap, FixedColourRange) {
             1e-6f);
   // Without a range: the values' own (0.05 at the map's low end).
   a.range_min = a.range_max = NAN;
-  const auto own = paint::heat_map_layout(a, W, H, kFont);
+  const auto own = paint::heat_map_layout(a, W, H, et::builtin_chart_font());
   EXPECT_LT(et::max_channel_difference(*paint::heat_map_colour(a, own, 0.05), map(0.0f)), 1e-6f);
   // On a log scale a fixed range is not rounded out to whole decades.
   a.log_scale = true;
   a.range_min = 0.02;
   a.range_max = 0.5;
-  const auto log = paint::heat_map_layout(a, W, H, kFont);
+  const auto log = paint::heat_map_layout(a, W, H, et::builtin_chart_font());
   EXPECT_NEAR(log.lo, std::log10(0.02), 1e-12);
   EXPECT_NEAR(log.hi, std::log10(0.5), 1e-12);
 }
@@ -196,7 +196,7 @@ TEST(HeatMap, AxisTitles) {
   const float line = kFont * 1.35f;
   for (const auto* spec : {&s, &titled}) {
     const auto img = paint::paint_heat_map(gl, *spec, options());
-    const auto l = paint::heat_map_layout(*spec, W, H, kFont);
+    const auto l = paint::heat_map_layout(*spec, W, H, et::builtin_chart_font());
     const int grid_bottom = l.grid.y + l.grid.height;
     // Under the column labels' line, across the grid.
     const int x_ink =
@@ -207,7 +207,7 @@ TEST(HeatMap, AxisTitles) {
     EXPECT_EQ(x_ink > 0, spec == &titled) << x_ink;
     EXPECT_EQ(y_ink > 0, spec == &titled) << y_ink;
     // The y title fits left of the grid, not off the picture.
-    EXPECT_GE(float(l.grid.x) - kFont * 0.5f, float(spec->y_label.size()) * kFont * 0.58f);
+    EXPECT_GE(float(l.grid.x) - kFont * 0.5f, et::builtin_chart_font().width(spec->y_label));
   }
 }
 
@@ -232,13 +232,13 @@ TEST(HeatMap, LargeGridHasNoCellTextAndThinnedLabels) {
     for (int j = 0; j < n; ++j) s.values[i][j] = 0.001 * (i * n + j) + 0.123456;
   s.values[5][7] = NAN;
   const int w = 1280, h = 900;
-  const auto l = paint::heat_map_layout(s, w, h, kFont);
+  const auto l = paint::heat_map_layout(s, w, h, et::builtin_chart_font());
   EXPECT_FALSE(l.value_text);
   EXPECT_TRUE(l.missing_key);
   ASSERT_GT(l.column_stride, 1u);
   ASSERT_GT(l.row_stride, 1u);
   float widest = 0.0f;
-  for (const auto& c : s.columns) widest = std::max(widest, float(c.size()) * kFont * 0.58f);
+  for (const auto& c : s.columns) widest = std::max(widest, et::builtin_chart_font().width(c));
   const float cell_w = float(l.grid.width) / n, cell_h = float(l.grid.height) / n;
   EXPECT_GT(float(l.column_stride) * cell_w, widest);
   EXPECT_GE(float(l.row_stride) * cell_h, kFont * 1.2f);
@@ -271,7 +271,7 @@ TEST(HeatMap, SmallGridCellsShowTheirValues) {
   s.rows = {"rk4", "gauss4"};
   s.columns = {"euler", "lagrange"};
   s.values = {{0.01, 0.1}, {1.0, NAN}};
-  const auto l = paint::heat_map_layout(s, W, H, kFont);
+  const auto l = paint::heat_map_layout(s, W, H, et::builtin_chart_font());
   EXPECT_TRUE(l.value_text);
   EXPECT_FALSE(l.missing_key);
   EXPECT_EQ(l.column_stride, 1u);
