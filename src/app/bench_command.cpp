@@ -27,7 +27,7 @@
 #include "study/work_precision.hpp"
 #ifdef EPVIZ_HAVE_RENDER
 #include "io/png_writer.hpp"
-#include "paint/chart_painter.hpp"
+#include "paint/figure_painter.hpp"
 #include "render/gl_context.hpp"
 #include "study/bench_figures.hpp"
 #endif

@@ -20,7 +20,7 @@
 #include "sweep/atlas.hpp"
 #include "sweep/sweep_spec.hpp"
 #ifdef EPVIZ_HAVE_RENDER
-#include "paint/chart_painter.hpp"
+#include "paint/figure_painter.hpp"
 #include "render/gl_context.hpp"
 #endif
 

@@ -1,8 +1,8 @@
 #pragma once
 // What a chart or table figure shows, as plain data: series of points, axis
 // labels and scales, a title; or a table's header and cells. Whoever knows
-// what the numbers mean (the bench studies) builds these; the painter
-// (paint/chart_painter.hpp) draws them without knowing what they mean. No GL
+// what the numbers mean (the bench studies) builds these; the painters
+// (paint/figure_painter.hpp) draw them without knowing what they mean. No GL
 // here, so that modules without a renderer can describe figures too.
 #include <limits>
 #include <string>

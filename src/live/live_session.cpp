@@ -126,10 +126,10 @@ const render::RgbaImage& LiveSession::render() {
   const int panel_px = panel_.occupied_width();
   const int reserved = panel_px > 0 && width_ - panel_px >= width_ / 2 ? panel_px : 0;
   painter_->set_reserved_left(reserved);
-  const paint::Layout layout =
+  const scene::FrameLayout layout =
       paint::layout_for(frame.layers, frame.overlay, width_, height_, reserved);
-  view_3d_ =
-      layout.view_3d ? *layout.view_3d : render::Viewport{reserved, 0, width_ - reserved, height_};
+  view_3d_ = layout.view_3d ? paint::to_viewport(*layout.view_3d)
+                            : render::Viewport{reserved, 0, width_ - reserved, height_};
 
   PanelActions actions;
   const render::RgbaImage& image = painter_->paint(frame, [&] {

@@ -3,10 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
-#include <limits>
 
-#include "render/colour_map.hpp"
 #include "render/draw_list.hpp"
 #include "render/renderer.hpp"
 
@@ -15,97 +12,16 @@ namespace {
 
 using render::DrawList;
 using render::TextAnchor;
-using render::TextLabel;
 using render::Viewport;
 
-const glm::vec4 kPaper{1.0f, 1.0f, 1.0f, 1.0f};
-const glm::vec4 kInk{0.10f, 0.10f, 0.12f, 1.0f};
-const glm::vec4 kFrame{0.20f, 0.20f, 0.22f, 1.0f};
 const glm::vec4 kGrid{0.0f, 0.0f, 0.0f, 0.10f};
 const glm::vec4 kGridMinor{0.0f, 0.0f, 0.0f, 0.045f};
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-float estimate_width(const std::string& s, float font_px) {
-  return float(s.size()) * font_px * 0.58f;
-}
 
 // A value on an axis in plotted units (log10 on a log axis); NaN when it cannot be shown.
 double axis_value(double v, bool log_axis) {
   if (!std::isfinite(v)) return kNaN;
   if (log_axis) return v > 0.0 ? std::log10(v) : kNaN;
   return v;
-}
-
-struct Span {
-  double lo = std::numeric_limits<double>::infinity();
-  double hi = -std::numeric_limits<double>::infinity();
-  void add(double v) {
-    if (std::isfinite(v)) {
-      lo = std::min(lo, v);
-      hi = std::max(hi, v);
-    }
-  }
-  bool empty() const { return !(lo <= hi); }
-};
-
-// Whole decades on a log axis, a padded range with nice ends on a linear one.
-void finish_span(Span& s, bool log_axis) {
-  if (s.empty()) {
-    s.lo = log_axis ? -1.0 : 0.0;
-    s.hi = log_axis ? 1.0 : 1.0;
-    return;
-  }
-  if (log_axis) {
-    s.lo = std::floor(s.lo + 1e-9);
-    s.hi = std::ceil(s.hi - 1e-9);
-    if (s.hi <= s.lo) s.hi = s.lo + 1.0;
-    return;
-  }
-  if (s.hi - s.lo < 1e-300) {
-    const double pad = std::max(std::abs(s.lo) * 0.1, 1.0);
-    s.lo -= pad;
-    s.hi += pad;
-  }
-  const double pad = 0.04 * (s.hi - s.lo);
-  s.lo -= pad;
-  s.hi += pad;
-}
-
-struct Tick {
-  double at;          // plotted units
-  std::string label;  // empty for minor ticks
-  bool major;
-};
-
-std::vector<Tick> axis_ticks(double lo, double hi, bool log_axis, int max_labels) {
-  std::vector<Tick> ticks;
-  if (log_axis) {
-    const int first = int(std::ceil(lo - 1e-9)), last = int(std::floor(hi + 1e-9));
-    const int decades = last - first;
-    const int step =
-        std::max(1, int(std::ceil(double(decades) / double(std::max(1, max_labels - 1)))));
-    for (int e = first; e <= last; ++e) {
-      const bool labelled = (e - first) % step == 0;
-      ticks.push_back({double(e), labelled ? decade_label(e) : std::string(), true});
-      if (step == 1 && decades <= 8 && e < last)
-        for (int m = 2; m <= 9; ++m)
-          ticks.push_back({double(e) + std::log10(double(m)), {}, false});
-    }
-    return ticks;
-  }
-  const auto values = render::nice_ticks(lo, hi, max_labels);
-  const double spacing = values.size() > 1 ? values[1] - values[0] : (hi - lo);
-  for (double v : values) ticks.push_back({v, render::format_tick(v, spacing), true});
-  return ticks;
-}
-
-TextLabel label(glm::vec2 at, std::string text, TextAnchor anchor, glm::vec4 colour = kInk) {
-  TextLabel l;
-  l.position = glm::vec3(at, 0.0f);
-  l.text = std::move(text);
-  l.colour = colour;
-  l.anchor = anchor;
-  return l;
 }
 
 void add_shape(DrawList& list, glm::vec2 c, MarkerShape shape, float r, const glm::vec4& fill) {
@@ -193,18 +109,6 @@ float legend_height(const std::vector<LegendRow>& rows, float line, float font_p
   return h;
 }
 
-render::RendererOptions renderer_options(const ChartOptions& options) {
-  render::RendererOptions ro;
-  ro.width = options.width;
-  ro.height = options.height;
-  ro.msaa_samples = options.msaa_samples;
-  ro.overlay = true;
-  ro.overlay_options.builtin_font = options.builtin_font;
-  ro.overlay_options.font_size_px = chart_font_px(options);
-  ro.overlay_options.light_style = true;
-  return ro;
-}
-
 // Counts drawn points of the chart (vertices and samples along segments) inside a box.
 int points_inside(const ChartSpec& spec, const ChartLayout& l, const Viewport& box) {
   auto in = [&](glm::vec2 p) {
@@ -273,17 +177,6 @@ MarkerShape marker_of(const ChartSeries& s, std::size_t index) {
   return series_marker(s.marker_key >= 0 ? std::size_t(s.marker_key) : index);
 }
 
-std::string decade_label(int exponent) {
-  if (exponent == 0) return "1";
-  return "1e" + std::to_string(exponent);
-}
-
-float chart_font_px(const ChartOptions& options) {
-  if (options.builtin_font) return 13.0f;
-  if (options.font_px > 0.0f) return options.font_px;
-  return std::clamp(float(options.height) / 40.0f, 13.0f, 30.0f);
-}
-
 glm::vec2 ChartLayout::to_pixel(double x, double y) const {
   const double ax = axis_value(x, log_x), ay = axis_value(y, log_y);
   if (std::isnan(ax) || std::isnan(ay)) return {NAN, NAN};
@@ -293,7 +186,8 @@ glm::vec2 ChartLayout::to_pixel(double x, double y) const {
           float(plot_area.y + (1.0 - fy) * plot_area.height)};
 }
 
-ChartLayout chart_layout(const ChartSpec& spec, int width, int height, float font_px) {
+ChartLayout chart_layout(const ChartSpec& spec, int width, int height, const ChartFont& font) {
+  const float font_px = font.px;
   ChartLayout l;
   l.log_x = spec.log_x;
   l.log_y = spec.log_y;
@@ -313,7 +207,7 @@ ChartLayout chart_layout(const ChartSpec& spec, int width, int height, float fon
   // title and the y label (written horizontally above the axis) on top.
   float widest_y = 0.0f;
   for (const auto& t : axis_ticks(sy.lo, sy.hi, spec.log_y, 8))
-    widest_y = std::max(widest_y, estimate_width(t.label, font_px));
+    widest_y = std::max(widest_y, font.width(t.label));
   const float line = font_px * 1.35f;
   const int left = int(std::ceil(widest_y + font_px * 1.6f));
   const int top = int(std::ceil(font_px * 0.8f + (spec.title.empty() ? 0.0f : line * 1.3f) +
@@ -324,13 +218,13 @@ ChartLayout chart_layout(const ChartSpec& spec, int width, int height, float fon
   // plot's right edge.
   float last_x_label = 0.0f;
   for (const auto& t : axis_ticks(sx.lo, sx.hi, spec.log_x, 10))
-    if (!t.label.empty()) last_x_label = estimate_width(t.label, font_px);
+    if (!t.label.empty()) last_x_label = font.width(t.label);
   int right = int(std::ceil(std::max(font_px * 1.5f, 0.5f * last_x_label + font_px * 0.5f)));
 
   // Legend: a row per series (or per key), a line sample and marker, then the name.
   const auto rows = legend_rows(spec);
   float widest_name = 0.0f;
-  for (const auto& r : rows) widest_name = std::max(widest_name, estimate_width(r.name, font_px));
+  for (const auto& r : rows) widest_name = std::max(widest_name, font.width(r.name));
   const int legend_w = int(std::ceil(font_px * 3.6f + widest_name + font_px * 0.8f));
   const int legend_h = int(std::ceil(legend_height(rows, line, font_px)));
   l.plot_area = {left, top, width - left - right, height - top - bottom};
@@ -365,15 +259,17 @@ render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec,
   // Keep the requested font size, but grow the picture downwards when a long
   // legend (many series) would not fit beside the plot: nothing is cut off.
   ChartOptions options = requested;
-  const float font_px = chart_font_px(requested);
-  options.font_px = font_px;
-  ChartLayout l = chart_layout(spec, options.width, options.height, font_px);
+  options.font_px = chart_font_px(requested);
+  render::Renderer renderer(context, renderer_options(options));
+  const ChartFont font = chart_font(*renderer.overlay());
+  const float font_px = font.px;
+  ChartLayout l = chart_layout(spec, options.width, options.height, font);
   const int legend_bottom = l.legend.y + l.legend.height + int(font_px);
   if (l.legend_outside && legend_bottom > options.height) {
     options.height = legend_bottom;
-    l = chart_layout(spec, options.width, options.height, font_px);
+    renderer.resize(options.width, options.height);
+    l = chart_layout(spec, options.width, options.height, font);
   }
-  render::Renderer renderer(context, renderer_options(options));
   const Viewport& a = l.plot_area;
   const float line = font_px * 1.35f;
   const float tick = std::max(4.0f, font_px * 0.45f);
@@ -485,352 +381,6 @@ render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec,
     renderer.draw_2d(legend);
   }
   return renderer.finish_frame();
-}
-
-render::RgbaImage paint_table(render::GlContext& context, const TableSpec& spec,
-                              const ChartOptions& options) {
-  context.make_current();
-  render::Renderer renderer(context, renderer_options(options));
-  const float font_px = chart_font_px(options);
-  const float line = font_px * 1.5f;
-  std::size_t columns = spec.header.size();
-  for (const auto& r : spec.rows) columns = std::max(columns, r.size());
-  auto cell = [](const std::vector<std::string>& row, std::size_t c) {
-    return c < row.size() ? row[c] : std::string();
-  };
-
-  // Column widths from the longest cell, scaled down together if the table is too wide.
-  std::vector<float> widths(columns, 0.0f);
-  for (std::size_t c = 0; c < columns; ++c) {
-    widths[c] = estimate_width(cell(spec.header, c), font_px);
-    for (const auto& r : spec.rows)
-      widths[c] = std::max(widths[c], estimate_width(cell(r, c), font_px));
-    widths[c] += font_px * 1.2f;
-  }
-  const float margin = font_px * 1.5f;
-  float total = 0.0f;
-  for (float w : widths) total += w;
-  const float avail = float(options.width) - 2.0f * margin;
-  if (total > avail && total > 0.0f)
-    for (float& w : widths) w *= avail / total;
-  total = std::min(total, avail);
-
-  renderer.begin_frame(kPaper);
-  DrawList list;
-  const float left = std::max(margin, (float(options.width) - total) * 0.5f);
-  float y = font_px * 0.8f;
-  if (!spec.title.empty()) {
-    list.add_text(label({float(options.width) * 0.5f, y}, spec.title, TextAnchor::top));
-    y += line * 1.3f;
-  }
-  const float rule_heavy = std::max(1.5f, font_px * 0.1f);
-  list.add_line({left, y, 0}, {left + total, y, 0}, kInk, rule_heavy);
-  auto write_row = [&](const std::vector<std::string>& row, float top, const glm::vec4& colour) {
-    float x = left;
-    for (std::size_t c = 0; c < columns; ++c) {
-      list.add_text(
-          label({x + font_px * 0.4f, top + line * 0.5f}, cell(row, c), TextAnchor::left, colour));
-      x += widths[c];
-    }
-  };
-  if (!spec.header.empty()) {
-    write_row(spec.header, y, kInk);
-    y += line;
-    list.add_line({left, y, 0}, {left + total, y, 0}, kInk, 1.0f);
-  }
-  const float bottom_limit = float(options.height) - font_px;
-  std::size_t shown = 0;
-  for (const auto& r : spec.rows) {
-    if (y + line > bottom_limit - line) break;
-    if (shown % 2 == 1)
-      list.add_rect({left, y}, {left + total, y + line}, {0.0f, 0.0f, 0.0f, 0.04f});
-    write_row(r, y, kInk);
-    y += line;
-    ++shown;
-  }
-  list.add_line({left, y, 0}, {left + total, y, 0}, kInk, rule_heavy);
-  if (shown < spec.rows.size()) {
-    char more[64];
-    std::snprintf(more, sizeof more, "(%zu more rows not shown)", spec.rows.size() - shown);
-    list.add_text(
-        label({left, y + font_px * 0.4f}, more, TextAnchor::top_left, {0.4f, 0.4f, 0.4f, 1.0f}));
-  }
-  renderer.draw_2d(list);
-  return renderer.finish_frame();
-}
-
-// --- Heat maps -----------------------------------------------------------------
-
-namespace {
-
-const render::ColourMap& heat_map() {
-  static const render::ColourMap map = render::ColourMap::time();
-  return map;
-}
-
-double plotted(const HeatMapSpec& spec, double v) {
-  if (!std::isfinite(v)) return kNaN;
-  if (spec.log_scale) return v > 0.0 ? std::log10(v) : kNaN;
-  return v;
-}
-
-// The value of a cell; NaN where the spec's values stop short of its rows or columns.
-double cell_value(const HeatMapSpec& spec, std::size_t row, std::size_t column) {
-  if (row >= spec.values.size() || column >= spec.values[row].size()) return kNaN;
-  return spec.values[row][column];
-}
-
-std::string heat_value_text(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
-  return buf;
-}
-
-}  // namespace
-
-HeatMapLayout heat_map_layout(const HeatMapSpec& spec, int width, int height, float font_px) {
-  HeatMapLayout l;
-  Span span;
-  bool any_missing = false;
-  for (std::size_t i = 0; i < spec.rows.size(); ++i)
-    for (std::size_t j = 0; j < spec.columns.size(); ++j) {
-      const double v = plotted(spec, cell_value(spec, i, j));
-      span.add(v);
-      any_missing |= std::isnan(v);
-    }
-  finish_span(span, spec.log_scale);
-  if (!spec.log_scale && !span.empty()) {
-    // finish_span pads a linear range; a colour scale wants the values' own ends.
-    const double pad = (span.hi - span.lo) / 1.08 * 0.04;
-    span.lo += pad;
-    span.hi -= pad;
-  }
-  // A fixed range is taken as given (not rounded to decades): maps that share
-  // it colour the same value alike.
-  if (const double v = plotted(spec, spec.range_min); std::isfinite(v)) span.lo = v;
-  if (const double v = plotted(spec, spec.range_max); std::isfinite(v)) span.hi = v;
-  if (!(span.hi > span.lo)) span.hi = span.lo + 1.0;
-  l.lo = span.lo;
-  l.hi = span.hi;
-
-  const float line = font_px * 1.35f;
-  float widest_row = estimate_width(spec.y_label, font_px);
-  for (const auto& r : spec.rows) widest_row = std::max(widest_row, estimate_width(r, font_px));
-  float widest_column = 0.0f;
-  for (const auto& c : spec.columns)
-    widest_column = std::max(widest_column, estimate_width(c, font_px));
-  float widest_tick = 0.0f;
-  for (const auto& t : axis_ticks(l.lo, l.hi, spec.log_scale, 8))
-    widest_tick = std::max(widest_tick, estimate_width(t.label, font_px));
-  float widest_value = 0.0f;
-  for (const auto& row : spec.values)
-    for (double v : row)
-      if (!std::isnan(plotted(spec, v)))
-        widest_value = std::max(widest_value, estimate_width(heat_value_text(v), font_px));
-  if (any_missing) widest_value = std::max(widest_value, estimate_width(spec.missing, font_px));
-  const float bar_w = font_px * 1.1f;
-  const float right =
-      std::max(estimate_width(spec.value_label, font_px), bar_w + font_px * 0.5f + widest_tick) +
-      font_px * 2.5f;
-  const int left = int(std::ceil(widest_row + font_px * 1.4f));
-  const int top = int(std::ceil(font_px * 0.8f + line * 1.3f + line * 1.2f));
-  const int grid_w = std::max(16, width - left - int(std::ceil(right)));
-  const std::size_t columns = std::max<std::size_t>(1, spec.columns.size());
-  const std::size_t rows = std::max<std::size_t>(1, spec.rows.size());
-  const float cell_w = float(grid_w) / float(columns);
-  // Column labels side by side where they fit a cell, on two lines where they
-  // fit two, else every k-th one (with a gap of most of a character).
-  const float column_gap = font_px * 0.5f;
-  if (widest_column + column_gap * 0.5f > cell_w) {
-    if (widest_column + column_gap <= 2.0f * cell_w)
-      l.staggered_columns = true;
-    else
-      l.column_stride = std::size_t(std::ceil((widest_column + column_gap) / cell_w));
-  }
-  // The lines under the grid: column labels, the x axis title, the note, the
-  // key to grey cells when they carry no text (known only once the rows'
-  // height is: hence a second pass with that line when the first finds it needed).
-  const float cell_h_max = font_px * 2.6f;
-  auto place = [&](bool key) {
-    const float under = font_px * 0.6f + line * (l.staggered_columns ? 2.0f : 1.0f) +
-                        (spec.x_label.empty() ? 0.0f : line * 1.2f) +
-                        (spec.note.empty() ? 0.0f : line * 1.4f) + (key ? line * 1.4f : 0.0f) +
-                        font_px * 0.6f;
-    const int bottom = int(std::ceil(under));
-    const float cell_h =
-        std::min(cell_h_max, float(std::max(16, height - top - bottom)) / float(rows));
-    l.natural_height = top + int(std::ceil(cell_h_max * float(rows))) + bottom;
-    // All values as text or none: a grid where only some cells say their value
-    // would read as if the others had none.
-    l.value_text = widest_value + font_px * 0.4f <= cell_w && font_px * 1.15f <= cell_h;
-    l.missing_key = any_missing && !l.value_text;
-    l.row_stride = std::size_t(std::ceil(line / std::max(cell_h, 1.0f) - 1e-4f));
-    return cell_h;
-  };
-  float cell_h = place(false);
-  if (l.missing_key) cell_h = place(true);
-  const int grid_h = int(std::floor(cell_h * float(rows)));
-  l.grid = {left, top, grid_w, grid_h};
-  l.cells.assign(spec.rows.size(), {});
-  for (std::size_t i = 0; i < spec.rows.size(); ++i)
-    for (std::size_t j = 0; j < spec.columns.size(); ++j) {
-      const int x0 = left + int(std::round(cell_w * float(j))),
-                x1 = left + int(std::round(cell_w * float(j + 1)));
-      const int y0 = top + int(std::round(cell_h * float(i))),
-                y1 = top + int(std::round(cell_h * float(i + 1)));
-      l.cells[i].push_back({x0, y0, x1 - x0, y1 - y0});
-    }
-  l.colour_bar = {left + grid_w + int(font_px * 1.5f), top, int(bar_w), grid_h};
-  return l;
-}
-
-std::optional<glm::vec4> heat_map_colour(const HeatMapSpec& spec, const HeatMapLayout& l,
-                                         double value) {
-  const double v = plotted(spec, value);
-  if (std::isnan(v)) return std::nullopt;
-  double t = l.hi > l.lo ? (v - l.lo) / (l.hi - l.lo) : 0.5;
-  t = std::clamp(t, 0.0, 1.0);
-  if (!spec.larger_is_better) t = 1.0 - t;
-  return heat_map()(float(t), 1.0f);
-}
-
-render::RgbaImage paint_heat_map(render::GlContext& context, const HeatMapSpec& spec,
-                                 const ChartOptions& options) {
-  context.make_current();
-  render::Renderer renderer(context, renderer_options(options));
-  const float font_px = chart_font_px(options);
-  const float line = font_px * 1.35f;
-  const HeatMapLayout l = heat_map_layout(spec, options.width, options.height, font_px);
-  renderer.begin_frame(kPaper);
-  DrawList list;
-  if (!spec.title.empty())
-    list.add_text(
-        label({float(options.width) * 0.5f, font_px * 0.6f}, spec.title, TextAnchor::top));
-  const glm::vec4 missing{0.88f, 0.88f, 0.89f, 1.0f};
-  const glm::vec4 hatch{0.62f, 0.62f, 0.64f, 1.0f};
-  const glm::vec4 quiet_ink{0.35f, 0.35f, 0.38f, 1.0f};
-  const float tick = font_px * 0.3f;
-  const float grid_bottom = float(l.grid.y + l.grid.height);
-  for (std::size_t i = 0; i < l.cells.size(); ++i) {
-    const Viewport& first = l.cells[i].empty() ? l.grid : l.cells[i][0];
-    const float row_y = float(first.y) + first.height * 0.5f;
-    if (i % l.row_stride == 0) {
-      list.add_text(
-          label({float(l.grid.x) - font_px * 0.5f, row_y}, spec.rows[i], TextAnchor::right));
-      if (l.row_stride > 1)  // which row a thinned label names
-        list.add_line({float(l.grid.x) - tick, row_y, 0}, {float(l.grid.x), row_y, 0}, kFrame,
-                      1.0f);
-    }
-    for (std::size_t j = 0; j < l.cells[i].size(); ++j) {
-      const Viewport& c = l.cells[i][j];
-      const double v = cell_value(spec, i, j);
-      const auto colour = heat_map_colour(spec, l, v);
-      const glm::vec4 fill = colour.value_or(missing);
-      // One pixel of paper between cells that hold text (a table of values);
-      // colour-only cells touch, so that a large grid reads as one picture.
-      const float gap = l.value_text ? 1.0f : 0.0f;
-      const glm::vec2 a{float(c.x) + gap, float(c.y) + gap};
-      const glm::vec2 b{float(c.x + c.width) - gap, float(c.y + c.height) - gap};
-      list.add_rect(a, b, fill);
-      if (!l.value_text) {
-        // No text to say so: a diagonal marks the grey as no value rather than a colour.
-        if (!colour) list.add_line({a.x, b.y, 0}, {b.x, a.y, 0}, hatch, 1.0f);
-        continue;
-      }
-      const bool light = 0.299f * fill.r + 0.587f * fill.g + 0.114f * fill.b > 0.55f;
-      const glm::vec4 ink = light ? kInk : glm::vec4(1.0f);
-      list.add_text(label({float(c.x) + c.width * 0.5f, float(c.y) + c.height * 0.5f},
-                          colour ? heat_value_text(v) : spec.missing, TextAnchor::centre,
-                          colour ? ink : quiet_ink));
-    }
-  }
-  // Column labels under the grid, on two lines where they are wider than a
-  // cell, every k-th one (with a tick) where even two lines would overlap.
-  for (std::size_t j = 0; j < spec.columns.size(); j += l.column_stride) {
-    const Viewport& c = l.cells.empty() ? l.grid : l.cells[0][j];
-    const float x = float(c.x) + c.width * 0.5f;
-    const float y =
-        grid_bottom + font_px * 0.5f + (l.staggered_columns && j % 2 == 1 ? line : 0.0f);
-    list.add_text(label({x, y}, spec.columns[j], TextAnchor::top));
-    if (l.column_stride > 1)
-      list.add_line({x, grid_bottom, 0}, {x, grid_bottom + tick, 0}, kFrame, 1.0f);
-  }
-  float under = grid_bottom + font_px * 0.5f + line * (l.staggered_columns ? 2.0f : 1.0f);
-  if (!spec.x_label.empty()) {
-    list.add_text(label({float(l.grid.x) + float(l.grid.width) * 0.5f, under + line * 0.2f},
-                        spec.x_label, TextAnchor::top));
-    under += line * 1.2f;
-  }
-  if (!spec.y_label.empty())
-    list.add_text(label({float(l.grid.x) - font_px * 0.5f, float(l.grid.y) - font_px * 0.9f},
-                        spec.y_label, TextAnchor::bottom_right));
-  if (!spec.note.empty()) {
-    list.add_text(
-        label({float(l.grid.x), under + line * 0.4f}, spec.note, TextAnchor::top_left, quiet_ink));
-    under += line * 1.4f;
-  }
-  if (l.missing_key) {
-    const glm::vec2 a{float(l.grid.x), under + line * 0.4f};
-    const glm::vec2 b{a.x + font_px * 1.2f, a.y + font_px * 0.9f};
-    list.add_rect(a, b, missing);
-    list.add_line({a.x, b.y, 0}, {b.x, a.y, 0}, hatch, 1.0f);
-    list.add_text(label({b.x + font_px * 0.5f, (a.y + b.y) * 0.5f}, spec.missing, TextAnchor::left,
-                        quiet_ink));
-  }
-  // The colour bar: a strip per pixel row, low values at the bottom.
-  const Viewport& b = l.colour_bar;
-  std::vector<render::ColouredVertex> strip;
-  constexpr int kSteps = 64;
-  for (int k = 0; k < kSteps; ++k) {
-    const float y1 = float(b.y + b.height) - float(b.height) * float(k) / kSteps;
-    const float y0 = float(b.y + b.height) - float(b.height) * float(k + 1) / kSteps;
-    const double v = l.lo + (l.hi - l.lo) * (double(k) + 0.5) / kSteps;
-    const double value = spec.log_scale ? std::pow(10.0, v) : v;
-    const glm::vec4 c = heat_map_colour(spec, l, value).value_or(missing);
-    for (const glm::vec2 p :
-         {glm::vec2(b.x, y0), glm::vec2(b.x + b.width, y0), glm::vec2(b.x + b.width, y1),
-          glm::vec2(b.x, y0), glm::vec2(b.x + b.width, y1), glm::vec2(b.x, y1)})
-      strip.push_back({glm::vec3(p, 0), c});
-  }
-  list.add_triangles(strip);
-  const std::vector<glm::vec3> bar_frame{{float(b.x), float(b.y), 0},
-                                         {float(b.x + b.width), float(b.y), 0},
-                                         {float(b.x + b.width), float(b.y + b.height), 0},
-                                         {float(b.x), float(b.y + b.height), 0}};
-  list.add_polyline(bar_frame, kFrame, 1.0f, true);
-  const int max_labels = std::clamp(int(float(b.height) / (font_px * 1.6f)), 2, 8);
-  for (const auto& t : axis_ticks(l.lo, l.hi, spec.log_scale, max_labels)) {
-    if (t.label.empty()) continue;
-    const float y = float(b.y + b.height) - float((t.at - l.lo) / (l.hi - l.lo)) * float(b.height);
-    list.add_line({float(b.x + b.width), y, 0}, {float(b.x + b.width) + font_px * 0.3f, y, 0},
-                  kFrame, 1.0f);
-    list.add_text(label({float(b.x + b.width) + font_px * 0.45f, y}, t.label, TextAnchor::left));
-  }
-  list.add_text(
-      label({float(b.x), float(b.y) - font_px * 0.9f}, spec.value_label, TextAnchor::bottom_left));
-  renderer.draw_2d(list);
-  return renderer.finish_frame();
-}
-
-render::RgbaImage paint_figure(render::GlContext& context, const Figure& figure,
-                               const ChartOptions& options) {
-  if (const auto* chart = std::get_if<ChartSpec>(&figure.content))
-    return paint_chart(context, *chart, options);
-  if (const auto* heat = std::get_if<HeatMapSpec>(&figure.content)) {
-    ChartOptions o = options;
-    o.font_px = chart_font_px(options);
-    o.height =
-        std::min(o.height, heat_map_layout(*heat, o.width, o.height, o.font_px).natural_height);
-    return paint_heat_map(context, *heat, o);
-  }
-  const auto& table = std::get<TableSpec>(figure.content);
-  ChartOptions o = options;
-  // Tall enough for every row: the title, the header, the rules and the
-  // margins take five and a half lines (paint_table's layout); one more spare.
-  o.font_px = chart_font_px(options);
-  const float line = o.font_px * 1.5f;
-  o.height = std::max(o.height, int(std::ceil(line * float(table.rows.size() + 8))));
-  return paint_table(context, table, o);
 }
 
 }  // namespace epviz::paint

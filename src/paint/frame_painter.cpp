@@ -35,31 +35,16 @@ const scene::Theme& ink_for(const scene::Frame& f) {
   return t.light ? scene::dark_theme() : scene::light_theme();
 }
 
-namespace {
-
-render::Viewport to_viewport(const scene::Rect& r) { return {r.x, r.y, r.width, r.height}; }
-std::optional<render::Viewport> to_viewport(const std::optional<scene::Rect>& r) {
-  return r ? std::optional(to_viewport(*r)) : std::nullopt;
-}
-
-Layout layout_from(const scene::LayoutRequest& q) {
-  const scene::FrameLayout f = scene::frame_layout(q);
-  return {to_viewport(f.view_3d), to_viewport(f.panel_column), to_viewport(f.plot_area),
-          f.overlay_in_column,    f.sphere_px_per_unit,        f.plane_px_per_unit};
-}
-
-}  // namespace
-
 int overlay_lines_shown(const scene::OverlayText& o, int height) {
   return scene::overlay_lines_shown(int(o.lines.size()), height);
 }
 
-Layout layout_for(const scene::Frame& f, int width, int height, int reserved_left) {
-  return layout_from(scene::layout_request(f, width, height, reserved_left));
+scene::FrameLayout layout_for(const scene::Frame& f, int width, int height, int reserved_left) {
+  return scene::frame_layout(scene::layout_request(f, width, height, reserved_left));
 }
 
-Layout layout_for(const scene::Layers& layers, const scene::OverlayText& overlay, int width,
-                  int height, int reserved_left) {
+scene::FrameLayout layout_for(const scene::Layers& layers, const scene::OverlayText& overlay,
+                              int width, int height, int reserved_left) {
   scene::Frame f;
   f.layers = layers;
   f.overlay = overlay;
@@ -319,11 +304,12 @@ void draw_drift_key(const scene::Theme& ink) {
 }
 }  // namespace
 
-Box FramePainter::info_window_box(const scene::Frame& f, const Layout& layout, float px) {
-  const render::Viewport where = layout.overlay_in_column ? *layout.panel_column
-                                 : layout.view_3d         ? *layout.view_3d
-                                 : layout.panel_column    ? *layout.panel_column
-                                                       : render::Viewport{0, 0, width(), height()};
+Box FramePainter::info_window_box(const scene::Frame& f, const scene::FrameLayout& layout,
+                                  float px) {
+  const scene::Rect where = layout.overlay_in_column ? *layout.panel_column
+                            : layout.view_3d         ? *layout.view_3d
+                            : layout.panel_column    ? *layout.panel_column
+                                                     : scene::Rect{0, 0, width(), height()};
   // The window's size is computed from this frame's text: ImGui's auto-fit
   // would use the previous frame's, which belongs to another job in a gallery.
   const int shown = overlay_lines_shown(f.overlay, height());
@@ -350,7 +336,8 @@ Box FramePainter::info_window_box(const scene::Frame& f, const Layout& layout, f
   return {top_left, top_left + size};
 }
 
-void FramePainter::draw_info_window(const scene::Frame& f, const Layout& layout, float px) {
+void FramePainter::draw_info_window(const scene::Frame& f, const scene::FrameLayout& layout,
+                                    float px) {
   const scene::Theme& ink = ink_for(f);
   {
     const Box box = info_window_box(f, layout, px);
@@ -401,7 +388,7 @@ const render::RgbaImage& FramePainter::paint(const scene::Frame& f,
   const int w = renderer_->width(), h = renderer_->height();
   const float px =
       std::max(1.0f, float(h) / 360.0f);  // line widths and marks scale with the picture
-  const Layout layout = layout_for(f, w, h, reserved_left_);
+  const scene::FrameLayout layout = layout_for(f, w, h, reserved_left_);
   annotations_ = {};
   annotations_.map_top = ink_for(f).trail_map_top;
   annotations_.font_px = gui().label_font_px();
@@ -416,15 +403,16 @@ const render::RgbaImage& FramePainter::paint(const scene::Frame& f,
     DrawList scene3d;
     if (f.layers.body) draw_body(scene3d, f, px);
     if (f.layers.sphere) draw_sphere(scene3d, f, px);
-    const render::Camera camera = camera_for(f, *layout.view_3d);
-    renderer_->draw_3d(scene3d, camera, *layout.view_3d);
-    draw_view_annotations(f, camera, *layout.view_3d, px);
+    const render::Viewport view = to_viewport(*layout.view_3d);
+    const render::Camera camera = camera_for(f, view);
+    renderer_->draw_3d(scene3d, camera, view);
+    draw_view_annotations(f, camera, view, px);
   }
   if (layout.panel_column && f.layers.riccati)
-    draw_plane(f, *layout.panel_column, *layout.plot_area, px);
-  if (DrawList notes; draw_run_annotations(
-          notes, f, scene::frame_layout(scene::layout_request(f, w, h, reserved_left_)), ink_for(f),
-          px, layout.view_3d ? annotations_.legend_bottom : std::nullopt))
+    draw_plane(f, to_viewport(*layout.panel_column), to_viewport(*layout.plot_area), px);
+  if (DrawList notes;
+      draw_run_annotations(notes, f, layout, ink_for(f), px,
+                           layout.view_3d ? annotations_.legend_bottom : std::nullopt))
     renderer_->draw_2d(notes);
   if (f.layers.overlay || extra_ui)
     renderer_->draw_overlay([&] {

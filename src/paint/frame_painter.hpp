@@ -15,6 +15,7 @@
 #include "render/panel_2d.hpp"
 #include "render/renderer.hpp"
 #include "scene/frame.hpp"
+#include "scene/layout.hpp"
 
 namespace epviz::paint {
 
@@ -28,22 +29,18 @@ struct PainterOptions {
   bool builtin_font = false;
 };
 
-// Where each part of a frame goes in the image: scene::frame_layout (the one
-// layout, which the plan uses too) in the render toolkit's viewports.
-struct Layout {
-  std::optional<render::Viewport> view_3d;
-  std::optional<render::Viewport> panel_column;
-  std::optional<render::Viewport> plot_area;  // the panel's square plot inside its column
-  bool overlay_in_column = false;  // the overlay sits above the plot (else over the 3D view)
-  double sphere_px_per_unit = 0.0, plane_px_per_unit = 0.0;  // see scene::FrameLayout
-};
-// The frame's overlay takes the top of the panel's column when there is one
-// (so that it never covers the sphere). `reserved_left` pixels at the left
+// The render toolkit's viewport for a rectangle of scene::frame_layout (both
+// count pixels from the top left).
+inline render::Viewport to_viewport(const scene::Rect& r) { return {r.x, r.y, r.width, r.height}; }
+
+// Where each part of a frame goes: scene::frame_layout, the one layout (the
+// plan uses it too), for the frame's request. `reserved_left` pixels at the left
 // edge are kept free (the interactive panels sit there); the layout fills the rest.
-Layout layout_for(const scene::Frame& frame, int width, int height, int reserved_left = 0);
+scene::FrameLayout layout_for(const scene::Frame& frame, int width, int height,
+                              int reserved_left = 0);
 // The rectangles only (the pixel scales as for the default camera and panel extent).
-Layout layout_for(const scene::Layers& layers, const scene::OverlayText& overlay, int width,
-                  int height, int reserved_left = 0);
+scene::FrameLayout layout_for(const scene::Layers& layers, const scene::OverlayText& overlay,
+                              int width, int height, int reserved_left = 0);
 // How many of the overlay's lines fit a picture of this height.
 int overlay_lines_shown(const scene::OverlayText& overlay, int height);
 // The camera the painter uses for the 3D view of `frame`.
@@ -112,9 +109,9 @@ class FramePainter {
   void add_placed_labels(render::DrawList& flat, const std::vector<LabelRequest>& requests,
                          const std::vector<glm::vec4>& colours, const std::vector<Box>& obstacles,
                          const Box& bounds);
-  void draw_info_window(const scene::Frame& f, const Layout& layout, float px);
+  void draw_info_window(const scene::Frame& f, const scene::FrameLayout& layout, float px);
   // Where the overlay window goes and how large it is (from this frame's text).
-  Box info_window_box(const scene::Frame& f, const Layout& layout, float px);
+  Box info_window_box(const scene::Frame& f, const scene::FrameLayout& layout, float px);
 
   render::GlContext& context_;
   PainterOptions options_;

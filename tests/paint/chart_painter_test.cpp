@@ -1,10 +1,11 @@
 // The chart painter: a log-log chart of two known series checked pixel by
-// pixel (checks that can fail) and against a reviewed golden, plus the table.
+// pixel (checks that can fail) and against a reviewed golden.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "paint/chart_painter.hpp"
+#include "paint/figure_fixtures.hpp"
 #include "render/render_test_support.hpp"
 #include "render/snapshot.hpp"
 
@@ -14,27 +15,7 @@ namespace {
 namespace et = epviz::testing;
 constexpr int W = 640, H = 400;
 
-paint::ChartSpec two_series() {
-  paint::ChartSpec s;
-  s.title = "Work-precision (test)";
-  s.x_label = "CPU time [ms]";
-  s.y_label = "error";
-  s.log_x = s.log_y = true;
-  paint::ChartSeries a, b;
-  a.name = "rk4";
-  b.name = "gauss6";
-  for (int i = 0; i < 6; ++i) {
-    const double x = std::pow(10.0, -2.0 + 0.6 * i);
-    a.points.push_back({x, 1e-2 * std::pow(x, -4.0) * 1e-6});
-    b.points.push_back({x * 2.0, 1e-3 * std::pow(x, -6.0) * 1e-8});
-  }
-  s.series = {a, b};
-  return s;
-}
-
-paint::ChartOptions test_options() {
-  return {.width = W, .height = H, .msaa_samples = 4, .builtin_font = true};
-}
+paint::ChartOptions test_options() { return et::builtin_font_options(W, H); }
 
 // Whether a pixel near `at` (within r) is close to `colour`.
 bool colour_near(const render::RgbaImage& img, glm::vec2 at, const glm::vec4& colour, int r = 3) {
@@ -63,8 +44,8 @@ TEST(ChartPainter, DecadeLabels) {
 }
 
 TEST(ChartPainter, LogLayoutCoversWholeDecades) {
-  const auto spec = two_series();
-  const auto l = paint::chart_layout(spec, W, H, 13.0f);
+  const auto spec = et::two_series();
+  const auto l = paint::chart_layout(spec, W, H, et::builtin_chart_font());
   EXPECT_EQ(l.range.x_min, std::floor(l.range.x_min));
   EXPECT_EQ(l.range.y_max, std::floor(l.range.y_max));
   for (const auto& s : spec.series)
@@ -79,11 +60,11 @@ TEST(ChartPainter, LogLayoutCoversWholeDecades) {
 }
 
 TEST(ChartPainter, SeriesAppearAtTheirPointsAndInTheLegend) {
-  const auto spec = two_series();
+  const auto spec = et::two_series();
   const auto img = paint::paint_chart(et::shared_gl_context(), spec, test_options());
   ASSERT_EQ(img.width, W);
   ASSERT_EQ(img.height, H);
-  const auto l = paint::chart_layout(spec, W, H, 13.0f);
+  const auto l = paint::chart_layout(spec, W, H, et::builtin_chart_font());
   for (std::size_t i = 0; i < spec.series.size(); ++i)
     for (const auto& p : spec.series[i].points)
       EXPECT_TRUE(colour_near(img, l.to_pixel(p.x, p.y), paint::series_colour(i)))
@@ -102,27 +83,14 @@ TEST(ChartPainter, SeriesAppearAtTheirPointsAndInTheLegend) {
 }
 
 TEST(ChartPainter, MatchesTheReviewedGolden) {
-  const auto img = paint::paint_chart(et::shared_gl_context(), two_series(), test_options());
+  const auto img = paint::paint_chart(et::shared_gl_context(), et::two_series(), test_options());
   EXPECT_TRUE(et::matches_snapshot("chart_loglog", img.width, img.height, img.pixels));
-}
-
-TEST(ChartPainter, TableFigureMatchesTheReviewedGolden) {
-  paint::TableSpec t{"Stability (test)", {"study", "case", "method", "result"}, {}};
-  t.rows = {{"max_step", "kovalevskaya", "rk4", "max step 0.328"},
-            {"chaos", "generic", "dop853", "separated no"},
-            {"pole", "custom", "dop853", "error 9.27e-10"}};
-  const auto img = paint::paint_table(et::shared_gl_context(), t, test_options());
-  int ink = 0;
-  for (std::size_t i = 0; i < img.pixels.size(); i += 4)
-    if (img.pixels[i] < 128) ++ink;
-  EXPECT_GT(ink, 500);
-  EXPECT_TRUE(et::matches_snapshot("chart_table", img.width, img.height, img.pixels));
 }
 
 // Series that share a colour key share a colour (colour by method), whatever
 // their position; the keyed legend shows each colour once.
 TEST(ChartPainter, SeriesWithOneColourKeyShareTheColour) {
-  auto spec = two_series();
+  auto spec = et::two_series();
   spec.series[0].colour_key = 9;
   spec.series[1].colour_key = 9;
   spec.series[0].marker_key = 0;
@@ -130,7 +98,7 @@ TEST(ChartPainter, SeriesWithOneColourKeyShareTheColour) {
   spec.colour_legend = {{"rk4", 9}};
   spec.marker_legend = {{"direct", 0}, {"riccati", 1}};
   const auto img = paint::paint_chart(et::shared_gl_context(), spec, test_options());
-  const auto l = paint::chart_layout(spec, W, H, 13.0f);
+  const auto l = paint::chart_layout(spec, W, H, et::builtin_chart_font());
   for (const auto& s : spec.series)
     for (const auto& p : s.points)
       EXPECT_TRUE(colour_near(img, l.to_pixel(p.x, p.y), paint::series_colour(9)));
@@ -158,62 +126,10 @@ TEST(ChartPainter, LastXLabelIsNotClipped) {
   a.name = "a";
   a.points = {{1e-3, 1.0}, {123456.0, 1e-9}};
   s.series = {a};
-  const float font = 13.0f;
+  const auto& font = et::builtin_chart_font();
   const auto l = paint::chart_layout(s, W, H, font);
-  const float last_label_w = float(paint::decade_label(int(l.range.x_max)).size()) * font * 0.58f;
+  const float last_label_w = font.width(paint::decade_label(int(l.range.x_max)));
   EXPECT_GE(float(W - (l.plot_area.x + l.plot_area.width)), 0.5f * last_label_w);
-}
-
-paint::HeatMapSpec heat_spec() {
-  paint::HeatMapSpec h;
-  h.title = "Stability (test)";
-  h.value_label = "step / period";
-  h.rows = {"rk4", "gauss4", "midpoint"};
-  h.columns = {"kovalevskaya", "lagrange"};
-  h.values = {{0.01, 0.1}, {1.0, std::nan("")}, {0.03, 0.3}};
-  return h;
-}
-
-// Each cell has the colour of its value on the map (log scale: a decade is a
-// fixed step along it), missing values are grey, and the layout fits.
-TEST(ChartPainter, HeatMapCellsFollowTheirValues) {
-  const auto spec = heat_spec();
-  const auto o = test_options();
-  const auto img = paint::paint_heat_map(et::shared_gl_context(), spec, o);
-  const auto l = paint::heat_map_layout(spec, W, H, 13.0f);
-  EXPECT_DOUBLE_EQ(l.lo, -2.0);
-  EXPECT_DOUBLE_EQ(l.hi, 0.0);
-  ASSERT_EQ(l.cells.size(), 3u);
-  std::vector<float> lightness;
-  for (std::size_t i = 0; i < 3; ++i)
-    for (std::size_t j = 0; j < 2; ++j) {
-      const auto& c = l.cells[i][j];
-      // A corner of the cell, away from its text.
-      const glm::vec4 got = et::pixel_colour(img, c.x + 3, c.y + 3);
-      const auto expected = paint::heat_map_colour(spec, l, spec.values[i][j]);
-      if (!expected) {
-        EXPECT_LT(et::max_channel_difference(got, glm::vec4(0.88f, 0.88f, 0.89f, 1.0f)), 0.03f);
-        continue;
-      }
-      EXPECT_LT(et::max_channel_difference(got, *expected), 0.03f) << i << "," << j;
-    }
-  // Larger steps are better: brighter. 0.01 < 0.03 < 0.1 < 0.3 < 1.
-  const double ordered[] = {0.01, 0.03, 0.1, 0.3, 1.0};
-  for (int k = 0; k + 1 < 5; ++k)
-    EXPECT_LT(et::luminance(*paint::heat_map_colour(spec, l, ordered[k])),
-              et::luminance(*paint::heat_map_colour(spec, l, ordered[k + 1])));
-  // The ends of the map at the ends of the range.
-  EXPECT_EQ(*paint::heat_map_colour(spec, l, 0.01), *paint::heat_map_colour(spec, l, 1e-5));
-  // The colour bar: its top has the colour of the largest value, its bottom of the smallest.
-  const auto& b = l.colour_bar;
-  EXPECT_LT(et::max_channel_difference(et::pixel_colour(img, b.x + b.width / 2, b.y + 2),
-                                       *paint::heat_map_colour(spec, l, 1.0)),
-            0.06f);
-  EXPECT_LT(et::max_channel_difference(et::pixel_colour(img, b.x + b.width / 2, b.y + b.height - 3),
-                                       *paint::heat_map_colour(spec, l, 0.01)),
-            0.06f);
-  EXPECT_LE(b.x + b.width, W);
-  EXPECT_LE(l.grid.y + l.grid.height, H);
 }
 
 }  // namespace

@@ -28,7 +28,7 @@ scene::Frame frame_of(physics::Case c, scene::View view, int w, int h, double di
   return et::preset_frame(c, s);
 }
 
-paint::Box box_of(const render::Viewport& v) {
+paint::Box box_of(const scene::Rect& v) {
   return {glm::vec2(v.x, v.y), glm::vec2(v.x + v.width, v.y + v.height)};
 }
 
@@ -62,8 +62,8 @@ TEST(FrameAnnotations, LabelsNeitherCollideNorLeaveTheirPart) {
       EXPECT_NE(std::find(texts.begin(), texts.end(), expected), texts.end()) << expected;
 
     // The current point's marker, which "e3" used to cover in the space view.
-    const auto cam = paint::camera_for(f, *layout.view_3d);
-    const auto marker = render::project_to_pixel(cam, *layout.view_3d,
+    const auto view_3d = paint::to_viewport(*layout.view_3d);
+    const auto marker = render::project_to_pixel(paint::camera_for(f, view_3d), view_3d,
                                                  {f.current.x(), f.current.y(), f.current.z()});
     ASSERT_TRUE(marker);
     const paint::Box marker_box = paint::box_around(glm::vec2(*marker), glm::vec2(8.0f));

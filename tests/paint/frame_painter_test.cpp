@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <initializer_list>
+#include <optional>
 
 #include "paint/frame_painter.hpp"
 #include "paint/preset_frame.hpp"
@@ -45,6 +47,25 @@ glm::vec4 background_of(const scene::Frame& f) {
 
 scene::Layers only(bool body, bool sphere, bool riccati, bool overlay) {
   return {body, sphere, riccati, overlay};
+}
+
+// Where the painter's camera puts a point of the 3D view of a picture of size w x h.
+std::optional<glm::vec3> seen_at(const scene::Frame& f, glm::vec3 point, int w = W, int h = H) {
+  const auto view = paint::to_viewport(*paint::layout_for(f, w, h).view_3d);
+  return render::project_to_pixel(paint::camera_for(f, view), view, point);
+}
+
+// The Riccati panel's plot as the painter lays it out.
+render::Panel2D riccati_plot(const scene::Frame& f, int w = W, int h = H) {
+  const float e = f.plane_extent;
+  return {paint::to_viewport(*paint::layout_for(f, w, h).plot_area), {-e, e, -e, e}, true};
+}
+
+void expect_background_at(const render::RgbaImage& img, const scene::Frame& f,
+                          std::initializer_list<glm::vec2> points) {
+  for (glm::vec2 at : points)
+    EXPECT_LT(et::max_channel_difference(px(img, at), background_of(f)), 0.02f)
+        << at.x << "," << at.y;
 }
 
 struct Named {
@@ -103,16 +124,13 @@ TEST(Painter, PlanAndPainterShareOneLayout) {
     EXPECT_EQ(layout.overlay_in_column, plan.layout.overlay_in_column);
 
     // A small step off the sphere's centre, seen by the painter's camera.
-    const auto cam = paint::camera_for(f, *layout.view_3d);
-    const auto centre = render::project_to_pixel(cam, *layout.view_3d, {0, 0, 0});
-    const auto up = render::project_to_pixel(cam, *layout.view_3d, {0, 0, 1e-3f});
+    const auto centre = seen_at(f, {0, 0, 0}, w, h);
+    const auto up = seen_at(f, {0, 0, 1e-3f}, w, h);
     ASSERT_TRUE(centre && up);
     const double cos_elevation = std::cos(s.camera.elevation_deg * M_PI / 180);
     EXPECT_NEAR(glm::length(glm::vec2(*up) - glm::vec2(*centre)) / 1e-3 / cos_elevation,
                 layout.sphere_px_per_unit, 0.01 * layout.sphere_px_per_unit);
-    const render::Panel2D plot(*layout.plot_area,
-                               {-f.plane_extent, f.plane_extent, -f.plane_extent, f.plane_extent},
-                               true);
+    const render::Panel2D plot = riccati_plot(f, w, h);
     EXPECT_NEAR(glm::length(plot.to_pixel({1, 0}) - plot.to_pixel({0, 0})),
                 layout.plane_px_per_unit, 1e-3);
   }
@@ -122,10 +140,8 @@ TEST(Painter, SphereLayerDrawsTheCurrentPointWithTheMarkerColour) {
   const auto f =
       case_frame(physics::Case::kovalevskaya, scene::View::body, only(false, true, false, false));
   const auto& img = painter().paint(f);
-  const auto layout = paint::layout_for(f.layers, f.overlay, W, H);
-  ASSERT_TRUE(layout.view_3d);
-  const auto at = render::project_to_pixel(paint::camera_for(f, *layout.view_3d), *layout.view_3d,
-                                           {f.current.x(), f.current.y(), f.current.z()});
+  ASSERT_TRUE(paint::layout_for(f, W, H).view_3d);
+  const auto at = seen_at(f, {f.current.x(), f.current.y(), f.current.z()});
   ASSERT_TRUE(at);
   const glm::vec4 marker{f.colours.marker[0], f.colours.marker[1], f.colours.marker[2], 1};
   EXPECT_LT(et::max_channel_difference(px(img, *at), marker), 0.12f);
@@ -135,10 +151,8 @@ TEST(Painter, BodyLayerShowsTheBoxAtItsCentreOfMass) {
   const auto f =
       case_frame(physics::Case::lagrange, scene::View::body, only(true, false, false, false));
   const auto& img = painter().paint(f);
-  const auto layout = paint::layout_for(f.layers, f.overlay, W, H);
   const Eigen::Vector3f c = f.body.centre_of_mass;
-  const auto at = render::project_to_pixel(paint::camera_for(f, *layout.view_3d), *layout.view_3d,
-                                           {c.x(), c.y(), c.z() + 0.05f});
+  const auto at = seen_at(f, {c.x(), c.y(), c.z() + 0.05f});
   ASSERT_TRUE(at);
   const glm::vec4 p = px(img, *at);
   // The body's warm colour, lit: red clearly above blue, and not background.
@@ -151,19 +165,15 @@ TEST(Painter, SwitchedOffLayersLeaveBackground) {
       case_frame(physics::Case::kovalevskaya, scene::View::body, only(false, false, true, false));
   const auto& img = painter().paint(f);
   // Only the panel: the left and right borders and corners are background.
-  for (glm::vec2 at : {glm::vec2(2, 2), glm::vec2(W - 3, H - 3), glm::vec2(2, H / 2)})
-    EXPECT_LT(et::max_channel_difference(px(img, at), background_of(f)), 0.02f)
-        << at.x << "," << at.y;
+  expect_background_at(img, f, {glm::vec2(2, 2), glm::vec2(W - 3, H - 3), glm::vec2(2, H / 2)});
 }
 
 TEST(Painter, RiccatiPanelShowsTheUnitCircle) {
   const auto f =
       case_frame(physics::Case::kovalevskaya, scene::View::body, only(false, false, true, false));
   const auto& img = painter().paint(f);
-  const auto layout = paint::layout_for(f.layers, f.overlay, W, H);
-  ASSERT_TRUE(layout.plot_area);
-  const render::Panel2D plot(
-      *layout.plot_area, {-f.plane_extent, f.plane_extent, -f.plane_extent, f.plane_extent}, true);
+  ASSERT_TRUE(paint::layout_for(f, W, H).plot_area);
+  const render::Panel2D plot = riccati_plot(f);
   int bright = 0;
   for (int k = 0; k < 16; ++k) {
     const double a = 2 * M_PI * (k + 0.5) / 16;
@@ -178,10 +188,7 @@ TEST(Painter, PassThroughInfinityIsMarked) {
   f.plane_marks.push_back(
       {Eigen::Vector2f(f.plane_extent, 0.0f), scene::PlaneMark::Kind::through_infinity, 0.2f});
   const auto& img = painter().paint(f);
-  const auto layout = paint::layout_for(f.layers, f.overlay, W, H);
-  const render::Panel2D plot(
-      *layout.plot_area, {-f.plane_extent, f.plane_extent, -f.plane_extent, f.plane_extent}, true);
-  const glm::vec2 at = plot.to_pixel({f.plane_extent, 0.0});
+  const glm::vec2 at = riccati_plot(f).to_pixel({f.plane_extent, 0.0});
   int red = 0;
   for (int dx = -7; dx <= 7; ++dx)
     for (int dy = -7; dy <= 7; ++dy) {
@@ -194,17 +201,12 @@ TEST(Painter, PassThroughInfinityIsMarked) {
 // The light theme (no golden: its pictures are looked at, not pinned): a
 // light page with the body, sphere, panel and overlay drawn dark on it.
 TEST(Painter, LightThemeDrawsDarkOnALightPage) {
-  const auto run = sim::preset_run(physics::Case::kovalevskaya, sim::Method::dop853,
-                                   sim::Formulation::direct, 12.0, 200);
   scene::SceneSettings s;
   s.width = W;
   s.height = H;
-  s.fps = 10;
-  s.duration = 3;
   s.theme = scene::ThemeId::light;
   s.colours = scene::light_theme().colours;
-  scene::FrameSource source(scene::plan_scene(run, s), s);
-  const auto f = source.frame(18);
+  const auto f = et::preset_frame(physics::Case::kovalevskaya, s);
   const auto& img = painter().paint(f);
   int light = 0, dark = 0;
   for (int y = 0; y < H; ++y)
@@ -215,9 +217,7 @@ TEST(Painter, LightThemeDrawsDarkOnALightPage) {
     }
   EXPECT_GT(light, W * H / 2);   // mostly page
   EXPECT_GT(dark, W * H / 200);  // and lines and text on it
-  for (glm::vec2 at : {glm::vec2(2, 2), glm::vec2(W - 3, H - 3)})
-    EXPECT_LT(et::max_channel_difference(px(img, at), background_of(f)), 0.02f)
-        << at.x << "," << at.y;
+  expect_background_at(img, f, {glm::vec2(2, 2), glm::vec2(W - 3, H - 3)});
 }
 
 TEST(Painter, OverlayAloneDrawsTextAndNothingElse) {

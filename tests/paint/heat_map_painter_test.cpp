@@ -1,13 +1,15 @@
-// Heat maps (paint_heat_map in paint/chart_painter.hpp) checked on the
-// pixels: cells coloured in value order at their column and row, cells
-// without a value grey; a fixed colour range; axis titles; and a 64 x 64 grid
-// whose cells carry no text and whose labels are thinned so they never overlap.
+// Heat maps (paint/heat_map_painter.hpp) checked on the pixels: cells
+// coloured in value order at their column and row and where the layout puts
+// them, cells without a value grey, the colour bar; a fixed colour range; axis
+// titles; and a 64 x 64 grid whose cells carry no text and whose labels are
+// thinned so they never overlap.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
-#include "paint/chart_painter.hpp"
+#include "paint/figure_fixtures.hpp"
+#include "paint/heat_map_painter.hpp"
 #include "render/colour_map.hpp"
 #include "render/render_test_support.hpp"
 
@@ -20,7 +22,7 @@ constexpr float kFont = 13.0f;  // the built-in font
 const glm::vec4 kMissingGrey{0.88f, 0.88f, 0.89f, 1.0f};
 
 paint::ChartOptions options(int width = W, int height = H) {
-  return {.width = width, .height = height, .builtin_font = true};
+  return et::builtin_font_options(width, height);
 }
 
 bool near(const render::RgbaImage& img, int x, int y, const glm::vec4& c) {
@@ -94,6 +96,57 @@ TEST(HeatMap, CellsFollowTheirValuesAtTheirColumnAndRow) {
   EXPECT_GT(ink_in(img, bl1 + 1, top, bh0, bottom + 1), 0);
 }
 
+paint::HeatMapSpec heat_spec() {
+  paint::HeatMapSpec h;
+  h.title = "Stability (test)";
+  h.value_label = "step / period";
+  h.rows = {"rk4", "gauss4", "midpoint"};
+  h.columns = {"kovalevskaya", "lagrange"};
+  h.values = {{0.01, 0.1}, {1.0, std::nan("")}, {0.03, 0.3}};
+  return h;
+}
+
+// Each cell has the colour of its value on the map (log scale: a decade is a
+// fixed step along it), missing values are grey, and the layout fits.
+TEST(HeatMap, CellsAndColourBarFollowTheLayout) {
+  const auto spec = heat_spec();
+  const auto img = paint::paint_heat_map(et::shared_gl_context(), spec, options());
+  const auto l = paint::heat_map_layout(spec, W, H, et::builtin_chart_font());
+  EXPECT_DOUBLE_EQ(l.lo, -2.0);
+  EXPECT_DOUBLE_EQ(l.hi, 0.0);
+  ASSERT_EQ(l.cells.size(), 3u);
+  std::vector<float> lightness;
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 2; ++j) {
+      const auto& c = l.cells[i][j];
+      // A corner of the cell, away from its text.
+      const glm::vec4 got = et::pixel_colour(img, c.x + 3, c.y + 3);
+      const auto expected = paint::heat_map_colour(spec, l, spec.values[i][j]);
+      if (!expected) {
+        EXPECT_LT(et::max_channel_difference(got, glm::vec4(0.88f, 0.88f, 0.89f, 1.0f)), 0.03f);
+        continue;
+      }
+      EXPECT_LT(et::max_channel_difference(got, *expected), 0.03f) << i << "," << j;
+    }
+  // Larger steps are better: brighter. 0.01 < 0.03 < 0.1 < 0.3 < 1.
+  const double ordered[] = {0.01, 0.03, 0.1, 0.3, 1.0};
+  for (int k = 0; k + 1 < 5; ++k)
+    EXPECT_LT(et::luminance(*paint::heat_map_colour(spec, l, ordered[k])),
+              et::luminance(*paint::heat_map_colour(spec, l, ordered[k + 1])));
+  // The ends of the map at the ends of the range.
+  EXPECT_EQ(*paint::heat_map_colour(spec, l, 0.01), *paint::heat_map_colour(spec, l, 1e-5));
+  // The colour bar: its top has the colour of the largest value, its bottom of the smallest.
+  const auto& b = l.colour_bar;
+  EXPECT_LT(et::max_channel_difference(et::pixel_colour(img, b.x + b.width / 2, b.y + 2),
+                                       *paint::heat_map_colour(spec, l, 1.0)),
+            0.06f);
+  EXPECT_LT(et::max_channel_difference(et::pixel_colour(img, b.x + b.width / 2, b.y + b.height - 3),
+                                       *paint::heat_map_colour(spec, l, 0.01)),
+            0.06f);
+  EXPECT_LE(b.x + b.width, W);
+  EXPECT_LE(l.grid.y + l.grid.height, H);
+}
+
 // A fixed range is the colour bar's, as given: values beyond it take its end
 // colours, and two maps with different values colour a value alike.
 TEST(HeatMap, FixedColourRange) {
@@ -106,8 +159,8 @@ TEST(HeatMap, FixedColourRange) {
   a.range_max = 0.3;
   auto b = a;
   b.values = {{0.1, 0.4, -1.0}};
-  const auto la = paint::heat_map_layout(a, W, H, kFont);
-  const auto lb = paint::heat_map_layout(b, W, H, kFont);
+  const auto la = paint::heat_map_layout(a, W, H, et::builtin_chart_font());
+  const auto lb = paint::heat_map_layout(b, W, H, et::builtin_chart_font());
   EXPECT_DOUBLE_EQ(la.lo, 0.0);
   EXPECT_DOUBLE_EQ(la.hi, 0.3);
   EXPECT_EQ(*paint::heat_map_colour(a, la, 0.1), *paint::heat_map_colour(b, lb, 0.1));
@@ -119,13 +172,13 @@ TEST(HeatMap, FixedColourRange) {
             1e-6f);
   // Without a range: the values' own (0.05 at the map's low end).
   a.range_min = a.range_max = NAN;
-  const auto own = paint::heat_map_layout(a, W, H, kFont);
+  const auto own = paint::heat_map_layout(a, W, H, et::builtin_chart_font());
   EXPECT_LT(et::max_channel_difference(*paint::heat_map_colour(a, own, 0.05), map(0.0f)), 1e-6f);
   // On a log scale a fixed range is not rounded out to whole decades.
   a.log_scale = true;
   a.range_min = 0.02;
   a.range_max = 0.5;
-  const auto log = paint::heat_map_layout(a, W, H, kFont);
+  const auto log = paint::heat_map_layout(a, W, H, et::builtin_chart_font());
   EXPECT_NEAR(log.lo, std::log10(0.02), 1e-12);
   EXPECT_NEAR(log.hi, std::log10(0.5), 1e-12);
 }
@@ -143,7 +196,7 @@ TEST(HeatMap, AxisTitles) {
   const float line = kFont * 1.35f;
   for (const auto* spec : {&s, &titled}) {
     const auto img = paint::paint_heat_map(gl, *spec, options());
-    const auto l = paint::heat_map_layout(*spec, W, H, kFont);
+    const auto l = paint::heat_map_layout(*spec, W, H, et::builtin_chart_font());
     const int grid_bottom = l.grid.y + l.grid.height;
     // Under the column labels' line, across the grid.
     const int x_ink =
@@ -154,7 +207,7 @@ TEST(HeatMap, AxisTitles) {
     EXPECT_EQ(x_ink > 0, spec == &titled) << x_ink;
     EXPECT_EQ(y_ink > 0, spec == &titled) << y_ink;
     // The y title fits left of the grid, not off the picture.
-    EXPECT_GE(float(l.grid.x) - kFont * 0.5f, float(spec->y_label.size()) * kFont * 0.58f);
+    EXPECT_GE(float(l.grid.x) - kFont * 0.5f, et::builtin_chart_font().width(spec->y_label));
   }
 }
 
@@ -179,13 +232,13 @@ TEST(HeatMap, LargeGridHasNoCellTextAndThinnedLabels) {
     for (int j = 0; j < n; ++j) s.values[i][j] = 0.001 * (i * n + j) + 0.123456;
   s.values[5][7] = NAN;
   const int w = 1280, h = 900;
-  const auto l = paint::heat_map_layout(s, w, h, kFont);
+  const auto l = paint::heat_map_layout(s, w, h, et::builtin_chart_font());
   EXPECT_FALSE(l.value_text);
   EXPECT_TRUE(l.missing_key);
   ASSERT_GT(l.column_stride, 1u);
   ASSERT_GT(l.row_stride, 1u);
   float widest = 0.0f;
-  for (const auto& c : s.columns) widest = std::max(widest, float(c.size()) * kFont * 0.58f);
+  for (const auto& c : s.columns) widest = std::max(widest, et::builtin_chart_font().width(c));
   const float cell_w = float(l.grid.width) / n, cell_h = float(l.grid.height) / n;
   EXPECT_GT(float(l.column_stride) * cell_w, widest);
   EXPECT_GE(float(l.row_stride) * cell_h, kFont * 1.2f);
@@ -218,7 +271,7 @@ TEST(HeatMap, SmallGridCellsShowTheirValues) {
   s.rows = {"rk4", "gauss4"};
   s.columns = {"euler", "lagrange"};
   s.values = {{0.01, 0.1}, {1.0, NAN}};
-  const auto l = paint::heat_map_layout(s, W, H, kFont);
+  const auto l = paint::heat_map_layout(s, W, H, et::builtin_chart_font());
   EXPECT_TRUE(l.value_text);
   EXPECT_FALSE(l.missing_key);
   EXPECT_EQ(l.column_stride, 1u);

@@ -1,0 +1,85 @@
+#pragma once
+// What the figure painters (chart, table, heat map) share: the options, the
+// labels' font as their layouts measure it, the page's colours, axis ranges
+// and ticks, and the renderer they draw with.
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+
+#include "chart/chart_spec.hpp"
+#include "render/draw_list.hpp"
+#include "render/gui_overlay.hpp"
+#include "render/renderer.hpp"
+
+namespace epviz::paint {
+
+// The painters' input types are plain data from chart/chart_spec.hpp.
+using chart::ChartPoint;
+using chart::ChartSeries;
+using chart::ChartSpec;
+using chart::Figure;
+using chart::HeatMapSpec;
+using chart::TableSpec;
+
+struct ChartOptions {
+  int width = 1280;
+  int height = 800;
+  int msaa_samples = 4;
+  // ImGui's built-in 13 px font (snapshot tests), else the overlay's TTF at a
+  // size that follows the picture's height.
+  bool builtin_font = false;
+  float font_px = 0.0f;  // > 0: this TTF size whatever the height
+};
+
+// The font size the painters use for a picture of this height.
+float chart_font_px(const ChartOptions& options);
+
+// The labels' font as a layout needs it: the height of a line of text, and
+// how wide a text is drawn, measured on the font the labels are drawn with.
+struct ChartFont {
+  float px = 13.0f;
+  std::function<float(const std::string&)> width;
+};
+// The font `overlay` draws labels with; the overlay must outlive the result.
+ChartFont chart_font(const render::ImGuiOverlay& overlay);
+
+// The log10 decade labels: "1" for 1e0, else "1e-8" style.
+std::string decade_label(int exponent);
+
+// --- For the painters' own files -------------------------------------------------
+
+inline const glm::vec4 kPaper{1.0f, 1.0f, 1.0f, 1.0f};
+inline const glm::vec4 kInk{0.10f, 0.10f, 0.12f, 1.0f};
+inline const glm::vec4 kFrame{0.20f, 0.20f, 0.22f, 1.0f};
+inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The range of the finite values added.
+struct Span {
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -std::numeric_limits<double>::infinity();
+  void add(double v);
+  bool empty() const { return !(lo <= hi); }
+};
+// Whole decades on a log axis, a padded range with nice ends on a linear one.
+void finish_span(Span& s, bool log_axis);
+
+struct Tick {
+  double at;          // plotted units
+  std::string label;  // empty for minor ticks
+  bool major;
+};
+// Ticks over [lo, hi] in plotted units (log10 on a log axis), at most
+// `max_labels` of them labelled.
+std::vector<Tick> axis_ticks(double lo, double hi, bool log_axis, int max_labels);
+
+render::TextLabel label(glm::vec2 at, std::string text, render::TextAnchor anchor,
+                        glm::vec4 colour = kInk);
+
+// A renderer for a figure: light style, the options' font and size.
+render::RendererOptions renderer_options(const ChartOptions& options);
+
+}  // namespace epviz::paint

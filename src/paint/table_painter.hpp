@@ -1,0 +1,16 @@
+#pragma once
+// Table figures for papers: a title, a header between two rules, rows with
+// alternate shading, columns as wide as their longest cell (all narrowed
+// together where the table is wider than the picture).
+#include "paint/figure_common.hpp"
+#include "render/gl_context.hpp"
+#include "render/image.hpp"
+
+namespace epviz::paint {
+
+// Renders a table; `context` must be current (any size). Rows that do not fit
+// the picture's height are left out and counted under the last rule.
+render::RgbaImage paint_table(render::GlContext& context, const TableSpec& spec,
+                              const ChartOptions& options = {});
+
+}  // namespace epviz::paint
