@@ -3,6 +3,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "check/frame_verdict.hpp"
+
 namespace epviz::check {
 
 struct TestImage {
@@ -15,6 +17,7 @@ struct TestImage {
     const auto* p = pixel(x, y);
     return 0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2];
   }
+  ImageView view() const { return {w, h, rgba}; }
 };
 
 inline TestImage flat_image(int w, int h, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
