@@ -16,6 +16,11 @@ fs::path GoldenJob::golden_path(int frame) const {
   return golden_dir / io::frame_file_name(frame, frame_count);
 }
 
+fs::path golden_dir_of(const fs::path& job_file, const fs::path& golden_root) {
+  const fs::path name = job_file.stem();
+  return golden_root.empty() ? job_file.parent_path() / "golden" / name : golden_root / name;
+}
+
 void write_golden_png(const fs::path& path, const ImageView& image) {
   io::write_png_rgba(path, image.width, image.height, image.rgba,
                      {.compression_level = 9, .filter = -1});

@@ -22,6 +22,11 @@ struct GoldenJob {
   std::filesystem::path golden_path(int frame) const;
 };
 
+// Where a job's goldens go: <golden_root>/<job name>, or <job dir>/golden/<job
+// name> when golden_root is empty (the job name is the file name without .json).
+std::filesystem::path golden_dir_of(const std::filesystem::path& job_file,
+                                    const std::filesystem::path& golden_root);
+
 // What drew the frames (GL_RENDERER, GL_VERSION), recorded in golden.json.
 struct RendererInfo {
   std::string renderer, version;

@@ -59,6 +59,12 @@ class JobCheck : public ::testing::Test {
   GoldenJob job_;
 };
 
+TEST(GoldenDir, NextToTheJobOrUnderTheGivenRoot) {
+  EXPECT_EQ(golden_dir_of("jobs/kov.json", ""), fs::path("jobs/golden/kov"));
+  EXPECT_EQ(golden_dir_of("kov.json", ""), fs::path("golden/kov"));
+  EXPECT_EQ(golden_dir_of("jobs/kov.json", "ci/goldens"), fs::path("ci/goldens/kov"));
+}
+
 TEST_F(JobCheck, UpdateWritesEveryFrameAndGoldenJson) {
   const auto images = frames();
   const auto out = JobChecker(settings()).update(job_, views(images), std::nullopt);
