@@ -246,9 +246,8 @@ check::JobChecker job_checker(const CheckOptions& o, const check::Tolerance& t,
 }
 
 // Compares the frames drawn (or writes them as goldens with --update).
-check::JobOutcome check_frames(check::JobChecker& checker, const CheckOptions& o,
-                               const CheckJob& c, std::size_t index,
-                               const RenderedFrames& rendered) {
+check::JobOutcome check_frames(check::JobChecker& checker, const CheckOptions& o, const CheckJob& c,
+                               std::size_t index, const RenderedFrames& rendered) {
   std::vector<check::ImageView> images;
   for (const auto& im : rendered.images) images.push_back({im.width, im.height, im.pixels});
   std::optional<std::string> failure;
@@ -304,8 +303,8 @@ std::vector<std::future<check::JobOutcome>> check_jobs(const std::vector<CheckJo
             painter = std::make_unique<paint::FramePainter>(*context, c.job.scene.width,
                                                             c.job.scene.height);
           }
-          const auto rendered = render_job_frames(c.plan, c.job.scene, c.golden.frames, *painter,
-                                                  paint_lock.get());
+          const auto rendered =
+              render_job_frames(c.plan, c.job.scene, c.golden.frames, *painter, paint_lock.get());
           drop_painter();
           (*promises)[i].set_value(check_frames(checker, o, c, i, rendered));
         } catch (...) {

@@ -21,8 +21,8 @@ Verdict FrameJudge::judge(const ImageView& actual, const ImageView& golden) {
   if (actual.width != golden.width || actual.height != golden.height)
     throw std::invalid_argument("cannot judge a " + std::to_string(actual.width) + "x" +
                                 std::to_string(actual.height) + " frame against a " +
-                                std::to_string(golden.width) + "x" +
-                                std::to_string(golden.height) + " golden");
+                                std::to_string(golden.width) + "x" + std::to_string(golden.height) +
+                                " golden");
   Verdict v;
   char m[160];
   if (tolerance_.metric == Metric::pixel) {

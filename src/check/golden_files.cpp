@@ -30,8 +30,8 @@ std::vector<fs::path> write_goldens(const GoldenJob& job, std::span<const ImageV
                                     const RendererInfo& renderer,
                                     const std::string& epviz_version) {
   if (images.size() != job.frames.size())
-    throw std::invalid_argument(job.shown + ": " + std::to_string(images.size()) +
-                                " images for " + std::to_string(job.frames.size()) + " frames");
+    throw std::invalid_argument(job.shown + ": " + std::to_string(images.size()) + " images for " +
+                                std::to_string(job.frames.size()) + " frames");
   fs::create_directories(job.golden_dir);
   std::vector<fs::path> written;
   for (std::size_t k = 0; k < images.size(); ++k) {

@@ -115,11 +115,10 @@ JobOutcome JobChecker::update(const GoldenJob& job, std::span<const ImageView> i
     out.results.push_back(std::move(r));
     return out;
   }
-  const auto written =
-      write_goldens(job, images, settings_.renderer, settings_.epviz_version);
+  const auto written = write_goldens(job, images, settings_.renderer, settings_.epviz_version);
   for (std::size_t k = 0; k < written.size(); ++k)
-    out.lines.push_back("UPDATED " + job.shown + " frame " + std::to_string(job.frames[k]) +
-                        ": " + written[k].string());
+    out.lines.push_back("UPDATED " + job.shown + " frame " + std::to_string(job.frames[k]) + ": " +
+                        written[k].string());
   out.goldens_written = int(written.size());
   return out;
 }

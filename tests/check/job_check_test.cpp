@@ -108,8 +108,9 @@ TEST_F(JobCheck, UpdateKeepsEarlierFramesWhoseFilesAreThere) {
 
 TEST_F(JobCheck, UpdateAfterANumericalFailureWritesNothing) {
   const auto images = frames();
-  const auto out = JobChecker(settings()).update(
-      job_, std::vector<ImageView>{images[0].view()}, std::string("dop853 failed at t = 2"));
+  const auto out = JobChecker(settings())
+                       .update(job_, std::vector<ImageView>{images[0].view()},
+                               std::string("dop853 failed at t = 2"));
   EXPECT_EQ(out.goldens_written, 0);
   ASSERT_EQ(out.results.size(), 1u);
   EXPECT_EQ(out.results[0].line(),
@@ -144,7 +145,7 @@ TEST_F(JobCheck, AChangedFrameFailsWithGoldenActualAndDiffInTheReport) {
   EXPECT_EQ(r.diff_image, "5_kov_frame_0134.diff.png");
   const auto diff = io::read_png_rgba(report / r.diff_image);
   ASSERT_TRUE(diff);
-  EXPECT_EQ(diff->rgba[0], 255);     // red: 128 + the difference (191), at most 255
+  EXPECT_EQ(diff->rgba[0], 255);  // red: 128 + the difference (191), at most 255
   EXPECT_EQ(diff->rgba[1], 0);
   EXPECT_EQ(diff->rgba[40 * 4], 2);  // the next row: the golden's grey (9) at a quarter
   EXPECT_EQ(io::read_png_rgba(report / r.actual_image)->rgba, images[1].rgba);
@@ -156,8 +157,8 @@ TEST_F(JobCheck, AChangedFrameFailsWithGoldenActualAndDiffInTheReport) {
 TEST_F(JobCheck, MissingGoldensNameTheCommandThatCreatesThem) {
   const auto images = frames();
   job_.frames = {0, 134};
-  JobChecker(settings()).update(job_, std::vector<ImageView>{images[0].view(), images[1].view()},
-                                std::nullopt);
+  JobChecker(settings())
+      .update(job_, std::vector<ImageView>{images[0].view(), images[1].view()}, std::nullopt);
   job_.frames = {0, 134, 269};
   auto out = JobChecker(settings()).compare(job_, 0, views(images), std::nullopt);
   EXPECT_TRUE(out.results[0].passed);
@@ -182,8 +183,9 @@ TEST_F(JobCheck, AGoldenOfAnotherSizeFails) {
 TEST_F(JobCheck, FramesAfterANumericalFailureFail) {
   const auto images = frames();
   JobChecker(settings()).update(job_, views(images), std::nullopt);
-  const auto out = JobChecker(settings()).compare(
-      job_, 0, std::vector<ImageView>{images[0].view()}, std::string("step size too small"));
+  const auto out = JobChecker(settings())
+                       .compare(job_, 0, std::vector<ImageView>{images[0].view()},
+                                std::string("step size too small"));
   EXPECT_TRUE(out.results[0].passed);
   EXPECT_EQ(out.results[1].line(),
             "FAIL jobs/kov.json frame 134: numerical failure before this frame: step size too "

@@ -101,7 +101,8 @@ double ssim_of(const Image& a, const Image& b) { return ssim(a.w, a.h, a.rgba, b
 
 TEST(Ssim, OfAnImageWithItselfIsExactlyOne) {
   // Exactly: `epviz check --metric ssim --threshold 1` must pass identical frames.
-  for (const auto& a : {disc_image(40, 30), disc_image(160, 120), picture(40, 30), noise(23, 17, 1)})
+  for (const auto& a :
+       {disc_image(40, 30), disc_image(160, 120), picture(40, 30), noise(23, 17, 1)})
     EXPECT_EQ(ssim_of(a, a), 1.0) << a.w << "x" << a.h;
 }
 
