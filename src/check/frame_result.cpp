@@ -19,4 +19,17 @@ std::string summary(const std::vector<FrameResult>& results) {
   return std::to_string(passed) + " passed, " + std::to_string(results.size() - passed) + " failed";
 }
 
+std::string update_summary(const std::vector<FrameResult>& results, int goldens_written) {
+  std::size_t failed = 0;
+  for (const auto& r : results) failed += !r.passed;
+  return std::to_string(goldens_written) + " goldens written" +
+         (failed ? ", " + std::to_string(failed) + " failed" : "");
+}
+
+bool all_passed(const std::vector<FrameResult>& results) {
+  for (const auto& r : results)
+    if (!r.passed) return false;
+  return true;
+}
+
 }  // namespace epviz::check

@@ -24,5 +24,9 @@ struct FrameResult {
 
 // "3 passed, 1 failed".
 std::string summary(const std::vector<FrameResult>& results);
+// After an update: "3 goldens written" or "3 goldens written, 1 failed".
+std::string update_summary(const std::vector<FrameResult>& results, int goldens_written);
+// Whether the run passes (exit 0).
+bool all_passed(const std::vector<FrameResult>& results);
 
 }  // namespace epviz::check

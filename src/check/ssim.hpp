@@ -13,15 +13,41 @@
 //     SSIM = (2 mx my + C1)(2 sxy + C2) / ((mx^2 + my^2 + C1)(sx^2 + sy^2 + C2))
 //   with C1 = (0.01 * 255)^2 and C2 = (0.03 * 255)^2;
 // - the mean over all windows. 1 means identical; lower is less similar.
+//
+// The window sums are exact (integers), so an image compared with itself
+// gives exactly 1 and `--threshold 1` passes it.
 #include <cstdint>
 #include <span>
+#include <vector>
 
 namespace epviz::check {
 
 constexpr int kSsimWindow = 8;
 
-// Throws std::invalid_argument when a buffer does not hold width x height pixels
-// or the image is empty.
+// The buffers one SSIM needs, kept between calls so that checking frame
+// after frame allocates nothing once the widest frame has been seen. Its
+// memory grows with the image width only (a band of window-high rows). Not
+// for use by two threads at once.
+class SsimWorkspace {
+ public:
+  // Throws std::invalid_argument when a buffer does not hold width x height
+  // pixels or the image is empty.
+  double ssim(int width, int height, std::span<const std::uint8_t> a,
+              std::span<const std::uint8_t> b);
+
+ private:
+  void add_row(int width, int row_in_band, const std::uint8_t* a, const std::uint8_t* b,
+               std::int64_t sign);
+  double row_of_windows(int width, int wx, int wy);
+
+  std::vector<std::int32_t> grey_a_, grey_b_;  // the band's rows of grey levels x 1000
+  // Per column, sums over the band's rows of x, y, x^2, y^2 and x y.
+  std::vector<std::int64_t> col_x_, col_y_, col_xx_, col_yy_, col_xy_;
+  // The same, summed along the row (a zero in front), for window sums.
+  std::vector<std::int64_t> run_x_, run_y_, run_xx_, run_yy_, run_xy_;
+};
+
+// One SSIM with a workspace of its own (allocates).
 double ssim(int width, int height, std::span<const std::uint8_t> a,
             std::span<const std::uint8_t> b);
 

@@ -90,7 +90,8 @@ TEST_F(Check, PassesAgainstGoldensItJustWrote) {
   EXPECT_EQ(rec["epviz_version"].get<std::string>().empty(), false);
   EXPECT_EQ(rec["job_hash"].get<std::string>().rfind("fnv1a64:", 0), 0u);
 
-  for (const char* metric : {"pixel", "ssim"}) {
+  // The largest SSIM threshold too: frames equal to their goldens have SSIM exactly 1.
+  for (const char* metric : {"pixel", "ssim", "ssim --threshold 1"}) {
     const auto r = epviz(std::string("check ") + job() + " --metric " + metric);
     EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
     EXPECT_EQ(count_lines_starting(r.out, "PASS " + job() + " frame "), 3u) << r.out;
@@ -99,6 +100,16 @@ TEST_F(Check, PassesAgainstGoldensItJustWrote) {
   }
   // In memory: nothing but the goldens was written next to the job.
   EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "jobs"), {}), 2);
+}
+
+TEST_F(Check, HelpStatesTheDefaultsOfDocsCiMd) {
+  // docs/ci.md, "Metrics and tolerances" (tests/check/defaults_test.cpp holds
+  // the docs to the numbers in check/tolerance.hpp).
+  const auto r = epviz("check --help");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  for (const char* stated :
+       {"equal (default 1);", "lowest SSIM that passes (default 0.999)", "differ (default 0.5)"})
+    EXPECT_NE(r.out.find(stated), std::string::npos) << stated << " in\n" << r.out;
 }
 
 struct Change {

@@ -1,25 +1,20 @@
 // check::ssim against a direct evaluation of the formula, window by window,
-// on tiny images (the implementation uses summed-area tables instead).
+// on tiny images (the implementation slides integer column sums instead).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "check/ssim.hpp"
+#include "test_images.hpp"
 
 namespace epviz::check {
 namespace {
 
-struct Image {
-  int w, h;
-  std::vector<std::uint8_t> rgba;
-  double grey(int x, int y) const {
-    const auto* p = &rgba[(std::size_t(y) * w + x) * 4];
-    return 0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2];
-  }
-};
+using Image = TestImage;
 
 Image noise(int w, int h, unsigned seed) {
   std::mt19937 rng(seed);
@@ -104,11 +99,26 @@ double direct_ssim(const Image& a, const Image& b) {
 
 double ssim_of(const Image& a, const Image& b) { return ssim(a.w, a.h, a.rgba, b.rgba); }
 
-TEST(Ssim, OfAnImageWithItselfIsOne) {
-  const auto a = noise(23, 17, 1);
-  EXPECT_NEAR(ssim_of(a, a), 1.0, 1e-12);
-  const auto p = picture(40, 30);
-  EXPECT_NEAR(ssim_of(p, p), 1.0, 1e-12);
+TEST(Ssim, OfAnImageWithItselfIsExactlyOne) {
+  // Exactly: `epviz check --metric ssim --threshold 1` must pass identical frames.
+  for (const auto& a :
+       {disc_image(40, 30), disc_image(160, 120), picture(40, 30), noise(23, 17, 1)})
+    EXPECT_EQ(ssim_of(a, a), 1.0) << a.w << "x" << a.h;
+}
+
+TEST(Ssim, AWorkspaceGivesTheSameAsAFreshOneForEveryFrameSize) {
+  // Frames of different sizes through one workspace: nothing of the previous
+  // frame (band rows, column sums) may leak into the next.
+  SsimWorkspace workspace;
+  const std::vector<std::pair<Image, Image>> frames = {
+      {noise(30, 20, 8), noise(30, 20, 9)},
+      {picture(12, 10), shifted(picture(12, 10), 1)},
+      {noise(6, 5, 10), noise(6, 5, 11)},
+      {noise(30, 20, 12), blurred(noise(30, 20, 12))}};
+  for (int pass = 0; pass < 2; ++pass)
+    for (const auto& [a, b] : frames)
+      EXPECT_NEAR(workspace.ssim(a.w, a.h, a.rgba, b.rgba), direct_ssim(a, b), 1e-9)
+          << a.w << "x" << a.h << " pass " << pass;
 }
 
 TEST(Ssim, MatchesTheDirectFormula) {

@@ -3,7 +3,8 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "check/image_compare.hpp"
+#include "check/frame_verdict.hpp"
+#include "check/golden_files.hpp"
 #include "io/png_reader.hpp"
 #include "io/png_writer.hpp"
 
@@ -26,7 +27,7 @@ SnapshotStore SnapshotStore::project() {
   const auto golden = store.golden_dir / (std::string(name) + ".png");
   if (store.mode == SnapshotMode::update) {
     std::filesystem::create_directories(store.golden_dir);
-    io::write_png_rgba(golden, width, height, rgba, {.compression_level = 9, .filter = -1});
+    check::write_golden_png(golden, {width, height, rgba});
     return ::testing::AssertionSuccess() << "updated golden " << golden;
   }
 
@@ -57,20 +58,18 @@ SnapshotStore SnapshotStore::project() {
            << "snapshot '" << name << "' is " << width << "x" << height << " but the golden is "
            << expected->width << "x" << expected->height << where;
   }
-  const auto difference =
-      check::compare_pixels(width, height, rgba, expected->rgba, tolerance.max_channel_difference);
-  if (difference.fraction_differing() <= tolerance.max_fraction_over)
-    return ::testing::AssertionSuccess()
-           << difference.pixels_differing << " pixels over " << tolerance.max_channel_difference;
+  check::FrameJudge judge(tolerance.as_check_tolerance());
+  const auto verdict =
+      judge.judge({width, height, rgba}, {expected->width, expected->height, expected->rgba});
+  if (verdict.passed) return ::testing::AssertionSuccess() << verdict.measure;
   const auto diff =
       check::diff_image(width, height, rgba, expected->rgba, tolerance.max_channel_difference);
   const std::string where = write_actual(&diff);
   std::ostringstream message;
-  message << "snapshot '" << name << "' differs from " << golden << ": "
-          << difference.pixels_differing << " pixels (" << 100.0 * difference.fraction_differing()
-          << " %) differ by more than " << tolerance.max_channel_difference << " (allowed "
-          << 100.0 * tolerance.max_fraction_over << " %), largest channel difference "
-          << difference.largest_channel_difference << where;
+  message << "snapshot '" << name << "' differs from " << golden << ": " << verdict.measure;
+  message << " by more than " << tolerance.max_channel_difference << "/255 ("
+          << verdict.pixels.pixels_differing << " pixels), largest channel difference "
+          << verdict.pixels.largest_channel_difference << where;
   return ::testing::AssertionFailure() << message.str();
 }
 

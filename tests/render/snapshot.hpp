@@ -5,7 +5,9 @@
 // pixels allowed to exceed it (Blender uses 4/255 and 1 %).
 //
 // - A missing golden is a FAILURE, never a silent new baseline.
-// - The comparison is check::compare_pixels, the one `epviz check` uses.
+// - The verdict is check::FrameJudge's, the one `epviz check` uses, and
+//   goldens are written by check::write_golden_png, as `epviz check --update`
+//   writes them.
 // - On failure the actual image and a diff image go to tests/snapshots/actual/
 //   (git-ignored): <name>.png and <name>.diff.png (check::diff_image:
 //   over-threshold pixels red over a dimmed copy of the golden).
@@ -20,11 +22,24 @@
 
 #include <gtest/gtest.h>
 
+#include "check/tolerance.hpp"
+
 namespace epviz::testing {
 
+// Wider than `epviz check`'s default: the same goldens serve both GL backends
+// (EGL and OSMesa runs).
 struct SnapshotTolerance {
   int max_channel_difference = 4;   // 0..255: a pixel differs if any channel differs by more
   double max_fraction_over = 0.01;  // of all pixels, how many may differ
+
+  // The same, as the tolerance `epviz check` judges frames by.
+  check::Tolerance as_check_tolerance() const {
+    check::Tolerance t;
+    t.metric = check::Metric::pixel;
+    t.max_channel_difference = max_channel_difference;
+    t.max_differing_percent = 100.0 * max_fraction_over;
+    return t;
+  }
 };
 
 enum class SnapshotMode { compare, update };

@@ -1,0 +1,47 @@
+#pragma once
+// A job's goldens on disk: <golden_dir>/frame_NNNN.png and golden.json, and
+// how `epviz check --update` writes them.
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "check/frame_verdict.hpp"
+
+namespace epviz::check {
+
+// What checking needs to know of one render job.
+struct GoldenJob {
+  std::string shown;  // the job file as the user named it (or as a gallery lists it)
+  std::filesystem::path job_file;
+  std::filesystem::path golden_dir;
+  int frame_count = 0;      // frames in the job (they set the width of NNNN)
+  std::vector<int> frames;  // the frames checked, increasing
+  int width = 0, height = 0;
+
+  std::filesystem::path golden_path(int frame) const;
+};
+
+// Where a job's goldens go: <golden_root>/<job name>, or <job dir>/golden/<job
+// name> when golden_root is empty (the job name is the file name without .json).
+std::filesystem::path golden_dir_of(const std::filesystem::path& job_file,
+                                    const std::filesystem::path& golden_root);
+
+// What drew the frames (GL_RENDERER, GL_VERSION), recorded in golden.json.
+struct RendererInfo {
+  std::string renderer, version;
+};
+
+// Writes one golden PNG with the smallest (and slowest) settings: goldens
+// live in version control.
+void write_golden_png(const std::filesystem::path& path, const ImageView& image);
+
+// Writes images[k] as the golden of job.frames[k] (one image per frame) and
+// then golden.json. Frames recorded by an earlier update whose files are still
+// there stay in the record. Returns the paths written, in frame order.
+std::vector<std::filesystem::path> write_goldens(const GoldenJob& job,
+                                                 std::span<const ImageView> images,
+                                                 const RendererInfo& renderer,
+                                                 const std::string& epviz_version);
+
+}  // namespace epviz::check

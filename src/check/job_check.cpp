@@ -1,0 +1,126 @@
+#include "check/job_check.hpp"
+
+#include <algorithm>
+
+#include "check/golden_record.hpp"
+#include "io/frame_names.hpp"
+#include "io/png_reader.hpp"
+#include "io/png_writer.hpp"
+
+namespace epviz::check {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string size_text(int width, int height) {
+  return std::to_string(width) + "x" + std::to_string(height);
+}
+
+std::string failure_text(const std::optional<std::string>& failure) {
+  return failure ? *failure : std::string("?");
+}
+
+}  // namespace
+
+JobChecker::JobChecker(CheckSettings settings)
+    : settings_(std::move(settings)), judge_(settings_.tolerance) {}
+
+JobOutcome JobChecker::compare(const GoldenJob& job, std::size_t index,
+                               std::span<const ImageView> images,
+                               const std::optional<std::string>& failure) {
+  JobOutcome out;
+  const auto& gl = settings_.renderer;
+  if (auto rec = read_golden_record(job.golden_dir / "golden.json");
+      rec && (rec->gl_renderer != gl.renderer || rec->gl_version != gl.version))
+    out.warnings.push_back("epviz: warning: " + job.shown + ": goldens were made with " +
+                           rec->gl_renderer + ", " + rec->gl_version + "; this run uses " +
+                           gl.renderer + ", " + gl.version +
+                           " (see docs/ci.md: --metric ssim, or re-baseline with --update)");
+  std::vector<int> missing;
+  for (std::size_t k = 0; k < job.frames.size(); ++k) {
+    FrameResult r;
+    r.job = job.shown;
+    r.frame = job.frames[k];
+    if (k >= images.size())
+      r.problem = "numerical failure before this frame: " + failure_text(failure);
+    else
+      compare_frame(job, index, images[k], r, missing);
+    out.results.push_back(std::move(r));
+  }
+  if (!missing.empty()) {
+    const std::string cmd = settings_.update_command(job, missing);
+    for (auto& r : out.results)
+      if (std::find(missing.begin(), missing.end(), r.frame) != missing.end())
+        r.problem += "; create it with: " + cmd;
+  }
+  return out;
+}
+
+std::string JobChecker::report_image(const GoldenJob& job, std::size_t index, int frame,
+                                     const char* kind) const {
+  return std::to_string(index + 1) + "_" + job.job_file.stem().string() + "_" +
+         io::frame_file_name(frame, job.frame_count, "frame_", std::string(".") + kind + ".png");
+}
+
+void JobChecker::compare_frame(const GoldenJob& job, std::size_t index, const ImageView& actual,
+                               FrameResult& r, std::vector<int>& missing) {
+  const fs::path golden_path = job.golden_path(r.frame);
+  const fs::path& report = settings_.report_dir;
+  auto keep_actual = [&] {
+    if (report.empty()) return;
+    r.actual_image = report_image(job, index, r.frame, "actual");
+    io::write_png_rgba(report / r.actual_image, actual.width, actual.height, actual.rgba);
+  };
+  const auto golden = io::read_png_rgba(golden_path);
+  if (!golden) {
+    r.problem = "no golden " + golden_path.string();
+    missing.push_back(r.frame);
+    keep_actual();
+    return;
+  }
+  auto keep_golden = [&] {
+    if (report.empty()) return;
+    r.golden_image = report_image(job, index, r.frame, "golden");
+    fs::copy_file(golden_path, report / r.golden_image, fs::copy_options::overwrite_existing);
+  };
+  if (golden->width != actual.width || golden->height != actual.height) {
+    r.problem = "the golden " + golden_path.string() + " is " +
+                size_text(golden->width, golden->height) + " but the frame is " +
+                size_text(actual.width, actual.height) +
+                "; re-baseline with: " + settings_.update_command(job, job.frames);
+    keep_golden();
+    keep_actual();
+    return;
+  }
+  const auto verdict = judge_.judge(actual, {golden->width, golden->height, golden->rgba});
+  r.passed = verdict.passed;
+  r.measure = verdict.measure;
+  if (r.passed || report.empty()) return;
+  keep_golden();
+  keep_actual();
+  r.diff_image = report_image(job, index, r.frame, "diff");
+  io::write_png_rgba(report / r.diff_image, actual.width, actual.height,
+                     diff_image(actual.width, actual.height, actual.rgba, golden->rgba,
+                                settings_.tolerance.max_channel_difference));
+}
+
+JobOutcome JobChecker::update(const GoldenJob& job, std::span<const ImageView> images,
+                              const std::optional<std::string>& failure) const {
+  JobOutcome out;
+  if (failure || images.size() != job.frames.size()) {
+    FrameResult r;
+    r.job = job.shown;
+    r.frame = images.size() < job.frames.size() ? job.frames[images.size()] : job.frames.back();
+    r.problem = "numerical failure, no goldens written: " + failure_text(failure);
+    out.results.push_back(std::move(r));
+    return out;
+  }
+  const auto written = write_goldens(job, images, settings_.renderer, settings_.epviz_version);
+  for (std::size_t k = 0; k < written.size(); ++k)
+    out.lines.push_back("UPDATED " + job.shown + " frame " + std::to_string(job.frames[k]) + ": " +
+                        written[k].string());
+  out.goldens_written = int(written.size());
+  return out;
+}
+
+}  // namespace epviz::check

@@ -1,0 +1,33 @@
+#pragma once
+// How close a frame must be to its golden to pass: the metric and its limits.
+// The default numbers live here only; `epviz check --help` prints them from
+// here and a test holds docs/ci.md to them.
+#include <string>
+
+namespace epviz::check {
+
+// Chosen from measurement (docs/ci.md, "How the defaults were chosen").
+constexpr int kDefaultChannelThreshold = 1;          // of 255
+constexpr double kDefaultMaxDifferingPercent = 0.5;  // of the frame's pixels
+constexpr double kDefaultMinSsim = 0.999;
+
+enum class Metric { pixel, ssim };
+
+struct Tolerance {
+  Metric metric = Metric::pixel;
+  // pixel: a pixel differs when a channel differs by more than this (0..255);
+  // the frame fails when more than max_differing_percent of its pixels differ.
+  // The diff image of a failing frame marks pixels by this threshold, whatever the metric.
+  int max_channel_difference = kDefaultChannelThreshold;
+  double max_differing_percent = kDefaultMaxDifferingPercent;
+  // ssim: the frame fails when its SSIM is below this (0 < min_ssim <= 1).
+  double min_ssim = kDefaultMinSsim;
+
+  // One sentence for reports: "a pixel differs when ...; a frame fails when ...".
+  std::string describe() const;
+};
+
+// A number as the help text and the reports print it ("0.5", "0.999", "1").
+std::string number_text(double value);
+
+}  // namespace epviz::check
