@@ -1,13 +1,15 @@
-// The command line's advice on a numerical failure: for every kind, a complete
-// sentence that names an option `epviz simulate` really has, and only one the
-// method accepts (adaptive methods reject --step, fixed-step ones --tol).
-#include "app/failure_advice.hpp"
+// The command line's advice on a numerical failure (sim/failure_advice): for
+// every kind, a complete sentence that names an option `epviz simulate` really
+// has, and only one the method accepts (adaptive methods reject --step,
+// fixed-step ones --tol).
+#include "sim/failure_advice.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cctype>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cli_runner.hpp"
@@ -15,9 +17,13 @@
 namespace epviz {
 namespace {
 
-using app::failure_advice;
-using app::SettingsIn;
 using numerics::FailureKind;
+using sim::SettingsIn;
+
+std::string failure_advice(FailureKind kind, std::string_view method, bool adaptive,
+                           SettingsIn where = SettingsIn::command_line) {
+  return sim::failure_advice(kind, method, adaptive, where);
+}
 
 // The "--word" tokens of a text.
 std::vector<std::string> flags_in(const std::string& text) {
@@ -103,12 +109,13 @@ TEST(FailureAdvice, RenderJobsNameJobKeysNotOptions) {
 TEST(FailureAdvice, LineIsMessageThenAdvice) {
   const numerics::Failure f{2.5, "gauss4", FailureKind::solver_divergence,
                             "stage equations diverged"};
-  const std::string line = app::failure_line(f);
+  const std::string line = sim::failure_line(f, SettingsIn::command_line);
   EXPECT_EQ(line, "gauss4 failed at t = 2.5: stage equations diverged; " +
                       failure_advice(FailureKind::solver_divergence, "gauss4", false));
   // The method's step control comes from the method table: dop853 is adaptive.
   const numerics::Failure g{1.0, "dop853", FailureKind::non_finite, "state not finite"};
-  EXPECT_EQ(app::failure_line(g), g.message() + "; " + failure_advice(g.kind, "dop853", true));
+  EXPECT_EQ(sim::failure_line(g, SettingsIn::command_line),
+            g.message() + "; " + failure_advice(g.kind, "dop853", true));
 }
 
 }  // namespace
