@@ -11,7 +11,6 @@
 
 #include "app/bench_command.hpp"
 #include "app/cli_values.hpp"
-#include "app/failure_advice.hpp"
 #include "app/job_frames.hpp"
 #include "app/output_paths.hpp"
 #include "app/render_job.hpp"
@@ -28,6 +27,7 @@
 #include "paint/frame_painter.hpp"
 #include "render/gl_context.hpp"
 #include "scene/frame_source.hpp"
+#include "sim/failure_advice.hpp"
 
 namespace epviz::app {
 namespace {
@@ -194,8 +194,9 @@ nlohmann::json job_report(const PreparedJob& p, const RenderStats& st) {
   j["frames_skipped"] = st.frames_skipped;
   j["seconds"] = st.seconds;
   j["output"] = (p.job.output.dir).string();
-  j["failure"] = st.failure ? nlohmann::json(failure_line(*st.failure, SettingsIn::render_job))
-                            : nlohmann::json(nullptr);
+  j["failure"] = st.failure
+                     ? nlohmann::json(sim::failure_line(*st.failure, sim::SettingsIn::render_job))
+                     : nlohmann::json(nullptr);
   j["failure_kind"] = st.failure ? nlohmann::json(std::string(numerics::name(st.failure->kind)))
                                  : nlohmann::json(nullptr);
   add_runs_report(j, st.runs);
@@ -228,7 +229,7 @@ void print_job_line(std::FILE* out, const PreparedJob& p, const RenderStats& st)
 int report_failure(const std::optional<numerics::Failure>& f) {
   if (!f) return 0;
   std::fprintf(stderr, "epviz: numerical failure: %s\n",
-               failure_line(*f, SettingsIn::render_job).c_str());
+               sim::failure_line(*f, sim::SettingsIn::render_job).c_str());
   return 3;
 }
 

@@ -8,7 +8,6 @@
 #include <optional>
 
 #include "app/cli_values.hpp"
-#include "app/failure_advice.hpp"
 #include "app/output_paths.hpp"
 #include "app/simulation_fields.hpp"
 #include "app/simulation_output.hpp"
@@ -17,6 +16,7 @@
 #include "io/progress.hpp"
 #include "io/temp_registry.hpp"
 #include "physics/cases.hpp"
+#include "sim/failure_advice.hpp"
 
 namespace epviz::app {
 namespace {
@@ -78,7 +78,9 @@ void print_summary(std::FILE* out, const sim::RunSpec& spec, const sim::RunResul
   std::fprintf(out, "%-20s max relative drift  |gamma|^2 %-9s  C0 %-9s  C1 %-9s  extra %s\n", "",
                fmt(d.gamma_norm2).c_str(), fmt(d.area).c_str(), fmt(d.energy).c_str(),
                d.extra ? fmt(*d.extra).c_str() : "-");
-  if (r.failure) std::fprintf(out, "%-20s FAILED: %s\n", "", failure_line(*r.failure).c_str());
+  if (r.failure)
+    std::fprintf(out, "%-20s FAILED: %s\n", "",
+                 sim::failure_line(*r.failure, sim::SettingsIn::command_line).c_str());
 }
 
 int run_simulate(const RawOptions& raw) {
@@ -151,7 +153,8 @@ int run_simulate(const RawOptions& raw) {
     reports.push_back(run_report(spec, result, drift));
     if (result.failure) {
       ++failures;
-      std::fprintf(stderr, "epviz: %s\n", failure_line(*result.failure).c_str());
+      std::fprintf(stderr, "epviz: %s\n",
+                   sim::failure_line(*result.failure, sim::SettingsIn::command_line).c_str());
     }
   }
   std::fflush(summary);

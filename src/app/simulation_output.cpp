@@ -3,9 +3,9 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
-#include "app/failure_advice.hpp"
 #include "io/json_line.hpp"
 #include "physics/stereographic.hpp"
+#include "sim/failure_advice.hpp"
 #include "sweep/run_record.hpp"
 
 namespace epviz::app {
@@ -101,8 +101,9 @@ nlohmann::json run_report(const sim::RunSpec& spec, const sim::RunResult& r,
     j["failure"] = {{"t", r.failure->t},
                     {"method", r.failure->method},
                     {"detail", r.failure->detail},
-                    {"advice", failure_advice(r.failure->kind, r.failure->method, adaptive)},
-                    {"message", failure_line(*r.failure)}};
+                    {"advice", sim::failure_advice(r.failure->kind, r.failure->method, adaptive,
+                                                   sim::SettingsIn::command_line)},
+                    {"message", sim::failure_line(*r.failure, sim::SettingsIn::command_line)}};
   }
   return j;
 }

@@ -2,8 +2,9 @@
 // Keeping a case's defining conditions while the user edits a body (the
 // "stay in case" switch of the interactive panels): after an edit, the
 // quantities the conditions tie to the edited one are recomputed from it, so
-// the edited value is kept and the others follow. physics::broken_condition()
-// is the oracle that the result satisfies the case.
+// the edited value is kept and the others follow. The case table says how
+// (physics::fit_to_case); physics::broken_condition() is the oracle that the
+// result satisfies the case.
 #include "physics/body.hpp"
 #include "physics/cases.hpp"
 

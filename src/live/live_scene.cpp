@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
-#include "live/failure_advice.hpp"
 #include "numerics/failure.hpp"
 #include "scene/plan.hpp"
+#include "sim/failure_advice.hpp"
 
 namespace epviz::live {
 namespace {
@@ -79,7 +79,7 @@ void LiveScene::advance_to(double t) {
     frame_ = source_->frame_at_time(t);
   } catch (const numerics::IntegrationError& e) {
     // The last good frame stays on screen with the report; nothing after it is drawn.
-    failure_ = failure_line(e.failure(), sim::is_adaptive(source_->plan().run.method));
+    failure_ = sim::failure_line(e.failure(), sim::SettingsIn::panel);
     playing_ = false;
     return;
   }

@@ -44,7 +44,7 @@ class LiveScene {
   const scene::Frame& frame() const { return frame_; }
   double time() const { return frame_.t; }
   // The numerical failure that stopped the run, if any: time, method, what
-  // happened and which control to change (live/failure_advice).
+  // happened and which control to change (sim/failure_advice).
   const std::optional<std::string>& failure() const { return failure_; }
   // The drift at each composed frame, oldest first, at most `kDriftHistory` of them.
   static constexpr std::size_t kDriftHistory = 600;

@@ -4,8 +4,8 @@
 //
 // A Failure is data: what kind of trouble, where, and the plain fact found.
 // What the user should do about it depends on what the user can change (a
-// command-line option, a control in a panel), so the advice is worded by the
-// front ends (app/failure_advice, live/failure_advice), never here.
+// command-line option, a control in a panel), so the advice is worded with
+// each front end's settings (sim/failure_advice), never here.
 #include <array>
 #include <stdexcept>
 #include <string>

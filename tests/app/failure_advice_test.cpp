@@ -1,13 +1,15 @@
-// The command line's advice on a numerical failure: for every kind, a complete
-// sentence that names an option `epviz simulate` really has, and only one the
-// method accepts (adaptive methods reject --step, fixed-step ones --tol).
-#include "app/failure_advice.hpp"
+// The command line's advice on a numerical failure (sim/failure_advice): for
+// every kind, a complete sentence that names an option `epviz simulate` really
+// has, and only one the method accepts (adaptive methods reject --step,
+// fixed-step ones --tol).
+#include "sim/failure_advice.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cctype>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cli_runner.hpp"
@@ -15,9 +17,14 @@
 namespace epviz {
 namespace {
 
-using app::failure_advice;
-using app::SettingsIn;
 using numerics::FailureKind;
+using sim::SettingsIn;
+
+// The advice for the command line unless told otherwise.
+std::string advice(FailureKind kind, std::string_view method, bool adaptive,
+                   SettingsIn where = SettingsIn::command_line) {
+  return sim::failure_advice(kind, method, adaptive, where);
+}
 
 // The "--word" tokens of a text.
 std::vector<std::string> flags_in(const std::string& text) {
@@ -56,7 +63,7 @@ TEST(FailureAdvice, EveryKindNamesAnOptionOfSimulate) {
   ASSERT_EQ(help.exit_code, 0) << help.err;
   for (FailureKind k : numerics::kFailureKinds) {
     for (const Method& m : kMethods) {
-      const std::string a = failure_advice(k, m.name, m.adaptive);
+      const std::string a = advice(k, m.name, m.adaptive);
       SCOPED_TRACE(std::string(numerics::name(k)) + " " + m.name + ": " + a);
       expect_sentence(a);
       const auto flags = flags_in(a);
@@ -74,24 +81,23 @@ TEST(FailureAdvice, EveryKindNamesAnOptionOfSimulate) {
 }
 
 TEST(FailureAdvice, KindsGetTheirOwnRemedy) {
-  EXPECT_NE(failure_advice(FailureKind::step_underflow, "dop853", true).find("loosen --tol"),
+  EXPECT_NE(advice(FailureKind::step_underflow, "dop853", true).find("loosen --tol"),
             std::string::npos);
-  EXPECT_NE(failure_advice(FailureKind::solver_divergence, "gauss4", false).find("smaller --step"),
+  EXPECT_NE(advice(FailureKind::solver_divergence, "gauss4", false).find("smaller --step"),
             std::string::npos);
-  const auto pole = failure_advice(FailureKind::chart_pole, "dop853", true);
+  const auto pole = advice(FailureKind::chart_pole, "dop853", true);
   EXPECT_NE(pole.find("--formulation spinor"), std::string::npos) << pole;
   EXPECT_NE(pole.find("--no-chart-switch"), std::string::npos) << pole;
   // A method that needs many steps at tight tolerances is pointed to dop853, dop853 is not.
-  EXPECT_NE(failure_advice(FailureKind::step_budget, "dopri5", true).find("--method dop853"),
+  EXPECT_NE(advice(FailureKind::step_budget, "dopri5", true).find("--method dop853"),
             std::string::npos);
-  EXPECT_EQ(failure_advice(FailureKind::step_budget, "dop853", true).find("--method"),
-            std::string::npos);
+  EXPECT_EQ(advice(FailureKind::step_budget, "dop853", true).find("--method"), std::string::npos);
 }
 
 TEST(FailureAdvice, RenderJobsNameJobKeysNotOptions) {
   for (FailureKind k : numerics::kFailureKinds) {
     for (const Method& m : kMethods) {
-      const std::string a = failure_advice(k, m.name, m.adaptive, SettingsIn::render_job);
+      const std::string a = advice(k, m.name, m.adaptive, SettingsIn::render_job);
       SCOPED_TRACE(a);
       expect_sentence(a);
       EXPECT_TRUE(flags_in(a).empty());
@@ -103,12 +109,13 @@ TEST(FailureAdvice, RenderJobsNameJobKeysNotOptions) {
 TEST(FailureAdvice, LineIsMessageThenAdvice) {
   const numerics::Failure f{2.5, "gauss4", FailureKind::solver_divergence,
                             "stage equations diverged"};
-  const std::string line = app::failure_line(f);
+  const std::string line = sim::failure_line(f, SettingsIn::command_line);
   EXPECT_EQ(line, "gauss4 failed at t = 2.5: stage equations diverged; " +
-                      failure_advice(FailureKind::solver_divergence, "gauss4", false));
+                      advice(FailureKind::solver_divergence, "gauss4", false));
   // The method's step control comes from the method table: dop853 is adaptive.
   const numerics::Failure g{1.0, "dop853", FailureKind::non_finite, "state not finite"};
-  EXPECT_EQ(app::failure_line(g), g.message() + "; " + failure_advice(g.kind, "dop853", true));
+  EXPECT_EQ(sim::failure_line(g, SettingsIn::command_line),
+            g.message() + "; " + advice(g.kind, "dop853", true));
 }
 
 }  // namespace

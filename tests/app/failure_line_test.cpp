@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "app/failure_advice.hpp"
 #include "numerics/embedded_rk.hpp"
 #include "numerics/provoked_failures.hpp"
+#include "sim/failure_advice.hpp"
 #include "sim/simulate.hpp"
 
 namespace epviz {
@@ -110,8 +110,9 @@ TEST(FailureLine, EveryKindReadsAsOneCompleteSentence) {
     EXPECT_TRUE(balanced(f.detail)) << f.detail;
     EXPECT_EQ(f.message().find("--"), std::string::npos);
     EXPECT_EQ(f.message().find(';'), std::string::npos) << "advice belongs to the front end";
-    for (auto where : {app::SettingsIn::command_line, app::SettingsIn::render_job}) {
-      const std::string line = app::failure_line(f, where);
+    for (auto where :
+         {sim::SettingsIn::command_line, sim::SettingsIn::render_job, sim::SettingsIn::panel}) {
+      const std::string line = sim::failure_line(f, where);
       EXPECT_EQ(line.rfind(f.method + " failed at t = ", 0), 0u) << line;
       EXPECT_EQ(line.find('\n'), std::string::npos) << line;
       ASSERT_EQ(line.back(), '.') << line;

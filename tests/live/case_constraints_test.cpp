@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <vector>
 
 #include "live/case_constraints.hpp"
+#include "physics/cases.hpp"
 
 namespace epviz::live {
 namespace {
@@ -68,9 +70,15 @@ TEST_P(StayInCase, EveryEditEndsInsideTheCaseKeepingTheEditedValue) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Cases, StayInCase,
-                         ::testing::Values(Case::euler, Case::lagrange, Case::kovalevskaya,
-                                           Case::goryachev_chaplygin, Case::hess),
+// Every row of the case table with conditions, so that a new case is edited too.
+std::vector<Case> cases_with_conditions() {
+  std::vector<Case> out;
+  for (const auto& p : physics::case_presets())
+    if (p.fit) out.push_back(p.id);
+  return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, StayInCase, ::testing::ValuesIn(cases_with_conditions()),
                          [](const auto& param_info) {
                            std::string n = physics::case_name(param_info.param);
                            for (char& ch : n)

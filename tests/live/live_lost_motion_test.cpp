@@ -45,7 +45,7 @@ TEST(LiveLostMotion, StopsWithTheSameFailureAsABatchRun) {
   const std::string& line = *scene.failure();
   EXPECT_EQ(line.rfind("rk4 failed at t = ", 0), 0u) << line;
   EXPECT_NE(line.find("lost the motion: relative energy drift"), std::string::npos) << line;
-  EXPECT_NE(line.find("lower the step in the Integrator panel"), std::string::npos) << line;
+  EXPECT_NE(line.find("use a smaller step in the Integrator panel"), std::string::npos) << line;
   EXPECT_EQ(line.find("--"), std::string::npos) << line;
   EXPECT_FALSE(scene.playing());
 
