@@ -37,7 +37,7 @@ struct Manifest {
 };
 
 nlohmann::ordered_json to_json(const Manifest& m);
-// Strict reading (io/json_reader): throws io::JobError naming the file and key.
+// Strict reading (io/json_reader): throws io::BadInput naming the file and key.
 Manifest read_manifest(const std::filesystem::path& path);
 // Atomic write (temporary + rename).
 void write_manifest(const std::filesystem::path& path, const Manifest& m);

@@ -68,7 +68,7 @@ TEST(Manifest, ReadingIsStrict) {
   try {
     read_manifest(d.path / "m.json");
     FAIL() << "accepted shard 3 of 2";
-  } catch (const io::JobError& e) {
+  } catch (const io::BadInput& e) {
     EXPECT_NE(std::string(e.what()).find("'shard'"), std::string::npos) << e.what();
   }
 }
