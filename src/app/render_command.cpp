@@ -225,19 +225,19 @@ shard::FrameBatch frame_batch(const RenderJob& job, int frames) {
   job::JobDocument doc{job.simulation, job.runs, job.scene, job.output};
   doc.output.dir = "";
   shard::FrameBatch b;
-  b.source = fs::absolute(job.file).lexically_normal().string();
-  b.hash = shard::checksum_of(job::write_job(doc).dump());
-  b.command = {"epviz",
-               "render",
-               b.source,
-               "--out",
-               fs::absolute(job.output.dir).lexically_normal().string(),
-               "--width",
-               std::to_string(job.scene.width),
-               "--height",
-               std::to_string(job.scene.height),
-               "--format",
-               std::string(output_format_name(job.output.format))};
+  b.origin.source = fs::absolute(job.file).lexically_normal().string();
+  b.origin.hash = shard::checksum_of(job::write_job(doc).dump());
+  b.origin.command = {"epviz",
+                      "render",
+                      b.origin.source,
+                      "--out",
+                      fs::absolute(job.output.dir).lexically_normal().string(),
+                      "--width",
+                      std::to_string(job.scene.width),
+                      "--height",
+                      std::to_string(job.scene.height),
+                      "--format",
+                      std::string(output_format_name(job.output.format))};
   b.dir = job.output.dir;
   b.name = job.output.name;
   if (const auto video = job::video_format(job.output.format))

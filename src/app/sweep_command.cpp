@@ -66,11 +66,12 @@ int run_sweep(const SweepOptions& o) {
   check_output_file("--out", out_given.string());
   std::optional<shard::RowsShard> rows_shard;
   if (shard) {
-    shard::RowsBatch batch{fs::absolute(o.file).lexically_normal().string(), spec.hash, {},
+    shard::RowsBatch batch{{fs::absolute(o.file).lexically_normal().string(), spec.hash, {}},
                            out_given, total};
-    batch.command = {"epviz", "sweep", batch.source, "--out",
-                     fs::absolute(out_given).lexically_normal().string()};
-    if (!o.jobs.empty()) batch.command.insert(batch.command.end(), {"-j", o.jobs});
+    auto& command = batch.origin.command;
+    command = {"epviz", "sweep", batch.origin.source, "--out",
+               fs::absolute(out_given).lexically_normal().string()};
+    if (!o.jobs.empty()) command.insert(command.end(), {"-j", o.jobs});
     rows_shard = shard::plan_rows_shard(batch, *shard);
   }
   const fs::path out = rows_shard ? rows_shard->rows : out_given;

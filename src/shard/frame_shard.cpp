@@ -18,15 +18,8 @@ FrameShard plan_frame_shard(const FrameBatch& batch, const ShardSpec& spec) {
   const bool video = !batch.video_extension.empty();
   s.output_name = video ? batch.name + "." + shard_tag(spec) : batch.name;
 
-  auto& m = s.manifest;
-  m.kind = "render";
-  m.source = batch.source;
-  m.hash = batch.hash;
-  m.shard = spec;
-  m.items = s.frames;
-  m.total = batch.frames;
-  m.command = batch.command;
-  m.output = video ? batch.name + batch.video_extension : "";
+  s.manifest = shard_manifest("render", batch.origin, spec, s.frames, batch.frames,
+                              video ? batch.name + batch.video_extension : "");
   const std::string stem = batch.name.empty() ? "frames" : batch.name;
   s.manifest_path = batch.dir / manifest_name(stem + (video ? "" : "_png"), spec);
   return s;

@@ -17,13 +17,11 @@ namespace epviz::shard {
 
 // The whole render the shards split, as the command that draws it knows it.
 struct FrameBatch {
-  std::string source;                // the job file, absolute
-  std::string hash;                  // of the job as drawn: shards of one render share it
-  std::vector<std::string> command;  // draws it again, without shard options
-  std::filesystem::path dir;         // where the frames or the video go
-  std::string name;                  // PNG frame prefix or video file stem
-  std::string video_extension;       // ".mp4", ".webm", ".gif"; "" for PNG frames
-  int frames = 0;                    // of the whole render
+  BatchOrigin origin;           // the job file; the hash is of the job as drawn
+  std::filesystem::path dir;    // where the frames or the video go
+  std::string name;             // PNG frame prefix or video file stem
+  std::string video_extension;  // ".mp4", ".webm", ".gif"; "" for PNG frames
+  int frames = 0;               // of the whole render
 };
 
 struct FrameShard {

@@ -20,15 +20,8 @@ RowsShard plan_rows_shard(const RowsBatch& batch, const ShardSpec& spec) {
   s.points = shard_range(batch.points, spec);
   const fs::path dir = batch.rows.parent_path().empty() ? fs::path(".") : batch.rows.parent_path();
   s.rows = dir / (rows_stem(batch.rows) + "." + shard_tag(spec) + ".jsonl");
-  auto& m = s.manifest;
-  m.kind = "sweep";
-  m.source = batch.source;
-  m.hash = batch.hash;
-  m.shard = spec;
-  m.items = s.points;
-  m.total = batch.points;
-  m.command = batch.command;
-  m.output = batch.rows.filename().string();
+  s.manifest = shard_manifest("sweep", batch.origin, spec, s.points, batch.points,
+                              batch.rows.filename().string());
   s.manifest_path = dir / manifest_name(rows_stem(batch.rows), spec);
   return s;
 }

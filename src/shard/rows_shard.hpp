@@ -13,10 +13,8 @@ namespace epviz::shard {
 
 // The whole sweep the shards split.
 struct RowsBatch {
-  std::string source;                // the sweep file, absolute
-  std::string hash;                  // of the sweep's content: shards of one sweep share it
-  std::vector<std::string> command;  // runs it again, without shard options
-  std::filesystem::path rows;        // the rows file of the whole sweep ("rows.jsonl")
+  BatchOrigin origin;          // the sweep file; the hash is of the sweep's content
+  std::filesystem::path rows;  // the rows file of the whole sweep ("rows.jsonl")
   long points = 0;
 };
 

@@ -2,32 +2,25 @@
 // a manifest that lists exactly the files the shard drew.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 
 #include "shard/checksum.hpp"
 #include "shard/frame_shard.hpp"
+#include "temp_dir.hpp"
 
 namespace epviz::shard {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Dir {
-  fs::path path = fs::temp_directory_path() / ("epviz-frame-shard-" + std::to_string(::getpid()));
-  Dir() {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~Dir() { fs::remove_all(path); }
+struct Dir : test::TempDir {
+  Dir() : TempDir("frame-shard") {}
 };
 
 FrameBatch batch_of(const fs::path& dir, std::string video_extension) {
   FrameBatch b;
-  b.source = "/jobs/top.json";
-  b.hash = "feed";
-  b.command = {"epviz", "render", "/jobs/top.json"};
+  b.origin = {"/jobs/top.json", "feed", {"epviz", "render", "/jobs/top.json"}};
   b.dir = dir;
   b.name = "f";
   b.video_extension = std::move(video_extension);
@@ -47,7 +40,7 @@ TEST(FrameShard, PngShardsSplitTheFramesAndKeepTheirName) {
     EXPECT_EQ(s.manifest.kind, "render");
     EXPECT_EQ(s.manifest.items, s.frames);
     EXPECT_EQ(s.manifest.total, 10);
-    EXPECT_EQ(s.manifest.command, b.command);
+    EXPECT_EQ(s.manifest.command, b.origin.command);
     EXPECT_EQ(s.manifest.output, "");  // frames are not joined
     EXPECT_EQ(s.manifest_path,
               fs::path("out") / ("f_png.shard-" + std::to_string(i) + "-of-3.manifest.json"));

@@ -2,13 +2,13 @@
 // each from being merged, and a sweep's rows joined in point order.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 
 #include "io/bad_input.hpp"
 #include "shard/batch.hpp"
 #include "shard/merged_rows.hpp"
+#include "temp_dir.hpp"
 
 namespace epviz::shard {
 namespace {
@@ -17,12 +17,8 @@ namespace fs = std::filesystem;
 
 class Merge : public ::testing::Test {
  protected:
-  fs::path dir_ = fs::temp_directory_path() / ("epviz-merge-" + std::to_string(::getpid()));
-  void SetUp() override {
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  test::TempDir temp_{"merge"};
+  const fs::path& dir_ = temp_.path;
 
   // Shard `index` of a 2-shard sweep of 4 points with hash `hash`, its rows
   // file holding `rows` (one JSON object a line).
@@ -42,6 +38,15 @@ class Merge : public ::testing::Test {
     add_file(m, dir_, file);
     m.completed = true;
     write_manifest(dir_ / manifest_name(stem, m.shard), m);
+  }
+  // Why the first batch's rows cannot be merged ("" when they can).
+  std::string merge_refusal() {
+    try {
+      merged_rows(read_batches(dir_).at(0), dir_);
+    } catch (const io::BadInput& e) {
+      return e.what();
+    }
+    return "";
   }
   static std::string row(long index, const std::string& hash) {
     return R"({"index":)" + std::to_string(index) + R"(,"sweep":")" + hash + "\"}\n";
@@ -79,28 +84,16 @@ TEST_F(Merge, ShardsOfAnOldSplitBesideANewOneAreRefused) {
 TEST_F(Merge, RowsThatAreNotTheShardsPointsAreRefused) {
   write_shard("aa", 0, row(0, "aa") + row(3, "aa"));  // point 3 is shard 1's
   write_shard("aa", 1, row(2, "aa") + row(3, "aa"));
-  auto batches = read_batches(dir_);
-  try {
-    merged_rows(batches.at(0), dir_);
-    FAIL() << "a foreign row was merged";
-  } catch (const io::BadInput& e) {
-    EXPECT_NE(std::string(e.what()).find("not one of shard 0's points"), std::string::npos)
-        << e.what();
-  }
+  EXPECT_NE(merge_refusal().find("not one of shard 0's points"), std::string::npos)
+      << merge_refusal();
 }
 
 TEST_F(Merge, APointWithoutARowIsNamedWithTheCommandThatRedoesItsShard) {
   write_shard("aa", 0, row(0, "aa"));
   write_shard("aa", 1, row(2, "aa") + row(3, "aa"));
-  auto batches = read_batches(dir_);
-  try {
-    merged_rows(batches.at(0), dir_);
-    FAIL() << "a missing row was not noticed";
-  } catch (const io::BadInput& e) {
-    EXPECT_NE(std::string(e.what()).find("shard 0/2: point 1 has no row; run: epviz sweep"),
-              std::string::npos)
-        << e.what();
-  }
+  EXPECT_NE(merge_refusal().find("shard 0/2: point 1 has no row; run: epviz sweep"),
+            std::string::npos)
+      << merge_refusal();
 }
 
 }  // namespace

@@ -2,12 +2,12 @@
 // the rows file asked for, and a manifest listing that file once completed.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 
 #include "shard/checksum.hpp"
 #include "shard/rows_shard.hpp"
+#include "temp_dir.hpp"
 
 namespace epviz::shard {
 namespace {
@@ -15,8 +15,9 @@ namespace {
 namespace fs = std::filesystem;
 
 RowsBatch batch_of(const fs::path& rows) {
-  return {
-      "/sweeps/atlas.sweep.json", "beef", {"epviz", "sweep", "/sweeps/atlas.sweep.json"}, rows, 7};
+  return {{"/sweeps/atlas.sweep.json", "beef", {"epviz", "sweep", "/sweeps/atlas.sweep.json"}},
+          rows,
+          7};
 }
 
 TEST(RowsShard, EachShardWritesItsOwnRowsFileBesideTheOneAskedFor) {
@@ -35,10 +36,8 @@ TEST(RowsShard, EachShardWritesItsOwnRowsFileBesideTheOneAskedFor) {
 }
 
 TEST(RowsShard, TheManifestIsCompletedWithTheRowsFileAndItsChecksum) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("epviz-rows-shard-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const test::TempDir temp("rows-shard");
+  const fs::path& dir = temp.path;
   auto s = plan_rows_shard(batch_of(dir / "rows.jsonl"), {0, 2});
   start_rows_shard(s);
   EXPECT_FALSE(read_manifest(s.manifest_path).completed);
@@ -49,7 +48,6 @@ TEST(RowsShard, TheManifestIsCompletedWithTheRowsFileAndItsChecksum) {
   ASSERT_EQ(m.files.size(), 1u);
   EXPECT_EQ(m.files[0].path, "rows.shard-0-of-2.jsonl");
   EXPECT_EQ(m.files[0].checksum, checksum_of("{\"index\":0}\n"));
-  fs::remove_all(dir);
 }
 
 }  // namespace
