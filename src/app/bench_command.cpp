@@ -12,6 +12,7 @@
 #include <sstream>
 #include <thread>
 
+#include "app/gl_option.hpp"
 #include "app/render_job.hpp"
 #include "app/simulation_fields.hpp"
 #include "app/text_table.hpp"
@@ -28,7 +29,7 @@
 #ifdef EPVIZ_HAVE_RENDER
 #include "io/png_writer.hpp"
 #include "paint/figure_painter.hpp"
-#include "render/gl_context.hpp"
+#include "render/gl_choice.hpp"
 #include "study/bench_figures.hpp"
 #endif
 
@@ -334,8 +335,7 @@ std::size_t write_figures(const std::vector<StudyRow>& rows, const fs::path& out
                           const std::string& gl) {
   const auto figures = bench_figures(rows);
   if (figures.empty()) return 0;
-  auto context =
-      render::make_gl_context(gl.empty() ? render::gl_backend_from_environment() : gl, 16, 16);
+  const auto context = render::GlChoice(gl).open();
   for (const auto& figure : figures) {
     const auto image = paint::paint_figure(*context, figure);
     io::write_png_rgba(out_dir / figure.file_name, image.width, image.height, image.pixels);
@@ -364,6 +364,9 @@ int run_bench(const BenchRequest& request) {
   if (!request.job.empty()) opts.custom = job_problem(request.job);
   opts.cases = parse_cases(request.cases, !request.job.empty());
   prepare_outputs(request);
+#ifdef EPVIZ_HAVE_RENDER
+  (void)render::GlChoice(request.gl);  // the charts come after every study: checked before
+#endif
   const auto t0 = std::chrono::steady_clock::now();
   const auto rows = run_studies(opts);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -384,9 +387,7 @@ std::function<int()> add_bench_command(CLI::App& app) {
   cmd->add_option("--json", request->json, "write every row and the metadata to this JSON file");
   cmd->add_option("--out", request->out,
                   "create this directory and write bench.json and the charts (PNG) there");
-  cmd->add_option(
-      "--gl", request->gl,
-      "offscreen GL backend for the charts: auto, egl or osmesa (default: $EPVIZ_GL or auto)");
+  add_gl_option(*cmd, request->gl, "for the charts");
   cmd->add_option("--cases", request->cases,
                   "comma-separated presets for the work-precision and drift studies (default all; "
                   "none with --job unless named; custom: the --job body)");

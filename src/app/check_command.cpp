@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "app/cli_values.hpp"
+#include "app/gl_option.hpp"
 #include "app/job_frames.hpp"
 #include "app/render_job.hpp"
 #include "app/usage_error.hpp"
@@ -28,7 +29,7 @@
 #include "check/tolerance.hpp"
 #include "io/atomic_file.hpp"
 #include "io/frame_range.hpp"
-#include "render/gl_context.hpp"
+#include "render/gl_choice.hpp"
 
 namespace epviz::app {
 namespace {
@@ -175,14 +176,7 @@ void check_output_paths(const CheckOptions& o) {
     if (!fs::is_directory(parent))
       throw UsageError("--junit: directory '" + parent.string() + "' does not exist");
   }
-  if (!o.gl.empty()) {
-    const auto names = render::gl_backends();
-    if (std::find(names.begin(), names.end(), o.gl) == names.end()) {
-      std::string allowed;
-      for (const auto& n : names) allowed += (allowed.empty() ? "" : ", ") + n;
-      throw UsageError("--gl: unknown GL backend '" + o.gl + "' (allowed: " + allowed + ")");
-    }
-  }
+  (void)render::GlChoice(o.gl);
 }
 
 std::vector<CheckJob> prepare_jobs(const CheckOptions& o) {
@@ -224,12 +218,7 @@ std::string update_command(const CheckOptions& o, const check::GoldenJob& job,
 }
 
 std::unique_ptr<render::GlContext> open_context(const CheckOptions& o) {
-  const std::string backend = o.gl.empty() ? render::gl_backend_from_environment() : o.gl;
-  try {
-    return render::make_gl_context(backend, 16, 16);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string(o.gl.empty() ? "EPVIZ_GL" : "--gl") + ": " + e.what());
-  }
+  return render::GlChoice(o.gl).open();
 }
 
 check::JobChecker job_checker(const CheckOptions& o, const check::Tolerance& t,
@@ -404,8 +393,7 @@ std::function<int()> add_check_command(CLI::App& app) {
                   "pixel: percentage of pixels allowed to differ (default " +
                       check::number_text(check::kDefaultMaxDifferingPercent) + ")");
   cmd->add_option("-j,--jobs-in-parallel", o->workers, "check this many jobs at once (default 1)");
-  cmd->add_option("--gl", o->gl,
-                  "offscreen GL backend: auto, egl or osmesa (default: $EPVIZ_GL or auto)");
+  add_gl_option(*cmd, o->gl);
   return [o] { return run_check(*o); };
 }
 

@@ -17,7 +17,7 @@
 #include "app/serve_command.hpp"
 #include "render/gl_context.hpp"
 #endif
-#include "app/usage_error.hpp"
+#include "io/bad_input.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
 #endif
   try {
     for (auto* sub : app.get_subcommands()) return commands.at(sub->get_name())();
-  } catch (const epviz::app::UsageError& e) {
+  } catch (const epviz::io::BadInput& e) {
     std::fprintf(stderr, "epviz: error: %s\n", e.what());
     return 2;
   } catch (const std::exception& e) {

@@ -11,10 +11,10 @@
 
 #include "app/bench_command.hpp"
 #include "app/cli_values.hpp"
+#include "app/gl_option.hpp"
 #include "app/job_frames.hpp"
 #include "app/output_paths.hpp"
 #include "app/render_job.hpp"
-#include "app/render_shard.hpp"
 #include "app/usage_error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/frame_names.hpp"
@@ -24,9 +24,12 @@
 #include "io/progress.hpp"
 #include "io/temp_registry.hpp"
 #include "io/video_writer.hpp"
+#include "job/schema.hpp"
 #include "paint/frame_painter.hpp"
-#include "render/gl_context.hpp"
+#include "render/gl_choice.hpp"
 #include "scene/frame_source.hpp"
+#include "shard/checksum.hpp"
+#include "shard/frame_shard.hpp"
 #include "sim/failure_advice.hpp"
 
 namespace epviz::app {
@@ -64,10 +67,12 @@ PreparedJob prepare(RenderJob job, const RenderOptions& o) {
   // Every output is checked before any work, so that nothing is written on exit 2.
   check_file_name(job.file.string() + ": output.name", job.output.name);
   check_output_dir(o.out.empty() ? job.file.string() + ": output.dir" : "--out", job.output.dir);
-  if (job.output.format != OutputFormat::png && (job.scene.width % 2 || job.scene.height % 2))
-    throw UsageError(job.file.string() + ": video needs an even width and height, got " +
-                     std::to_string(job.scene.width) + "x" + std::to_string(job.scene.height));
-  if (job.output.format != OutputFormat::png && !io::ffmpeg_available())
+  const auto video = job::video_format(job.output.format);
+  if (const auto why = video ? io::video_size_problem(*video, job.scene.width, job.scene.height)
+                             : std::string();
+      !why.empty())
+    throw UsageError(job.file.string() + ": " + why);
+  if (video && !io::ffmpeg_available())
     throw UsageError(
         "--format " + std::string(output_format_name(job.output.format)) +
         ": ffmpeg not found on PATH; install the Debian package ffmpeg (scripts/setup.sh does)");
@@ -76,28 +81,10 @@ PreparedJob prepare(RenderJob job, const RenderOptions& o) {
 
   PreparedJob p;
   p.plan = plan_job(job);
-  try {
-    p.range = o.frames.empty() ? io::all_frames(p.plan.frames)
-                               : io::parse_frame_range(o.frames, p.plan.frames);
-  } catch (const io::FrameRangeError& e) {
-    throw UsageError(e.what());
-  }
+  p.range = o.frames.empty() ? io::all_frames(p.plan.frames)
+                             : io::parse_frame_range(o.frames, p.plan.frames);
   p.job = std::move(job);
   return p;
-}
-
-std::string gl_backend(const RenderOptions& o) {
-  return o.gl.empty() ? render::gl_backend_from_environment() : o.gl;
-}
-
-// Frames are drawn into the renderer's own framebuffer; the context's own
-// surface is never read, so it stays tiny.
-std::unique_ptr<render::GlContext> open_context(const RenderOptions& o) {
-  try {
-    return render::make_gl_context(gl_backend(o), 16, 16);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string(o.gl.empty() ? "EPVIZ_GL" : "--gl") + ": " + e.what());
-  }
 }
 
 io::ProgressMode progress_mode(const RenderOptions& o) {
@@ -132,7 +119,7 @@ RenderStats render_frames(const PreparedJob& p, paint::FramePainter& painter,
   if (write_output && job.output.format == OutputFormat::png) {
     pngs = std::make_unique<io::AsyncPngWriter>();
   } else if (write_output) {
-    const auto fmt = *io::parse_video_format(output_format_name(job.output.format));
+    const auto fmt = *job::video_format(job.output.format);
     video = std::make_unique<io::VideoWriter>(
         job.output.dir / (job.output.name + std::string(io::video_format_extension(fmt))), fmt,
         s.width, s.height, s.fps);
@@ -233,19 +220,51 @@ int report_failure(const std::optional<numerics::Failure>& f) {
   return 3;
 }
 
-int render_single(RenderJob job, const RenderOptions& o) {
+// The render the shards of `job` split: its hash is of the job as drawn (its
+// canonical keys with the options applied), its command draws it again.
+shard::FrameBatch frame_batch(const RenderJob& job, int frames) {
+  job::JobDocument doc{job.simulation, job.runs, job.scene, job.output};
+  doc.output.dir = "";
+  shard::FrameBatch b;
+  b.origin.source = fs::absolute(job.file).lexically_normal().string();
+  b.origin.hash = shard::checksum_of(job::write_job(doc).dump());
+  b.origin.command = {"epviz",
+                      "render",
+                      b.origin.source,
+                      "--out",
+                      fs::absolute(job.output.dir).lexically_normal().string(),
+                      "--width",
+                      std::to_string(job.scene.width),
+                      "--height",
+                      std::to_string(job.scene.height),
+                      "--format",
+                      std::string(output_format_name(job.output.format))};
+  b.dir = job.output.dir;
+  b.name = job.output.name;
+  if (const auto video = job::video_format(job.output.format))
+    b.video_extension = io::video_format_extension(*video);
+  b.frames = frames;
+  return b;
+}
+
+int render_single(RenderJob job, const RenderOptions& o, const render::GlChoice& gl) {
   auto p = prepare(std::move(job), o);
-  // A shard draws a contiguous range of frames (app/render_shard.hpp).
-  auto shard = plan_render_shard(o.shard, o.shard_count, o.frames, p.job, p.plan.frames);
-  if (shard) {
-    p.range = shard->range;
+  // A shard draws a contiguous range of frames (shard/frame_shard.hpp).
+  shard::FrameBatch batch;
+  std::optional<shard::FrameShard> shard;
+  if (const auto spec = shard::shard_from_options(o.shard, o.shard_count)) {
+    if (!o.frames.empty())
+      throw UsageError("--frames: a shard's frames follow from --shard; give one of them");
+    batch = frame_batch(p.job, p.plan.frames);
+    shard = shard::plan_frame_shard(batch, *spec);
+    p.range = {int(shard->frames.first), int(shard->frames.end - 1)};
     p.job.output.name = shard->output_name;
   }
-  auto context = open_context(o);
+  auto context = gl.open();
   paint::FramePainter painter(*context, p.job.scene.width, p.job.scene.height);
-  if (shard) start_render_shard(*shard);
+  if (shard) shard::start_frame_shard(*shard);
   const auto st = render_frames(p, painter, o);
-  if (shard && !st.failure) finish_render_shard(*shard, p.job);
+  if (shard && !st.failure) shard::finish_frame_shard(*shard, batch);
   print_job_line(summary_stream(o), p, st);
   if (!o.report_json.empty()) {
     auto report = job_report(p, st);
@@ -329,7 +348,7 @@ int render_grid_video(const GalleryJob& g, const std::vector<PreparedJob>& jobs,
   return int(std::count(failed.begin(), failed.end(), true));
 }
 
-int render_gallery(GalleryJob g, const RenderOptions& o) {
+int render_gallery(GalleryJob g, const RenderOptions& o, const render::GlChoice& gl) {
   if (!o.frames.empty())
     throw UsageError("--frames: a gallery renders whole jobs; give --frames to a single job");
   if (!o.shard.empty())
@@ -367,7 +386,7 @@ int render_gallery(GalleryJob g, const RenderOptions& o) {
   }
   fs::create_directories(g.dir);
   io::remove_stale_temporaries(g.dir);
-  auto context = open_context(o);
+  auto context = gl.open();
   paint::FramePainter painter(*context, g.tile_width, g.tile_height);
 
   nlohmann::json reports = nlohmann::json::array();
@@ -407,6 +426,7 @@ int run_render(const RenderOptions& o) {
   check_output_file("--report-json", o.report_json);
   // SIGINT/SIGTERM remove the temporaries of the frames and videos being written.
   io::install_temporary_cleanup();
+  const render::GlChoice gl(o.gl);
   auto loaded = load_render_job(o.job);
   if (loaded.bench) {
     if (!o.frames.empty() || !o.format.empty() || o.resume || !o.shard.empty())
@@ -418,8 +438,8 @@ int run_render(const RenderOptions& o) {
     b.gl = o.gl;
     return run_bench(b);
   }
-  if (loaded.gallery) return render_gallery(std::move(*loaded.gallery), o);
-  return render_single(std::move(*loaded.single), o);
+  if (loaded.gallery) return render_gallery(std::move(*loaded.gallery), o, gl);
+  return render_single(std::move(*loaded.single), o, gl);
 }
 
 }  // namespace
@@ -434,8 +454,7 @@ std::function<int()> add_render_command(CLI::App& app) {
   cmd->add_option("--width", o->width, "frame width in pixels");
   cmd->add_option("--height", o->height, "frame height in pixels");
   cmd->add_option("--format", o->format, "png|mp4|webm|gif");
-  cmd->add_option("--gl", o->gl,
-                  "offscreen GL backend: auto, egl or osmesa (default: $EPVIZ_GL or auto)");
+  add_gl_option(*cmd, o->gl);
   cmd->add_option("--report-json", o->report_json,
                   "write what was rendered (tolerance chosen, timings) as JSON ('-': standard "
                   "output; the summary lines then go to stderr)");

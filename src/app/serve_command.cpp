@@ -1,7 +1,6 @@
 #include "app/serve_command.hpp"
 
 #include <CLI/CLI.hpp>
-#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -10,11 +9,12 @@
 #include <vector>
 
 #include "app/cli_values.hpp"
+#include "app/gl_option.hpp"
 #include "app/render_job.hpp"
 #include "app/usage_error.hpp"
 #include "io/data_dir.hpp"
 #include "live/live_session.hpp"
-#include "render/gl_context.hpp"
+#include "render/gl_choice.hpp"
 #include "serve/origin_policy.hpp"
 #include "serve/server.hpp"
 
@@ -90,14 +90,7 @@ int run_serve(const ServeOptions& o) {
   }
   so.log = [](const std::string& line) { std::fprintf(stderr, "epviz serve: %s\n", line.c_str()); };
 
-  const std::string backend = o.gl.empty() ? render::gl_backend_from_environment() : o.gl;
-  const auto backends = render::gl_backends();
-  if (std::find(backends.begin(), backends.end(), backend) == backends.end()) {
-    std::string allowed;
-    for (const auto& name : backends) allowed += (allowed.empty() ? "" : ", ") + name;
-    throw UsageError(std::string(o.gl.empty() ? "EPVIZ_GL" : "--gl") + ": unknown backend '" +
-                     backend + "' (allowed: " + allowed + ")");
-  }
+  const render::GlChoice gl_choice(o.gl);
 
   live::SessionOptions session;
   session.initial =
@@ -115,7 +108,7 @@ int run_serve(const ServeOptions& o) {
   // The GL context belongs to the render thread, which creates it.
   std::unique_ptr<render::GlContext> gl;
   serve::Server server(
-      so, [&] { gl = render::make_gl_context(backend, 16, 16); },
+      so, [&] { gl = gl_choice.open(); },
       [&]() -> std::unique_ptr<serve::Session> {
         return std::make_unique<live::LiveSession>(*gl, session);
       });
@@ -153,8 +146,7 @@ std::function<int()> add_serve_command(CLI::App& app) {
   cmd->add_option("--bind", o->bind,
                   "address to listen on; other than loopback is reachable from the network")
       ->capture_default_str();
-  cmd->add_option("--gl", o->gl,
-                  "offscreen GL backend: auto, egl or osmesa (default: $EPVIZ_GL or auto)");
+  add_gl_option(*cmd, o->gl);
   cmd->add_option("--image", o->image, "frame encoding: jpeg or png")->capture_default_str();
   cmd->add_option("--quality", o->quality, "JPEG quality 1..100")->capture_default_str();
   cmd->add_option("--save-dir", o->save_dir,

@@ -27,15 +27,11 @@ struct RawOptions {
 };
 
 SimulationFields fields_from_job(const std::string& path) {
-  try {
-    auto json = io::read_json_file(path);
-    io::ObjectReader reader(json, path);
-    auto f = read_simulation_fields(reader);
-    reader.finish();
-    return f;
-  } catch (const io::JobError& e) {
-    throw UsageError(e.what());
-  }
+  auto json = io::read_json_file(path);
+  io::ObjectReader reader(json, path);
+  auto f = read_simulation_fields(reader);
+  reader.finish();
+  return f;
 }
 
 std::string fmt(double x, const char* f = "%.3g") {

@@ -5,16 +5,17 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <thread>
 
 #include "app/cli_values.hpp"
 #include "app/output_paths.hpp"
-#include "app/shard_options.hpp"
 #include "app/simulation_fields.hpp"
 #include "app/usage_error.hpp"
 #include "io/json_reader.hpp"
 #include "io/progress.hpp"
-#include "shard/manifest.hpp"
+#include "shard/rows_shard.hpp"
+#include "shard/shard_spec.hpp"
 #include "sweep/sweep_runner.hpp"
 #include "sweep/sweep_spec.hpp"
 
@@ -37,22 +38,11 @@ std::string sweep_stem(const fs::path& file) {
   return s;
 }
 
-// "rows.jsonl" -> "rows".
-std::string rows_stem(const fs::path& out) {
-  std::string s = out.filename().string();
-  return s.ends_with(".jsonl") && s.size() > 6 ? s.substr(0, s.size() - 6) : s;
-}
-
 int run_sweep(const SweepOptions& o) {
-  sweep::SweepSpec spec;
-  try {
-    spec = sweep::read_sweep_file(o.file);
-  } catch (const io::JobError& e) {
-    throw UsageError(e.what());
-  }
+  const sweep::SweepSpec spec = sweep::read_sweep_file(o.file);
   const int threads = o.jobs.empty() ? int(std::max(1u, std::thread::hardware_concurrency()))
                                      : int(parse_integer("-j", o.jobs, 1, 4096));
-  const auto shard = shard_from_options(o.shard, o.shard_count);
+  const auto shard = shard::shard_from_options(o.shard, o.shard_count);
 
   // Every point is resolved before any runs: a bad value anywhere in the
   // sweep stops every shard alike, before any work.
@@ -65,9 +55,7 @@ int run_sweep(const SweepOptions& o) {
       auto p = read_point(i);
       auto run = sweep::resolve_point(p, [](const SimulationFields& f) { return resolve(f); });
       points.push_back(sweep::prepared_point(p, std::move(run)));
-    } catch (const io::JobError& e) {
-      throw UsageError(e.what());
-    } catch (const std::invalid_argument& e) {
+    } catch (const std::invalid_argument& e) {  // an energy no state of the body reaches
       throw UsageError(e.what());
     }
   }
@@ -76,18 +64,20 @@ int run_sweep(const SweepOptions& o) {
       o.out.empty() ? fs::path(sweep_stem(o.file) + ".jsonl") : fs::path(o.out);
   if (o.out == "-") throw UsageError("--out: rows are appended to a file, not standard output");
   check_output_file("--out", out_given.string());
-  fs::path out = out_given;
-  const shard::ItemRange range =
-      shard ? shard::shard_range(total, *shard) : shard::ItemRange{0, total};
-  const fs::path dir = out_given.parent_path().empty() ? fs::path(".") : out_given.parent_path();
-  if (shard) out = dir / (rows_stem(out_given) + "." + shard::shard_tag(*shard) + ".jsonl");
-
-  sweep::ExistingRows existing;
-  try {
-    existing = sweep::resume_rows(out, spec.hash, total);
-  } catch (const sweep::RowsFileError& e) {
-    throw UsageError(e.what());
+  std::optional<shard::RowsShard> rows_shard;
+  if (shard) {
+    shard::RowsBatch batch{{fs::absolute(o.file).lexically_normal().string(), spec.hash, {}},
+                           out_given, total};
+    auto& command = batch.origin.command;
+    command = {"epviz", "sweep", batch.origin.source, "--out",
+               fs::absolute(out_given).lexically_normal().string()};
+    if (!o.jobs.empty()) command.insert(command.end(), {"-j", o.jobs});
+    rows_shard = shard::plan_rows_shard(batch, *shard);
   }
+  const fs::path out = rows_shard ? rows_shard->rows : out_given;
+  const shard::ItemRange range = rows_shard ? rows_shard->points : shard::ItemRange{0, total};
+
+  const sweep::ExistingRows existing = sweep::resume_rows(out, spec.hash, total);
   for (long i : existing.indices)
     if (i < range.first || i >= range.end)
       throw UsageError(out.string() + ": holds point " + std::to_string(i) +
@@ -97,22 +87,7 @@ int run_sweep(const SweepOptions& o) {
   for (long i = range.first; i < range.end; ++i)
     if (!existing.indices.count(i)) pending.push_back(std::move(points[std::size_t(i)]));
 
-  shard::Manifest manifest;
-  fs::path manifest_path;
-  if (shard) {
-    manifest.kind = "sweep";
-    manifest.source = fs::absolute(o.file).lexically_normal().string();
-    manifest.hash = spec.hash;
-    manifest.shard = *shard;
-    manifest.items = range;
-    manifest.total = total;
-    manifest.command = {"epviz", "sweep", manifest.source, "--out",
-                        fs::absolute(out_given).lexically_normal().string()};
-    if (!o.jobs.empty()) manifest.command.insert(manifest.command.end(), {"-j", o.jobs});
-    manifest.output = out_given.filename().string();
-    manifest_path = dir / shard::manifest_name(rows_stem(out_given), *shard);
-    shard::write_manifest(manifest_path, manifest);  // "completed": false until the end
-  }
+  if (rows_shard) shard::start_rows_shard(*rows_shard);  // "completed": false until the end
 
   io::ProgressOptions po;
   po.mode = o.quiet ? io::ProgressMode::off : io::ProgressMode::automatic;
@@ -132,11 +107,7 @@ int run_sweep(const SweepOptions& o) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  if (shard) {
-    shard::add_file(manifest, dir, out);
-    manifest.completed = true;
-    shard::write_manifest(manifest_path, manifest);
-  }
+  if (rows_shard) shard::finish_rows_shard(*rows_shard);
   std::printf(
       "%s: %ld points%s, %zu already in %s%s, ran %ld in %.2f s (%.1f points/s, %d threads), %ld "
       "failed\n",

@@ -1,12 +1,10 @@
 #pragma once
-// Bad input from the user: the CLI prints the one-line message and exits 2.
-#include <stdexcept>
+// Bad input from the command line: io::BadInput, the one type every reader's
+// error derives from (the CLI prints its one-line message and exits 2).
+#include "io/bad_input.hpp"
 
 namespace epviz::app {
 
-class UsageError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+using UsageError = io::BadInput;
 
 }  // namespace epviz::app

@@ -9,13 +9,15 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "io/bad_input.hpp"
+
 namespace epviz::io {
 
 // Thrown for a malformed or unusable range; the message names --frames and
 // says what is allowed.
-class FrameRangeError : public std::invalid_argument {
+class FrameRangeError : public BadInput {
  public:
-  using std::invalid_argument::invalid_argument;
+  using BadInput::BadInput;
 };
 
 // What was written, before the job's frame count is known; an absent end means open.

@@ -31,7 +31,7 @@ class ParseTracker {
       case E::object_start:
       case E::array_start:
         if (levels_.size() >= std::size_t(max_json_depth))
-          throw JobError(file_name(file_) + ": " + at(2) + "nested deeper than " +
+          throw BadInput(file_name(file_) + ": " + at(2) + "nested deeper than " +
                          std::to_string(max_json_depth) + " levels of arrays and objects");
         levels_.push_back({event == E::object_start, {}, {}, 0});
         break;
@@ -39,7 +39,7 @@ class ParseTracker {
         auto& top = levels_.back();
         top.key = parsed.get<std::string>();
         if (!top.keys.insert(top.key).second)
-          throw JobError(file_name(file_) + ": " + at() +
+          throw BadInput(file_name(file_) + ": " + at() +
                          "given twice in one object (only one is allowed)");
         break;
       }
@@ -149,17 +149,17 @@ Json parse_json_text(std::string_view text, const std::string& file) {
         ++col;
       }
     }
-    throw JobError(file_name(file) + ":" + std::to_string(line) + ":" + std::to_string(col) +
+    throw BadInput(file_name(file) + ":" + std::to_string(line) + ":" + std::to_string(col) +
                    ": not valid JSON");
   } catch (const Json::out_of_range& e) {
     // The one range error of the parser: a number too large for a double.
-    throw JobError(file_name(file) + ": " + tracker.at() + "the number" +
+    throw BadInput(file_name(file) + ": " + tracker.at() + "the number" +
                    overflowing_token(e.what()) +
                    " is out of range (a double holds magnitudes up to about 1.8e308)");
   } catch (const Json::exception& e) {
-    throw JobError(file_name(file) + ": not valid JSON (" + printable(e.what(), 120) + ")");
+    throw BadInput(file_name(file) + ": not valid JSON (" + printable(e.what(), 120) + ")");
   }
-  if (!j.is_object()) throw JobError(file_name(file) + ": the job must be a JSON object {...}");
+  if (!j.is_object()) throw BadInput(file_name(file) + ": the job must be a JSON object {...}");
   return j;
 }
 
@@ -167,10 +167,10 @@ Json read_json_file(const std::filesystem::path& path) {
   const std::string file = path.string();
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
-    throw JobError(file_name(file) + ": is a directory, not a job file");
+    throw BadInput(file_name(file) + ": is a directory, not a job file");
   std::ifstream in(path, std::ios::binary);
   if (!in)
-    throw JobError(file_name(file) + ": cannot open the file for reading (" + std::strerror(errno) +
+    throw BadInput(file_name(file) + ": cannot open the file for reading (" + std::strerror(errno) +
                    ")");
   // Read at most one byte past the limit: /dev/zero or an endless pipe ends here.
   std::string text;
@@ -178,10 +178,10 @@ Json read_json_file(const std::filesystem::path& path) {
   while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
     text.append(buffer, std::size_t(in.gcount()));
     if (text.size() > max_json_file_bytes)
-      throw JobError(file_name(file) + ": larger than " +
+      throw BadInput(file_name(file) + ": larger than " +
                      std::to_string(max_json_file_bytes >> 20) + " MiB, the limit for a job file");
   }
-  if (in.bad()) throw JobError(file_name(file) + ": cannot read the file");
+  if (in.bad()) throw BadInput(file_name(file) + ": cannot read the file");
   return parse_json_text(text, file);
 }
 
@@ -216,7 +216,7 @@ std::string ObjectReader::where(const std::string& key) const {
 }
 
 void ObjectReader::fail(const std::string& key, const std::string& what) const {
-  throw JobError(where(key) + ": " + what);
+  throw BadInput(where(key) + ": " + what);
 }
 
 bool ObjectReader::has(const std::string& key) const { return object_->contains(key); }

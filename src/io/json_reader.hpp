@@ -15,12 +15,9 @@
 
 #include <nlohmann/json.hpp>
 
-namespace epviz::io {
+#include "io/bad_input.hpp"
 
-class JobError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+namespace epviz::io {
 
 // Job files are a few kilobytes; the limit keeps /dev/zero or a runaway
 // generator from filling the memory.
@@ -68,7 +65,7 @@ class ObjectReader {
   std::optional<std::array<double, 3>> vec3(const std::string& key);
   std::optional<ObjectReader> object(const std::string& key);
 
-  // Throws JobError naming the first key that was never read.
+  // Throws BadInput naming the first key that was never read.
   void finish() const;
 
   // "file: key 'a.b'" for messages about a value after it was read.

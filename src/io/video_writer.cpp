@@ -39,33 +39,6 @@ std::string format_number(double value) {
 
 }  // namespace
 
-std::string_view video_format_name(VideoFormat format) {
-  switch (format) {
-    case VideoFormat::mp4: return "mp4";
-    case VideoFormat::webm: return "webm";
-    case VideoFormat::gif: return "gif";
-  }
-  return "?";
-}
-
-std::optional<VideoFormat> parse_video_format(std::string_view name) {
-  if (name == "mp4") return VideoFormat::mp4;
-  if (name == "webm") return VideoFormat::webm;
-  if (name == "gif") return VideoFormat::gif;
-  return std::nullopt;
-}
-
-std::string_view video_format_extension(VideoFormat format) {
-  switch (format) {
-    case VideoFormat::mp4: return ".mp4";
-    case VideoFormat::webm: return ".webm";
-    case VideoFormat::gif: return ".gif";
-  }
-  return "";
-}
-
-bool video_format_needs_even_size(VideoFormat format) { return format != VideoFormat::gif; }
-
 bool ffmpeg_available(const std::string& program) {
   if (program.empty()) return false;
   if (program.find('/') != std::string::npos) return is_executable_file(program);
@@ -126,15 +99,8 @@ VideoWriter::VideoWriter(fs::path target, VideoFormat format, int width, int hei
       format_(format),
       width_(width),
       height_(height) {
-  const std::string name(video_format_name(format));
-  if (width <= 0 || height <= 0)
-    throw std::invalid_argument("video '" + target_.string() + "': size " + std::to_string(width) +
-                                "x" + std::to_string(height) + " must be positive");
-  if (video_format_needs_even_size(format) && (width % 2 != 0 || height % 2 != 0))
-    throw std::invalid_argument("video '" + target_.string() + "': " + name +
-                                " (yuv420p) needs an even width and height, got " +
-                                std::to_string(width) + "x" + std::to_string(height) +
-                                "; choose even --width/--height or use --format gif or png");
+  if (const auto why = video_size_problem(format, width, height); !why.empty())
+    throw std::invalid_argument("video '" + target_.string() + "': " + why);
   if (!(fps > 0.0) || fps > 1000.0)
     throw std::invalid_argument("video '" + target_.string() + "': frame rate " +
                                 format_number(fps) + " must be in (0, 1000]");

@@ -53,19 +53,9 @@
 #include <vector>
 
 #include "io/subprocess.hpp"
+#include "io/video_format.hpp"
 
 namespace epviz::io {
-
-enum class VideoFormat { mp4, webm, gif };
-
-// "mp4", "webm", "gif".
-std::string_view video_format_name(VideoFormat format);
-// Parses a format name as written on the command line; nullopt if unknown.
-std::optional<VideoFormat> parse_video_format(std::string_view name);
-// The file extension with its dot: ".mp4", ".webm", ".gif".
-std::string_view video_format_extension(VideoFormat format);
-// Whether the format needs even width and height (yuv420p): mp4 and webm.
-bool video_format_needs_even_size(VideoFormat format);
 
 // Thrown when ffmpeg is missing, cannot be started, or fails; the message names
 // the output file and, when ffmpeg itself failed, quotes its stderr.

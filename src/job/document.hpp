@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/video_format.hpp"
 #include "scene/settings.hpp"
 
 namespace epviz::job {
@@ -44,6 +45,8 @@ struct SimulationFields {
 enum class OutputFormat { png, mp4, webm, gif };
 std::string_view output_format_name(OutputFormat f);
 std::optional<OutputFormat> output_format_from_name(std::string_view s);
+// The video format an output is encoded in; nullopt for PNG frames.
+std::optional<io::VideoFormat> video_format(OutputFormat f);
 
 struct OutputSettings {
   std::filesystem::path dir = "out";

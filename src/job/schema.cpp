@@ -8,64 +8,16 @@
 #include <functional>
 
 #include "io/printable.hpp"
+#include "job/schema_entries.hpp"
 #include "scene/theme.hpp"
 
 namespace epviz::job {
+
+using namespace entries;
+
 namespace {
 
-using Json = nlohmann::ordered_json;
 using Vec3 = std::array<double, 3>;
-
-// One key of an object in a job: what it is (for help and messages), how it
-// is read into `Doc` and how it is written from it. An object's entry has
-// children instead, and an optional check of the object once they are read.
-template <class Doc>
-struct Entry {
-  KeyInfo info;  // info.path: the key within its object
-  std::function<void(io::ObjectReader&, Doc&)> read;
-  std::function<void(const Doc&, Json&)> write;  // sets its key, or leaves it out
-  std::vector<Entry> children = {};
-  std::function<void(const io::ObjectReader&, const Doc&)> check = {};
-};
-
-template <class Doc>
-void read_entries(const std::vector<Entry<Doc>>& entries, io::ObjectReader& r, Doc& doc) {
-  for (const auto& e : entries) {
-    if (e.children.empty()) {
-      e.read(r, doc);
-      continue;
-    }
-    if (auto o = r.object(e.info.path)) {
-      read_entries(e.children, *o, doc);
-      o->finish();
-      if (e.check) e.check(*o, doc);
-    }
-  }
-}
-
-template <class Doc>
-void write_entries(const std::vector<Entry<Doc>>& entries, const Doc& doc, Json& out) {
-  for (const auto& e : entries) {
-    if (e.children.empty()) {
-      e.write(doc, out);
-      continue;
-    }
-    Json o = Json::object();
-    write_entries(e.children, doc, o);
-    if (!o.empty()) out[e.info.path] = std::move(o);
-  }
-}
-
-template <class Doc>
-void list_keys(const std::vector<Entry<Doc>>& entries, const std::string& prefix,
-               std::vector<KeyInfo>& out) {
-  for (const auto& e : entries) {
-    KeyInfo k = e.info;
-    k.path = prefix + k.path;
-    out.push_back(k);
-    list_keys(e.children, k.path + ".", out);
-  }
-}
 
 // ---- the "simulation" object: SimulationFields -----------------------------
 
@@ -560,6 +512,16 @@ std::string_view output_format_name(OutputFormat f) {
 std::optional<OutputFormat> output_format_from_name(std::string_view s) {
   for (auto f : {OutputFormat::png, OutputFormat::mp4, OutputFormat::webm, OutputFormat::gif})
     if (output_format_name(f) == s) return f;
+  return std::nullopt;
+}
+
+std::optional<io::VideoFormat> video_format(OutputFormat f) {
+  switch (f) {
+    case OutputFormat::png: return std::nullopt;
+    case OutputFormat::mp4: return io::VideoFormat::mp4;
+    case OutputFormat::webm: return io::VideoFormat::webm;
+    case OutputFormat::gif: return io::VideoFormat::gif;
+  }
   return std::nullopt;
 }
 

@@ -44,7 +44,7 @@ std::vector<KeyInfo> render_job_keys();
 // "tol": "auto" is accepted and reported there.
 SimulationFields read_simulation_fields(io::ObjectReader& reader, bool* auto_tol = nullptr);
 
-// A single render job from its JSON object; throws io::JobError naming
+// A single render job from its JSON object; throws io::BadInput naming
 // `file` and the key path. The output name stays empty when not given.
 JobDocument read_job(const nlohmann::json& object, const std::string& file);
 

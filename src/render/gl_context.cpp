@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "io/bad_input.hpp"
 #include "render/egl_context.hpp"
 #include "render/gl.hpp"
 #include "render/osmesa_context.hpp"
@@ -57,7 +58,7 @@ std::unique_ptr<GlContext> make_context(std::string_view backend, int width, int
 
   std::string allowed;
   for (const auto& name : gl_backends()) allowed += (allowed.empty() ? "" : ", ") + name;
-  throw std::invalid_argument("unknown GL backend '" + std::string(backend) +
+  throw io::BadInput("unknown GL backend '" + std::string(backend) +
                               "' (from --gl or EPVIZ_GL); allowed: " + allowed);
 }
 

@@ -47,9 +47,10 @@ std::vector<std::string> gl_backends();
 std::string gl_backend_from_environment();
 
 // Creates a current context with an OpenGL 3.3 core profile (or newer) and a
-// default surface of width x height. Throws std::invalid_argument naming the
-// allowed backends for an unknown name, GlUnavailable when the backend (for
-// "auto": every backend) cannot create the context.
+// default surface of width x height. Throws io::BadInput naming the allowed
+// backends for an unknown name (commands refuse it earlier: gl_choice.hpp),
+// GlUnavailable when the backend (for "auto": every backend) cannot create
+// the context.
 std::unique_ptr<GlContext> make_gl_context(std::string_view backend, int width, int height);
 
 // When on, make_gl_context() says on stderr which backend it chose and why

@@ -8,6 +8,20 @@ namespace epviz::shard {
 
 namespace fs = std::filesystem;
 
+Manifest shard_manifest(std::string kind, const BatchOrigin& origin, const ShardSpec& s,
+                        const ItemRange& items, long total, std::string output) {
+  Manifest m;
+  m.kind = std::move(kind);
+  m.source = origin.source;
+  m.hash = origin.hash;
+  m.shard = s;
+  m.items = items;
+  m.total = total;
+  m.command = origin.command;
+  m.output = std::move(output);
+  return m;
+}
+
 nlohmann::ordered_json to_json(const Manifest& m) {
   nlohmann::ordered_json j;
   j["kind"] = m.kind;

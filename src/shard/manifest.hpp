@@ -36,8 +36,21 @@ struct Manifest {
   bool completed = false;
 };
 
+// What every shard of one batch says alike: where the batch comes from and
+// how to run one of its shards again.
+struct BatchOrigin {
+  std::string source;                // the sweep or job file, absolute
+  std::string hash;                  // of the batch's canonical content
+  std::vector<std::string> command;  // runs it again, without shard options
+};
+
+// The manifest of shard `s`, which does `items` of the batch's `total`,
+// before its files are added.
+Manifest shard_manifest(std::string kind, const BatchOrigin& origin, const ShardSpec& s,
+                        const ItemRange& items, long total, std::string output);
+
 nlohmann::ordered_json to_json(const Manifest& m);
-// Strict reading (io/json_reader): throws io::JobError naming the file and key.
+// Strict reading (io/json_reader): throws io::BadInput naming the file and key.
 Manifest read_manifest(const std::filesystem::path& path);
 // Atomic write (temporary + rename).
 void write_manifest(const std::filesystem::path& path, const Manifest& m);

@@ -89,6 +89,25 @@ std::optional<ShardSpec> shard_from_environment(const Environment& env, long cou
   return std::nullopt;
 }
 
+std::optional<ShardSpec> shard_from_options(const std::string& shard_option,
+                                            const std::string& count_option,
+                                            const Environment& env) {
+  long count = 0;
+  if (!count_option.empty()) {
+    const auto n = whole_number(count_option, max_shards);
+    if (!n || *n < 1)
+      throw ShardError("--shard-count: expected a whole number from 1 to " +
+                       std::to_string(max_shards) + ", got " + quoted(count_option));
+    count = *n;
+  }
+  if (shard_option.empty()) return shard_from_environment(env, count);
+  const auto s = parse_shard(shard_option, "--shard");
+  if (count && count != s.count)
+    throw ShardError("--shard-count: " + std::to_string(count) + " disagrees with --shard " +
+                     quoted(shard_option) + "; give one of them");
+  return s;
+}
+
 ItemRange shard_range(long total, const ShardSpec& s) {
   // The first total % N shards take one item more; no product can overflow.
   const long q = total / s.count, r = total % s.count;

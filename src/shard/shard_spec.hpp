@@ -10,13 +10,15 @@
 #include <string>
 #include <string_view>
 
+#include "io/bad_input.hpp"
+
 namespace epviz::shard {
 
 // A malformed or impossible shard: the message names the option or variable
 // and says what is allowed.
-class ShardError : public std::invalid_argument {
+class ShardError : public io::BadInput {
  public:
-  using std::invalid_argument::invalid_argument;
+  using io::BadInput::BadInput;
 };
 
 inline constexpr long max_shards = 1'000'000;
@@ -43,6 +45,15 @@ Environment process_environment();
 // of --shard-count, 0 when not given) must. Throws ShardError for values that
 // do not make a shard, naming the variable.
 std::optional<ShardSpec> shard_from_environment(const Environment& env, long count_option);
+
+// The shard this process does, from the options of `epviz sweep` and `epviz
+// render`: --shard I/N (`shard_option`) when given, else the array job's
+// environment, with --shard-count N (`count_option`; "" when not given) for
+// the environments that give only the index; nullopt: the whole batch.
+// Throws ShardError naming the option or variable.
+std::optional<ShardSpec> shard_from_options(const std::string& shard_option,
+                                            const std::string& count_option,
+                                            const Environment& env = process_environment());
 
 // Items [first, end) of `total` that shard `s` does: sizes differ by at most one.
 struct ItemRange {

@@ -13,13 +13,14 @@
 #include <nlohmann/json.hpp>
 
 #include "chart/chart_spec.hpp"
+#include "io/bad_input.hpp"
 #include "sweep/sweep_spec.hpp"
 
 namespace epviz::sweep {
 
-class AtlasError : public std::invalid_argument {
+class AtlasError : public io::BadInput {
  public:
-  using std::invalid_argument::invalid_argument;
+  using io::BadInput::BadInput;
 };
 
 // The heat map's columns are the x axis's values left to right, its rows the

@@ -15,11 +15,13 @@
 #include <string>
 #include <thread>
 
+#include "io/bad_input.hpp"
+
 namespace epviz::sweep {
 
-class RowsFileError : public std::runtime_error {
+class RowsFileError : public io::BadInput {
  public:
-  using std::runtime_error::runtime_error;
+  using io::BadInput::BadInput;
 };
 
 struct ExistingRows {

@@ -31,7 +31,7 @@ struct PointFields {
 // format's reader once, when a point first takes it, not once per point: a
 // sweep of a million points over a few hundred values reads a few hundred
 // (the reader, not the run, was a short run's largest cost outside the
-// integration). operator() throws io::JobError naming the sweep file and the
+// integration). operator() throws io::BadInput naming the sweep file and the
 // axis for a value the field does not accept.
 class PointReader {
  public:

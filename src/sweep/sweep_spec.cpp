@@ -51,7 +51,7 @@ std::vector<Json> range_values(io::ObjectReader& r, const std::string& field) {
 Axis read_axis(const Json& value, const std::string& file, std::size_t k) {
   const std::string key = "axes[" + std::to_string(k) + "]";
   if (!value.is_object())
-    throw io::JobError(file + ": key '" + key +
+    throw io::BadInput(file + ": key '" + key +
                        "': expected an object {\"field\": ..., \"values\": [...]}, got " +
                        io::describe(value));
   io::ObjectReader r(value, file, key);
@@ -138,11 +138,11 @@ SweepSpec read_sweep(const Json& root, const std::string& file) {
     s.axes.push_back(read_axis((*axes)[k], file, k));
     for (std::size_t j = 0; j < k; ++j)
       if (s.axes[j].field == s.axes[k].field)
-        throw io::JobError(file + ": key 'axes[" + std::to_string(k) + "].field': '" +
+        throw io::BadInput(file + ": key 'axes[" + std::to_string(k) + "].field': '" +
                            s.axes[k].field + "' is already axes[" + std::to_string(j) + "]");
     points *= long(s.axes[k].values.size());
     if (points > max_points)
-      throw io::JobError(file + ": key 'axes': more than " + std::to_string(max_points) +
+      throw io::BadInput(file + ": key 'axes': more than " + std::to_string(max_points) +
                          " points; split the sweep into several files");
   }
   if (auto ref = r.boolean("reference")) s.reference = *ref;

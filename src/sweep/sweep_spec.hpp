@@ -4,7 +4,7 @@
 // and "axes", each naming one simulation field and the values it takes. The
 // points are the cartesian product of the axes, numbered 0..N-1 with the
 // first axis varying slowest. Read strictly: an unknown key or a value of the
-// wrong kind is an io::JobError naming the file and the key path.
+// wrong kind is an io::BadInput naming the file and the key path.
 //
 //   {"simulation": {"case": "generic", "t_end": 50},
 //    "axes": [{"field": "method", "values": ["rk4", "gauss4"]},

@@ -52,7 +52,7 @@ TEST_P(RenderRejects, WithOneLineExitTwoAndNoOutput) {
 }
 
 INSTANTIATE_TEST_SUITE_P(
-    JobErrors, RenderRejects,
+    BadInputs, RenderRejects,
     ::testing::Values(
         BadJob{"unknown_key", [](auto& j) { j["colour"] = "red"; }, "",
                "job.json: key 'colour': unknown key"},
@@ -87,7 +87,7 @@ INSTANTIATE_TEST_SUITE_P(
                  j["output"]["format"] = "mp4";
                  j["width"] = 161;
                },
-               "", "even width and height"},
+               "", "mp4 (yuv420p) needs an even width and height, got 161x120"},
         BadJob{"bad_format_option", [](auto&) {}, "--format avi", "--format: unknown format 'avi'"},
         BadJob{"frames_out_of_range", [](auto&) {}, "--frames 3:99", "--frames"},
         BadJob{"unknown_gl", [](auto&) {}, "--gl vulkan", "unknown GL backend 'vulkan'"},
@@ -165,6 +165,27 @@ TEST(Render, Mp4IsPlayableWithTheExpectedFramesAndSize) {
   EXPECT_EQ(p["streams"][0]["nb_read_frames"], "6");
   EXPECT_EQ(p["streams"][0]["width"], 160);
   EXPECT_EQ(p["streams"][0]["height"], 120);
+}
+
+// GIF takes any size (no yuv420p): an odd-sized GIF is drawn at exactly that size.
+TEST(Render, OddSizedGifIsDrawnAtThatSize) {
+  if (std::system("command -v ffprobe >/dev/null 2>&1") != 0) GTEST_SKIP() << "no ffprobe";
+  test::TempDir dir;
+  auto j = small_job(dir / "video");
+  j["output"]["format"] = "gif";
+  j["output"]["name"] = "clip";
+  j["width"] = 161;
+  j["height"] = 121;
+  const auto r = test::run_epviz("render " + write_job(dir, j).string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto gif = dir / "video" / "clip.gif";
+  const std::string probe =
+      "ffprobe -v error -select_streams v:0 -show_entries stream=width,height -of json " +
+      gif.string() + " > " + (dir / "probe.json").string();
+  ASSERT_EQ(std::system(probe.c_str()), 0);
+  const auto p = nlohmann::json::parse(test::slurp(dir / "probe.json"));
+  EXPECT_EQ(p["streams"][0]["width"], 161);
+  EXPECT_EQ(p["streams"][0]["height"], 121);
 }
 
 TEST(Render, NumericalFailureStopsWithTimeAndMethodAndKeepsNoVideo) {

@@ -15,21 +15,21 @@
 namespace {
 
 using epviz::io::describe;
-using epviz::io::JobError;
+using epviz::io::BadInput;
 using epviz::io::ObjectReader;
 using epviz::io::parse_json_text;
 using epviz::io::printable;
 using nlohmann::json;
 
-// The message of the JobError `f` throws; fails the test if it throws none.
+// The message of the BadInput `f` throws; fails the test if it throws none.
 template <class F>
 std::string error_of(F&& f) {
   try {
     f();
-  } catch (const JobError& e) {
+  } catch (const BadInput& e) {
     return e.what();
   }
-  ADD_FAILURE() << "no JobError";
+  ADD_FAILURE() << "no BadInput";
   return "";
 }
 
@@ -51,7 +51,7 @@ TEST(JsonReader, NestingUpToTheLimitIsRead) {
   // The root object is one level, so 63 arrays inside it reach the limit.
   const auto at_limit = parse_json_text(R"({"a": )" + nested_arrays(63) + "}", "ok.json");
   EXPECT_TRUE(at_limit["a"].is_array());
-  EXPECT_THROW(parse_json_text(R"({"a": )" + nested_arrays(64) + "}", "ok.json"), JobError);
+  EXPECT_THROW(parse_json_text(R"({"a": )" + nested_arrays(64) + "}", "ok.json"), BadInput);
 }
 
 TEST(JsonReader, DuplicateKeysAreRefusedByPath) {

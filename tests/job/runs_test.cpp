@@ -23,7 +23,7 @@ nlohmann::json comparison_job() {
 std::string error_of(const nlohmann::json& j) {
   try {
     job::read_job(j, "job.json");
-  } catch (const io::JobError& e) {
+  } catch (const io::BadInput& e) {
     return e.what();
   }
   return "";

@@ -1,25 +1,20 @@
 #include <gtest/gtest.h>
 
-#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 
 #include "io/json_reader.hpp"
 #include "shard/checksum.hpp"
 #include "shard/manifest.hpp"
+#include "temp_dir.hpp"
 
 namespace epviz::shard {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Dir {
-  fs::path path = fs::temp_directory_path() / ("epviz-manifest-" + std::to_string(::getpid()));
-  Dir() {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~Dir() { fs::remove_all(path); }
+struct Dir : test::TempDir {
+  Dir() : TempDir("manifest") {}
 };
 
 TEST(Checksum, IsFnv1a64OfTheBytes) {
@@ -68,7 +63,7 @@ TEST(Manifest, ReadingIsStrict) {
   try {
     read_manifest(d.path / "m.json");
     FAIL() << "accepted shard 3 of 2";
-  } catch (const io::JobError& e) {
+  } catch (const io::BadInput& e) {
     EXPECT_NE(std::string(e.what()).find("'shard'"), std::string::npos) << e.what();
   }
 }

@@ -68,6 +68,46 @@ TEST(ShardSpec, IndexOnlyEnvironmentsNeedTheCount) {
   EXPECT_EQ(shard_from_environment(env_of({}), 4), std::nullopt);
 }
 
+// The message of the ShardError `f` throws, or "" when it throws none.
+template <class F>
+std::string refusal(F f) {
+  try {
+    f();
+  } catch (const ShardError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ShardOptions, TheOptionWinsOverTheEnvironment) {
+  const auto slurm = env_of({{"SLURM_ARRAY_TASK_ID", "1"}, {"SLURM_ARRAY_TASK_COUNT", "4"}});
+  EXPECT_EQ(shard_from_options("2/3", "", slurm), (ShardSpec{2, 3}));
+  EXPECT_EQ(shard_from_options("2/3", "3", slurm), (ShardSpec{2, 3}));
+  EXPECT_EQ(shard_from_options("", "", slurm), (ShardSpec{1, 4}));
+  EXPECT_EQ(shard_from_options("", "", env_of({})), std::nullopt);
+  EXPECT_EQ(shard_from_options("", "6", env_of({})), std::nullopt);  // no array job: all of it
+}
+
+TEST(ShardOptions, TheCountCompletesAnIndexOnlyEnvironment) {
+  EXPECT_EQ(shard_from_options("", "5", env_of({{"JOB_COMPLETION_INDEX", "4"}})),
+            (ShardSpec{4, 5}));
+  EXPECT_NE(refusal([] { shard_from_options("", "", env_of({{"JOB_COMPLETION_INDEX", "4"}})); })
+                .find("JOB_COMPLETION_INDEX is set but the number of shards is not known"),
+            std::string::npos);
+}
+
+TEST(ShardOptions, RefusalsNameTheOption) {
+  const auto none = env_of({});
+  EXPECT_EQ(refusal([&] { shard_from_options("1/4", "3", none); }),
+            "--shard-count: 3 disagrees with --shard '1/4'; give one of them");
+  for (const char* bad : {"0", "-2", "x", "1000001", "2.5"})
+    EXPECT_EQ(refusal([&] { shard_from_options("", bad, none); }),
+              "--shard-count: expected a whole number from 1 to 1000000, got '" +
+                  std::string(bad) + "'");
+  EXPECT_NE(refusal([&] { shard_from_options("4/4", "", none); }).find("--shard: expected I/N"),
+            std::string::npos);
+}
+
 TEST(ShardSpec, RangesAreContiguousCoverEverythingAndDifferByAtMostOne) {
   for (long total = 0; total <= 60; ++total)
     for (long count = 1; count <= 11; ++count) {

@@ -17,7 +17,7 @@ SweepSpec parse(const std::string& text) { return read_sweep(Json::parse(text), 
 std::string error_of(const std::string& text) {
   try {
     parse(text);
-  } catch (const io::JobError& e) {
+  } catch (const io::BadInput& e) {
     return e.what();
   }
   return "";
@@ -153,7 +153,7 @@ TEST(SweepPoint, AReaderChecksAComponentsValueAtTheFirstPointThatTakesIt) {
   try {
     read(1);
     ADD_FAILURE() << "an omega component of 1e300 was taken";
-  } catch (const io::JobError& e) {
+  } catch (const io::BadInput& e) {
     EXPECT_NE(std::string(e.what()).find("axes[0]"), std::string::npos) << e.what();
   }
   EXPECT_NO_THROW(read(0));

@@ -1,0 +1,36 @@
+#pragma once
+// A shard of a sweep (`epviz sweep SWEEP --shard I/N`): a contiguous range of
+// its points, whose rows go to "<rows>.shard-I-of-N.jsonl" beside the rows
+// file asked for, with a manifest (manifest.hpp) that `epviz merge` reads.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "shard/manifest.hpp"
+#include "shard/shard_spec.hpp"
+
+namespace epviz::shard {
+
+// The whole sweep the shards split.
+struct RowsBatch {
+  BatchOrigin origin;          // the sweep file; the hash is of the sweep's content
+  std::filesystem::path rows;  // the rows file of the whole sweep ("rows.jsonl")
+  long points = 0;
+};
+
+struct RowsShard {
+  ShardSpec shard;
+  ItemRange points;            // the points this shard runs
+  std::filesystem::path rows;  // where this shard's rows go
+  Manifest manifest;
+  std::filesystem::path manifest_path;
+};
+
+RowsShard plan_rows_shard(const RowsBatch& batch, const ShardSpec& spec);
+
+// Writes the manifest with "completed": false (call before running).
+void start_rows_shard(const RowsShard& s);
+// Adds the rows file, with its checksum, and marks the manifest completed.
+void finish_rows_shard(RowsShard& s);
+
+}  // namespace epviz::shard

@@ -1,0 +1,100 @@
+// What a merge finds in a directory of shards: batches by hash, what keeps
+// each from being merged, and a sweep's rows joined in point order.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "io/bad_input.hpp"
+#include "shard/batch.hpp"
+#include "shard/merged_rows.hpp"
+#include "temp_dir.hpp"
+
+namespace epviz::shard {
+namespace {
+
+namespace fs = std::filesystem;
+
+class Merge : public ::testing::Test {
+ protected:
+  test::TempDir temp_{"merge"};
+  const fs::path& dir_ = temp_.path;
+
+  // Shard `index` of a 2-shard sweep of 4 points with hash `hash`, its rows
+  // file holding `rows` (one JSON object a line).
+  void write_shard(const std::string& hash, long index, const std::string& rows, long count = 2) {
+    Manifest m;
+    m.kind = "sweep";
+    m.source = "/s/" + hash + ".sweep.json";
+    m.hash = hash;
+    m.shard = {index, count};
+    m.items = shard_range(4, m.shard);
+    m.total = 4;
+    m.command = {"epviz", "sweep", m.source};
+    m.output = hash + ".jsonl";
+    const std::string stem = hash + "-" + std::to_string(count);
+    const fs::path file = dir_ / (stem + "." + shard_tag(m.shard) + ".jsonl");
+    std::ofstream(file) << rows;
+    add_file(m, dir_, file);
+    m.completed = true;
+    write_manifest(dir_ / manifest_name(stem, m.shard), m);
+  }
+  // Why the first batch's rows cannot be merged ("" when they can).
+  std::string merge_refusal() {
+    try {
+      merged_rows(read_batches(dir_).at(0), dir_);
+    } catch (const io::BadInput& e) {
+      return e.what();
+    }
+    return "";
+  }
+  static std::string row(long index, const std::string& hash) {
+    return R"({"index":)" + std::to_string(index) + R"(,"sweep":")" + hash + "\"}\n";
+  }
+};
+
+TEST_F(Merge, ShardsOfOneSweepFormOneBatchAndAMissingShardIsNamedWithItsCommand) {
+  write_shard("aa", 0, row(0, "aa") + row(1, "aa"));
+  write_shard("aa", 1, row(2, "aa") + row(3, "aa"));
+  write_shard("bb", 1, row(2, "bb") + row(3, "bb"));
+  auto batches = read_batches(dir_);
+  ASSERT_EQ(batches.size(), 2u);
+  EXPECT_EQ(batches[0].hash, "aa");
+  EXPECT_EQ(batch_name(batches[0]), "sweep /s/aa.sweep.json (2 shards)");
+  check_batch(batches[0], dir_);
+  EXPECT_TRUE(batches[0].problems.empty());
+  check_batch(batches[1], dir_);
+  ASSERT_EQ(batches[1].problems.size(), 1u);
+  EXPECT_EQ(batches[1].problems[0].rfind("shard 0/2: missing", 0), 0u) << batches[1].problems[0];
+  EXPECT_NE(batches[1].problems[0].find("run: epviz sweep /s/bb.sweep.json --shard 0/2"),
+            std::string::npos)
+      << batches[1].problems[0];
+
+  const auto rows = merged_rows(batches[0], dir_);
+  ASSERT_EQ(rows.size(), 4u);
+  for (long i = 0; i < 4; ++i) EXPECT_EQ(rows[std::size_t(i)]["index"], i);
+}
+
+TEST_F(Merge, ShardsOfAnOldSplitBesideANewOneAreRefused) {
+  write_shard("aa", 0, row(0, "aa") + row(1, "aa"));
+  write_shard("aa", 0, row(0, "aa"), 4);
+  EXPECT_THROW(read_batches(dir_), io::BadInput);
+}
+
+TEST_F(Merge, RowsThatAreNotTheShardsPointsAreRefused) {
+  write_shard("aa", 0, row(0, "aa") + row(3, "aa"));  // point 3 is shard 1's
+  write_shard("aa", 1, row(2, "aa") + row(3, "aa"));
+  EXPECT_NE(merge_refusal().find("not one of shard 0's points"), std::string::npos)
+      << merge_refusal();
+}
+
+TEST_F(Merge, APointWithoutARowIsNamedWithTheCommandThatRedoesItsShard) {
+  write_shard("aa", 0, row(0, "aa"));
+  write_shard("aa", 1, row(2, "aa") + row(3, "aa"));
+  EXPECT_NE(merge_refusal().find("shard 0/2: point 1 has no row; run: epviz sweep"),
+            std::string::npos)
+      << merge_refusal();
+}
+
+}  // namespace
+}  // namespace epviz::shard
