@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "cli_runner.hpp"
+#include "support/cli.hpp"
 
 namespace epviz {
 namespace {

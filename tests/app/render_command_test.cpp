@@ -5,7 +5,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "cli_runner.hpp"
+#include "support/cli.hpp"
 
 namespace epviz {
 namespace {
@@ -20,12 +20,6 @@ nlohmann::json small_job(const fs::path& out) {
           {"fps", 3},
           {"duration", 2},
           {"output", {{"dir", out.string()}, {"format", "png"}}}};
-}
-
-fs::path write_job(const test::TempDir& dir, const nlohmann::json& j,
-                   const std::string& name = "job.json") {
-  std::ofstream(dir / name) << j.dump(2);
-  return dir / name;
 }
 
 struct BadJob {
@@ -43,11 +37,9 @@ TEST_P(RenderRejects, WithOneLineExitTwoAndNoOutput) {
   test::TempDir dir;
   auto j = small_job(dir / "frames");
   bad.edit(j);
-  const auto job = write_job(dir, j);
+  const auto job = dir.write("job.json", j.dump(2));
   const auto r = test::run_epviz("render " + job.string() + " " + bad.extra_args, dir);
-  EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(r.err.find(bad.must_name), std::string::npos) << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  test::expect_bad_input(r, bad.must_name);
   EXPECT_FALSE(fs::exists(dir / "frames")) << "output written despite the error";
 }
 
@@ -103,14 +95,13 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(Render, MissingJobFileIsNamed) {
   test::TempDir dir;
-  const auto r = test::run_epviz("render " + (dir / "none.json").string(), dir);
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("none.json: cannot open"), std::string::npos) << r.err;
+  test::expect_bad_input(test::run_epviz("render " + (dir / "none.json").string(), dir),
+                         "none.json: cannot open");
 }
 
 TEST(Render, PngSequenceWithZeroPaddedNamesAndResume) {
   test::TempDir dir;
-  const auto job = write_job(dir, small_job(dir / "frames"));
+  const auto job = dir.write("job.json", small_job(dir / "frames").dump(2));
   const auto report = dir / "report.json";
   auto r = test::run_epviz("render " + job.string() + " --report-json " + report.string(), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -137,7 +128,7 @@ TEST(Render, PngSequenceWithZeroPaddedNamesAndResume) {
 
 TEST(Render, FrameRangeDrawsOnlyThoseFrames) {
   test::TempDir dir;
-  const auto job = write_job(dir, small_job(dir / "frames"));
+  const auto job = dir.write("job.json", small_job(dir / "frames").dump(2));
   const auto r = test::run_epviz("render " + job.string() + " --frames 2:3", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_FALSE(fs::exists(dir / "frames" / "frame_0001.png"));
@@ -151,7 +142,7 @@ TEST(Render, Mp4IsPlayableWithTheExpectedFramesAndSize) {
   auto j = small_job(dir / "video");
   j["output"]["format"] = "mp4";
   j["output"]["name"] = "clip";
-  const auto job = write_job(dir, j);
+  const auto job = dir.write("job.json", j.dump(2));
   const auto r = test::run_epviz("render " + job.string(), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto mp4 = dir / "video" / "clip.mp4";
@@ -176,7 +167,7 @@ TEST(Render, NumericalFailureStopsWithTimeAndMethodAndKeepsNoVideo) {
                      {"formulation", "riccati"}, {"chart_switch", false}, {"t_end", 6.0}};
   j["output"]["format"] = "mp4";
   j["output"]["name"] = "clip";
-  const auto r = test::run_epviz("render " + write_job(dir, j).string(), dir);
+  const auto r = test::run_epviz("render " + dir.write("job.json", j.dump(2)).string(), dir);
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_NE(r.err.find("dop853 failed at t = "), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "video" / "clip.mp4"));
@@ -188,28 +179,27 @@ TEST(Render, BenchFiguresJobRunsTheStudyAndDrawsItsCharts) {
   test::TempDir dir;
   const nlohmann::json job = {{"bench", {{"quick", true}, {"cases", {"kovalevskaya"}}}},
                               {"dir", (dir / "figures").string()}};
-  const auto r = test::run_epviz("render " + write_job(dir, job, "bench.json").string(), dir);
+  const auto r = test::run_epviz("render " + dir.write("bench.json", job.dump(2)).string(), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* f : {"bench.json", "work_precision_kovalevskaya.png", "stability.png"})
     EXPECT_TRUE(fs::exists(dir / "figures" / f)) << f;
 
   const nlohmann::json typo = {{"bench", {{"quik", true}}}};
-  const auto bad = test::run_epviz("render " + write_job(dir, typo, "typo.json").string(), dir);
-  EXPECT_EQ(bad.exit_code, 2);
-  EXPECT_NE(bad.err.find("key 'bench.quik': unknown key"), std::string::npos) << bad.err;
+  const auto bad = test::run_epviz("render " + dir.write("typo.json", typo.dump(2)).string(), dir);
+  test::expect_bad_input(bad, "key 'bench.quik': unknown key");
 }
 
 TEST(Render, GalleryTilesOneStillPerJob) {
   test::TempDir dir;
-  write_job(dir, small_job(dir / "unused"), "a.json");
+  dir.write("a.json", small_job(dir / "unused").dump(2));
   auto b = small_job(dir / "unused");
   b["simulation"]["case"] = "kovalevskaya";
-  write_job(dir, b, "b.json");
+  dir.write("b.json", b.dump(2));
   const nlohmann::json gallery = {{"jobs", {"a.json", "b.json"}},
                                   {"tile", {{"width", 160}, {"height", 120}, {"columns", 2}}},
                                   {"videos", "none"},
                                   {"dir", (dir / "gallery").string()}};
-  const auto g = write_job(dir, gallery, "gallery.json");
+  const auto g = dir.write("gallery.json", gallery.dump(2));
   const auto r = test::run_epviz("render " + g.string(), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(fs::exists(dir / "gallery" / "gallery.png"));

@@ -8,10 +8,11 @@
 #include <chrono>
 #include <csignal>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <thread>
 
-#include "cli_runner.hpp"
+#include "support/cli.hpp"
 
 namespace epviz {
 namespace {
@@ -57,24 +58,36 @@ pid_t start_epviz(const std::vector<std::string>& args) {
   return child;
 }
 
+// Whether `condition` holds within `limit`, looked at every 20 ms.
+bool within(std::chrono::seconds limit, const std::function<bool()>& condition) {
+  const auto deadline = std::chrono::steady_clock::now() + limit;
+  while (!condition()) {
+    if (std::chrono::steady_clock::now() >= deadline) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return true;
+}
+
 void expect_signal_cleans_up_video(int sig) {
   test::TempDir dir;
   const auto out = dir / "video";
   std::ofstream(dir / "job.json") << video_job(out, 60.0).dump();
   const pid_t child = start_epviz({"render", (dir / "job.json").string()});
   ASSERT_GT(child, 0);
+  // Mid-way through the frames: ffmpeg has written encoded ones to the temporary.
   const auto temporary = out / ("clip.mp4.tmp-" + std::to_string(child));
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (!fs::exists(temporary) && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  ASSERT_TRUE(fs::exists(temporary)) << "the render never started writing " << temporary;
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // mid-way through the frames
+  const bool writing = within(std::chrono::seconds(60), [&] {
+    std::error_code ec;
+    const auto size = fs::file_size(temporary, ec);
+    return !ec && size > 0;
+  });
+  if (!writing) ::kill(child, SIGKILL);
   ::kill(child, sig);
   int status = 0;
   ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(writing) << "the render never wrote to " << temporary;
   EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == sig) << "status " << status;
-  // ffmpeg was killed by the handler; give the kernel a moment to close its files.
-  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  // The handler removed the temporary before the process ended.
   EXPECT_TRUE(temporaries_in(out).empty()) << temporaries_in(out).front();
   EXPECT_FALSE(fs::exists(out / "clip.mp4")) << "a partial video under the real name";
 }

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <vector>
 
-#include "cli_runner.hpp"
+#include "support/cli.hpp"
 
 namespace epviz {
 namespace {

@@ -10,24 +10,14 @@
 #include <fstream>
 
 #include "io/atomic_file.hpp"
+#include "support/temp_dir.hpp"
 
 namespace epviz::io {
 namespace {
 
 namespace fs = std::filesystem;
 
-class TempRegistryTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("epviz-tempreg-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
-};
+using TempRegistryTest = test::TempDirTest;
 
 // A pid that belonged to a process that has exited and been reaped.
 pid_t dead_pid() {

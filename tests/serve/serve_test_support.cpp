@@ -134,12 +134,9 @@ std::string LogCapture::all() const {
 // ---- TestServer ----
 
 TestServer::TestServer(const std::function<void(ServerOptions&)>& configure, bool always_wants) {
-  static std::atomic<int> count{0};
-  page =
-      std::filesystem::temp_directory_path() /
-      ("epviz_serve_test_" + std::to_string(::getpid()) + "_" + std::to_string(count++) + ".html");
-  page_text =
-      "<!doctype html><title>epviz test page</title><p>page " + page.filename().string() + "</p>\n";
+  page = page_dir / "page.html";
+  page_text = "<!doctype html><title>epviz test page</title><p>page " +
+              page_dir.path().filename().string() + "</p>\n";
   std::ofstream(page, std::ios::binary) << page_text;
 
   ServerOptions options;
@@ -154,11 +151,7 @@ TestServer::TestServer(const std::function<void(ServerOptions&)>& configure, boo
   server->start();
 }
 
-TestServer::~TestServer() {
-  server.reset();
-  std::error_code ignored;
-  std::filesystem::remove(page, ignored);
-}
+TestServer::~TestServer() { server.reset(); }
 
 int slowdown() {
   const char* s = std::getenv("EPVIZ_TEST_SLOWDOWN");

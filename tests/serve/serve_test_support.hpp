@@ -26,6 +26,7 @@
 #include "serve/protocol.hpp"
 #include "serve/server.hpp"
 #include "serve/session.hpp"
+#include "support/temp_dir.hpp"
 
 namespace epviz::serve::testing {
 
@@ -119,6 +120,7 @@ struct TestServer {
 
   std::shared_ptr<FakeProbe> probe = std::make_shared<FakeProbe>();
   std::shared_ptr<LogCapture> log = std::make_shared<LogCapture>();
+  test::TempDir page_dir;
   std::filesystem::path page;
   std::string page_text;
   std::unique_ptr<Server> server;

@@ -1,0 +1,53 @@
+#pragma once
+// Runs the built epviz binary and captures its exit code, stdout and stderr;
+// and what every refused input must look like.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <string>
+
+#include "support/temp_dir.hpp"
+
+namespace epviz::test {
+
+struct CliResult {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+// `args` is appended to the binary path as shell words; stdin is /dev/null.
+// The output is captured through two files in `dir`, removed afterwards.
+inline CliResult run_epviz(const std::string& args, const TempDir& dir) {
+  const auto out = dir / ".stdout", err = dir / ".stderr";
+  const std::string cmd = std::string(EPVIZ_BINARY) + " " + args + " >" + out.string() + " 2>" +
+                          err.string() + " </dev/null";
+  const int status = std::system(cmd.c_str());
+  CliResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(out);
+  r.err = slurp(err);
+  std::filesystem::remove(out);
+  std::filesystem::remove(err);
+  return r;
+}
+
+inline std::size_t line_count(const std::string& text) {
+  return std::size_t(std::count(text.begin(), text.end(), '\n'));
+}
+
+// Bad input is refused before any work: exit code 2, nothing on stdout, and
+// one short line on stderr, "epviz: error: ...", that contains `must_name`
+// (the option, or the file and key, and what is allowed).
+inline void expect_bad_input(const CliResult& r, const std::string& must_name) {
+  const std::string err = r.err.substr(0, 500);
+  EXPECT_EQ(r.exit_code, 2) << err;
+  EXPECT_EQ(line_count(r.err), 1u) << err;
+  EXPECT_EQ(r.err.rfind("epviz: error: ", 0), 0u) << err;
+  EXPECT_NE(r.err.find(must_name), std::string::npos) << "not named: " << must_name << "\n" << err;
+  EXPECT_LT(r.err.size(), 600u) << err;
+  EXPECT_TRUE(r.out.empty()) << "work was done before the check:\n" << r.out.substr(0, 500);
+}
+
+}  // namespace epviz::test
