@@ -13,18 +13,15 @@
 #include <thread>
 
 #include "support/cli.hpp"
+#include "support/dead_pid.hpp"
+#include "support/eventually.hpp"
 
 namespace epviz {
 namespace {
 
 namespace fs = std::filesystem;
 
-pid_t dead_pid() {
-  const pid_t child = ::fork();
-  if (child == 0) ::_exit(0);
-  ::waitpid(child, nullptr, 0);
-  return child;
-}
+using test::dead_pid;
 
 std::vector<std::string> temporaries_in(const fs::path& dir) {
   std::vector<std::string> found;
@@ -58,16 +55,6 @@ pid_t start_epviz(const std::vector<std::string>& args) {
   return child;
 }
 
-// Whether `condition` holds within `limit`, looked at every 20 ms.
-bool within(std::chrono::seconds limit, const std::function<bool()>& condition) {
-  const auto deadline = std::chrono::steady_clock::now() + limit;
-  while (!condition()) {
-    if (std::chrono::steady_clock::now() >= deadline) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  return true;
-}
-
 void expect_signal_cleans_up_video(int sig) {
   test::TempDir dir;
   const auto out = dir / "video";
@@ -76,11 +63,13 @@ void expect_signal_cleans_up_video(int sig) {
   ASSERT_GT(child, 0);
   // Mid-way through the frames: ffmpeg has written encoded ones to the temporary.
   const auto temporary = out / ("clip.mp4.tmp-" + std::to_string(child));
-  const bool writing = within(std::chrono::seconds(60), [&] {
-    std::error_code ec;
-    const auto size = fs::file_size(temporary, ec);
-    return !ec && size > 0;
-  });
+  const bool writing = test::eventually(
+      [&] {
+        std::error_code ec;
+        const auto size = fs::file_size(temporary, ec);
+        return !ec && size > 0;
+      },
+      std::chrono::seconds(60));
   if (!writing) ::kill(child, SIGKILL);
   ::kill(child, sig);
   int status = 0;

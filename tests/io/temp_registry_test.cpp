@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "io/atomic_file.hpp"
+#include "support/dead_pid.hpp"
 #include "support/temp_dir.hpp"
 
 namespace epviz::io {
@@ -19,13 +20,7 @@ namespace fs = std::filesystem;
 
 using TempRegistryTest = test::TempDirTest;
 
-// A pid that belonged to a process that has exited and been reaped.
-pid_t dead_pid() {
-  const pid_t child = ::fork();
-  if (child == 0) ::_exit(0);
-  ::waitpid(child, nullptr, 0);
-  return child;
-}
+using test::dead_pid;
 
 TEST(TemporaryName, ParsesOnlyTheTemporaryShape) {
   pid_t pid = 0;

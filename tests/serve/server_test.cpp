@@ -19,10 +19,6 @@ namespace {
 namespace http = boost::beast::http;
 using nlohmann::json;
 
-json resize(int width, int height) {
-  return {{"type", "resize"}, {"width", width}, {"height", height}};
-}
-json ack(std::int64_t frame) { return {{"type", "ack"}, {"frame", frame}}; }
 json move(int seq) { return {{"type", "move"}, {"x", 3}, {"y", 4}, {"seq", seq}}; }
 json key(const std::string& name) { return {{"type", "key"}, {"key", name}, {"down", true}}; }
 
@@ -41,6 +37,14 @@ void expect_colour(const ServerMessage& frame, glm::u8vec4 want) {
   for (int c = 0; c < 3; ++c)
     EXPECT_LE(std::abs(int(got[c]) - int(want[c])), 6)
         << "channel " << c << " of frame " << frame.header.dump();
+}
+
+// A page at 32 x 32 that has its first frame and acked it: the fake session
+// then wants no frame until the next input.
+void settle(TestClient& client) {
+  client.send(resize(32, 32));
+  EXPECT_EQ(frame_from(client).header["frame"], 1);
+  client.send(ack(1));
 }
 
 // Asserts that the bystander still gets frames for its input: ack what it
@@ -201,9 +205,7 @@ TEST(ServeServer, AckOfAFrameNeverSentCloses1008) {
 TEST(ServeServer, NoFramesWhileTheSessionWantsNone) {
   TestServer server;
   TestClient client(server.port());
-  client.send(resize(32, 32));
-  EXPECT_EQ(frame_from(client).header["frame"], 1);
-  client.send(ack(1));
+  settle(client);
   EXPECT_FALSE(client.receive(quiet_period)) << "a frame the session did not want";
   EXPECT_EQ(server.probe->renders, 1);
   // And the next frame is the one the input asked for, with nothing in between.
@@ -216,9 +218,7 @@ TEST(ServeServer, NoFramesWhileTheSessionWantsNone) {
 TEST(ServeServer, DownloadsAndNoticesReachThePage) {
   TestServer server;
   TestClient client(server.port());
-  client.send(resize(32, 32));
-  frame_from(client);
-  client.send(ack(1));
+  settle(client);
   client.send(key("download"));
   client.send(key("notice"));
   bool file = false, notice = false;
@@ -251,9 +251,7 @@ TEST(ServeServer, FloodWhileTheRenderThreadIsBusyLosesNothing) {
   constexpr int events = static_cast<int>(ConnectionLink::inbox_limit) + 30;
   TestServer server;
   TestClient client(server.port());
-  client.send(resize(32, 32));
-  frame_from(client);
-  client.send(ack(1));
+  settle(client);
   client.send(key("block"));
   ASSERT_TRUE(TestServer::eventually([&] { return server.probe->blocked.load(); }));
   for (int seq = 1; seq <= events; ++seq) ASSERT_FALSE(client.send(move(seq))) << "seq " << seq;

@@ -8,6 +8,7 @@
 #include <iterator>
 #include <thread>
 
+#include "support/eventually.hpp"
 #include "support/temp_dir.hpp"
 #include "sweep/atlas.hpp"
 #include "sweep/point_run.hpp"
@@ -97,15 +98,16 @@ TEST(RowsFile, AppendedRowsAreOnDiskWithinAFractionOfASecond) {
     rows.append(R"({"index":0})");
     rows.append(R"({"index":1})");
     // The writer may take the rows in one write or two; wait for both.
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(2);
-    std::string seen = test::slurp(p);
-    while (seen != row0 + row1 && std::chrono::steady_clock::now() < deadline) {
-      EXPECT_TRUE(seen.empty() || seen == row0) << "torn or out of order: " << seen;
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-      seen = test::slurp(p);
-    }
-    EXPECT_EQ(seen, row0 + row1)
-        << "rows still held back after 2 s (the writer writes every 0.2 s)";
+    std::string seen;
+    const bool both = test::eventually(
+        [&] {
+          seen = test::slurp(p);
+          EXPECT_TRUE(seen.empty() || seen == row0 || seen == row0 + row1)
+              << "torn or out of order: " << seen;
+          return seen == row0 + row1;
+        },
+        std::chrono::seconds(2));
+    EXPECT_TRUE(both) << "rows still held back after 2 s (the writer writes every 0.2 s): " << seen;
     rows.append(R"({"index":2})");
   }
   EXPECT_EQ(test::slurp(p), row0 + row1 + "{\"index\":2}\n")
