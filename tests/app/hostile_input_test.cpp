@@ -42,10 +42,8 @@ class RenderRefuses : public ::testing::TestWithParam<HostileJob> {};
 TEST_P(RenderRefuses, WithOneLineAndExitTwoBeforeDrawing) {
   const auto& h = GetParam();
   test::TempDir dir;
-  const auto job = dir.write("job.json", render_job(dir / "frames", h.sim, h.extra));
-  const auto r = test::run_epviz("render --quiet " + job.string(), dir);
-  test::expect_bad_input(r, h.must_name);
-  EXPECT_FALSE(fs::exists(dir / "frames")) << "output written despite the error";
+  test::expect_render_refused(dir, render_job(dir / "frames", h.sim, h.extra), "--quiet",
+                              dir / "frames", h.must_name);
 }
 
 const std::string lagrange = R"({"case": "lagrange"})";
@@ -229,10 +227,8 @@ class RenderOptionRefuses : public ::testing::TestWithParam<HostileOption> {};
 TEST_P(RenderOptionRefuses, WithOneLineAndExitTwo) {
   const auto& h = GetParam();
   test::TempDir dir;
-  const auto job = dir.write("job.json", render_job(dir / "frames"));
-  const auto r = test::run_epviz("render --quiet " + job.string() + " " + h.args, dir);
-  test::expect_bad_input(r, h.must_name);
-  EXPECT_FALSE(fs::exists(dir / "frames")) << "output written despite the error";
+  test::expect_render_refused(dir, render_job(dir / "frames"), "--quiet " + h.args, dir / "frames",
+                              h.must_name);
 }
 
 INSTANTIATE_TEST_SUITE_P(Options, RenderOptionRefuses,

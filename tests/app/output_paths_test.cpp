@@ -94,10 +94,7 @@ TEST(RenderOutputPaths, OutputNamesThatAreNotFileNamesAreRefused) {
     test::TempDir dir;
     auto j = small_job(dir / "frames");
     j["output"]["name"] = name;
-    const auto job = dir.write("job.json", j.dump(2));
-    const auto r = test::run_epviz("render " + job.string(), dir);
-    test::expect_bad_input(r, "output.name");
-    EXPECT_FALSE(fs::exists(dir / "frames")) << "frames rendered despite exit 2";
+    test::expect_render_refused(dir, j.dump(2), "", dir / "frames", "output.name");
   }
 }
 

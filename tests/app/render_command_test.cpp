@@ -37,10 +37,7 @@ TEST_P(RenderRejects, WithOneLineExitTwoAndNoOutput) {
   test::TempDir dir;
   auto j = small_job(dir / "frames");
   bad.edit(j);
-  const auto job = dir.write("job.json", j.dump(2));
-  const auto r = test::run_epviz("render " + job.string() + " " + bad.extra_args, dir);
-  test::expect_bad_input(r, bad.must_name);
-  EXPECT_FALSE(fs::exists(dir / "frames")) << "output written despite the error";
+  test::expect_render_refused(dir, j.dump(2), bad.extra_args, dir / "frames", bad.must_name);
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -117,11 +117,7 @@ TEST(RenderRuns, RefusesAnUnknownKeyInARunWithExitTwo) {
   test::TempDir dir;
   auto j = kovalevskaya_job(dir / "frames", 0.25);
   j["runs"] = nlohmann::json::parse(R"([{"label": "a"}, {"methd": "dop853"}])");
-  const auto job = dir / "job.json";
-  std::ofstream(job) << j.dump();
-  const auto r = test::run_epviz("render " + job.string(), dir);
-  test::expect_bad_input(r, "runs[1].methd");
-  EXPECT_FALSE(fs::exists(dir / "frames"));
+  test::expect_render_refused(dir, j.dump(), "", dir / "frames", "runs[1].methd");
 }
 
 // A gallery's grid video: every job's frames tiled side by side in one MP4.

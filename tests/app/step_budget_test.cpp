@@ -12,14 +12,10 @@ namespace {
 
 TEST(StepBudget, AdaptiveRunEndsAtItsBudget) {
   test::TempDir dir;
-  const auto r = test::run_epviz(
-      "simulate --case lagrange --t-end 1e300 --max-steps 20000 "
-      "--report-json " +
-          (dir / "r.json").string(),
-      dir);
+  const auto [r, report] =
+      test::run_with_report("simulate --case lagrange --t-end 1e300 --max-steps 20000", dir);
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_NE(r.err.find("step budget of 20000 steps exhausted"), std::string::npos) << r.err;
-  const auto report = nlohmann::json::parse(test::slurp(dir / "r.json"));
   EXPECT_EQ(report["failure_kind"], "step_budget");
   EXPECT_LE(report["steps"].get<long>(), 20000);
 }

@@ -170,6 +170,14 @@ export async function waitFor(what, timeoutMs, check, intervalMs = 100) {
   }
 }
 
+// The page's state once it has drawn its first frame.
+export function firstFrame(page) {
+  return waitFor('the first frame', 20000, async () => {
+    const s = await epvizState(page);
+    return s && s.framesShown > 0 ? s : null;
+  });
+}
+
 // Runs body({ page, url, server }) with the server and a browser started,
 // within an overall time limit; exits 0 when body returns, 1 on a failure,
 // and always stops the browser and the server first.

@@ -8,6 +8,8 @@
 #include <cstdlib>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "support/temp_dir.hpp"
 
 namespace epviz::test {
@@ -33,6 +35,19 @@ inline CliResult run_epviz(const std::string& args, const TempDir& dir) {
   return r;
 }
 
+// `args` run with " --report-json <dir>/report.json" added: the result and
+// the report (null when none was written).
+struct ReportedRun {
+  CliResult result;
+  nlohmann::json report;
+};
+inline ReportedRun run_with_report(const std::string& args, const TempDir& dir) {
+  const auto file = dir / "report.json";
+  ReportedRun r{run_epviz(args + " --report-json " + file.string(), dir), nullptr};
+  if (std::filesystem::exists(file)) r.report = nlohmann::json::parse(slurp(file));
+  return r;
+}
+
 inline std::size_t line_count(const std::string& text) {
   return std::size_t(std::count(text.begin(), text.end(), '\n'));
 }
@@ -48,6 +63,16 @@ inline void expect_bad_input(const CliResult& r, const std::string& must_name) {
   EXPECT_NE(r.err.find(must_name), std::string::npos) << "not named: " << must_name << "\n" << err;
   EXPECT_LT(r.err.size(), 600u) << err;
   EXPECT_TRUE(r.out.empty()) << "work was done before the check:\n" << r.out.substr(0, 500);
+}
+
+// `epviz render <dir>/job.json <args>`, the job file holding `job` and
+// drawing into `out`: refused as bad input naming `must_name`, with nothing drawn.
+inline void expect_render_refused(const TempDir& dir, const std::string& job,
+                                  const std::string& args, const std::filesystem::path& out,
+                                  const std::string& must_name) {
+  const auto file = dir.write("job.json", job);
+  expect_bad_input(run_epviz("render " + file.string() + " " + args, dir), must_name);
+  EXPECT_FALSE(std::filesystem::exists(out)) << "output written despite the error";
 }
 
 }  // namespace epviz::test
