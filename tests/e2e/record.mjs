@@ -3,7 +3,7 @@
 // the I3 slider and presses Play. tests/live/replay_test.cpp replays FILE.
 //
 //   node tests/e2e/record.mjs path/to/epviz tests/live/recordings/pick_case_drag_play.jsonl render_jobs/hess.json
-import { run, log, fail, sleep, waitFor, frameRectToCss, epvizState, firstFrame } from './harness.mjs';
+import { run, log, fail, sleep, waitFor, frameRectToCss, epvizState } from './harness.mjs';
 
 const [binary, recording, job] = process.argv.slice(2);
 if (!recording || !job) {
@@ -32,7 +32,6 @@ await run({
   serverArgs: ['--record', recording, job],
   timeoutMs: 60000,
   async body({ page }) {
-    await firstFrame(page);
     await click(page, 'case');
     await click(page, 'case:kovalevskaya');
     const i3 = await control(page, 'I3');

@@ -6,7 +6,7 @@
 // Exit 0: passed; 1: failed (the reason and the server's last lines are
 // printed); 77: skipped (no Chromium or no node_modules: see the SKIP line).
 import {
-  run, log, fail, sleep, canvasHash, frameRectToCss, epvizState, firstFrame,
+  run, log, fail, sleep, canvasHash, frameRectToCss, epvizState,
 } from './harness.mjs';
 
 const [binary, ...serverArgs] = process.argv.slice(2);
@@ -60,10 +60,8 @@ await run({
   name: 'serve_e2e.mjs',
   binary,
   serverArgs,
-  timeoutMs: 90000,
-  async body({ page }) {
+  async body({ page, first }) {
     // 1. The page connects and draws a frame of the window's size.
-    const first = await firstFrame(page);
     const h = first.header;
     log(`ok: first frame drawn (${h.width}x${h.height} ${h.mime}, frame ${h.frame})`);
     if (h.width !== 1280 || h.height !== 720) fail(`the frame is ${h.width}x${h.height}, expected 1280x720 (the view's size)`);

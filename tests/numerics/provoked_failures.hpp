@@ -47,6 +47,25 @@ Provoked<Stepper> run_until_failure(Stepper stepper, double x0, double t_end) {
   return p;
 }
 
+// A failure provoked by fixed steps, the stepper and the state it left.
+template <class Stepper>
+struct Stepped {
+  Stepper stepper;
+  Vec<1> x;
+  Failure failure;
+};
+
+// Steps x = x0 from t = 0 by `h`, `steps` times, where it must fail.
+template <class Stepper>
+Stepped<Stepper> step_until_failure(Stepper stepper, double x0, double h, int steps = 1) {
+  Stepped<Stepper> p{std::move(stepper), Vec<1>(x0), {}};
+  double t = 0.0;
+  p.failure = failure_thrown_by([&] {
+    for (int i = 0; i < steps; ++i, t += h) p.stepper.step(p.x, t, h);
+  });
+  return p;
+}
+
 template <template <class> class Method = Dop853>
 Provoked<Method<BlowUp>> provoke_step_underflow() {
   AdaptiveOptions o;
