@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/cli.hpp"
+#include "support/render_job.hpp"
 
 namespace epviz {
 namespace {
@@ -50,14 +51,8 @@ TEST(SimulateOutputPaths, UnwritableDirectoryIsRefused) {
   test::expect_bad_input(r, "--report-json");
 }
 
-nlohmann::json small_job(const fs::path& out) {
-  return {{"simulation", {{"case", "lagrange"}, {"t_end", 1.0}}},
-          {"width", 64},
-          {"height", 48},
-          {"fps", 2},
-          {"duration", 1},
-          {"output", {{"dir", out.string()}, {"format", "png"}, {"name", "frame"}}}};
-}
+// Two frames.
+nlohmann::json small_job(const fs::path& out) { return test::small_render_job(out, 2, 1.0); }
 
 TEST(RenderOutputPaths, OutThatIsAFileIsRefused) {
   test::TempDir dir;

@@ -6,89 +6,96 @@
 #include <nlohmann/json.hpp>
 
 #include "support/cli.hpp"
+#include "support/render_job.hpp"
 
 namespace epviz {
 namespace {
 
 namespace fs = std::filesystem;
 
-// A small, fast job: 160x120, 6 frames.
-nlohmann::json small_job(const fs::path& out) {
-  return {{"simulation", {{"case", "lagrange"}, {"t_end", 2.0}}},
-          {"width", 160},
-          {"height", 120},
-          {"fps", 3},
-          {"duration", 2},
-          {"output", {{"dir", out.string()}, {"format", "png"}}}};
+// Six frames.
+nlohmann::json small_job(const fs::path& out) { return test::small_render_job(out); }
+
+// The small job drawing into {dir}/frames, changed by `edit`, and run with `args`.
+test::RefusedCase bad_job(const std::string& name, const std::function<void(nlohmann::json&)>& edit,
+                          const std::string& args, const std::string& must_name) {
+  auto j = small_job("{dir}/frames");
+  edit(j);
+  return {name, args, must_name, j.dump(2)};
 }
 
-struct BadJob {
-  std::string name;
-  std::function<void(nlohmann::json&)> edit;
-  std::string extra_args;
-  std::string must_name;
-};
-void PrintTo(const BadJob& b, std::ostream* os) { *os << b.name; }
-
-class RenderRejects : public ::testing::TestWithParam<BadJob> {};
+class RenderRejects : public ::testing::TestWithParam<test::RefusedCase> {};
 
 TEST_P(RenderRejects, WithOneLineExitTwoAndNoOutput) {
-  const auto& bad = GetParam();
+  const auto& c = GetParam();
   test::TempDir dir;
-  auto j = small_job(dir / "frames");
-  bad.edit(j);
-  test::expect_render_refused(dir, j.dump(2), bad.extra_args, dir / "frames", bad.must_name);
+  test::expect_render_refused(dir, dir.expand(c.job), c.args, dir / "frames", c.must_name);
 }
 
 INSTANTIATE_TEST_SUITE_P(
     JobErrors, RenderRejects,
     ::testing::Values(
-        BadJob{"unknown_key", [](auto& j) { j["colour"] = "red"; }, "",
-               "job.json: key 'colour': unknown key"},
-        BadJob{"unknown_nested_key",
-               [](auto& j) {
-                 j["layers"] = {{"bodies", true}};
-               },
-               "", "key 'layers.bodies': unknown key"},
-        BadJob{"bad_view", [](auto& j) { j["view"] = "top"; }, "",
-               "key 'view': 'top' is not one of: body, space"},
-        BadJob{"bad_colour",
-               [](auto& j) {
-                 j["colours"] = {{"body", "orange"}};
-               },
-               "", "key 'colours.body': expected a colour"},
-        BadJob{"bad_theme", [](auto& j) { j["theme"] = "sepia"; }, "",
-               "key 'theme': 'sepia' is not one of: dark, light"},
-        BadJob{"missing_simulation", [](auto& j) { j.erase("simulation"); }, "",
-               "key 'simulation': missing"},
-        BadJob{"bad_case", [](auto& j) { j["simulation"]["case"] = "top"; }, "",
-               "key 'simulation.case': unknown case"},
-        BadJob{"bad_tol", [](auto& j) { j["simulation"]["tol"] = "fine"; }, "",
-               "key 'simulation.tol': expected a number"},
-        BadJob{"space_needs_spinor",
-               [](auto& j) {
-                 j["view"] = "space";
-                 j["simulation"]["formulation"] = "direct";
-               },
-               "", "needs its attitude"},
-        BadJob{"odd_video_size",
-               [](auto& j) {
-                 j["output"]["format"] = "mp4";
-                 j["width"] = 161;
-               },
-               "", "even width and height"},
-        BadJob{"bad_format_option", [](auto&) {}, "--format avi", "--format: unknown format 'avi'"},
-        BadJob{"frames_out_of_range", [](auto&) {}, "--frames 3:99", "--frames"},
-        BadJob{"unknown_gl", [](auto&) {}, "--gl vulkan", "unknown GL backend 'vulkan'"},
-        BadJob{"resume_video", [](auto& j) { j["output"]["format"] = "mp4"; }, "--resume",
-               "--resume: applies to PNG"},
-        BadJob{"all_layers_off",
-               [](auto& j) {
-                 j["layers"] = {
-                     {"body", false}, {"sphere", false}, {"riccati", false}, {"overlay", false}};
-               },
-               "", "nothing to draw"}),
-    [](const auto& param_info) { return param_info.param.name; });
+        bad_job(
+            "unknown_key", [](auto& j) { j["colour"] = "red"; }, "",
+            "job.json: key 'colour': unknown key"),
+        bad_job(
+            "unknown_nested_key",
+            [](auto& j) {
+              j["layers"] = {{"bodies", true}};
+            },
+            "", "key 'layers.bodies': unknown key"),
+        bad_job(
+            "bad_view", [](auto& j) { j["view"] = "top"; }, "",
+            "key 'view': 'top' is not one of: body, space"),
+        bad_job(
+            "bad_colour",
+            [](auto& j) {
+              j["colours"] = {{"body", "orange"}};
+            },
+            "", "key 'colours.body': expected a colour"),
+        bad_job(
+            "bad_theme", [](auto& j) { j["theme"] = "sepia"; }, "",
+            "key 'theme': 'sepia' is not one of: dark, light"),
+        bad_job(
+            "missing_simulation", [](auto& j) { j.erase("simulation"); }, "",
+            "key 'simulation': missing"),
+        bad_job(
+            "bad_case", [](auto& j) { j["simulation"]["case"] = "top"; }, "",
+            "key 'simulation.case': unknown case"),
+        bad_job(
+            "bad_tol", [](auto& j) { j["simulation"]["tol"] = "fine"; }, "",
+            "key 'simulation.tol': expected a number"),
+        bad_job(
+            "space_needs_spinor",
+            [](auto& j) {
+              j["view"] = "space";
+              j["simulation"]["formulation"] = "direct";
+            },
+            "", "needs its attitude"),
+        bad_job(
+            "odd_video_size",
+            [](auto& j) {
+              j["output"]["format"] = "mp4";
+              j["width"] = 161;
+            },
+            "", "even width and height"),
+        bad_job(
+            "bad_format_option", [](auto&) {}, "--format avi", "--format: unknown format 'avi'"),
+        bad_job(
+            "frames_out_of_range", [](auto&) {}, "--frames 3:99", "--frames"),
+        bad_job(
+            "unknown_gl", [](auto&) {}, "--gl vulkan", "unknown GL backend 'vulkan'"),
+        bad_job(
+            "resume_video", [](auto& j) { j["output"]["format"] = "mp4"; }, "--resume",
+            "--resume: applies to PNG"),
+        bad_job(
+            "all_layers_off",
+            [](auto& j) {
+              j["layers"] = {
+                  {"body", false}, {"sphere", false}, {"riccati", false}, {"overlay", false}};
+            },
+            "", "nothing to draw")),
+    test::case_name);
 
 TEST(Render, MissingJobFileIsNamed) {
   test::TempDir dir;

@@ -15,6 +15,7 @@
 #include "support/cli.hpp"
 #include "support/dead_pid.hpp"
 #include "support/eventually.hpp"
+#include "support/render_job.hpp"
 
 namespace epviz {
 namespace {
@@ -33,12 +34,10 @@ std::vector<std::string> temporaries_in(const fs::path& dir) {
 }
 
 nlohmann::json video_job(const fs::path& out, double seconds) {
-  return {{"simulation", {{"case", "lagrange"}, {"t_end", seconds}}},
-          {"width", 160},
-          {"height", 120},
-          {"fps", 30},
-          {"duration", seconds},
-          {"output", {{"dir", out.string()}, {"format", "mp4"}, {"name", "clip"}}}};
+  auto j = test::small_render_job(out, 30, seconds);
+  j["output"]["format"] = "mp4";
+  j["output"]["name"] = "clip";
+  return j;
 }
 
 pid_t start_epviz(const std::vector<std::string>& args) {
@@ -92,9 +91,7 @@ TEST(Signals, RenderRemovesStaleTemporariesOfDeadProcesses) {
   const auto live = out / ("y.mp4.tmp-" + std::to_string(::getpid()));  // this test is alive
   std::ofstream(stale) << "left by a killed run";
   std::ofstream(live) << "being written";
-  nlohmann::json j = video_job(out, 1.0);
-  j["output"]["format"] = "png";
-  j["fps"] = 2;
+  const auto j = test::small_render_job(out, 2, 1.0);
   std::ofstream(dir / "job.json") << j.dump();
   const auto r = test::run_epviz("render " + (dir / "job.json").string(), dir);
   EXPECT_EQ(r.exit_code, 0) << r.err;

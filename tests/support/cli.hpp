@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <ostream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -64,6 +65,21 @@ inline void expect_bad_input(const CliResult& r, const std::string& must_name) {
   EXPECT_LT(r.err.size(), 600u) << err;
   EXPECT_TRUE(r.out.empty()) << "work was done before the check:\n" << r.out.substr(0, 500);
 }
+
+// A case of a table of refused command lines: its name (the test's), the
+// arguments ("{dir}" stands for the test's directory, see TempDir::expand),
+// what the message must name, and the text of {dir}/job.json where the case
+// needs one.
+struct RefusedCase {
+  std::string name;
+  std::string args;
+  std::string must_name;
+  std::string job = "";
+};
+inline void PrintTo(const RefusedCase& c, std::ostream* os) { *os << c.name; }
+
+// INSTANTIATE_TEST_SUITE_P's test names for cases that carry their own.
+inline constexpr auto case_name = [](const auto& param_info) { return param_info.param.name; };
 
 // `epviz render <dir>/job.json <args>`, the job file holding `job` and
 // drawing into `out`: refused as bad input naming `must_name`, with nothing drawn.
