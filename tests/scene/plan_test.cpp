@@ -73,11 +73,14 @@ TEST(Plan, LaysOutThePictureAsThePainterWill) {
     SCOPED_TRACE("variant " + std::to_string(i));
     const auto plan = scene::plan_scene(run, variants[i], scene::Horizon::none);
     EXPECT_EQ(describe(plan.layout), describe(painted(variants[i])));
-    if (i > 0) EXPECT_NE(describe(painted(variants[i])), describe(painted(base)));
+    if (i > 0) {
+      EXPECT_NE(describe(painted(variants[i])), describe(painted(base)));
+    }
   }
   // A comparison scene keeps room for its separation chart under the plot.
-  const auto plan =
-      scene::plan_scene(std::vector<scene::RunRequest>{{run}, {run}}, base, scene::Horizon::none);
+  scene::RunRequest request;
+  request.run = run;
+  const auto plan = scene::plan_scene({request, request}, base, scene::Horizon::none);
   EXPECT_TRUE(plan.layout.chart_area);
   EXPECT_EQ(describe(plan.layout),
             describe(painted(base, scene::comparison_chart_height(base.height))));
