@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
-#include "cli_runner.hpp"
+#include "support/cli.hpp"
 
 namespace epviz {
 namespace {
@@ -16,17 +16,12 @@ using test::TempDir;
 
 TEST(BenchCommand, BadOptionsAreUsageErrors) {
   TempDir dir;
-  auto r = run_epviz("bench --quick --cases euler,nope", dir);
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("--cases"), std::string::npos) << r.err;
-  r = run_epviz("bench --quick --json " + (dir / "missing/b.json").string(), dir);
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("--json"), std::string::npos) << r.err;
-  std::ofstream(dir / "file") << "x";
-  r = run_epviz("bench --quick --out " + (dir / "file").string(), dir);
-  EXPECT_EQ(r.exit_code, 2);
-  r = run_epviz("bench --bogus", dir);
-  EXPECT_EQ(r.exit_code, 2);
+  expect_bad_input(run_epviz("bench --quick --cases euler,nope", dir), "--cases");
+  expect_bad_input(run_epviz("bench --quick --json " + (dir / "missing/b.json").string(), dir),
+                   "--json");
+  dir.write("file", "x");
+  expect_bad_input(run_epviz("bench --quick --out " + (dir / "file").string(), dir), "--out");
+  expect_bad_input(run_epviz("bench --bogus", dir), "--bogus");
   EXPECT_EQ(dir.file_count(), 1u);  // only "file": nothing written
 }
 
@@ -47,22 +42,18 @@ TEST(BenchCommand, UnknownGlBackendIsRefusedBeforeAnyStudy) {
 TEST(BenchCommand, JobMistakesAreUsageErrors) {
   TempDir dir;
   auto r = run_epviz("bench --quick --cases custom", dir);
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("--cases"), std::string::npos) << r.err;
+  expect_bad_input(r, "--cases");
   EXPECT_NE(r.err.find("--job"), std::string::npos) << r.err;
-  r = run_epviz("bench --quick --job " + (dir / "missing.json").string(), dir);
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("--job"), std::string::npos) << r.err;
+  expect_bad_input(run_epviz("bench --quick --job " + (dir / "missing.json").string(), dir),
+                   "--job");
   std::ofstream(dir / "bad.json")
       << R"({"simulation": {"inertia": [1, 2, -3], "omega": [0, 1, 0], "gamma": [0, 0, 1]}})";
-  r = run_epviz("bench --quick --job " + (dir / "bad.json").string(), dir);
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("inertia"), std::string::npos) << r.err;
+  expect_bad_input(run_epviz("bench --quick --job " + (dir / "bad.json").string(), dir),
+                   "bad.json: key 'simulation.inertia'");
   std::ofstream(dir / "good.json") << R"({"simulation": {"case": "euler"}})";
   std::ofstream(dir / "gallery.json") << R"({"jobs": ["good.json"]})";
-  r = run_epviz("bench --quick --job " + (dir / "gallery.json").string(), dir);
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("single render job"), std::string::npos) << r.err;
+  expect_bad_input(run_epviz("bench --quick --job " + (dir / "gallery.json").string(), dir),
+                   "single render job");
 }
 
 TEST(BenchCommand, JobBodyGetsWorkPrecisionRows) {

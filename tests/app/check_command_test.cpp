@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <regex>
 
-#include "cli_runner.hpp"
+#include "support/cli.hpp"
 #include "io/png_reader.hpp"
 
 namespace epviz {

@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "cli_runner.hpp"
+#include "support/cli.hpp"
 
 namespace epviz {
 namespace {

@@ -23,17 +23,6 @@ namespace {
 using numerics::Failure;
 using numerics::FailureKind;
 
-template <class F>
-Failure failure_of(F&& f) {
-  try {
-    f();
-  } catch (const numerics::IntegrationError& e) {
-    return e.failure();
-  }
-  ADD_FAILURE() << "no failure";
-  return {};
-}
-
 sim::RunSpec fast_top(sim::Method m, double step, double t_end, int samples) {
   auto spec = sim::preset_run(physics::Case::lagrange, m, sim::Formulation::direct, t_end, samples);
   const double tilt = 5.0 * std::numbers::pi / 180.0;

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <string>
 
-#include "cli_runner.hpp"
+#include "support/cli.hpp"
 
 namespace epviz {
 namespace {

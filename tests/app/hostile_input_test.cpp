@@ -10,12 +10,13 @@
 #include <chrono>
 #include <fstream>
 
-#include "cli_runner.hpp"
+#include "support/cli.hpp"
 
 namespace epviz {
 namespace {
 
 namespace fs = std::filesystem;
+using Refused = test::RefusedCase;
 
 // A small render job with `sim` as its simulation object and `extra` keys
 // after it (text, so that it can hold what a JSON library would not write).
@@ -25,42 +26,29 @@ std::string render_job(const fs::path& out, const std::string& sim = R"({"case":
          R"("duration": 1, "output": {"dir": ")" + out.string() + "\"}" + extra + "}";
 }
 
-fs::path write(const test::TempDir& dir, const std::string& name, const std::string& text) {
-  std::ofstream(dir / name, std::ios::binary) << text;
-  return dir / name;
-}
-
 std::string nested_arrays(int depth) {
   return std::string(std::size_t(depth), '[') + std::string(std::size_t(depth), ']');
 }
 
-// Exit 2, one line starting "epviz: error: " that contains `must_name`, and
-// not a long one.
-void expect_one_line_error(const test::CliResult& r, const std::string& must_name) {
-  EXPECT_EQ(r.exit_code, 2) << r.err.substr(0, 500);
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err.substr(0, 500);
-  EXPECT_EQ(r.err.rfind("epviz: error: ", 0), 0u) << r.err.substr(0, 500);
-  EXPECT_NE(r.err.find(must_name), std::string::npos) << r.err.substr(0, 500);
-  EXPECT_LT(r.err.size(), 600u) << r.err.substr(0, 500);
+// A render job drawing into {dir}/frames with `sim` as its "simulation" object
+// and `extra` keys (each starting with ", ") after it.
+Refused hostile_job(const std::string& name, const std::string& sim, const std::string& extra,
+                    const std::string& must_name) {
+  return {name, "--quiet", must_name, render_job("{dir}/frames", sim, extra)};
 }
 
-struct HostileJob {
-  std::string name;
-  std::string sim;    // the "simulation" object
-  std::string extra;  // more keys, each starting with ", "
-  std::string must_name;
-};
-void PrintTo(const HostileJob& h, std::ostream* os) { *os << h.name; }
+// A good job with hostile options.
+Refused hostile_option(const std::string& name, const std::string& args,
+                       const std::string& must_name) {
+  return {name, "--quiet " + args, must_name, render_job("{dir}/frames")};
+}
 
-class RenderRefuses : public ::testing::TestWithParam<HostileJob> {};
+class RenderRefuses : public ::testing::TestWithParam<Refused> {};
 
 TEST_P(RenderRefuses, WithOneLineAndExitTwoBeforeDrawing) {
-  const auto& h = GetParam();
+  const auto& c = GetParam();
   test::TempDir dir;
-  const auto job = write(dir, "job.json", render_job(dir / "frames", h.sim, h.extra));
-  const auto r = test::run_epviz("render --quiet " + job.string(), dir);
-  expect_one_line_error(r, h.must_name);
-  EXPECT_FALSE(fs::exists(dir / "frames")) << "output written despite the error";
+  test::expect_render_refused(dir, dir.expand(c.job), c.args, dir / "frames", c.must_name);
 }
 
 const std::string lagrange = R"({"case": "lagrange"})";
@@ -69,76 +57,77 @@ INSTANTIATE_TEST_SUITE_P(
     Jobs, RenderRefuses,
     ::testing::Values(
         // A value nested 100,000 deep, where a string or a number belongs.
-        HostileJob{"deep_title", lagrange, R"(, "title": )" + nested_arrays(100'000),
-                   "job.json: key 'title"},
-        HostileJob{"deep_azimuth", lagrange,
-                   R"(, "camera": {"azimuth": )" + nested_arrays(100'000) + "}",
-                   "job.json: key 'camera.azimuth"},
-        HostileJob{"deep_simulation_value",
-                   R"({"case": "lagrange", "omega": )" + nested_arrays(100'000) + "}", "",
-                   "job.json: key 'simulation.omega"},
+        hostile_job("deep_title", lagrange, R"(, "title": )" + nested_arrays(100'000),
+                    "job.json: key 'title"),
+        hostile_job("deep_azimuth", lagrange,
+                    R"(, "camera": {"azimuth": )" + nested_arrays(100'000) + "}",
+                    "job.json: key 'camera.azimuth"),
+        hostile_job("deep_simulation_value",
+                    R"({"case": "lagrange", "omega": )" + nested_arrays(100'000) + "}", "",
+                    "job.json: key 'simulation.omega"),
         // A 10 MB string where a number belongs: quoted by its start only.
-        HostileJob{"huge_string", lagrange,
-                   R"(, "camera": {"azimuth": ")" + std::string(10'000'000, 'x') + "\"}",
-                   "job.json: key 'camera.azimuth': expected a number, got a string \"xxx"},
+        hostile_job("huge_string", lagrange,
+                    R"(, "camera": {"azimuth": ")" + std::string(10'000'000, 'x') + "\"}",
+                    "job.json: key 'camera.azimuth': expected a number, got a string \"xxx"),
         // Newlines in keys and values are escaped, not printed.
-        HostileJob{"newline_in_key", lagrange, ", \"vi\\new\": \"body\"",
-                   "job.json: key 'vi\\new': unknown key"},
-        HostileJob{"newline_in_choice", lagrange, R"(, "view": "top\nbottom")",
-                   "key 'view': 'top\\nbottom' is not one of: body, space"},
-        HostileJob{"newline_in_colour", lagrange, R"(, "colours": {"body": "#12\n456"})",
-                   "key 'colours.body': expected a colour \"#rrggbb\" or \"#rrggbbaa\", got "
-                   "\"#12\\n456\""},
-        HostileJob{"newline_in_case", R"({"case": "lag\r\nrange"})", "",
-                   "key 'simulation.case': unknown case 'lag\\r\\nrange'"},
+        hostile_job("newline_in_key", lagrange, ", \"vi\\new\": \"body\"",
+                    "job.json: key 'vi\\new': unknown key"),
+        hostile_job("newline_in_choice", lagrange, R"(, "view": "top\nbottom")",
+                    "key 'view': 'top\\nbottom' is not one of: body, space"),
+        hostile_job("newline_in_colour", lagrange, R"(, "colours": {"body": "#12\n456"})",
+                    "key 'colours.body': expected a colour \"#rrggbb\" or \"#rrggbbaa\", got "
+                    "\"#12\\n456\""),
+        hostile_job("newline_in_case", R"({"case": "lag\r\nrange"})", "",
+                    "key 'simulation.case': unknown case 'lag\\r\\nrange'"),
         // Numbers out of range of a double, with the key.
-        HostileJob{"overflowing_t_end", R"({"case": "lagrange", "t_end": 1e400})", "",
-                   "job.json: key 'simulation.t_end': the number 1e400 is out of range"},
-        HostileJob{"overflowing_negative", lagrange, R"(, "camera": {"azimuth": -1e999})",
-                   "job.json: key 'camera.azimuth': the number -1e999 is out of range"},
+        hostile_job("overflowing_t_end", R"({"case": "lagrange", "t_end": 1e400})", "",
+                    "job.json: key 'simulation.t_end': the number 1e400 is out of range"),
+        hostile_job("overflowing_negative", lagrange, R"(, "camera": {"azimuth": -1e999})",
+                    "job.json: key 'camera.azimuth': the number -1e999 is out of range"),
         // Integers past 64 bits are quoted as written, not wrapped.
-        HostileJob{"uint64_samples", R"({"case": "lagrange", "samples": 18446744073709551615})", "",
-                   "key 'simulation.samples': expected an integer from 1 to 100000000, got the "
-                   "integer 18446744073709551615"},
-        HostileJob{"duplicate_key", R"({"case": "lagrange", "case": "euler"})", "",
-                   "job.json: key 'simulation.case': given twice"},
-        HostileJob{"duplicate_top_key", lagrange, R"(, "width": 320)",
-                   "job.json: key 'width': given twice"},
+        hostile_job("uint64_samples", R"({"case": "lagrange", "samples": 18446744073709551615})",
+                    "",
+                    "key 'simulation.samples': expected an integer from 1 to 100000000, got the "
+                    "integer 18446744073709551615"),
+        hostile_job("duplicate_key", R"({"case": "lagrange", "case": "euler"})", "",
+                    "job.json: key 'simulation.case': given twice"),
+        hostile_job("duplicate_top_key", lagrange, R"(, "width": 320)",
+                    "job.json: key 'width': given twice"),
         // Values the job format accepted but nothing could draw.
-        HostileJob{"huge_moment", R"({"inertia": [1, 1, 1e308], "allow_nonphysical": true})", "",
-                   "job.json: key 'simulation.inertia': expected three numbers from 1e-6 to 1e6"},
-        HostileJob{"tiny_moment", R"({"inertia": [1e-300, 1e-300, 1e-300]})", "",
-                   "job.json: key 'simulation.inertia': expected three numbers from 1e-6 to 1e6"},
-        HostileJob{"huge_com", R"({"case": "generic", "com": [1e300, 0, 0]})", "",
-                   "job.json: key 'simulation.com': expected three numbers from -1e6 to 1e6"},
-        HostileJob{"tiny_plane_extent", lagrange, R"(, "plane": {"extent": 5e-324})",
-                   "job.json: key 'plane.extent': expected a number from 0.01 to 1000, got the "
-                   "number 5e-324"},
-        HostileJob{"huge_plane_extent", lagrange, R"(, "plane": {"extent": 1e300})",
-                   "job.json: key 'plane.extent'"},
-        HostileJob{"far_camera", lagrange, R"(, "camera": {"distance": 1e300})",
-                   "job.json: key 'camera.distance': expected at most 100 sphere radii"},
-        HostileJob{"huge_weight", R"({"case": "generic", "weight": 1e300})", "",
-                   "job.json: key 'simulation.weight': expected a number from -1e6 to 1e6"},
-        HostileJob{"huge_omega", R"({"case": "generic", "omega": [1e300, 0, 0]})", "",
-                   "job.json: key 'simulation.omega'"}),
-    [](const auto& param_info) { return param_info.param.name; });
+        hostile_job("huge_moment", R"({"inertia": [1, 1, 1e308], "allow_nonphysical": true})", "",
+                    "job.json: key 'simulation.inertia': expected three numbers from 1e-6 to 1e6"),
+        hostile_job("tiny_moment", R"({"inertia": [1e-300, 1e-300, 1e-300]})", "",
+                    "job.json: key 'simulation.inertia': expected three numbers from 1e-6 to 1e6"),
+        hostile_job("huge_com", R"({"case": "generic", "com": [1e300, 0, 0]})", "",
+                    "job.json: key 'simulation.com': expected three numbers from -1e6 to 1e6"),
+        hostile_job("tiny_plane_extent", lagrange, R"(, "plane": {"extent": 5e-324})",
+                    "job.json: key 'plane.extent': expected a number from 0.01 to 1000, got the "
+                    "number 5e-324"),
+        hostile_job("huge_plane_extent", lagrange, R"(, "plane": {"extent": 1e300})",
+                    "job.json: key 'plane.extent'"),
+        hostile_job("far_camera", lagrange, R"(, "camera": {"distance": 1e300})",
+                    "job.json: key 'camera.distance': expected at most 100 sphere radii"),
+        hostile_job("huge_weight", R"({"case": "generic", "weight": 1e300})", "",
+                    "job.json: key 'simulation.weight': expected a number from -1e6 to 1e6"),
+        hostile_job("huge_omega", R"({"case": "generic", "omega": [1e300, 0, 0]})", "",
+                    "job.json: key 'simulation.omega'")),
+    test::case_name);
 
 TEST(HostileJobFile, ADirectoryIsNotAJob) {
   test::TempDir dir;
   fs::create_directory(dir / "jobs");
-  expect_one_line_error(test::run_epviz("render " + (dir / "jobs").string(), dir),
-                        "jobs: is a directory, not a job file");
-  expect_one_line_error(test::run_epviz("simulate --job " + (dir / "jobs").string(), dir),
-                        "jobs: is a directory, not a job file");
+  test::expect_bad_input(test::run_epviz("render " + (dir / "jobs").string(), dir),
+                         "jobs: is a directory, not a job file");
+  test::expect_bad_input(test::run_epviz("simulate --job " + (dir / "jobs").string(), dir),
+                         "jobs: is a directory, not a job file");
 }
 
 TEST(HostileJobFile, DevZeroIsReadOnlyUpToTheLimit) {
   test::TempDir dir;
   const auto start = std::chrono::steady_clock::now();
-  expect_one_line_error(test::run_epviz("simulate --job /dev/zero", dir),
-                        "/dev/zero: larger than 16 MiB, the limit for a job file");
-  expect_one_line_error(test::run_epviz("render /dev/zero", dir), "/dev/zero: larger than 16 MiB");
+  test::expect_bad_input(test::run_epviz("simulate --job /dev/zero", dir),
+                         "/dev/zero: larger than 16 MiB, the limit for a job file");
+  test::expect_bad_input(test::run_epviz("render /dev/zero", dir), "/dev/zero: larger than 16 MiB");
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(30));
 }
 
@@ -152,30 +141,30 @@ TEST(HostileJobFile, AnEndlessPipeIsReadOnlyUpToTheLimit) {
   // Should epviz never have opened the pipe, opening it here lets the writer end.
   const int fd = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
   if (fd >= 0) ::close(fd);
-  expect_one_line_error(r, "job.fifo: larger than 16 MiB");
+  test::expect_bad_input(r, "job.fifo: larger than 16 MiB");
 }
 
 TEST(HostileJobFile, AFileNameWithANewlineStaysOnOneLine) {
   test::TempDir dir;
-  const auto job = write(dir, "bad\nname.json", "{\"case\": 1}");
-  expect_one_line_error(test::run_epviz("simulate --job '" + job.string() + "'", dir),
-                        "bad\\nname.json: key 'case': expected a string");
+  const auto job = dir.write("bad\nname.json", "{\"case\": 1}");
+  test::expect_bad_input(test::run_epviz("simulate --job '" + job.string() + "'", dir),
+                         "bad\\nname.json: key 'case': expected a string");
 }
 
 TEST(HostileJobFile, SimulateJobsNameKeysToo) {
   test::TempDir dir;
-  const auto deep = write(dir, "deep.json", R"({"t_end": )" + nested_arrays(100'000) + "}");
-  expect_one_line_error(test::run_epviz("simulate --job " + deep.string(), dir),
-                        "deep.json: key 't_end");
-  const auto big = write(dir, "big.json", R"({"t_end": 1e400})");
-  expect_one_line_error(test::run_epviz("simulate --job " + big.string(), dir),
-                        "big.json: key 't_end': the number 1e400 is out of range");
-  const auto twice = write(dir, "twice.json", R"({"t_end": 1, "t_end": 2})");
-  expect_one_line_error(test::run_epviz("simulate --job " + twice.string(), dir),
-                        "twice.json: key 't_end': given twice");
-  const auto samples = write(dir, "samples.json", R"({"samples": 9223372036854775808})");
-  expect_one_line_error(test::run_epviz("simulate --job " + samples.string(), dir),
-                        "got the integer 9223372036854775808");
+  const auto deep = dir.write("deep.json", R"({"t_end": )" + nested_arrays(100'000) + "}");
+  test::expect_bad_input(test::run_epviz("simulate --job " + deep.string(), dir),
+                         "deep.json: key 't_end");
+  const auto big = dir.write("big.json", R"({"t_end": 1e400})");
+  test::expect_bad_input(test::run_epviz("simulate --job " + big.string(), dir),
+                         "big.json: key 't_end': the number 1e400 is out of range");
+  const auto twice = dir.write("twice.json", R"({"t_end": 1, "t_end": 2})");
+  test::expect_bad_input(test::run_epviz("simulate --job " + twice.string(), dir),
+                         "twice.json: key 't_end': given twice");
+  const auto samples = dir.write("samples.json", R"({"samples": 9223372036854775808})");
+  test::expect_bad_input(test::run_epviz("simulate --job " + samples.string(), dir),
+                         "got the integer 9223372036854775808");
 }
 
 // "custom" is what the overlay and the report call a body of one's own: as a
@@ -183,7 +172,7 @@ TEST(HostileJobFile, SimulateJobsNameKeysToo) {
 TEST(HostileJobFile, CaseCustomIsABodyOfOnesOwn) {
   test::TempDir dir;
   const auto report = dir / "report.json";
-  const auto job = write(dir, "custom.json", R"({"case": "custom", "inertia": [2, 2.5, 3]})");
+  const auto job = dir.write("custom.json", R"({"case": "custom", "inertia": [2, 2.5, 3]})");
   auto r = test::run_epviz(
       "simulate --job " + job.string() + " --t-end 0.5 --report-json " + report.string(), dir);
   EXPECT_EQ(r.exit_code, 0) << r.err;
@@ -192,14 +181,7 @@ TEST(HostileJobFile, CaseCustomIsABodyOfOnesOwn) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
 }
 
-struct HostileOption {
-  std::string name;
-  std::string args;
-  std::string must_name;
-};
-void PrintTo(const HostileOption& h, std::ostream* os) { *os << h.name; }
-
-class SimulateRefuses : public ::testing::TestWithParam<HostileOption> {};
+class SimulateRefuses : public ::testing::TestWithParam<Refused> {};
 
 TEST_P(SimulateRefuses, WithOneLineAndExitTwoAndNoFiles) {
   const auto& h = GetParam();
@@ -207,11 +189,8 @@ TEST_P(SimulateRefuses, WithOneLineAndExitTwoAndNoFiles) {
   std::ofstream(dir / "target.csv") << "kept\n";
   fs::create_symlink(dir / "target.csv", dir / "link.csv");
   const auto before = dir.file_count();
-  std::string args = h.args;
-  for (std::size_t p; (p = args.find("{dir}")) != std::string::npos;)
-    args.replace(p, 5, dir.path().string());
-  const auto r = test::run_epviz("simulate --t-end 0.5 " + args, dir);
-  expect_one_line_error(r, h.must_name);
+  const auto r = test::run_epviz("simulate --t-end 0.5 " + dir.expand(h.args), dir);
+  test::expect_bad_input(r, h.must_name);
   EXPECT_EQ(dir.file_count(), before) << "a file was left behind";
   EXPECT_EQ(test::slurp(dir / "target.csv"), "kept\n");
 }
@@ -219,47 +198,32 @@ TEST_P(SimulateRefuses, WithOneLineAndExitTwoAndNoFiles) {
 INSTANTIATE_TEST_SUITE_P(
     Options, SimulateRefuses,
     ::testing::Values(
-        HostileOption{"empty_case", "--case ''", "--case"},
-        HostileOption{"empty_tol", "--tol ''", "--tol"},
-        HostileOption{"empty_inertia", "--inertia ''", "--inertia"},
-        HostileOption{"empty_csv", "--csv ''", "--csv"},
-        HostileOption{"empty_job", "--job ''", "--job"},
-        HostileOption{"newline_in_case", "--case 'eu\nler'", "--case: unknown case 'eu\\nler'"},
-        HostileOption{"newline_in_number", "--t-end '1\n2'",
-                      "--t-end: expected a finite number, got '1\\n2'"},
-        HostileOption{"huge_samples", "--samples 99999999999999999999",
-                      "--samples: expected an integer from 1 to 100000000, got "
-                      "'99999999999999999999'"},
-        HostileOption{"huge_moment", "--inertia 1,1,1e308 --allow-nonphysical", "--inertia"},
-        HostileOption{"huge_omega", "--omega 1e300,0,0", "--omega"},
-        HostileOption{"same_csv_and_report", "--csv {dir}/out.x --report-json {dir}/out.x",
-                      "--report-json: the same file as --csv"},
-        HostileOption{"same_file_other_spelling",
-                      "--csv {dir}/out.x --report-json {dir}/./sub/../out.x",
-                      "--report-json: the same file as --csv"},
-        HostileOption{"same_file_through_symlink",
-                      "--csv {dir}/target.csv --report-json {dir}/link.csv",
-                      "--report-json: the same file as --csv"}),
-    [](const auto& param_info) { return param_info.param.name; });
+        Refused{"empty_case", "--case ''", "--case"}, Refused{"empty_tol", "--tol ''", "--tol"},
+        Refused{"empty_inertia", "--inertia ''", "--inertia"},
+        Refused{"empty_csv", "--csv ''", "--csv"}, Refused{"empty_job", "--job ''", "--job"},
+        Refused{"newline_in_case", "--case 'eu\nler'", "--case: unknown case 'eu\\nler'"},
+        Refused{"newline_in_number", "--t-end '1\n2'",
+                "--t-end: expected a finite number, got '1\\n2'"},
+        Refused{"huge_samples", "--samples 99999999999999999999",
+                "--samples: expected an integer from 1 to 100000000, got "
+                "'99999999999999999999'"},
+        Refused{"huge_moment", "--inertia 1,1,1e308 --allow-nonphysical", "--inertia"},
+        Refused{"huge_omega", "--omega 1e300,0,0", "--omega"},
+        Refused{"same_csv_and_report", "--csv {dir}/out.x --report-json {dir}/out.x",
+                "--report-json: the same file as --csv"},
+        Refused{"same_file_other_spelling", "--csv {dir}/out.x --report-json {dir}/./sub/../out.x",
+                "--report-json: the same file as --csv"},
+        Refused{"same_file_through_symlink", "--csv {dir}/target.csv --report-json {dir}/link.csv",
+                "--report-json: the same file as --csv"}),
+    test::case_name);
 
-class RenderOptionRefuses : public ::testing::TestWithParam<HostileOption> {};
-
-TEST_P(RenderOptionRefuses, WithOneLineAndExitTwo) {
-  const auto& h = GetParam();
-  test::TempDir dir;
-  const auto job = write(dir, "job.json", render_job(dir / "frames"));
-  const auto r = test::run_epviz("render --quiet " + job.string() + " " + h.args, dir);
-  expect_one_line_error(r, h.must_name);
-  EXPECT_FALSE(fs::exists(dir / "frames")) << "output written despite the error";
-}
-
-INSTANTIATE_TEST_SUITE_P(Options, RenderOptionRefuses,
-                         ::testing::Values(HostileOption{"empty_width", "--width ''", "--width"},
-                                           HostileOption{"empty_out", "--out ''", "--out"},
-                                           HostileOption{"empty_format", "--format ''", "--format"},
-                                           HostileOption{"empty_frames", "--frames ''",
-                                                         "--frames"}),
-                         [](const auto& param_info) { return param_info.param.name; });
+INSTANTIATE_TEST_SUITE_P(
+    Options, RenderRefuses,
+    ::testing::Values(hostile_option("empty_width", "--width ''", "--width"),
+                      hostile_option("empty_out", "--out ''", "--out"),
+                      hostile_option("empty_format", "--format ''", "--format"),
+                      hostile_option("empty_frames", "--frames ''", "--frames")),
+    test::case_name);
 
 }  // namespace
 }  // namespace epviz

@@ -6,23 +6,13 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "cli_runner.hpp"
+#include "support/cli.hpp"
+#include "support/render_job.hpp"
 
 namespace epviz {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::size_t lines(const std::string& s) {
-  return std::size_t(std::count(s.begin(), s.end(), '\n'));
-}
-
-void expect_usage_error(const test::CliResult& r, const std::string& must_name) {
-  EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_EQ(lines(r.err), 1u) << r.err;
-  EXPECT_NE(r.err.find(must_name), std::string::npos) << r.err;
-  EXPECT_TRUE(r.out.empty()) << "work was done before the check:\n" << r.out;
-}
 
 TEST(SimulateOutputPaths, ReportJsonDirectoryIsRefusedBeforeWork) {
   test::TempDir dir;
@@ -30,22 +20,22 @@ TEST(SimulateOutputPaths, ReportJsonDirectoryIsRefusedBeforeWork) {
   const auto r = test::run_epviz("simulate --case euler --csv " + (dir / "s.csv").string() +
                                      " --report-json " + (dir / "reports").string(),
                                  dir);
-  expect_usage_error(r, "--report-json");
+  test::expect_bad_input(r, "--report-json");
   EXPECT_FALSE(fs::exists(dir / "s.csv")) << "the CSV was written despite exit 2";
 }
 
 TEST(SimulateOutputPaths, CsvDirectoryIsRefused) {
   test::TempDir dir;
   fs::create_directories(dir / "out");
-  expect_usage_error(test::run_epviz("simulate --case euler --csv " + (dir / "out").string(), dir),
-                     "--csv");
-  expect_usage_error(test::run_epviz("simulate --case euler --csv " + (dir / "x/").string(), dir),
-                     "--csv");
+  test::expect_bad_input(
+      test::run_epviz("simulate --case euler --csv " + (dir / "out").string(), dir), "--csv");
+  test::expect_bad_input(
+      test::run_epviz("simulate --case euler --csv " + (dir / "x/").string(), dir), "--csv");
 }
 
 TEST(SimulateOutputPaths, CsvInMissingDirectoryIsRefused) {
   test::TempDir dir;
-  expect_usage_error(
+  test::expect_bad_input(
       test::run_epviz("simulate --case euler --csv " + (dir / "no" / "s.csv").string(), dir),
       "--csv");
 }
@@ -58,28 +48,17 @@ TEST(SimulateOutputPaths, UnwritableDirectoryIsRefused) {
   const auto r = test::run_epviz(
       "simulate --case euler --report-json " + (dir / "ro" / "r.json").string(), dir);
   fs::permissions(dir / "ro", fs::perms::owner_all);
-  expect_usage_error(r, "--report-json");
+  test::expect_bad_input(r, "--report-json");
 }
 
-nlohmann::json small_job(const fs::path& out) {
-  return {{"simulation", {{"case", "lagrange"}, {"t_end", 1.0}}},
-          {"width", 64},
-          {"height", 48},
-          {"fps", 2},
-          {"duration", 1},
-          {"output", {{"dir", out.string()}, {"format", "png"}, {"name", "frame"}}}};
-}
-
-fs::path write_job(const test::TempDir& dir, const nlohmann::json& j) {
-  std::ofstream(dir / "job.json") << j.dump(2);
-  return dir / "job.json";
-}
+// Two frames.
+nlohmann::json small_job(const fs::path& out) { return test::small_render_job(out, 2, 1.0); }
 
 TEST(RenderOutputPaths, OutThatIsAFileIsRefused) {
   test::TempDir dir;
   std::ofstream(dir / "taken") << "a file";
-  const auto job = write_job(dir, small_job(dir / "frames"));
-  expect_usage_error(
+  const auto job = dir.write("job.json", small_job(dir / "frames").dump(2));
+  test::expect_bad_input(
       test::run_epviz("render " + job.string() + " --out " + (dir / "taken").string(), dir),
       "--out");
   EXPECT_EQ(test::slurp(dir / "taken"), "a file");
@@ -88,15 +67,15 @@ TEST(RenderOutputPaths, OutThatIsAFileIsRefused) {
 TEST(RenderOutputPaths, OutputDirBelowAFileIsRefused) {
   test::TempDir dir;
   std::ofstream(dir / "taken") << "a file";
-  const auto job = write_job(dir, small_job(dir / "taken" / "frames"));
-  expect_usage_error(test::run_epviz("render " + job.string(), dir), "output.dir");
+  const auto job = dir.write("job.json", small_job(dir / "taken" / "frames").dump(2));
+  test::expect_bad_input(test::run_epviz("render " + job.string(), dir), "output.dir");
 }
 
 TEST(RenderOutputPaths, ReportJsonDirectoryIsRefusedBeforeRendering) {
   test::TempDir dir;
   fs::create_directories(dir / "reports");
-  const auto job = write_job(dir, small_job(dir / "frames"));
-  expect_usage_error(
+  const auto job = dir.write("job.json", small_job(dir / "frames").dump(2));
+  test::expect_bad_input(
       test::run_epviz("render " + job.string() + " --report-json " + (dir / "reports").string(),
                       dir),
       "--report-json");
@@ -110,16 +89,13 @@ TEST(RenderOutputPaths, OutputNamesThatAreNotFileNamesAreRefused) {
     test::TempDir dir;
     auto j = small_job(dir / "frames");
     j["output"]["name"] = name;
-    const auto job = write_job(dir, j);
-    const auto r = test::run_epviz("render " + job.string(), dir);
-    expect_usage_error(r, "output.name");
-    EXPECT_FALSE(fs::exists(dir / "frames")) << "frames rendered despite exit 2";
+    test::expect_render_refused(dir, j.dump(2), "", dir / "frames", "output.name");
   }
 }
 
 TEST(RenderOutputPaths, ReportJsonDashPutsOnlyTheReportOnStandardOutput) {
   test::TempDir dir;
-  const auto job = write_job(dir, small_job(dir / "frames"));
+  const auto job = dir.write("job.json", small_job(dir / "frames").dump(2));
   const auto r = test::run_epviz("render " + job.string() + " --quiet --report-json -", dir);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   const auto report = nlohmann::json::parse(r.out);  // throws if the summary line got in

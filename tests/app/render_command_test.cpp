@@ -5,112 +5,107 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "cli_runner.hpp"
+#include "support/cli.hpp"
+#include "support/render_job.hpp"
 
 namespace epviz {
 namespace {
 
 namespace fs = std::filesystem;
 
-// A small, fast job: 160x120, 6 frames.
-nlohmann::json small_job(const fs::path& out) {
-  return {{"simulation", {{"case", "lagrange"}, {"t_end", 2.0}}},
-          {"width", 160},
-          {"height", 120},
-          {"fps", 3},
-          {"duration", 2},
-          {"output", {{"dir", out.string()}, {"format", "png"}}}};
+// Six frames.
+nlohmann::json small_job(const fs::path& out) { return test::small_render_job(out); }
+
+// The small job drawing into {dir}/frames, changed by `edit`, and run with `args`.
+test::RefusedCase bad_job(const std::string& name, const std::function<void(nlohmann::json&)>& edit,
+                          const std::string& args, const std::string& must_name) {
+  auto j = small_job("{dir}/frames");
+  edit(j);
+  return {name, args, must_name, j.dump(2)};
 }
 
-fs::path write_job(const test::TempDir& dir, const nlohmann::json& j,
-                   const std::string& name = "job.json") {
-  std::ofstream(dir / name) << j.dump(2);
-  return dir / name;
-}
-
-struct BadJob {
-  std::string name;
-  std::function<void(nlohmann::json&)> edit;
-  std::string extra_args;
-  std::string must_name;
-};
-void PrintTo(const BadJob& b, std::ostream* os) { *os << b.name; }
-
-class RenderRejects : public ::testing::TestWithParam<BadJob> {};
+class RenderRejects : public ::testing::TestWithParam<test::RefusedCase> {};
 
 TEST_P(RenderRejects, WithOneLineExitTwoAndNoOutput) {
-  const auto& bad = GetParam();
+  const auto& c = GetParam();
   test::TempDir dir;
-  auto j = small_job(dir / "frames");
-  bad.edit(j);
-  const auto job = write_job(dir, j);
-  const auto r = test::run_epviz("render " + job.string() + " " + bad.extra_args, dir);
-  EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(r.err.find(bad.must_name), std::string::npos) << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  EXPECT_FALSE(fs::exists(dir / "frames")) << "output written despite the error";
+  test::expect_render_refused(dir, dir.expand(c.job), c.args, dir / "frames", c.must_name);
 }
 
 INSTANTIATE_TEST_SUITE_P(
     BadInputs, RenderRejects,
     ::testing::Values(
-        BadJob{"unknown_key", [](auto& j) { j["colour"] = "red"; }, "",
-               "job.json: key 'colour': unknown key"},
-        BadJob{"unknown_nested_key",
-               [](auto& j) {
-                 j["layers"] = {{"bodies", true}};
-               },
-               "", "key 'layers.bodies': unknown key"},
-        BadJob{"bad_view", [](auto& j) { j["view"] = "top"; }, "",
-               "key 'view': 'top' is not one of: body, space"},
-        BadJob{"bad_colour",
-               [](auto& j) {
-                 j["colours"] = {{"body", "orange"}};
-               },
-               "", "key 'colours.body': expected a colour"},
-        BadJob{"bad_theme", [](auto& j) { j["theme"] = "sepia"; }, "",
-               "key 'theme': 'sepia' is not one of: dark, light"},
-        BadJob{"missing_simulation", [](auto& j) { j.erase("simulation"); }, "",
-               "key 'simulation': missing"},
-        BadJob{"bad_case", [](auto& j) { j["simulation"]["case"] = "top"; }, "",
-               "key 'simulation.case': unknown case"},
-        BadJob{"bad_tol", [](auto& j) { j["simulation"]["tol"] = "fine"; }, "",
-               "key 'simulation.tol': expected a number"},
-        BadJob{"space_needs_spinor",
-               [](auto& j) {
-                 j["view"] = "space";
-                 j["simulation"]["formulation"] = "direct";
-               },
-               "", "needs its attitude"},
-        BadJob{"odd_video_size",
-               [](auto& j) {
-                 j["output"]["format"] = "mp4";
-                 j["width"] = 161;
-               },
-               "", "mp4 (yuv420p) needs an even width and height, got 161x120"},
-        BadJob{"bad_format_option", [](auto&) {}, "--format avi", "--format: unknown format 'avi'"},
-        BadJob{"frames_out_of_range", [](auto&) {}, "--frames 3:99", "--frames"},
-        BadJob{"unknown_gl", [](auto&) {}, "--gl vulkan", "unknown GL backend 'vulkan'"},
-        BadJob{"resume_video", [](auto& j) { j["output"]["format"] = "mp4"; }, "--resume",
-               "--resume: applies to PNG"},
-        BadJob{"all_layers_off",
-               [](auto& j) {
-                 j["layers"] = {
-                     {"body", false}, {"sphere", false}, {"riccati", false}, {"overlay", false}};
-               },
-               "", "nothing to draw"}),
-    [](const auto& param_info) { return param_info.param.name; });
+        bad_job(
+            "unknown_key", [](auto& j) { j["colour"] = "red"; }, "",
+            "job.json: key 'colour': unknown key"),
+        bad_job(
+            "unknown_nested_key",
+            [](auto& j) {
+              j["layers"] = {{"bodies", true}};
+            },
+            "", "key 'layers.bodies': unknown key"),
+        bad_job(
+            "bad_view", [](auto& j) { j["view"] = "top"; }, "",
+            "key 'view': 'top' is not one of: body, space"),
+        bad_job(
+            "bad_colour",
+            [](auto& j) {
+              j["colours"] = {{"body", "orange"}};
+            },
+            "", "key 'colours.body': expected a colour"),
+        bad_job(
+            "bad_theme", [](auto& j) { j["theme"] = "sepia"; }, "",
+            "key 'theme': 'sepia' is not one of: dark, light"),
+        bad_job(
+            "missing_simulation", [](auto& j) { j.erase("simulation"); }, "",
+            "key 'simulation': missing"),
+        bad_job(
+            "bad_case", [](auto& j) { j["simulation"]["case"] = "top"; }, "",
+            "key 'simulation.case': unknown case"),
+        bad_job(
+            "bad_tol", [](auto& j) { j["simulation"]["tol"] = "fine"; }, "",
+            "key 'simulation.tol': expected a number"),
+        bad_job(
+            "space_needs_spinor",
+            [](auto& j) {
+              j["view"] = "space";
+              j["simulation"]["formulation"] = "direct";
+            },
+            "", "needs its attitude"),
+        bad_job(
+            "odd_video_size",
+            [](auto& j) {
+              j["output"]["format"] = "mp4";
+              j["width"] = 161;
+            },
+            "", "even width and height"),
+        bad_job(
+            "bad_format_option", [](auto&) {}, "--format avi", "--format: unknown format 'avi'"),
+        bad_job(
+            "frames_out_of_range", [](auto&) {}, "--frames 3:99", "--frames"),
+        bad_job(
+            "unknown_gl", [](auto&) {}, "--gl vulkan", "unknown GL backend 'vulkan'"),
+        bad_job(
+            "resume_video", [](auto& j) { j["output"]["format"] = "mp4"; }, "--resume",
+            "--resume: applies to PNG"),
+        bad_job(
+            "all_layers_off",
+            [](auto& j) {
+              j["layers"] = {
+                  {"body", false}, {"sphere", false}, {"riccati", false}, {"overlay", false}};
+            },
+            "", "nothing to draw")),
+    test::case_name);
 
 TEST(Render, MissingJobFileIsNamed) {
   test::TempDir dir;
-  const auto r = test::run_epviz("render " + (dir / "none.json").string(), dir);
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("none.json: cannot open"), std::string::npos) << r.err;
+  test::expect_bad_input(test::run_epviz("render " + (dir / "none.json").string(), dir),
+                         "none.json: cannot open");
 }
 
 TEST(Render, PngSequenceWithZeroPaddedNamesAndResume) {
   test::TempDir dir;
-  const auto job = write_job(dir, small_job(dir / "frames"));
+  const auto job = dir.write("job.json", small_job(dir / "frames").dump(2));
   const auto report = dir / "report.json";
   auto r = test::run_epviz("render " + job.string() + " --report-json " + report.string(), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -137,7 +132,7 @@ TEST(Render, PngSequenceWithZeroPaddedNamesAndResume) {
 
 TEST(Render, FrameRangeDrawsOnlyThoseFrames) {
   test::TempDir dir;
-  const auto job = write_job(dir, small_job(dir / "frames"));
+  const auto job = dir.write("job.json", small_job(dir / "frames").dump(2));
   const auto r = test::run_epviz("render " + job.string() + " --frames 2:3", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_FALSE(fs::exists(dir / "frames" / "frame_0001.png"));
@@ -151,7 +146,7 @@ TEST(Render, Mp4IsPlayableWithTheExpectedFramesAndSize) {
   auto j = small_job(dir / "video");
   j["output"]["format"] = "mp4";
   j["output"]["name"] = "clip";
-  const auto job = write_job(dir, j);
+  const auto job = dir.write("job.json", j.dump(2));
   const auto r = test::run_epviz("render " + job.string(), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto mp4 = dir / "video" / "clip.mp4";
@@ -197,7 +192,7 @@ TEST(Render, NumericalFailureStopsWithTimeAndMethodAndKeepsNoVideo) {
                      {"formulation", "riccati"}, {"chart_switch", false}, {"t_end", 6.0}};
   j["output"]["format"] = "mp4";
   j["output"]["name"] = "clip";
-  const auto r = test::run_epviz("render " + write_job(dir, j).string(), dir);
+  const auto r = test::run_epviz("render " + dir.write("job.json", j.dump(2)).string(), dir);
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_NE(r.err.find("dop853 failed at t = "), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "video" / "clip.mp4"));
@@ -209,28 +204,27 @@ TEST(Render, BenchFiguresJobRunsTheStudyAndDrawsItsCharts) {
   test::TempDir dir;
   const nlohmann::json job = {{"bench", {{"quick", true}, {"cases", {"kovalevskaya"}}}},
                               {"dir", (dir / "figures").string()}};
-  const auto r = test::run_epviz("render " + write_job(dir, job, "bench.json").string(), dir);
+  const auto r = test::run_epviz("render " + dir.write("bench.json", job.dump(2)).string(), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* f : {"bench.json", "work_precision_kovalevskaya.png", "stability.png"})
     EXPECT_TRUE(fs::exists(dir / "figures" / f)) << f;
 
   const nlohmann::json typo = {{"bench", {{"quik", true}}}};
-  const auto bad = test::run_epviz("render " + write_job(dir, typo, "typo.json").string(), dir);
-  EXPECT_EQ(bad.exit_code, 2);
-  EXPECT_NE(bad.err.find("key 'bench.quik': unknown key"), std::string::npos) << bad.err;
+  const auto bad = test::run_epviz("render " + dir.write("typo.json", typo.dump(2)).string(), dir);
+  test::expect_bad_input(bad, "key 'bench.quik': unknown key");
 }
 
 TEST(Render, GalleryTilesOneStillPerJob) {
   test::TempDir dir;
-  write_job(dir, small_job(dir / "unused"), "a.json");
+  dir.write("a.json", small_job(dir / "unused").dump(2));
   auto b = small_job(dir / "unused");
   b["simulation"]["case"] = "kovalevskaya";
-  write_job(dir, b, "b.json");
+  dir.write("b.json", b.dump(2));
   const nlohmann::json gallery = {{"jobs", {"a.json", "b.json"}},
                                   {"tile", {{"width", 160}, {"height", 120}, {"columns", 2}}},
                                   {"videos", "none"},
                                   {"dir", (dir / "gallery").string()}};
-  const auto g = write_job(dir, gallery, "gallery.json");
+  const auto g = dir.write("gallery.json", gallery.dump(2));
   const auto r = test::run_epviz("render " + g.string(), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(fs::exists(dir / "gallery" / "gallery.png"));

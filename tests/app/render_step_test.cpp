@@ -7,7 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "cli_runner.hpp"
+#include "support/cli.hpp"
 
 namespace epviz {
 namespace {
@@ -117,12 +117,7 @@ TEST(RenderRuns, RefusesAnUnknownKeyInARunWithExitTwo) {
   test::TempDir dir;
   auto j = kovalevskaya_job(dir / "frames", 0.25);
   j["runs"] = nlohmann::json::parse(R"([{"label": "a"}, {"methd": "dop853"}])");
-  const auto job = dir / "job.json";
-  std::ofstream(job) << j.dump();
-  const auto r = test::run_epviz("render " + job.string(), dir);
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("runs[1].methd"), std::string::npos) << r.err;
-  EXPECT_FALSE(fs::exists(dir / "frames"));
+  test::expect_render_refused(dir, j.dump(), "", dir / "frames", "runs[1].methd");
 }
 
 // A gallery's grid video: every job's frames tiled side by side in one MP4.
@@ -152,8 +147,7 @@ TEST(GalleryGrid, RefusesAnOddGridBeforeAnyWork) {
   test::TempDir dir;
   std::ofstream(dir / "g.json") << grid_gallery(dir, 161, 1).dump();  // 8 + 161 pixels wide
   const auto r = test::run_epviz("render " + (dir / "g.json").string(), dir);
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("grid_video"), std::string::npos) << r.err;
+  test::expect_bad_input(r, "grid_video");
   EXPECT_FALSE(fs::exists(dir / "gallery"));
 }
 

@@ -8,22 +8,21 @@
 #include <chrono>
 #include <csignal>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <thread>
 
-#include "cli_runner.hpp"
+#include "support/cli.hpp"
+#include "support/dead_pid.hpp"
+#include "support/eventually.hpp"
+#include "support/render_job.hpp"
 
 namespace epviz {
 namespace {
 
 namespace fs = std::filesystem;
 
-pid_t dead_pid() {
-  const pid_t child = ::fork();
-  if (child == 0) ::_exit(0);
-  ::waitpid(child, nullptr, 0);
-  return child;
-}
+using test::dead_pid;
 
 std::vector<std::string> temporaries_in(const fs::path& dir) {
   std::vector<std::string> found;
@@ -35,12 +34,10 @@ std::vector<std::string> temporaries_in(const fs::path& dir) {
 }
 
 nlohmann::json video_job(const fs::path& out, double seconds) {
-  return {{"simulation", {{"case", "lagrange"}, {"t_end", seconds}}},
-          {"width", 160},
-          {"height", 120},
-          {"fps", 30},
-          {"duration", seconds},
-          {"output", {{"dir", out.string()}, {"format", "mp4"}, {"name", "clip"}}}};
+  auto j = test::small_render_job(out, 30, seconds);
+  j["output"]["format"] = "mp4";
+  j["output"]["name"] = "clip";
+  return j;
 }
 
 pid_t start_epviz(const std::vector<std::string>& args) {
@@ -63,18 +60,22 @@ void expect_signal_cleans_up_video(int sig) {
   std::ofstream(dir / "job.json") << video_job(out, 60.0).dump();
   const pid_t child = start_epviz({"render", (dir / "job.json").string()});
   ASSERT_GT(child, 0);
+  // Mid-way through the frames: ffmpeg has written encoded ones to the temporary.
   const auto temporary = out / ("clip.mp4.tmp-" + std::to_string(child));
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (!fs::exists(temporary) && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  ASSERT_TRUE(fs::exists(temporary)) << "the render never started writing " << temporary;
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // mid-way through the frames
+  const bool writing = test::eventually(
+      [&] {
+        std::error_code ec;
+        const auto size = fs::file_size(temporary, ec);
+        return !ec && size > 0;
+      },
+      std::chrono::seconds(60));
+  if (!writing) ::kill(child, SIGKILL);
   ::kill(child, sig);
   int status = 0;
   ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(writing) << "the render never wrote to " << temporary;
   EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == sig) << "status " << status;
-  // ffmpeg was killed by the handler; give the kernel a moment to close its files.
-  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  // The handler removed the temporary before the process ended.
   EXPECT_TRUE(temporaries_in(out).empty()) << temporaries_in(out).front();
   EXPECT_FALSE(fs::exists(out / "clip.mp4")) << "a partial video under the real name";
 }
@@ -90,9 +91,7 @@ TEST(Signals, RenderRemovesStaleTemporariesOfDeadProcesses) {
   const auto live = out / ("y.mp4.tmp-" + std::to_string(::getpid()));  // this test is alive
   std::ofstream(stale) << "left by a killed run";
   std::ofstream(live) << "being written";
-  nlohmann::json j = video_job(out, 1.0);
-  j["output"]["format"] = "png";
-  j["fps"] = 2;
+  const auto j = test::small_render_job(out, 2, 1.0);
   std::ofstream(dir / "job.json") << j.dump();
   const auto r = test::run_epviz("render " + (dir / "job.json").string(), dir);
   EXPECT_EQ(r.exit_code, 0) << r.err;

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <vector>
 
-#include "cli_runner.hpp"
+#include "support/cli.hpp"
 
 namespace epviz {
 namespace {
@@ -86,17 +86,16 @@ TEST(SimulateFailure, ReportedWithTimeAndMethod) {
   // A steady rotation about axis 1 carries gamma through the south pole exactly
   // (b = tan(...) has a true pole): the north Riccati chart alone cannot follow it.
   test::TempDir dir;
-  const auto r = test::run_epviz(
+  const auto [r, report] = test::run_with_report(
       "simulate --case euler --omega 1,0,0 --gamma 0,0.6,0.8 "
-      "--formulation riccati --no-chart-switch --t-end 6 --report-json " +
-          (dir / "f.json").string() + " --csv " + (dir / "f.csv").string(),
+      "--formulation riccati --no-chart-switch --t-end 6 --csv " +
+          (dir / "f.csv").string(),
       dir);
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_NE(r.err.find("dop853 failed at t = "), std::string::npos) << r.err;
   // The advice names what this user can change: the formulation or the chart switch.
   EXPECT_NE(r.err.find("; use --formulation spinor"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("--no-chart-switch"), std::string::npos) << r.err;
-  const auto report = nlohmann::json::parse(test::slurp(dir / "f.json"));
   ASSERT_TRUE(report["failure"].is_object());
   EXPECT_EQ(report["failure"]["method"], "dop853");
   EXPECT_GT(report["failure"]["t"].get<double>(), 0.5);
@@ -115,25 +114,20 @@ TEST(SimulateFailure, ReportedWithTimeAndMethod) {
 
 TEST(SimulateFailure, ImplicitStepTooLargeAdvisesASmallerStep) {
   test::TempDir dir;
-  const auto r = test::run_epviz(
-      "simulate --case lagrange --omega 0,0,50 --method gauss4 --step 5 "
-      "--t-end 10 --samples 2 --report-json " +
-          (dir / "f.json").string(),
+  const auto [r, report] = test::run_with_report(
+      "simulate --case lagrange --omega 0,0,50 --method gauss4 --step 5 --t-end 10 --samples 2",
       dir);
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_NE(r.err.find("epviz: gauss4 failed at t = 0: "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("; use a smaller --step"), std::string::npos) << r.err;
-  const auto report = nlohmann::json::parse(test::slurp(dir / "f.json"));
   EXPECT_EQ(report["failure_kind"], "solver_divergence");
   EXPECT_EQ(report["failure"]["method"], "gauss4");
 }
 
 TEST(SimulateReport, NoFailureKindWithoutAFailure) {
   test::TempDir dir;
-  const auto r = test::run_epviz(
-      "simulate --case euler --t-end 1 --report-json " + (dir / "ok.json").string(), dir);
+  const auto [r, report] = test::run_with_report("simulate --case euler --t-end 1", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto report = nlohmann::json::parse(test::slurp(dir / "ok.json"));
   ASSERT_TRUE(report.contains("failure_kind"));
   EXPECT_TRUE(report["failure_kind"].is_null());
   EXPECT_TRUE(report["failure"].is_null());

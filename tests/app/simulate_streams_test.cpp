@@ -9,23 +9,19 @@
 
 #include <thread>
 
-#include "cli_runner.hpp"
+#include "support/cli.hpp"
 
 namespace epviz {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::size_t lines(const std::string& s) {
-  return std::size_t(std::count(s.begin(), s.end(), '\n'));
-}
-
 TEST(SimulateStreams, DashWritesTheCsvToStandardOutputAndTheSummaryToStderr) {
   test::TempDir dir;
   const auto r = test::run_epviz("simulate --case lagrange --samples 10 --csv -", dir);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   ASSERT_EQ(r.out.rfind("t,omega1,", 0), 0u) << "stdout must start with the CSV header:\n" << r.out;
-  EXPECT_EQ(lines(r.out), 12u) << "header + 11 rows and nothing else:\n" << r.out;
+  EXPECT_EQ(test::line_count(r.out), 12u) << "header + 11 rows and nothing else:\n" << r.out;
   EXPECT_NE(r.err.find("max relative drift"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "-"));
   EXPECT_EQ(dir.file_count(), 0u);
@@ -36,7 +32,7 @@ TEST(SimulateStreams, DevStdoutIsTheSameAsDash) {
   const auto r = test::run_epviz("simulate --case lagrange --samples 10 --csv /dev/stdout", dir);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.out.rfind("t,omega1,", 0), 0u) << r.out;
-  EXPECT_EQ(lines(r.out), 12u) << r.out;
+  EXPECT_EQ(test::line_count(r.out), 12u) << r.out;
 }
 
 TEST(SimulateStreams, ReportJsonToStandardOutput) {
@@ -50,10 +46,7 @@ TEST(SimulateStreams, ReportJsonToStandardOutput) {
 TEST(SimulateStreams, CsvAndReportCannotBothGoToStandardOutput) {
   test::TempDir dir;
   const auto r = test::run_epviz("simulate --case euler --csv - --report-json -", dir);
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("--report-json"), std::string::npos) << r.err;
-  EXPECT_EQ(lines(r.err), 1u) << r.err;
-  EXPECT_TRUE(r.out.empty()) << r.out;
+  test::expect_bad_input(r, "--report-json");
 }
 
 TEST(SimulateStreams, DevNullStaysADevice) {
@@ -70,7 +63,7 @@ TEST(SimulateStreams, DevFullIsOneLineWriteErrorExitOne) {
   test::TempDir dir;
   const auto r = test::run_epviz("simulate --case euler --samples 5000 --csv /dev/full", dir);
   EXPECT_EQ(r.exit_code, 1) << r.err;
-  EXPECT_EQ(lines(r.err), 1u) << r.err;
+  EXPECT_EQ(test::line_count(r.err), 1u) << r.err;
   EXPECT_NE(r.err.find("/dev/full"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("No space left"), std::string::npos) << r.err;
 }
@@ -85,7 +78,7 @@ TEST(SimulateStreams, FifoReadByAThread) {
   reader.join();
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(received.rfind("t,omega1,", 0), 0u) << received;
-  EXPECT_EQ(lines(received), 22u);
+  EXPECT_EQ(test::line_count(received), 22u);
   struct stat st {};
   ASSERT_EQ(::lstat(fifo.c_str(), &st), 0);
   EXPECT_TRUE(S_ISFIFO(st.st_mode)) << "the FIFO was replaced by a file";
@@ -102,7 +95,7 @@ TEST(SimulateStreams, SymlinkIsFollowedAndKept) {
   EXPECT_TRUE(fs::is_symlink(dir / "link.csv")) << "the link was replaced by a file";
   const auto csv = test::slurp(dir / "real" / "data.csv");
   EXPECT_EQ(csv.rfind("t,omega1,", 0), 0u) << csv;
-  EXPECT_EQ(lines(csv), 12u);
+  EXPECT_EQ(test::line_count(csv), 12u);
 }
 
 // Peak resident memory (kB) of one `epviz simulate` child.

@@ -10,8 +10,9 @@
 #include <sstream>
 #include <thread>
 
-#include "app/cli_runner.hpp"
 #include "io/subprocess.hpp"
+#include "support/cli.hpp"
+#include "support/eventually.hpp"
 #include "sweep/rows_by_index.hpp"
 
 namespace epviz::test {
@@ -20,11 +21,6 @@ namespace {
 using Json = nlohmann::json;
 using epviz::testing::rows_by_index;
 namespace fs = std::filesystem;
-
-long line_count(const fs::path& file) {
-  std::ifstream in(file);
-  return long(std::count(std::istreambuf_iterator<char>(in), {}, '\n'));
-}
 
 const char* kSmallSweep = R"({
   "simulation": {"case": "generic", "t_end": 20, "samples": 20},
@@ -108,13 +104,11 @@ TEST(SweepCommand, AKilledSweepResumesToTheSameRows) {
     io::Subprocess child(
         {EPVIZ_BINARY, "sweep", (d / "s.sweep.json").string(), "--out", part.string(), "-j", "1"},
         o);
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-    while (line_count(part) < 5 && std::chrono::steady_clock::now() < deadline)
-      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    eventually([&] { return line_count(slurp(part)) >= 5; }, std::chrono::seconds(60));
     child.kill(SIGKILL);
     EXPECT_TRUE(child.wait().signalled());
   }
-  const long kept = line_count(part);
+  const auto kept = long(line_count(slurp(part)));
   ASSERT_GE(kept, 5);
   ASSERT_LT(kept, 200) << "the sweep finished before it could be killed";
   // A row cut short, as a kill during a write would leave it.
@@ -126,7 +120,7 @@ TEST(SweepCommand, AKilledSweepResumesToTheSameRows) {
       << resumed.out;
   EXPECT_NE(resumed.out.find("torn last line dropped"), std::string::npos) << resumed.out;
   EXPECT_EQ(rows_by_index(part), rows_by_index(d / "whole.jsonl"));
-  EXPECT_EQ(line_count(part), 200);
+  EXPECT_EQ(line_count(slurp(part)), 200u);
 }
 
 TEST(SweepCommand, ShardsMergeToTheUnshardedRows) {
@@ -174,7 +168,7 @@ TEST(MergeCommand, NamesAMissingOrDamagedShardAndTheCommandThatRedoesIt) {
   // The command as printed redoes the shard, and the merge then succeeds.
   ASSERT_EQ(run_epviz(command.substr(std::string("epviz ").size()), d).exit_code, 0);
   EXPECT_EQ(run_epviz("merge " + d.path().string(), d).exit_code, 0);
-  EXPECT_EQ(line_count(out), 8);
+  EXPECT_EQ(line_count(slurp(out)), 8u);
 
   // A shard file changed after its manifest was written is named too.
   std::ofstream(d / "rows.shard-2-of-3.jsonl", std::ios::app) << "{}\n";
@@ -206,16 +200,14 @@ TEST(SweepCommand, BadSweepFilesExitTwoWithOneLineNamingTheKey) {
     std::ofstream(d / "bad.sweep.json") << c.text;
     auto r = run_epviz(
         "sweep " + (d / "bad.sweep.json").string() + " --out " + (d / "rows.jsonl").string(), d);
-    EXPECT_EQ(r.exit_code, 2) << c.text;
-    EXPECT_NE(r.err.find(c.says), std::string::npos) << c.text << "\n" << r.err;
+    SCOPED_TRACE(c.text);
+    expect_bad_input(r, c.says);
     EXPECT_NE(r.err.find("bad.sweep.json"), std::string::npos) << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_FALSE(fs::exists(d / "rows.jsonl")) << "wrote rows despite " << c.text;
   }
   std::ofstream(d / "good.sweep.json") << kSmallSweep;
   auto r = run_epviz("sweep " + (d / "good.sweep.json").string() + " --shard 3/3", d);
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("--shard: expected I/N"), std::string::npos) << r.err;
+  expect_bad_input(r, "--shard: expected I/N");
 }
 
 }  // namespace

@@ -2,7 +2,7 @@
 // docs/ci.md states and the reports describe; and the frames checked by default.
 #include <gtest/gtest.h>
 
-#include "app/cli_runner.hpp"
+#include "support/cli.hpp"
 #include "check/frame_choice.hpp"
 #include "check/tolerance.hpp"
 

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "app/cli_runner.hpp"
+#include "support/cli.hpp"
 #include "check/golden_record.hpp"
 #include "check/job_check.hpp"
 #include "io/png_reader.hpp"

@@ -170,10 +170,19 @@ export async function waitFor(what, timeoutMs, check, intervalMs = 100) {
   }
 }
 
-// Runs body({ page, url, server }) with the server and a browser started,
-// within an overall time limit; exits 0 when body returns, 1 on a failure,
-// and always stops the browser and the server first.
-export async function run({ name, binary, serverArgs, timeoutMs, body }) {
+// The page's state once it has drawn its first frame.
+function firstFrame(page) {
+  return waitFor('the first frame', 20000, async () => {
+    const s = await epvizState(page);
+    return s && s.framesShown > 0 ? s : null;
+  });
+}
+
+// Runs body({ page, url, server, pageErrors, first }) with the server and a
+// browser started and the page showing its first frame (`first`, the page's
+// state then), within an overall time limit; exits 0 when body returns, 1 on
+// a failure, and always stops the browser and the server first.
+export async function run({ name, binary, serverArgs, timeoutMs = 90000, body }) {
   if (!binary) {
     log(`usage: node ${name} path/to/epviz [job arguments...]`);
     process.exit(2);
@@ -212,7 +221,8 @@ export async function run({ name, binary, serverArgs, timeoutMs, body }) {
     page.on('pageerror', (e) => pageErrors.push(String(e)));
     page.on('console', (m) => { if (m.type() === 'error') pageErrors.push('console: ' + m.text()); });
     await page.goto(url, { waitUntil: 'load', timeout: 15000 });
-    await body({ page, url, server, pageErrors });
+    const first = await firstFrame(page);
+    await body({ page, url, server, pageErrors, first });
     const errs = pageErrors.filter((e) => !/favicon/.test(e));
     if (errs.length) fail(`the page reported errors:\n  ${errs.join('\n  ')}`);
     if (server.exited) fail(`the server exited during the test (${server.exited.signal || 'code ' + server.exited.code})`);

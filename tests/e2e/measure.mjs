@@ -8,7 +8,7 @@
 // latency_p90_ms, samples, ...} and writes it to out.json when given.
 // Exit codes as serve_e2e.mjs (77: skipped).
 import fs from 'node:fs';
-import { run, log, fail, sleep, waitFor, frameRectToCss, epvizState } from './harness.mjs';
+import { run, log, fail, sleep, frameRectToCss, epvizState } from './harness.mjs';
 
 const [binary, outArg, ...serverArgs] = process.argv.slice(2);
 const outPath = outArg && outArg !== '-' ? outArg : null;
@@ -45,12 +45,7 @@ await run({
   name: 'measure.mjs',
   binary,
   serverArgs,
-  timeoutMs: 90000,
   async body({ page }) {
-    await waitFor('the first frame', 20000, async () => {
-      const s = await epvizState(page);
-      return s && s.framesShown > 0 ? s : null;
-    });
     await sleep(300);   // the layout of the latest frame (the first frames may precede it)
     const latest = (await epvizState(page)).header;
     const controls = latest.controls || {};

@@ -32,7 +32,6 @@ await run({
   serverArgs: ['--record', recording, job],
   timeoutMs: 60000,
   async body({ page }) {
-    await waitFor('the first frame', 20000, async () => ((await epvizState(page)) || {}).framesShown > 0);
     await click(page, 'case');
     await click(page, 'case:kovalevskaya');
     const i3 = await control(page, 'I3');

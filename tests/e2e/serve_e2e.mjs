@@ -5,7 +5,9 @@
 //
 // Exit 0: passed; 1: failed (the reason and the server's last lines are
 // printed); 77: skipped (no Chromium or no node_modules: see the SKIP line).
-import { run, log, fail, sleep, waitFor, canvasHash, frameRectToCss, epvizState } from './harness.mjs';
+import {
+  run, log, fail, sleep, canvasHash, frameRectToCss, epvizState,
+} from './harness.mjs';
 
 const [binary, ...serverArgs] = process.argv.slice(2);
 
@@ -58,13 +60,8 @@ await run({
   name: 'serve_e2e.mjs',
   binary,
   serverArgs,
-  timeoutMs: 90000,
-  async body({ page }) {
+  async body({ page, first }) {
     // 1. The page connects and draws a frame of the window's size.
-    const first = await waitFor('the first frame', 20000, async () => {
-      const s = await epvizState(page);
-      return s && s.framesShown > 0 ? s : null;
-    });
     const h = first.header;
     log(`ok: first frame drawn (${h.width}x${h.height} ${h.mime}, frame ${h.frame})`);
     if (h.width !== 1280 || h.height !== 720) fail(`the frame is ${h.width}x${h.height}, expected 1280x720 (the view's size)`);

@@ -9,33 +9,17 @@
 
 #include <csignal>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <thread>
+
+#include "support/temp_dir.hpp"
 
 namespace epviz::io {
 namespace {
 
 namespace fs = std::filesystem;
 
-class AtomicFileTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("epviz-atomic-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  static std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
-  fs::path dir_;
-};
+using AtomicFileTest = test::TempDirTest;
 
 TEST_F(AtomicFileTest, RegularAndMissingFilesAreReplaced) {
   std::ofstream(dir_ / "old.csv") << "old";
@@ -84,7 +68,7 @@ TEST_F(AtomicFileTest, SymbolicLinksAreFollowedToTheRealFile) {
     f.commit();
   }
   EXPECT_TRUE(fs::is_symlink(dir_ / "links" / "data.csv")) << "the link must stay a link";
-  EXPECT_EQ(slurp(dir_ / "real" / "data.csv"), "new");
+  EXPECT_EQ(test::slurp(dir_ / "real" / "data.csv"), "new");
   EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "real"), {}), 1);
 }
 
@@ -92,7 +76,7 @@ TEST_F(AtomicFileTest, DanglingLinkCreatesItsTarget) {
   fs::create_symlink(dir_ / "target.csv", dir_ / "link.csv");
   write_file_atomically(dir_ / "link.csv", "x");
   EXPECT_TRUE(fs::is_symlink(dir_ / "link.csv"));
-  EXPECT_EQ(slurp(dir_ / "target.csv"), "x");
+  EXPECT_EQ(test::slurp(dir_ / "target.csv"), "x");
 }
 
 TEST_F(AtomicFileTest, LinkLoopIsAClearError) {
@@ -127,7 +111,7 @@ TEST_F(AtomicFileTest, FifoIsWrittenAsAStream) {
   const auto fifo = dir_ / "fifo";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   std::string received;
-  std::thread reader([&] { received = slurp(fifo); });
+  std::thread reader([&] { received = test::slurp(fifo); });
   write_file_atomically(fifo, "row 1\nrow 2\n");
   reader.join();
   EXPECT_EQ(received, "row 1\nrow 2\n");
@@ -155,7 +139,7 @@ TEST_F(AtomicFileTest, StandardOutputIsWrittenInPlace) {
   ASSERT_EQ(::waitpid(child, &status, 0), child);
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 0);
-  EXPECT_EQ(slurp(out), "to stdout\n");
+  EXPECT_EQ(test::slurp(out), "to stdout\n");
   EXPECT_FALSE(fs::exists("-"));
 }
 

@@ -9,6 +9,7 @@
 
 #include "io/frame_names.hpp"
 #include "io/png_writer.hpp"
+#include "support/temp_dir.hpp"
 
 namespace {
 
@@ -35,25 +36,16 @@ TEST(FrameNames, NamesSortInFrameOrder) {
   EXPECT_TRUE(std::is_sorted(names.begin(), names.end()));
 }
 
-class PngComplete : public ::testing::Test {
+class PngComplete : public epviz::test::TempDirTest {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("epviz_frame_names_test_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
     std::vector<std::uint8_t> rgba(17 * 9 * 4);
     for (std::size_t i = 0; i < rgba.size(); ++i) rgba[i] = static_cast<std::uint8_t>(i * 7);
     good_ = encode_png_rgba(17, 9, rgba);
   }
-  void TearDown() override { fs::remove_all(dir_); }
   fs::path write(const std::string& name, const std::vector<std::uint8_t>& bytes) {
-    const fs::path path = dir_ / name;
-    std::ofstream(path, std::ios::binary)
-        .write(reinterpret_cast<const char*>(bytes.data()),
-               static_cast<std::streamsize>(bytes.size()));
-    return path;
+    return tmp_.write(name, std::string(bytes.begin(), bytes.end()));
   }
-  fs::path dir_;
   std::vector<std::uint8_t> good_;
 };
 

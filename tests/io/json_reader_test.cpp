@@ -11,6 +11,8 @@
 
 #include "io/json_reader.hpp"
 #include "io/printable.hpp"
+#include "support/errors.hpp"
+#include "support/temp_dir.hpp"
 
 namespace {
 
@@ -24,13 +26,7 @@ using nlohmann::json;
 // The message of the BadInput `f` throws; fails the test if it throws none.
 template <class F>
 std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const BadInput& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no BadInput";
-  return "";
+  return epviz::test::error_of<BadInput>(f);
 }
 
 std::string nested_arrays(int depth, const std::string& inner = "1") {
@@ -142,18 +138,7 @@ TEST(JsonReader, PrintableEscapesControlsAndBadUtf8AndCutsLongText) {
   EXPECT_EQ(accents, "\xc3\xa9\xc3\xa9... (6 bytes)");
 }
 
-class JsonFile : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("epviz-json-reader-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::filesystem::path dir_;
-};
+using JsonFile = epviz::test::TempDirTest;
 
 TEST_F(JsonFile, AnEndlessDeviceIsReadOnlyUpToTheLimit) {
   const auto message = error_of([] { epviz::io::read_json_file("/dev/zero"); });

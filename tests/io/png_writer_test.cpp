@@ -15,32 +15,20 @@
 
 #include "io/atomic_file.hpp"
 #include "io/png_writer.hpp"
+#include "support/temp_dir.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 using namespace epviz::io;
 
-class TempDir : public ::testing::Test {
+class PngFiles : public epviz::test::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("epviz_io_test_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::permissions(dir_, fs::perms::owner_all, ignored);
-    fs::remove_all(dir_, ignored);
-  }
   bool has_temporaries() const {
     for (const auto& entry : fs::directory_iterator(dir_))
       if (entry.path().filename().string().find(".tmp-") != std::string::npos) return true;
     return false;
   }
-  fs::path dir_;
 };
 
 // A picture with gradients, hard edges and partial alpha.
@@ -66,7 +54,7 @@ std::vector<std::uint8_t> read_png(const fs::path& path, int& width, int& height
   return pixels;
 }
 
-TEST_F(TempDir, PngRoundTripIsLossless) {
+TEST_F(PngFiles, PngRoundTripIsLossless) {
   const int width = 67, height = 41;  // odd sizes catch stride mistakes
   const auto pixels = test_pattern(width, height);
   for (int level : {1, 6, 9})
@@ -83,13 +71,13 @@ TEST_F(TempDir, PngRoundTripIsLossless) {
   EXPECT_FALSE(has_temporaries());
 }
 
-TEST_F(TempDir, WrongBufferSizeIsRejected) {
+TEST_F(PngFiles, WrongBufferSizeIsRejected) {
   std::vector<std::uint8_t> pixels(10);
   EXPECT_THROW(write_png_rgba(dir_ / "bad.png", 4, 4, pixels), std::invalid_argument);
   EXPECT_FALSE(fs::exists(dir_ / "bad.png"));
 }
 
-TEST_F(TempDir, UnwritableDirectoryGivesAClearErrorAndLeavesNothing) {
+TEST_F(PngFiles, UnwritableDirectoryGivesAClearErrorAndLeavesNothing) {
   if (::geteuid() == 0) GTEST_SKIP() << "root ignores directory permissions";
   const auto locked = dir_ / "locked";
   fs::create_directories(locked);
@@ -107,7 +95,7 @@ TEST_F(TempDir, UnwritableDirectoryGivesAClearErrorAndLeavesNothing) {
   EXPECT_TRUE(fs::is_empty(locked));
 }
 
-TEST_F(TempDir, MissingDirectoryGivesAClearError) {
+TEST_F(PngFiles, MissingDirectoryGivesAClearError) {
   const auto pixels = test_pattern(8, 8);
   try {
     write_png_rgba(dir_ / "no" / "such" / "frame.png", 8, 8, pixels);
@@ -118,7 +106,7 @@ TEST_F(TempDir, MissingDirectoryGivesAClearError) {
   }
 }
 
-TEST_F(TempDir, AtomicFileIsInvisibleUntilCommitted) {
+TEST_F(PngFiles, AtomicFileIsInvisibleUntilCommitted) {
   const auto target = dir_ / "data.json";
   {
     AtomicFile file(target);
@@ -131,7 +119,7 @@ TEST_F(TempDir, AtomicFileIsInvisibleUntilCommitted) {
   EXPECT_FALSE(has_temporaries());
 }
 
-TEST_F(TempDir, AtomicWriteReplacesTheOldFileWhole) {
+TEST_F(PngFiles, AtomicWriteReplacesTheOldFileWhole) {
   const auto target = dir_ / "data.txt";
   write_file_atomically(target, std::string_view("old contents, rather long"));
   write_file_atomically(target, std::string_view("new"), true);
@@ -141,12 +129,12 @@ TEST_F(TempDir, AtomicWriteReplacesTheOldFileWhole) {
   EXPECT_FALSE(has_temporaries());
 }
 
-TEST_F(TempDir, TemporaryNameCarriesThePid) {
+TEST_F(PngFiles, TemporaryNameCarriesThePid) {
   EXPECT_EQ(temporary_path_for(dir_ / "a.png").filename().string(),
             "a.png.tmp-" + std::to_string(::getpid()));
 }
 
-TEST_F(TempDir, AsyncWriterWritesEveryFrame) {
+TEST_F(PngFiles, AsyncWriterWritesEveryFrame) {
   const int width = 40, height = 30, frames = 24;
   const auto pixels = test_pattern(width, height);
   AsyncPngWriter writer({.threads = 2, .max_queued = 3, .png = {}});
@@ -170,7 +158,7 @@ TEST_F(TempDir, AsyncWriterWritesEveryFrame) {
   EXPECT_FALSE(has_temporaries());
 }
 
-TEST_F(TempDir, AsyncWriterReportsTheFirstError) {
+TEST_F(PngFiles, AsyncWriterReportsTheFirstError) {
   AsyncPngWriter writer({.threads = 1, .max_queued = 2, .png = {}});
   writer.submit(dir_ / "missing" / "frame.png", 4, 4, test_pattern(4, 4));
   EXPECT_THROW(writer.wait_idle(), FileWriteError);

@@ -20,6 +20,15 @@ struct FakeClock {
   }
 };
 
+// A progress line shown as on a terminal, written to `out`, on `clock`'s time.
+ProgressOptions shown(std::ostream& out, FakeClock& clock) {
+  ProgressOptions options;
+  options.mode = ProgressMode::on;
+  options.out = &out;
+  options.clock = [&clock] { return clock.t; };
+  return options;
+}
+
 std::size_t count(const std::string& s, char c) {
   return static_cast<std::size_t>(std::count(s.begin(), s.end(), c));
 }
@@ -27,11 +36,8 @@ std::size_t count(const std::string& s, char c) {
 TEST(Progress, TerminalLineShowsDoneTotalRateAndEtaAndEndsWithNewline) {
   std::ostringstream out;
   FakeClock clock;
-  ProgressOptions options;
-  options.mode = ProgressMode::on;
-  options.out = &out;
+  ProgressOptions options = shown(out, clock);
   options.label = "euler";
-  options.clock = [&clock] { return clock.t; };
   {
     ProgressLine progress(100, options);
     EXPECT_TRUE(progress.enabled());
@@ -64,11 +70,8 @@ TEST(Progress, TerminalLineShowsDoneTotalRateAndEtaAndEndsWithNewline) {
 TEST(Progress, ShorterLineBlanksTheRestOfTheLongerOne) {
   std::ostringstream out;
   FakeClock clock;
-  ProgressOptions options;
-  options.mode = ProgressMode::on;
-  options.out = &out;
+  ProgressOptions options = shown(out, clock);
   options.min_interval = std::chrono::duration<double>(0);
-  options.clock = [&clock] { return clock.t; };
   ProgressLine progress(10, options);
   progress.update(0);  // "--" rate, "--:--" ETA
   clock.advance(1.0);
@@ -84,11 +87,8 @@ TEST(Progress, ShorterLineBlanksTheRestOfTheLongerOne) {
 TEST(Progress, ResumedFramesDoNotCountInTheRate) {
   std::ostringstream out;
   FakeClock clock;
-  ProgressOptions options;
-  options.mode = ProgressMode::on;
-  options.out = &out;
+  ProgressOptions options = shown(out, clock);
   options.already_done = 90;
-  options.clock = [&clock] { return clock.t; };
   ProgressLine progress(100, options);
   clock.advance(1.0);
   progress.update(95);

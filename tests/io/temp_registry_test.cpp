@@ -10,32 +10,17 @@
 #include <fstream>
 
 #include "io/atomic_file.hpp"
+#include "support/dead_pid.hpp"
+#include "support/temp_dir.hpp"
 
 namespace epviz::io {
 namespace {
 
 namespace fs = std::filesystem;
 
-class TempRegistryTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("epviz-tempreg-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
-};
+using TempRegistryTest = test::TempDirTest;
 
-// A pid that belonged to a process that has exited and been reaped.
-pid_t dead_pid() {
-  const pid_t child = ::fork();
-  if (child == 0) ::_exit(0);
-  ::waitpid(child, nullptr, 0);
-  return child;
-}
+using test::dead_pid;
 
 TEST(TemporaryName, ParsesOnlyTheTemporaryShape) {
   pid_t pid = 0;

@@ -15,31 +15,22 @@
 #include <vector>
 
 #include "io/video_writer.hpp"
+#include "support/errors.hpp"
+#include "support/temp_dir.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 using namespace epviz::io;
 
-class VideoTest : public ::testing::Test {
+class VideoTest : public epviz::test::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("epviz_video_test_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   std::vector<std::string> entries() const {
     std::vector<std::string> names;
     for (const auto& entry : fs::directory_iterator(dir_))
       names.push_back(entry.path().filename().string());
     return names;
   }
-
-  fs::path dir_;
 };
 
 // A gradient that moves one column per frame (plus a moving square), top-down rows.
@@ -176,15 +167,7 @@ INSTANTIATE_TEST_SUITE_P(AllFormats, VideoFormats,
                            return std::string(video_format_name(param_info.param));
                          });
 
-template <typename F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "(no exception)";
-}
+using epviz::test::error_of;
 
 TEST_F(VideoTest, MissingDirectoryFailsClearlyAndLeavesNothing) {
   const fs::path target = dir_ / "missing" / "clip.mp4";

@@ -19,36 +19,20 @@
 namespace epviz::numerics {
 namespace {
 
-using testing::BlowUp;
 using testing::ExpBlowUp;
+using testing::failure_thrown_by;
 using testing::Linear1;
+using testing::Provoked;
+using testing::run_until_failure;
+using testing::step_until_failure;
 
 bool contains(const std::string& s, const std::string& what) {
   return s.find(what) != std::string::npos;
 }
 
-// Runs f, which must throw IntegrationError; returns its Failure.
-template <class F>
-Failure failure_of(F&& f) {
-  try {
-    f();
-  } catch (const IntegrationError& e) {
-    EXPECT_EQ(std::string(e.what()), e.failure().message());
-    return e.failure();
-  }
-  ADD_FAILURE() << "no IntegrationError thrown";
-  return {};
-}
-
 template <template <class> class Method>
 void expect_blow_up_detected(const char* name, FailureKind kind) {
-  AdaptiveOptions o;
-  o.rtol = o.atol = 1e-8;
-  Method<BlowUp> s({}, o);
-  s.init(0.0, Vec<1>(1.0));
-  const Failure f = failure_of([&] {
-    while (s.t() < 2.0) s.step();
-  });
+  const auto [s, f] = testing::provoke_step_underflow<Method>();
   EXPECT_EQ(f.method, name);
   // The numerical solution has its own pole, within the accumulated error of 1.
   EXPECT_NEAR(f.t, 1.0, 1e-6);
@@ -66,13 +50,7 @@ TEST(Failure, AdaptiveMethodsStopAtABlowUp) {
 }
 
 TEST(Failure, StepSizeUnderflowIsNamed) {
-  AdaptiveOptions o;
-  o.rtol = o.atol = 1e-8;
-  Dop853<BlowUp> s({}, o);
-  s.init(0.0, Vec<1>(1.0));
-  const Failure f = failure_of([&] {
-    while (s.t() < 2.0) s.step();
-  });
+  const Failure f = testing::provoke_step_underflow().failure;
   EXPECT_EQ(f.kind, FailureKind::step_underflow);
   EXPECT_TRUE(contains(f.detail, "below the round-off limit")) << f.detail;
   EXPECT_TRUE(contains(f.message(), "dop853 failed at t = ")) << f.message();
@@ -80,9 +58,7 @@ TEST(Failure, StepSizeUnderflowIsNamed) {
 }
 
 TEST(Failure, Rk4HugeStepOnABlowUpIsNonFinite) {
-  Rk4<ExpBlowUp> s({});
-  Vec<1> x(1.0);
-  const Failure f = failure_of([&] { s.step(x, 0.0, 100.0); });
+  const auto [s, x, f] = step_until_failure(Rk4<ExpBlowUp>({}), 1.0, 100.0);
   EXPECT_EQ(f.method, "rk4");
   EXPECT_EQ(f.kind, FailureKind::non_finite);
   EXPECT_TRUE(contains(f.detail, "not finite")) << f.detail;
@@ -91,18 +67,14 @@ TEST(Failure, Rk4HugeStepOnABlowUpIsNonFinite) {
 }
 
 TEST(Failure, FixedStepDop853NonFinite) {
-  Dop853<ExpBlowUp> s({});
-  Vec<1> x(1.0);
-  const Failure f = failure_of([&] { s.step(x, 0.0, 100.0); });
+  const Failure f = step_until_failure(Dop853<ExpBlowUp>({}), 1.0, 100.0).failure;
   EXPECT_EQ(f.method, "dop853");
   EXPECT_EQ(f.kind, FailureKind::non_finite);
 }
 
 template <template <class> class Method>
 void expect_no_convergence(const char* name) {
-  Method<Linear1> s(Linear1{-1000.0});
-  Vec<1> x(1.0);
-  const Failure f = failure_of([&] { s.step(x, 0.0, 0.1); });
+  auto [s, x, f] = step_until_failure(Method<Linear1>(Linear1{-1000.0}), 1.0, 0.1);
   EXPECT_EQ(f.method, name);
   EXPECT_EQ(f.kind, FailureKind::solver_divergence);
   EXPECT_TRUE(contains(f.detail, "did not converge")) << f.detail;
@@ -120,9 +92,8 @@ TEST(Failure, GaussTooLargeStepOnStiffProblemDoesNotConverge) {
 
 TEST(Failure, GaussIterationLimitIsAnOption) {
   // Converging, but slowly (h |lambda| a = 0.45): 3 iterations are not enough.
-  ImplicitMidpoint<Linear1> s(Linear1{-9.0}, ImplicitOptions{3});
-  Vec<1> x(1.0);
-  const Failure f = failure_of([&] { s.step(x, 0.0, 0.1); });
+  auto [s, x, f] =
+      step_until_failure(ImplicitMidpoint<Linear1>(Linear1{-9.0}, ImplicitOptions{3}), 1.0, 0.1);
   EXPECT_EQ(f.kind, FailureKind::solver_divergence);
   EXPECT_TRUE(contains(f.detail, "did not converge in 3 iterations")) << f.detail;
   EXPECT_EQ(s.stats().solver_iterations, 3);
@@ -145,12 +116,8 @@ struct Checked {
 };
 
 template <class Stepper>
-void expect_issue_reported_fixed(Stepper s) {
-  Vec<1> x(0.0);
-  double t = 0;
-  const Failure f = failure_of([&] {
-    for (int i = 0; i < 100; ++i, t += 0.1) s.step(x, t, 0.1);
-  });
+void expect_issue_reported_fixed(Stepper stepper) {
+  const auto [s, x, f] = step_until_failure(std::move(stepper), 0.0, 0.1, 100);
   EXPECT_EQ(f.method, Stepper::name);
   EXPECT_EQ(f.kind, FailureKind::chart_pole);
   EXPECT_EQ(f.detail, "near the pole");
@@ -170,7 +137,7 @@ TEST(Failure, SystemCheckIssueIsReported) {
   o.h_max = 0.1;
   Dop853<Checked> s({}, o);
   s.init(0.0, Vec<1>(0.0));
-  const Failure f = failure_of([&] {
+  const Failure f = failure_thrown_by([&] {
     while (s.t() < 10) s.step();
   });
   EXPECT_EQ(f.method, "dop853");
@@ -190,12 +157,15 @@ struct NanAfterStart {
   }
 };
 
-TEST(Failure, TooManyConsecutiveRejections) {
+// Five rejections allowed in a row: the first step fails.
+Provoked<Dopri5<NanAfterStart>> provoke_nan_rejections() {
   AdaptiveOptions o;
   o.max_consecutive_rejects = 5;
-  Dopri5<NanAfterStart> s({}, o);
-  s.init(0.0, Vec<1>(0.0));
-  const Failure f = failure_of([&] { s.step(); });
+  return run_until_failure(Dopri5<NanAfterStart>({}, o), 0.0, 1.0);
+}
+
+TEST(Failure, TooManyConsecutiveRejections) {
+  const auto [s, f] = provoke_nan_rejections();
   EXPECT_EQ(f.method, "dopri5");
   // Every trial was NaN: the solution itself is not finite, whatever the step.
   EXPECT_EQ(f.kind, FailureKind::non_finite);
@@ -207,36 +177,27 @@ TEST(Failure, TooManyConsecutiveRejections) {
 
 // Smooth, but the error test always fails: y' = 1e6 y (atol tiny) with h_min-free control.
 TEST(Failure, TooManyConsecutiveRejectionsFinite) {
-  AdaptiveOptions o;
-  o.max_consecutive_rejects = 2;
-  o.h_init = 10.0;  // far too large: err >> 1 three times in a row
-  Dop853<Linear1> s(Linear1{1.0}, o);
-  s.init(0.0, Vec<1>(1.0));
-  const Failure f = failure_of([&] { s.step(); });
+  const auto [s, f] = testing::provoke_rejections();
   EXPECT_EQ(f.kind, FailureKind::rejections);
   EXPECT_TRUE(contains(f.detail, "3 consecutive rejected steps")) << f.detail;
   EXPECT_EQ(s.stats().rejected_steps, 3);
 }
 
 TEST(Failure, MaxStepsExceeded) {
-  AdaptiveOptions o;
-  o.max_steps = 10;
-  o.h_max = 0.01;
-  Dopri5<Linear1> s(Linear1{-1.0}, o);
-  s.init(0.0, Vec<1>(1.0));
-  const Failure f = failure_of([&] {
-    while (s.t() < 1.0) s.step();
-  });
+  const auto [s, f] = testing::provoke_step_budget();
   EXPECT_EQ(f.kind, FailureKind::step_budget);
   EXPECT_TRUE(contains(f.detail, "step budget of 10 steps exhausted")) << f.detail;
   EXPECT_EQ(s.stats().steps, 10);
   EXPECT_NEAR(f.t, 0.1, 1e-12);
 }
 
+Provoked<Dop853<Linear1>> provoke_infinite_start() {
+  return run_until_failure(Dop853<Linear1>(Linear1{-1.0}), std::numeric_limits<double>::infinity(),
+                           1.0);
+}
+
 TEST(Failure, NonFiniteInitialState) {
-  Dop853<Linear1> s(Linear1{-1.0});
-  s.init(0.0, Vec<1>(std::numeric_limits<double>::infinity()));
-  const Failure f = failure_of([&] { s.step(); });
+  const Failure f = provoke_infinite_start().failure;
   EXPECT_EQ(f.kind, FailureKind::non_finite);
   EXPECT_TRUE(contains(f.detail, "not finite")) << f.detail;
 }
@@ -250,9 +211,7 @@ struct Overflowing {
 };
 
 TEST(Failure, SplittingNonFinite) {
-  StrangSplitting<Overflowing> s({});
-  Vec<1> x(1.0);
-  const Failure f = failure_of([&] { s.step(x, 0.0, 1.0); });
+  const Failure f = step_until_failure(StrangSplitting<Overflowing>({}), 1.0, 1.0).failure;
   EXPECT_EQ(f.method, "splitting");
   EXPECT_EQ(f.kind, FailureKind::non_finite);
 }
@@ -278,38 +237,17 @@ TEST(FailureKind, NamesAreDistinctSnakeCase) {
 // Every failure a stepper can raise, provoked on the small test systems.
 std::vector<Failure> provoked_failures() {
   std::vector<Failure> all;
-  {  // non_finite: a fixed step far too large for an exponential blow-up
-    Rk4<ExpBlowUp> s({});
-    Vec<1> x(1.0);
-    all.push_back(failure_of([&] { s.step(x, 0.0, 100.0); }));
-  }
-  {  // non_finite: NaN derivative everywhere but at the start (adaptive)
-    AdaptiveOptions o;
-    o.max_consecutive_rejects = 5;
-    Dopri5<NanAfterStart> s({}, o);
-    s.init(0.0, Vec<1>(0.0));
-    all.push_back(failure_of([&] { s.step(); }));
-  }
-  {  // non_finite: an infinite initial state (adaptive)
-    Dop853<Linear1> s(Linear1{-1.0});
-    s.init(0.0, Vec<1>(std::numeric_limits<double>::infinity()));
-    all.push_back(failure_of([&] { s.step(); }));
-  }
+  // non_finite: a fixed step far too large for an exponential blow-up, NaN
+  // derivatives everywhere but at the start (adaptive), an infinite initial state
+  all.push_back(step_until_failure(Rk4<ExpBlowUp>({}), 1.0, 100.0).failure);
+  all.push_back(provoke_nan_rejections().failure);
+  all.push_back(provoke_infinite_start().failure);
   // step_underflow, step_budget, rejections
   for (const Failure& f : testing::step_control_failures()) all.push_back(f);
-  {  // solver_divergence
-    Gauss4<Linear1> s(Linear1{-1000.0});
-    Vec<1> x(1.0);
-    all.push_back(failure_of([&] { s.step(x, 0.0, 0.1); }));
-  }
-  {  // a system's check(): the stepper passes the issue's kind through
-    Rk4<Checked> s({});
-    Vec<1> x(0.0);
-    double t = 0;
-    all.push_back(failure_of([&] {
-      for (int i = 0; i < 100; ++i, t += 0.1) s.step(x, t, 0.1);
-    }));
-  }
+  // solver_divergence
+  all.push_back(step_until_failure(Gauss4<Linear1>(Linear1{-1000.0}), 1.0, 0.1).failure);
+  // a system's check(): the stepper passes the issue's kind through
+  all.push_back(step_until_failure(Rk4<Checked>({}), 0.0, 0.1, 100).failure);
   return all;
 }
 

@@ -96,11 +96,21 @@ TEST(GlContext, BothBackendsClearToTheSameColour) {
 // epviz serve makes its context on the render thread, not the main one.
 TEST(GlContext, AContextMadeOnAnotherThreadDraws) {
   std::array<unsigned char, 4> pixel{};
+  // An exception may not leave a thread (it would end the whole test
+  // program): it is caught there and reported here.
+  std::string error;
   std::thread worker([&] {
-    auto context = make_gl_context(epviz::render::gl_backend_from_environment(), 8, 8);
-    pixel = cleared_pixel();
+    try {
+      auto context = make_gl_context(epviz::render::gl_backend_from_environment(), 8, 8);
+      pixel = cleared_pixel();
+    } catch (const std::exception& e) {
+      error = e.what();
+    } catch (...) {
+      error = "an exception that is no std::exception";
+    }
   });
   worker.join();
+  ASSERT_EQ(error, "") << "on the worker thread";
   expect_cleared_colour(pixel, "worker thread");
   epviz::testing::shared_gl_context();
 }

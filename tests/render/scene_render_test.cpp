@@ -37,6 +37,15 @@ render::RendererOptions options(int samples = 4) {
   return o;
 }
 
+// 64 x 48 without the overlay, for what one pixel row or column shows.
+render::RendererOptions small_options() {
+  render::RendererOptions o = options();
+  o.width = 64;
+  o.height = 48;
+  o.overlay = false;
+  return o;
+}
+
 // One renderer and one frame for all tests in this file.
 class SceneRender : public ::testing::Test {
  protected:
@@ -226,11 +235,7 @@ TEST_F(SceneRender, MatchesTheGoldenSnapshot) {
 
 TEST(Readback, TopOfTheSceneIsTheFirstRow) {
   // GL's +y is up; the image's first row must show what is drawn at the top.
-  render::RendererOptions o = options();
-  o.width = 64;
-  o.height = 48;
-  o.overlay = false;
-  render::Renderer renderer(et::shared_gl_context(), o);
+  render::Renderer renderer(et::shared_gl_context(), small_options());
   renderer.begin_frame({0, 0, 0, 1});
   render::DrawList list;
   list.add_marker({{0.0f, 0.75f, 0.0f}, {1, 0, 0, 1}, {1, 0, 0, 1}, 5.0f, 0.0f});  // near the top
@@ -248,11 +253,7 @@ TEST(Readback, TopOfTheSceneIsTheFirstRow) {
 }
 
 TEST(Readback, TwoDPixelCoordinatesCountRowsFromTheTop) {
-  render::RendererOptions o = options();
-  o.width = 64;
-  o.height = 48;
-  o.overlay = false;
-  render::Renderer renderer(et::shared_gl_context(), o);
+  render::Renderer renderer(et::shared_gl_context(), small_options());
   renderer.begin_frame({0, 0, 0, 1});
   render::DrawList list;
   list.add_rect({0, 0}, {64, 8}, {0, 1, 0, 1});

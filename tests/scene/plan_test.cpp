@@ -1,5 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <optional>
+#include <string>
+#include <vector>
+
 #include "physics/cases.hpp"
 #include "scene/frame_source.hpp"
 #include "scene/plan.hpp"
@@ -29,18 +33,57 @@ TEST(Tolerance, TightensWithResolutionAndDuration) {
   EXPECT_LE(tolerance_for(small, 0), 1e-4);
 }
 
-TEST(Plan, LaysOutThePictureWithTheOverlayItWillShow) {
-  scene::SceneSettings s;  // 1280 x 720: the overlay sits above the plot
+std::string describe(const std::optional<scene::Rect>& r) {
+  if (!r) return "none";
+  return std::to_string(r->x) + "," + std::to_string(r->y) + " " + std::to_string(r->width) + "x" +
+         std::to_string(r->height);
+}
+
+std::string describe(const scene::FrameLayout& l) {
+  return "3d " + describe(l.view_3d) + ", column " + describe(l.panel_column) + ", plot " +
+         describe(l.plot_area) + ", chart " + describe(l.chart_area) + ", overlay in column " +
+         std::to_string(l.overlay_in_column) + ", px/unit " + std::to_string(l.sphere_px_per_unit) +
+         " " + std::to_string(l.plane_px_per_unit);
+}
+
+// The painter's layout of a picture with these settings.
+scene::FrameLayout painted(const scene::SceneSettings& s, int chart_height = 0) {
+  scene::LayoutRequest q;
+  q.width = s.width;
+  q.height = s.height;
+  q.layers = s.layers;
+  q.camera_distance = s.camera.distance;
+  q.plane_extent = s.plane_extent;
+  q.chart_height = chart_height;
+  return scene::frame_layout(q);
+}
+
+// The plan lays the picture out as the painter will, following every setting
+// the layout depends on: each variation below moves something in the picture.
+TEST(Plan, LaysOutThePictureAsThePainterWill) {
   const auto run = preset_run(physics::Case::kovalevskaya, 10);
-  const auto plan = scene::plan_scene(run, s);
-  scene::LayoutRequest q{s.width,           s.height,      s.layers, {scene::kOverlayLines, 4},
-                         s.camera.distance, s.plane_extent};
-  const auto expected = scene::frame_layout(q);
-  ASSERT_TRUE(plan.layout.plot_area && expected.plot_area);
-  EXPECT_TRUE(expected.overlay_in_column);
-  EXPECT_EQ(plan.layout.plot_area->y, expected.plot_area->y);
-  EXPECT_EQ(plan.layout.plane_px_per_unit, expected.plane_px_per_unit);
-  EXPECT_EQ(plan.layout.sphere_px_per_unit, expected.sphere_px_per_unit);
+  const scene::SceneSettings base;  // 1280 x 720: the overlay sits above the plot
+  ASSERT_TRUE(painted(base).overlay_in_column);
+  std::vector<scene::SceneSettings> variants(5, base);
+  variants[1].layers.overlay = false;  // the plot takes the overlay's room
+  variants[2].width = 640, variants[2].height = 360;
+  variants[3].camera.distance = 5.0;
+  variants[4].plane_extent = 1.5f;
+  for (std::size_t i = 0; i < variants.size(); ++i) {
+    SCOPED_TRACE("variant " + std::to_string(i));
+    const auto plan = scene::plan_scene(run, variants[i], scene::Horizon::none);
+    EXPECT_EQ(describe(plan.layout), describe(painted(variants[i])));
+    if (i > 0) {
+      EXPECT_NE(describe(painted(variants[i])), describe(painted(base)));
+    }
+  }
+  // A comparison scene keeps room for its separation chart under the plot.
+  scene::RunRequest request;
+  request.run = run;
+  const auto plan = scene::plan_scene({request, request}, base, scene::Horizon::none);
+  EXPECT_TRUE(plan.layout.chart_area);
+  EXPECT_EQ(describe(plan.layout),
+            describe(painted(base, scene::comparison_chart_height(base.height))));
 }
 
 TEST(Plan, SpaceViewIntegratesTheAttitude) {
@@ -90,7 +133,6 @@ TEST(Plan, TrailsAreDecimatedForTheLargestScaleOfEachPart) {
     q.width = s.width;
     q.height = s.height;
     q.layers = {bool(bits & 1), bool(bits & 2), bool(bits & 4), bool(bits & 8)};
-    q.overlay = {scene::kOverlayLines, 3};
     const auto l = scene::frame_layout(q);
     EXPECT_GE(plan.trail_sphere_px, l.sphere_px_per_unit) << bits;
     EXPECT_GE(plan.trail_plane_px, l.plane_px_per_unit) << bits;

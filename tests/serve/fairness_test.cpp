@@ -13,58 +13,6 @@ namespace {
 using nlohmann::json;
 using Clock = std::chrono::steady_clock;
 
-json resize(int width, int height) {
-  return {{"type", "resize"}, {"width", width}, {"height", height}};
-}
-json ack(std::int64_t frame) { return {{"type", "ack"}, {"frame", frame}}; }
-
-// One page: asks for a size, reads and acks every frame, notes when each came.
-class Viewer {
- public:
-  Viewer(unsigned short port, int width, int height) : client_(port) {
-    client_.send(resize(width, height));
-    thread_ = std::thread([this] { run(); });
-  }
-  ~Viewer() {
-    stop_ = true;
-    thread_.join();
-  }
-  std::vector<Clock::time_point> arrivals() const {
-    std::lock_guard lock(mutex_);
-    return arrivals_;
-  }
-  std::pair<int, int> last_size() const {
-    std::lock_guard lock(mutex_);
-    return last_size_;
-  }
-
- private:
-  void run() {
-    while (!stop_) {
-      std::optional<ServerMessage> m;
-      try {
-        m = client_.receive(100ms);
-      } catch (const std::exception&) {
-        return;
-      }
-      if (!m || m->header.value("kind", "") != "frame") continue;
-      {
-        std::lock_guard lock(mutex_);
-        arrivals_.push_back(Clock::now());
-        last_size_ = {m->header["width"].get<int>(), m->header["height"].get<int>()};
-      }
-      client_.send(ack(m->header["frame"].get<std::int64_t>()));
-    }
-  }
-
-  TestClient client_;
-  std::atomic<bool> stop_{false};
-  mutable std::mutex mutex_;
-  std::vector<Clock::time_point> arrivals_;
-  std::pair<int, int> last_size_{0, 0};
-  std::thread thread_;
-};
-
 // The longest a page waited for a frame between from and to (from `from` to its first one included).
 double longest_wait(std::vector<Clock::time_point> times, Clock::time_point from,
                     Clock::time_point to) {
@@ -89,17 +37,17 @@ TEST(ServeFairness, TwelveClientsFourOfThemLargeAllKeepAFrameRate) {
   // the real work, and so this, alike.
   double full_frame = 0;
   {
-    Viewer alone(server.port(), 3840, 2160);
+    ReadingPage alone(server.port(), 3840, 2160);
     ASSERT_TRUE(TestServer::eventually([&] { return alone.arrivals().size() >= 4; }))
         << "a page alone got no frame rate";
     const std::vector<Clock::time_point> times = alone.arrivals();
     full_frame = std::chrono::duration<double>(times[3] - times[1]).count() / 2;
   }
-  std::vector<std::unique_ptr<Viewer>> viewers;
+  std::vector<std::unique_ptr<ReadingPage>> viewers;
   for (int i = 0; i < 12; ++i) {
     const bool large = i % 3 == 0;
     viewers.push_back(
-        std::make_unique<Viewer>(server.port(), large ? 3840 : 320 + i, large ? 2160 : 240));
+        std::make_unique<ReadingPage>(server.port(), large ? 3840 : 320 + i, large ? 2160 : 240));
   }
   // Every page has its first frame soon...
   ASSERT_TRUE(TestServer::eventually([&] {

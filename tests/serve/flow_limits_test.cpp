@@ -17,11 +17,6 @@ namespace net = boost::asio;
 using tcp = net::ip::tcp;
 using nlohmann::json;
 
-json resize(int width, int height) {
-  return {{"type", "resize"}, {"width", width}, {"height", height}};
-}
-json ack(std::int64_t frame) { return {{"type", "ack"}, {"frame", frame}}; }
-
 // Sends, never reads; a tiny receive buffer makes the server's writes stall soon.
 class NonReadingClient {
  public:
@@ -44,38 +39,6 @@ class NonReadingClient {
   websocket::stream<beast::tcp_stream> ws_;
 };
 
-// Reads and acks frames on its own thread, counting them.
-class BusyReader {
- public:
-  explicit BusyReader(unsigned short port) : client_(port) {
-    client_.send(resize(64, 64));
-    thread_ = std::thread([this] {
-      while (!stop_) {
-        std::optional<ServerMessage> m;
-        try {
-          m = client_.receive(200ms);
-        } catch (const std::exception&) {
-          return;
-        }
-        if (!m || m->header.value("kind", "") != "frame") continue;
-        ++frames_;
-        client_.send(ack(m->header["frame"].get<std::int64_t>()));
-      }
-    });
-  }
-  ~BusyReader() {
-    stop_ = true;
-    thread_.join();
-  }
-  int frames() const { return frames_; }
-
- private:
-  TestClient client_;
-  std::atomic<bool> stop_{false};
-  std::atomic<int> frames_{0};
-  std::thread thread_;
-};
-
 TEST(ServeFlowLimits, ForgedAcksDoNotGrowTheOutbox) {
   TestServer server({}, /*always_wants=*/true);
   // The size of one full-size frame, as a reading page receives it.
@@ -89,7 +52,7 @@ TEST(ServeFlowLimits, ForgedAcksDoNotGrowTheOutbox) {
   }
   ASSERT_GT(frame_bytes, 4096u);
 
-  BusyReader bystander(server.port());
+  ReadingPage bystander(server.port(), 64, 64);
   NonReadingClient forger(server.port());
   forger.send(resize(3840, 2160));
   // Acks each frame once it has been rendered (one behind, so never one
@@ -124,7 +87,7 @@ TEST(ServeFlowLimits, APageThatDoesNotReadIsDroppedOthersGoOn) {
         o.outbox_grace = 300ms;
       },
       /*always_wants=*/true);
-  BusyReader bystander(server.port());
+  ReadingPage bystander(server.port(), 64, 64);
   NonReadingClient stuck(server.port());
   stuck.send(resize(3840, 2160));
   // Acks what was rendered, reads nothing: once the socket's buffers are

@@ -3,13 +3,8 @@
 // server's (DNS rebinding), over real sockets with hand-written requests.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cstdlib>
-#include <fstream>
-
 #include "serve_test_support.hpp"
+#include "support/cli.hpp"
 
 namespace epviz::serve::testing {
 namespace {
@@ -79,19 +74,9 @@ TEST(ServeOrigin, AllowOriginLetsThatPageIn) {
 }
 
 TEST(ServeOrigin, AMalformedAllowOriginIsABadOption) {
-  const auto err = std::filesystem::temp_directory_path() /
-                   ("epviz_allow_origin_" + std::to_string(::getpid()) + ".txt");
-  const int status =
-      std::system((std::string(EPVIZ_BINARY) + " serve --port 0 --allow-origin 'http://x/path' 2>" +
-                   err.string())
-                      .c_str());
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 2);
-  std::ifstream in(err);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  EXPECT_NE(text.find("--allow-origin: 'http://x/path' is not an origin"), std::string::npos)
-      << text;
-  std::filesystem::remove(err);
+  const test::TempDir dir;
+  test::expect_bad_input(test::run_epviz("serve --port 0 --allow-origin 'http://x/path'", dir),
+                         "--allow-origin: 'http://x/path' is not an origin");
 }
 
 }  // namespace

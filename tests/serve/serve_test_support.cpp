@@ -1,5 +1,7 @@
 #include "serve_test_support.hpp"
 
+#include "support/eventually.hpp"
+
 #include <cstdlib>
 #include <fstream>
 #include <stdexcept>
@@ -134,12 +136,9 @@ std::string LogCapture::all() const {
 // ---- TestServer ----
 
 TestServer::TestServer(const std::function<void(ServerOptions&)>& configure, bool always_wants) {
-  static std::atomic<int> count{0};
-  page =
-      std::filesystem::temp_directory_path() /
-      ("epviz_serve_test_" + std::to_string(::getpid()) + "_" + std::to_string(count++) + ".html");
-  page_text =
-      "<!doctype html><title>epviz test page</title><p>page " + page.filename().string() + "</p>\n";
+  page = page_dir / "page.html";
+  page_text = "<!doctype html><title>epviz test page</title><p>page " +
+              page_dir.path().filename().string() + "</p>\n";
   std::ofstream(page, std::ios::binary) << page_text;
 
   ServerOptions options;
@@ -154,11 +153,7 @@ TestServer::TestServer(const std::function<void(ServerOptions&)>& configure, boo
   server->start();
 }
 
-TestServer::~TestServer() {
-  server.reset();
-  std::error_code ignored;
-  std::filesystem::remove(page, ignored);
-}
+TestServer::~TestServer() { server.reset(); }
 
 int slowdown() {
   const char* s = std::getenv("EPVIZ_TEST_SLOWDOWN");
@@ -168,12 +163,7 @@ int slowdown() {
 
 bool TestServer::eventually(const std::function<bool()>& condition,
                             std::chrono::milliseconds timeout) {
-  const auto deadline = std::chrono::steady_clock::now() + timeout;
-  while (!condition()) {
-    if (std::chrono::steady_clock::now() > deadline) return false;
-    std::this_thread::sleep_for(5ms);
-  }
-  return true;
+  return test::eventually(condition, timeout);
 }
 
 // ---- TestClient ----
@@ -357,6 +347,46 @@ render::RgbaImage decode_jpeg(const std::vector<std::uint8_t>& jpeg) {
   tjDestroy(handle);
   if (!ok) throw std::runtime_error("JPEG decode failed: " + error);
   return image;
+}
+
+// ---- ReadingPage ----
+
+ReadingPage::ReadingPage(unsigned short port, int width, int height) : client_(port) {
+  client_.send(resize(width, height));
+  thread_ = std::thread([this] { run(); });
+}
+
+ReadingPage::~ReadingPage() {
+  stop_ = true;
+  thread_.join();
+}
+
+std::vector<std::chrono::steady_clock::time_point> ReadingPage::arrivals() const {
+  std::lock_guard lock(mutex_);
+  return arrivals_;
+}
+
+std::pair<int, int> ReadingPage::last_size() const {
+  std::lock_guard lock(mutex_);
+  return last_size_;
+}
+
+void ReadingPage::run() {
+  while (!stop_) {
+    std::optional<ServerMessage> m;
+    try {
+      m = client_.receive(100ms);
+    } catch (const std::exception&) {
+      return;  // the connection ended
+    }
+    if (!m || m->header.value("kind", "") != "frame") continue;
+    {
+      std::lock_guard lock(mutex_);
+      arrivals_.push_back(std::chrono::steady_clock::now());
+      last_size_ = {m->header["width"].get<int>(), m->header["height"].get<int>()};
+    }
+    client_.send(ack(m->header["frame"].get<std::int64_t>()));
+  }
 }
 
 }  // namespace epviz::serve::testing

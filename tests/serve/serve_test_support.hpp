@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <boost/asio/io_context.hpp>
@@ -26,6 +27,7 @@
 #include "serve/protocol.hpp"
 #include "serve/server.hpp"
 #include "serve/session.hpp"
+#include "support/temp_dir.hpp"
 
 namespace epviz::serve::testing {
 
@@ -119,6 +121,7 @@ struct TestServer {
 
   std::shared_ptr<FakeProbe> probe = std::make_shared<FakeProbe>();
   std::shared_ptr<LogCapture> log = std::make_shared<LogCapture>();
+  test::TempDir page_dir;
   std::filesystem::path page;
   std::string page_text;
   std::unique_ptr<Server> server;
@@ -159,6 +162,33 @@ class TestClient {
   bool read_pending_ = false;
   bool read_done_ = false;
   boost::beast::error_code read_error_;
+};
+
+// What a page sends.
+inline nlohmann::json resize(int width, int height) {
+  return {{"type", "resize"}, {"width", width}, {"height", height}};
+}
+inline nlohmann::json ack(std::int64_t frame) { return {{"type", "ack"}, {"frame", frame}}; }
+
+// A page that asks for a size, then reads and acks every frame on a thread of
+// its own, noting when each came and its size, until it is destroyed or the
+// connection ends.
+class ReadingPage {
+ public:
+  ReadingPage(unsigned short port, int width, int height);
+  ~ReadingPage();
+  std::vector<std::chrono::steady_clock::time_point> arrivals() const;
+  int frames() const { return int(arrivals().size()); }
+  std::pair<int, int> last_size() const;
+
+ private:
+  void run();
+  TestClient client_;
+  std::atomic<bool> stop_{false};
+  mutable std::mutex mutex_;
+  std::vector<std::chrono::steady_clock::time_point> arrivals_;
+  std::pair<int, int> last_size_{0, 0};
+  std::thread thread_;
 };
 
 // One plain HTTP GET.

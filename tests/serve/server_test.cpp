@@ -3,6 +3,7 @@
 // clients, client limits, the page over HTTP, start and stop.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <future>
@@ -18,10 +19,6 @@ namespace {
 namespace http = boost::beast::http;
 using nlohmann::json;
 
-json resize(int width, int height) {
-  return {{"type", "resize"}, {"width", width}, {"height", height}};
-}
-json ack(std::int64_t frame) { return {{"type", "ack"}, {"frame", frame}}; }
 json move(int seq) { return {{"type", "move"}, {"x", 3}, {"y", 4}, {"seq", seq}}; }
 json key(const std::string& name) { return {{"type", "key"}, {"key", name}, {"down", true}}; }
 
@@ -42,6 +39,14 @@ void expect_colour(const ServerMessage& frame, glm::u8vec4 want) {
         << "channel " << c << " of frame " << frame.header.dump();
 }
 
+// A page at 32 x 32 that has its first frame and acked it: the fake session
+// then wants no frame until the next input.
+void settle(TestClient& client) {
+  client.send(resize(32, 32));
+  EXPECT_EQ(frame_from(client).header["frame"], 1);
+  client.send(ack(1));
+}
+
 // Asserts that the bystander still gets frames for its input: ack what it
 // has, send input with `seq`, and see a frame carrying that seq.
 void expect_still_served(TestClient& bystander, std::int64_t acked, int seq) {
@@ -56,16 +61,29 @@ void expect_still_served(TestClient& bystander, std::int64_t acked, int seq) {
 
 TEST(ServeServer, FrameAfterResizeThenInputChangesTheFrame) {
   TestServer server;
+  // The fake session sleeps about 40 ms (at least that long) to render 64 x 48 pixels.
+  constexpr int ms_per_megapixel = 13'000;
+  const double render_sleep_ms = std::floor(64 * 48 * ms_per_megapixel / 1e3) / 1e3;
+  server.probe->render_ms_per_megapixel = ms_per_megapixel;
   TestClient client(server.port());
+  const auto asked = std::chrono::steady_clock::now();
   client.send(resize(64, 48));
   const ServerMessage first = frame_from(client);
+  const double waited_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - asked).count();
   EXPECT_EQ(first.header["frame"], 1);
   EXPECT_EQ(first.header["seq"], 0);
   EXPECT_EQ(first.header["width"], 64);
   EXPECT_EQ(first.header["height"], 48);
   EXPECT_EQ(first.header["mime"], "image/jpeg");
-  EXPECT_GE(first.header["render_ms"].get<double>(), 0.0);
-  EXPECT_GE(first.header["encode_ms"].get<double>(), 0.0);
+  // The times the frame reports are the session's render and the encoder's
+  // work: the render at least its sleep, the encode some time, both within
+  // what the client waited for the frame.
+  const double render_ms = first.header["render_ms"].get<double>();
+  const double encode_ms = first.header["encode_ms"].get<double>();
+  EXPECT_GE(render_ms, render_sleep_ms);
+  EXPECT_GT(encode_ms, 0.0);
+  EXPECT_LE(render_ms + encode_ms, waited_ms);
   const render::RgbaImage image = decode_jpeg(first.payload);
   EXPECT_EQ(image.width, 64);
   EXPECT_EQ(image.height, 48);
@@ -105,8 +123,8 @@ TEST(ServeServer, ResizeIsClampedToTheLimits) {
 }
 
 TEST(ServeServer, RecordsTheFirstConnectionAsItsSessionSawIt) {
-  const auto recording = std::filesystem::temp_directory_path() /
-                         ("epviz_serve_test_recording_" + std::to_string(::getpid()) + ".jsonl");
+  const test::TempDir dir;
+  const auto recording = dir / "recording.jsonl";
   TestServer server([&](ServerOptions& o) {
     o.record_path = recording;
     o.max_width = 200;
@@ -131,7 +149,6 @@ TEST(ServeServer, RecordsTheFirstConnectionAsItsSessionSawIt) {
       {{"type", "render"}},
   };
   EXPECT_EQ(lines, expected);
-  std::filesystem::remove(recording);
 }
 
 TEST(ServeServer, PngFramesWhenAsked) {
@@ -188,9 +205,7 @@ TEST(ServeServer, AckOfAFrameNeverSentCloses1008) {
 TEST(ServeServer, NoFramesWhileTheSessionWantsNone) {
   TestServer server;
   TestClient client(server.port());
-  client.send(resize(32, 32));
-  EXPECT_EQ(frame_from(client).header["frame"], 1);
-  client.send(ack(1));
+  settle(client);
   EXPECT_FALSE(client.receive(quiet_period)) << "a frame the session did not want";
   EXPECT_EQ(server.probe->renders, 1);
   // And the next frame is the one the input asked for, with nothing in between.
@@ -203,9 +218,7 @@ TEST(ServeServer, NoFramesWhileTheSessionWantsNone) {
 TEST(ServeServer, DownloadsAndNoticesReachThePage) {
   TestServer server;
   TestClient client(server.port());
-  client.send(resize(32, 32));
-  frame_from(client);
-  client.send(ack(1));
+  settle(client);
   client.send(key("download"));
   client.send(key("notice"));
   bool file = false, notice = false;
@@ -238,9 +251,7 @@ TEST(ServeServer, FloodWhileTheRenderThreadIsBusyLosesNothing) {
   constexpr int events = static_cast<int>(ConnectionLink::inbox_limit) + 30;
   TestServer server;
   TestClient client(server.port());
-  client.send(resize(32, 32));
-  frame_from(client);
-  client.send(ack(1));
+  settle(client);
   client.send(key("block"));
   ASSERT_TRUE(TestServer::eventually([&] { return server.probe->blocked.load(); }));
   for (int seq = 1; seq <= events; ++seq) ASSERT_FALSE(client.send(move(seq))) << "seq " << seq;

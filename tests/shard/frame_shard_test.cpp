@@ -7,16 +7,12 @@
 
 #include "shard/checksum.hpp"
 #include "shard/frame_shard.hpp"
-#include "temp_dir.hpp"
+#include "support/temp_dir.hpp"
 
 namespace epviz::shard {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct Dir : test::TempDir {
-  Dir() : TempDir("frame-shard") {}
-};
 
 FrameBatch batch_of(const fs::path& dir, std::string video_extension) {
   FrameBatch b;
@@ -68,13 +64,13 @@ TEST(FrameShard, MoreShardsThanFramesIsRefusedNamingTheLimit) {
 }
 
 TEST(FrameShard, TheFinishedManifestListsTheShardsFramesWithTheirChecksums) {
-  Dir d;
-  const auto b = batch_of(d.path, "");
+  epviz::test::TempDir d;
+  const auto b = batch_of(d.path(), "");
   auto s = plan_frame_shard(b, {1, 2});  // frames 5..9
   start_frame_shard(s);
   EXPECT_FALSE(read_manifest(s.manifest_path).completed);
   for (int i = 0; i < 10; ++i)
-    std::ofstream(d.path / ("f_000" + std::to_string(i) + ".png")) << "frame " << i;
+    std::ofstream(d.path() / ("f_000" + std::to_string(i) + ".png")) << "frame " << i;
   finish_frame_shard(s, b);
   const auto m = read_manifest(s.manifest_path);
   EXPECT_TRUE(m.completed);
@@ -82,7 +78,7 @@ TEST(FrameShard, TheFinishedManifestListsTheShardsFramesWithTheirChecksums) {
   EXPECT_EQ(m.files.front().path, "f_0005.png");
   EXPECT_EQ(m.files.back().path, "f_0009.png");
   EXPECT_EQ(m.files.front().checksum, checksum_of("frame 5"));
-  EXPECT_TRUE(file_problems(m, d.path).empty());
+  EXPECT_TRUE(file_problems(m, d.path()).empty());
 }
 
 }  // namespace

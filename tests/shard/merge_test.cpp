@@ -8,7 +8,7 @@
 #include "io/bad_input.hpp"
 #include "shard/batch.hpp"
 #include "shard/merged_rows.hpp"
-#include "temp_dir.hpp"
+#include "support/temp_dir.hpp"
 
 namespace epviz::shard {
 namespace {
@@ -17,8 +17,8 @@ namespace fs = std::filesystem;
 
 class Merge : public ::testing::Test {
  protected:
-  test::TempDir temp_{"merge"};
-  const fs::path& dir_ = temp_.path;
+  epviz::test::TempDir temp_;
+  const fs::path& dir_ = temp_.path();
 
   // Shard `index` of a 2-shard sweep of 4 points with hash `hash`, its rows
   // file holding `rows` (one JSON object a line).

@@ -7,7 +7,7 @@
 
 #include "shard/checksum.hpp"
 #include "shard/rows_shard.hpp"
-#include "temp_dir.hpp"
+#include "support/temp_dir.hpp"
 
 namespace epviz::shard {
 namespace {
@@ -36,8 +36,8 @@ TEST(RowsShard, EachShardWritesItsOwnRowsFileBesideTheOneAskedFor) {
 }
 
 TEST(RowsShard, TheManifestIsCompletedWithTheRowsFileAndItsChecksum) {
-  const test::TempDir temp("rows-shard");
-  const fs::path& dir = temp.path;
+  const epviz::test::TempDir temp;
+  const fs::path& dir = temp.path();
   auto s = plan_rows_shard(batch_of(dir / "rows.jsonl"), {0, 2});
   start_rows_shard(s);
   EXPECT_FALSE(read_manifest(s.manifest_path).completed);

@@ -8,6 +8,8 @@
 #include <iterator>
 #include <thread>
 
+#include "support/eventually.hpp"
+#include "support/temp_dir.hpp"
 #include "sweep/atlas.hpp"
 #include "sweep/point_run.hpp"
 #include "sweep/rows_file.hpp"
@@ -64,7 +66,8 @@ TEST(Reference, ARunCloseToItsReferenceIsCloserAtASmallerStep) {
 }
 
 TEST(RowsFile, ResumeKeepsCompleteRowsAndCutsATornLine) {
-  const fs::path p = fs::temp_directory_path() / ("epviz-rows-" + std::to_string(::getpid()));
+  const test::TempDir dir;
+  const fs::path p = dir / "rows.jsonl";
   std::ofstream(p) << R"({"index":3,"sweep":"h"})"
                       "\n"
                       R"({"index":0,"sweep":"h"})"
@@ -80,35 +83,35 @@ TEST(RowsFile, ResumeKeepsCompleteRowsAndCutsATornLine) {
                                   .size());
   EXPECT_THROW(resume_rows(p, "other", 10), RowsFileError);  // rows of another sweep
   EXPECT_THROW(resume_rows(p, "h", 2), RowsFileError);       // index outside the sweep
-  fs::remove(p);
-}
-
-std::string contents(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
 }
 
 // A finished row reaches the file soon, with no further row to push it out
-// (a killed sweep then loses only what it was computing), and rows appended
-// together arrive whole and in order.
+// (a killed sweep then loses only what it was computing), and rows arrive
+// whole and in order: whenever the file is looked at, it holds the first
+// rows appended, none cut.
 TEST(RowsFile, AppendedRowsAreOnDiskWithinAFractionOfASecond) {
-  const fs::path p =
-      fs::temp_directory_path() / ("epviz-rows-append-" + std::to_string(::getpid()));
-  fs::remove(p);
+  const test::TempDir dir;
+  const fs::path p = dir / "rows.jsonl";
+  const std::string row0 = "{\"index\":0}\n", row1 = "{\"index\":1}\n";
   {
     RowAppender rows(p);
     rows.append(R"({"index":0})");
     rows.append(R"({"index":1})");
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(2);
-    while (contents(p).empty() && std::chrono::steady_clock::now() < deadline)
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    EXPECT_EQ(contents(p), "{\"index\":0}\n{\"index\":1}\n")
-        << "rows still held back after 2 s (the writer writes every 0.2 s)";
+    // The writer may take the rows in one write or two; wait for both.
+    std::string seen;
+    const bool both = test::eventually(
+        [&] {
+          seen = test::slurp(p);
+          EXPECT_TRUE(seen.empty() || seen == row0 || seen == row0 + row1)
+              << "torn or out of order: " << seen;
+          return seen == row0 + row1;
+        },
+        std::chrono::seconds(2));
+    EXPECT_TRUE(both) << "rows still held back after 2 s (the writer writes every 0.2 s): " << seen;
     rows.append(R"({"index":2})");
   }
-  EXPECT_EQ(contents(p), "{\"index\":0}\n{\"index\":1}\n{\"index\":2}\n")
+  EXPECT_EQ(test::slurp(p), row0 + row1 + "{\"index\":2}\n")
       << "the last row was not written when the appender closed";
-  fs::remove(p);
 }
 
 Json row(long index, const char* method, double step, double energy, bool failed) {

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "physics/cases.hpp"
+#include "support/temp_dir.hpp"
 #include "sweep/rows_by_index.hpp"
 #include "sweep/sweep_runner.hpp"
 
@@ -37,8 +38,7 @@ std::vector<PreparedPoint> points(long n) {
 }
 
 TEST(SweepRunner, FourThreadsWriteEveryRowOnceAsOneThreadDoes) {
-  const fs::path dir = fs::temp_directory_path() / ("epviz-runner-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const test::TempDir dir;
   SweepSpec spec;
   spec.hash = "h";
   const auto prepared = points(40);
@@ -63,7 +63,6 @@ TEST(SweepRunner, FourThreadsWriteEveryRowOnceAsOneThreadDoes) {
   EXPECT_EQ(a, b);
   EXPECT_EQ(b.at(4)["failure_kind"], "step_budget");
   EXPECT_TRUE(b.at(3)["failure"].is_null());
-  fs::remove_all(dir);
 }
 
 }  // namespace
