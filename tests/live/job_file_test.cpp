@@ -5,7 +5,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "../app/cli_runner.hpp"
+#include "support/cli.hpp"
 #include "job/schema.hpp"
 #include "live/job_file.hpp"
 #include "scene/theme.hpp"
