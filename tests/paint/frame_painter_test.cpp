@@ -44,7 +44,12 @@ glm::vec4 background_of(const scene::Frame& f) {
 }
 
 scene::Layers only(bool body, bool sphere, bool riccati, bool overlay) {
-  return {body, sphere, riccati, overlay};
+  auto l = scene::Layers::only({});
+  l.body = body;
+  l.sphere = sphere;
+  l.riccati = riccati;
+  l.overlay = overlay;
+  return l;
 }
 
 struct Named {
