@@ -83,8 +83,7 @@ void set_from_option(const job::FieldInfo& f, const SimulationOptions::Value& v,
   require_in_range(f, v.text, x);
   g.set(x, f.flag);
 }
-void set_from_option(const job::FieldInfo& f, const SimulationOptions::Value& v,
-                     Given<double>& g) {
+void set_from_option(const job::FieldInfo& f, const SimulationOptions::Value& v, Given<double>& g) {
   if (v.text.empty()) return;
   const double x = parse_number(f.flag, v.text);
   require_in_range(f, v.text, std::array<double, 1>{x});
@@ -103,8 +102,7 @@ SimulationFields fields_from_options(const SimulationOptions& o) {
   SimulationFields fields;
   const auto& table = job::simulation_field_table();
   for (std::size_t i = 0; i < table.size(); ++i)
-    std::visit([&](auto m) { set_from_option(table[i], o.values[i], fields.*m); },
-               table[i].member);
+    std::visit([&](auto m) { set_from_option(table[i], o.values[i], fields.*m); }, table[i].member);
   return fields;
 }
 

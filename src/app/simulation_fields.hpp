@@ -27,8 +27,8 @@ using job::SimulationFields;
 // not given (an empty value is refused while parsing, see reject_empty_values).
 struct SimulationOptions {
   struct Value {
-    std::string text;   // options that take a value
-    bool set = false;   // flags
+    std::string text;  // options that take a value
+    bool set = false;  // flags
   };
   std::vector<Value> values = std::vector<Value>(job::simulation_field_table().size());
 };

@@ -160,7 +160,8 @@ const std::vector<FieldInfo>& simulation_field_table() {
 
 const FieldInfo* find_field(std::string_view key) {
   const auto& t = simulation_field_table();
-  const auto it = std::find_if(t.begin(), t.end(), [&](const FieldInfo& f) { return f.key == key; });
+  const auto it =
+      std::find_if(t.begin(), t.end(), [&](const FieldInfo& f) { return f.key == key; });
   return it == t.end() ? nullptr : &*it;
 }
 

@@ -7,8 +7,7 @@ const std::array<LayerInfo, layer_count>& layer_table() {
       {Layer::body, &Layers::body, "body", true,
        "the body, its principal axes, fixed point and centre of mass", "body"},
       {Layer::sphere, &Layers::sphere, "sphere", true, "the unit sphere with the trail", "sphere"},
-      {Layer::riccati, &Layers::riccati, "riccati", true, "the (a, b) plane panel",
-       "(a, b) plane"},
+      {Layer::riccati, &Layers::riccati, "riccati", true, "the (a, b) plane panel", "(a, b) plane"},
       {Layer::overlay, &Layers::overlay, "overlay", true, "case, time, method and drifts",
        "info overlay"},
   }};

@@ -59,8 +59,8 @@ TEST(SweepAxes, EverySweepableFieldIsAnAxisThatSetsItPerPointNamingTheAxis) {
       EXPECT_EQ(written[f.key], values[std::size_t(i)]);
       std::visit(
           [&](auto m) {
-            EXPECT_EQ((p.fields.*m).origin,
-                      "s.json: key 'axes[0]' (" + f.key + " = " + values[std::size_t(i)].dump() + ")");
+            EXPECT_EQ((p.fields.*m).origin, "s.json: key 'axes[0]' (" + f.key + " = " +
+                                                values[std::size_t(i)].dump() + ")");
           },
           f.member);
     }
@@ -93,7 +93,8 @@ std::string point_error(const SweepSpec& s, long index) {
 }
 
 TEST(SweepAxes, AnFtleWindowIsBoundLikeAStepOverThePointsTEnd) {
-  const std::string head = R"({"simulation": {"t_end": 2}, "axes": [{"field": "t_end", "values": [2, 4]}], )";
+  const std::string head =
+      R"({"simulation": {"t_end": 2}, "axes": [{"field": "t_end", "values": [2, 4]}], )";
   for (const char* window : {"1e-300", "1e-9"}) {
     SCOPED_TRACE(window);
     const auto s = parse(head + R"("ftle": {"window": )" + window + "}}");
