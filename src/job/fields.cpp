@@ -85,7 +85,8 @@ std::string FieldInfo::range_text() const {
   const std::string span = "from " + format_number(min) + " to " + format_number(max);
   switch (type) {
     case FieldType::vec3: return "three numbers " + span;
-    case FieldType::integer: return "an integer " + span;
+    case FieldType::integer:  // as io::ObjectReader::integer writes it
+      return "an integer from " + std::to_string(long(min)) + " to " + std::to_string(long(max));
     case FieldType::number:
       if (min_exclusive && min == 0.0 && max == inf) return "a positive number";
       return "a number " + span;

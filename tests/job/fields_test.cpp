@@ -59,8 +59,9 @@ TEST(JobFields, EveryBoundedFieldKeepsToItsRange) {
       EXPECT_NE(e.find("key 'simulation." + f.key + "': expected " + f.range_text()),
                 std::string::npos)
           << past << " -> " << e;
-      if (!(low && f.min_exclusive))
+      if (!(low && f.min_exclusive)) {
         EXPECT_EQ(error_of(with_simulation(f.key, value(end))), "") << end;
+      }
     }
   }
 }

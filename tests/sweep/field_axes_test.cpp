@@ -85,7 +85,8 @@ TEST(SweepAxes, TimeSamplesAndDriftAxesSetThoseFields) {
 
 std::string point_error(const SweepSpec& s, long index) {
   try {
-    PointReader(s)(index);
+    PointReader read(s);
+    read(index);
   } catch (const io::JobError& e) {
     return e.what();
   }
