@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <sstream>
+#include <variant>
 
 #include "app/cli_values.hpp"
 #include "app/usage_error.hpp"
@@ -13,12 +14,6 @@ namespace epviz::app {
 namespace {
 
 Eigen::Vector3d to_vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
-
-std::string case_names() {
-  std::string s;
-  for (const auto& p : physics::case_presets()) s += (s.empty() ? "" : ", ") + p.name;
-  return s;
-}
 
 // Where a physics field name ("inertia") was given, for messages.
 std::string origin_of(const SimulationFields& f, const std::string& field) {
@@ -49,78 +44,66 @@ std::string waiver_hint(physics::Waiver w, const std::string& origin) {
 }  // namespace
 
 void add_simulation_options(CLI::App& cmd, SimulationOptions& o) {
-  cmd.add_option("--case", o.case_name,
-                 "euler|lagrange|kovalevskaya|goryachev-chaplygin|hess|generic, custom (no "
-                 "case: your own body), or all");
-  cmd.add_option("--inertia", o.inertia, "principal moments I1,I2,I3");
-  cmd.add_option("--com", o.com, "centre of mass a0,b0,c0 in body axes");
-  cmd.add_option("--weight", o.weight, "weight P = m g");
-  cmd.add_option("--omega", o.omega, "initial angular velocity W1,W2,W3 (body axes)");
-  cmd.add_option("--gamma", o.gamma, "initial unit vertical G1,G2,G3 (body axes)");
-  cmd.add_option("--formulation", o.formulation,
-                 sim::names_joined(sim::all_formulations()) + " (default direct)");
-  cmd.add_option("--method", o.method, sim::names_joined(sim::all_methods()) + " (default dop853)");
-  cmd.add_option("--tol", o.tol,
-                 "relative and absolute tolerance of adaptive methods (default 1e-10)");
-  cmd.add_option("--step", o.step, "largest step of fixed-step methods (default 0.01)");
-  cmd.add_option("--t-end", o.t_end, "final time (default 20)");
-  cmd.add_option("--samples", o.samples, "N: write N+1 equally spaced samples (default 200)");
-  cmd.add_option("--max-drift", o.max_drift,
-                 "fail (lost the motion) at the first sample whose relative energy or |gamma|^2 "
-                 "drift exceeds X (default 1)");
-  cmd.add_flag("--allow-nonphysical", o.allow_nonphysical,
-               "accept moments that break the triangle inequalities");
-  cmd.add_flag("--normalize-gamma", o.normalize_gamma, "rescale a non-unit initial gamma");
-  cmd.add_flag("--no-chart-switch", o.no_chart_switch,
-               "riccati: keep the north chart even near the south pole (to show the pole)");
+  const auto& table = job::simulation_field_table();
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const auto& f = table[i];
+    if (f.type == job::FieldType::flag) {
+      cmd.add_flag(f.flag, o.values[i].set, f.help);
+      continue;
+    }
+    std::string help = f.help;
+    if (!f.choices.empty()) help += ": " + f.choices;
+    if (f.key == "case") help += "; all: every preset";  // simulate runs each in turn
+    if (const auto range = f.range_text(); !range.empty()) help += " (" + range + ")";
+    if (!f.default_value.empty()) help += " (default " + f.default_value + ")";
+    cmd.add_option(f.flag, o.values[i].text, help);
+  }
 }
 
-SimulationFields fields_from_options(const SimulationOptions& o) {
-  SimulationFields f;
-  // The same bounds as the job's keys (job/schema.hpp).
-  auto vec = [](Given<std::array<double, 3>>& g, const std::string& v, const char* opt, double lo,
-                double hi) {
-    if (v.empty()) return;
-    const auto x = parse_vec3(opt, v);
-    for (double c : x)
-      if (!(c >= lo && c <= hi))
-        throw UsageError(std::string(opt) + ": expected three numbers from " +
-                         job::format_number(lo) + " to " + job::format_number(hi) + ", got '" +
-                         io::printable(v) + "'");
-    g.set(x, opt);
-  };
-  auto num = [](Given<double>& g, const std::string& v, const char* opt, bool positive,
-                double max_abs = HUGE_VAL) {
-    if (v.empty()) return;
-    const double x = parse_number(opt, v);
-    if (positive && !(x > 0.0))
-      throw UsageError(std::string(opt) + ": expected a positive number, got '" + io::printable(v) +
+namespace {
+
+// The value of one option into its field, converted and checked against the
+// field's range as the job's key is.
+void set_from_option(const job::FieldInfo& f, const SimulationOptions::Value& v,
+                     Given<std::string>& g) {
+  if (!v.text.empty()) g.set(v.text, f.flag);
+}
+// Each of `numbers`, read from `text`, within the field's range.
+template <class Numbers>
+void require_in_range(const job::FieldInfo& f, const std::string& text, const Numbers& numbers) {
+  for (double x : numbers)
+    if (!f.in_range(x))
+      throw UsageError(f.flag + ": expected " + f.range_text() + ", got '" + io::printable(text) +
                        "'");
-    if (!(std::abs(x) <= max_abs))
-      throw UsageError(std::string(opt) + ": expected a number from " +
-                       job::format_number(-max_abs) + " to " + job::format_number(max_abs) +
-                       ", got '" + io::printable(v) + "'");
-    g.set(x, opt);
-  };
-  using job::max_magnitude;
-  vec(f.inertia, o.inertia, "--inertia", job::min_moment, job::max_moment);
-  vec(f.com, o.com, "--com", -max_magnitude, max_magnitude);
-  vec(f.omega, o.omega, "--omega", -max_magnitude, max_magnitude);
-  vec(f.gamma, o.gamma, "--gamma", -max_magnitude, max_magnitude);
-  num(f.weight, o.weight, "--weight", false, max_magnitude);
-  num(f.tol, o.tol, "--tol", true);
-  num(f.step, o.step, "--step", true);
-  num(f.t_end, o.t_end, "--t-end", true);
-  num(f.max_drift, o.max_drift, "--max-drift", true);
-  if (!o.case_name.empty()) f.case_name.set(o.case_name, "--case");
-  if (!o.samples.empty())
-    f.samples.set(parse_integer("--samples", o.samples, 1, job::max_samples), "--samples");
-  if (!o.formulation.empty()) f.formulation.set(o.formulation, "--formulation");
-  if (!o.method.empty()) f.method.set(o.method, "--method");
-  if (o.allow_nonphysical) f.allow_nonphysical.set(true, "--allow-nonphysical");
-  if (o.normalize_gamma) f.normalize_gamma.set(true, "--normalize-gamma");
-  if (o.no_chart_switch) f.chart_switch.set(false, "--no-chart-switch");
-  return f;
+}
+void set_from_option(const job::FieldInfo& f, const SimulationOptions::Value& v,
+                     Given<std::array<double, 3>>& g) {
+  if (v.text.empty()) return;
+  const auto x = parse_vec3(f.flag, v.text);
+  require_in_range(f, v.text, x);
+  g.set(x, f.flag);
+}
+void set_from_option(const job::FieldInfo& f, const SimulationOptions::Value& v, Given<double>& g) {
+  if (v.text.empty()) return;
+  const double x = parse_number(f.flag, v.text);
+  require_in_range(f, v.text, std::array<double, 1>{x});
+  g.set(x, f.flag);
+}
+void set_from_option(const job::FieldInfo& f, const SimulationOptions::Value& v, Given<long>& g) {
+  if (!v.text.empty()) g.set(parse_integer(f.flag, v.text, long(f.min), long(f.max)), f.flag);
+}
+void set_from_option(const job::FieldInfo& f, const SimulationOptions::Value& v, Given<bool>& g) {
+  if (v.set) g.set(f.flag_sets, f.flag);
+}
+
+}  // namespace
+
+SimulationFields fields_from_options(const SimulationOptions& o) {
+  SimulationFields fields;
+  const auto& table = job::simulation_field_table();
+  for (std::size_t i = 0; i < table.size(); ++i)
+    std::visit([&](auto m) { set_from_option(table[i], o.values[i], fields.*m); }, table[i].member);
+  return fields;
 }
 
 sim::RunSpec resolve(const SimulationFields& f) {
@@ -133,7 +116,7 @@ sim::RunSpec resolve(const SimulationFields& f) {
     auto found = physics::case_from_name(*f.case_name);
     if (!found)
       throw UsageError(f.case_name.origin + ": unknown case '" + io::printable(*f.case_name) +
-                       "' (allowed: " + case_names() + ", custom)");
+                       "' (allowed: " + job::find_field("case")->choices + ")");
     c = *found;
   }
   const auto& p = physics::preset(c == physics::Case::custom ? physics::Case::generic : c);
@@ -169,10 +152,7 @@ sim::RunSpec resolve(const SimulationFields& f) {
     if (f.step)
       throw UsageError(f.step.origin + ": method " + m +
                        " is adaptive and takes a tolerance (--tol), not a step");
-    if (f.tol) spec.tol = *f.tol;
-    if (!(spec.tol >= 1e-15 && spec.tol <= 1e-1))
-      throw UsageError(f.tol.origin + ": tolerance must be between 1e-15 and 0.1, got " +
-                       std::to_string(spec.tol));
+    if (f.tol) spec.tol = *f.tol;  // in range: the field table's bounds hold where it is read
   } else {
     if (f.tol)
       throw UsageError(f.tol.origin + ": method " + m +
@@ -190,8 +170,9 @@ sim::RunSpec resolve(const SimulationFields& f) {
   if (f.t_end) spec.t_end = *f.t_end;
   if (f.max_drift) spec.max_drift = *f.max_drift;
   if (f.samples) spec.samples = int(*f.samples);
-  if (!sim::is_adaptive(spec.method) && spec.t_end / spec.step > 1e9)
-    throw UsageError(f.step.origin + ": t_end / step exceeds 1e9 steps");
+  if (!sim::is_adaptive(spec.method) && spec.t_end / spec.step > job::max_steps_per_run)
+    throw UsageError(f.step.origin + ": t_end / step exceeds " +
+                     job::format_number(job::max_steps_per_run) + " steps");
 
   try {
     physics::validate_body(spec.body, f.allow_nonphysical && *f.allow_nonphysical);

@@ -4,8 +4,10 @@
 // Each field remembers where it came from ("--inertia", "job.json: key 'inertia'")
 // so that an error names what the user wrote.
 #include <string>
+#include <vector>
 
 #include "job/document.hpp"
+#include "job/fields.hpp"
 #include "job/schema.hpp"
 #include "sim/run_spec.hpp"
 
@@ -20,16 +22,19 @@ using job::Given;
 using job::read_simulation_fields;
 using job::SimulationFields;
 
-// The options of `epviz simulate` that describe the simulation, as typed;
-// empty: not given (an empty value is refused while parsing, see
-// reject_empty_values).
+// The options of `epviz simulate` that describe the simulation, as typed,
+// one per field of job::simulation_field_table() in its order; text empty:
+// not given (an empty value is refused while parsing, see reject_empty_values).
 struct SimulationOptions {
-  std::string case_name, inertia, com, weight, omega, gamma, formulation, method, tol, step, t_end,
-      samples, max_drift;
-  bool allow_nonphysical = false, normalize_gamma = false, no_chart_switch = false;
+  struct Value {
+    std::string text;  // options that take a value
+    bool set = false;  // flags
+  };
+  std::vector<Value> values = std::vector<Value>(job::simulation_field_table().size());
 };
 
-// Adds --case, --inertia, ... --no-chart-switch to `cmd`, read into `options`.
+// Adds an option per field (--case, --inertia, ... --no-chart-switch) to
+// `cmd`, read into `options`, with the field's help, choices and default.
 void add_simulation_options(CLI::App& cmd, SimulationOptions& options);
 
 // The fields the options give, each converted and named by its option; throws

@@ -6,9 +6,11 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <variant>
 
 #include "io/printable.hpp"
 #include "job/schema_entries.hpp"
+#include "scene/layers.hpp"
 #include "scene/theme.hpp"
 
 namespace epviz::job {
@@ -22,125 +24,75 @@ using Vec3 = std::array<double, 3>;
 // ---- the "simulation" object: SimulationFields -----------------------------
 
 using Sim = Entry<SimulationFields>;
-template <class T>
-using SimMember = Given<T> SimulationFields::*;
 
-Sim sim_text(const char* key, SimMember<std::string> m, std::string allowed, std::string help) {
-  return {{key, ValueType::text, "", std::move(allowed), std::move(help)},
-          [=](io::ObjectReader& r, SimulationFields& f) {
-            if (auto v = r.string(key)) (f.*m).set(*v, r.where(key));
+void read_value(io::ObjectReader& r, const FieldInfo& info, Given<std::string>& g) {
+  if (auto v = r.string(info.key)) g.set(*v, r.where(info.key));
+}
+// Each of `numbers` within the field's range, or an error naming the range.
+template <class Numbers>
+void require_in_range(io::ObjectReader& r, const FieldInfo& info, const Numbers& numbers) {
+  for (double x : numbers)
+    if (!info.in_range(x))
+      r.fail(info.key, "expected " + info.range_text() + ", got " + io::describe(*r.raw(info.key)));
+}
+void read_value(io::ObjectReader& r, const FieldInfo& info, Given<Vec3>& g) {
+  if (auto v = r.vec3(info.key)) {
+    require_in_range(r, info, *v);
+    g.set(*v, r.where(info.key));
+  }
+}
+void read_value(io::ObjectReader& r, const FieldInfo& info, Given<double>& g) {
+  if (auto v = r.number(info.key)) {
+    require_in_range(r, info, std::array<double, 1>{*v});
+    g.set(*v, r.where(info.key));
+  }
+}
+void read_value(io::ObjectReader& r, const FieldInfo& info, Given<long>& g) {
+  if (auto v = r.integer(info.key, long(info.min), long(info.max))) g.set(*v, r.where(info.key));
+}
+void read_value(io::ObjectReader& r, const FieldInfo& info, Given<bool>& g) {
+  if (auto v = r.boolean(info.key)) g.set(*v, r.where(info.key));
+}
+
+ValueType value_type(FieldType t) {
+  switch (t) {
+    case FieldType::text: return ValueType::text;
+    case FieldType::vec3: return ValueType::vec3;
+    case FieldType::number: return ValueType::number;
+    case FieldType::integer: return ValueType::integer;
+    case FieldType::flag: return ValueType::boolean;
+  }
+  return ValueType::text;
+}
+
+// One key of the "simulation" object, from its field (job/fields.hpp).
+Sim sim_entry(const FieldInfo& info) {
+  std::string allowed = info.type == FieldType::text   ? info.choices
+                        : info.type == FieldType::flag ? "true, false"
+                                                       : info.range_text();
+  // A render job's tolerance may also follow its resolution.
+  if (info.key == "tol") allowed += ", or \"auto\"";
+  return {{info.key, value_type(info.type), info.key == "tol" ? "auto" : info.default_value,
+           allowed, info.help},
+          [&info](io::ObjectReader& r, SimulationFields& f) {
+            std::visit([&](auto m) { read_value(r, info, f.*m); }, info.member);
           },
-          [=](const SimulationFields& f, Json& j) {
-            if (f.*m) j[key] = *(f.*m);
+          [&info](const SimulationFields& f, Json& j) {
+            std::visit(
+                [&](auto m) {
+                  if (f.*m) j[info.key] = *(f.*m);
+                },
+                info.member);
           }};
 }
 
-// Three numbers, each from `lo` to `hi`.
-Sim sim_vec(const char* key, SimMember<Vec3> m, double lo, double hi, std::string help) {
-  const std::string allowed =
-      "three numbers from " + format_number(lo) + " to " + format_number(hi);
-  return {{key, ValueType::vec3, "", allowed, std::move(help)},
-          [=](io::ObjectReader& r, SimulationFields& f) {
-            if (auto v = r.vec3(key)) {
-              for (double x : *v)
-                if (!(x >= lo && x <= hi))
-                  r.fail(key, "expected " + allowed + ", got " + io::describe(*r.raw(key)));
-              (f.*m).set(*v, r.where(key));
-            }
-          },
-          [=](const SimulationFields& f, Json& j) {
-            if (f.*m) j[key] = *(f.*m);
-          }};
-}
-
-Sim sim_number(const char* key, SimMember<double> m, bool positive, std::string help) {
-  return {{key, ValueType::number, "", positive ? "> 0" : "", std::move(help)},
-          [=](io::ObjectReader& r, SimulationFields& f) {
-            if (auto v = positive ? r.positive_number(key) : r.number(key))
-              (f.*m).set(*v, r.where(key));
-          },
-          [=](const SimulationFields& f, Json& j) {
-            if (f.*m) j[key] = *(f.*m);
-          }};
-}
-
-// A number from `lo` to `hi`.
-Sim sim_number_in(const char* key, SimMember<double> m, double lo, double hi, std::string help) {
-  const std::string allowed = format_number(lo) + " to " + format_number(hi);
-  return {{key, ValueType::number, "", allowed, std::move(help)},
-          [=](io::ObjectReader& r, SimulationFields& f) {
-            if (auto v = r.number_in(key, lo, hi, "a number from " + allowed))
-              (f.*m).set(*v, r.where(key));
-          },
-          [=](const SimulationFields& f, Json& j) {
-            if (f.*m) j[key] = *(f.*m);
-          }};
-}
-
-Sim sim_flag(const char* key, SimMember<bool> m, std::string help) {
-  return {{key, ValueType::boolean, "false", "true, false", std::move(help)},
-          [=](io::ObjectReader& r, SimulationFields& f) {
-            if (auto v = r.boolean(key)) (f.*m).set(*v, r.where(key));
-          },
-          [=](const SimulationFields& f, Json& j) {
-            if (f.*m) j[key] = *(f.*m);
-          }};
-}
-
-// "tol" is read by read_simulation_fields itself ("auto" or a number).
+// "tol": "auto" is read by read_simulation_fields itself.
 const std::vector<Sim>& simulation_entries() {
-  static const std::vector<Sim> entries{
-      sim_text("case", &SimulationFields::case_name, "a case preset (epviz cases), or custom",
-               "the classical case whose body and state are the defaults; none or custom: a "
-               "body of one's own (the generic preset's values for what is not given)"),
-      sim_vec("inertia", &SimulationFields::inertia, min_moment, max_moment,
-              "principal moments I1, I2, I3"),
-      sim_vec("com", &SimulationFields::com, -max_magnitude, max_magnitude,
-              "centre of mass in body axes"),
-      sim_vec("omega", &SimulationFields::omega, -max_magnitude, max_magnitude,
-              "initial angular velocity in body axes"),
-      sim_vec("gamma", &SimulationFields::gamma, -max_magnitude, max_magnitude,
-              "initial vertical in body axes (unit length)"),
-      sim_number_in("weight", &SimulationFields::weight, -max_magnitude, max_magnitude,
-                    "weight m g"),
-      {{"tol", ValueType::number, "auto", "1e-15 to 0.1, or \"auto\"",
-        "tolerance of an adaptive method; auto: an error well below a pixel at the job's "
-        "resolution"},
-       [](io::ObjectReader& r, SimulationFields& f) {
-         if (auto v = r.positive_number("tol")) f.tol.set(*v, r.where("tol"));
-       },
-       [](const SimulationFields& f, Json& j) {
-         if (f.tol) j["tol"] = *f.tol;
-       }},
-      sim_number("step", &SimulationFields::step, true, "step of a fixed-step method"),
-      sim_number("t_end", &SimulationFields::t_end, true, "simulation time of the run"),
-      {{"samples", ValueType::integer, "", "1 to " + std::to_string(max_samples),
-        "output samples (epviz simulate)"},
-       [](io::ObjectReader& r, SimulationFields& f) {
-         if (auto v = r.integer("samples", 1, max_samples)) f.samples.set(*v, r.where("samples"));
-       },
-       [](const SimulationFields& f, Json& j) {
-         if (f.samples) j["samples"] = *f.samples;
-       }},
-      sim_text("formulation", &SimulationFields::formulation,
-               "a formulation (epviz simulate --help)", "the equations integrated"),
-      sim_text("method", &SimulationFields::method, "a method (epviz simulate --help)",
-               "the integrator"),
-      sim_flag("allow_nonphysical", &SimulationFields::allow_nonphysical,
-               "accept moments that violate the triangle inequality"),
-      sim_flag("normalize_gamma", &SimulationFields::normalize_gamma, "scale gamma to unit length"),
-      sim_flag("chart_switch", &SimulationFields::chart_switch,
-               "riccati: switch charts near infinity"),
-      {{"max_drift", ValueType::number, "1", "> 0",
-        "the run fails (lost the motion) at the first output time whose relative drift of the "
-        "energy or of |gamma|^2 exceeds this"},
-       [](io::ObjectReader& r, SimulationFields& f) {
-         if (auto v = r.positive_number("max_drift")) f.max_drift.set(*v, r.where("max_drift"));
-       },
-       [](const SimulationFields& f, Json& j) {
-         if (f.max_drift) j["max_drift"] = *f.max_drift;
-       }},
-  };
+  static const std::vector<Sim> entries = [] {
+    std::vector<Sim> e;
+    for (const auto& info : simulation_field_table()) e.push_back(sim_entry(info));
+    return e;
+  }();
   return entries;
 }
 
@@ -172,12 +124,18 @@ Job colour(const char* key, scene::Rgba scene::Colours::*m, std::string help) {
           [=](const JobDocument& d, Json& j) { j[key] = hex_colour(d.scene.colours.*m); }};
 }
 
-Job layer(const char* key, bool scene::Layers::*m, std::string help) {
-  return {{key, ValueType::boolean, "true", "true, false", std::move(help)},
-          [=](io::ObjectReader& r, JobDocument& d) {
-            if (auto v = r.boolean(key)) d.scene.layers.*m = *v;
+Job layer(const scene::LayerInfo& l) {
+  return {{l.key, ValueType::boolean, l.default_on ? "true" : "false", "true, false", l.help},
+          [&l](io::ObjectReader& r, JobDocument& d) {
+            if (auto v = r.boolean(l.key)) d.scene.layers.*l.member = *v;
           },
-          [=](const JobDocument& d, Json& j) { j[key] = d.scene.layers.*m; }};
+          [&l](const JobDocument& d, Json& j) { j[l.key] = d.scene.layers.*l.member; }};
+}
+
+std::vector<Job> layer_entries() {
+  std::vector<Job> entries;
+  for (const auto& l : scene::layer_table()) entries.push_back(layer(l));
+  return entries;
 }
 
 std::string fmt(double v) {
@@ -345,17 +303,10 @@ const std::vector<Job>& job_entries() {
       {{"layers", ValueType::object, "", "", "what is drawn (at least one)"},
        {},
        {},
-       {
-           layer("body", &scene::Layers::body,
-                 "the body, its principal axes, fixed point and centre of mass"),
-           layer("sphere", &scene::Layers::sphere, "the unit sphere with the trail"),
-           layer("riccati", &scene::Layers::riccati, "the (a, b) plane panel"),
-           layer("overlay", &scene::Layers::overlay, "case, time, method and drifts"),
-       },
+       layer_entries(),
        [](const io::ObjectReader& r, const JobDocument& d) {
-         const auto& l = d.scene.layers;
-         if (!l.body && !l.sphere && !l.riccati && !l.overlay)
-           r.fail("body", "every layer is switched off: nothing to draw");
+         if (!d.scene.layers.any())
+           r.fail(scene::layer_table().front().key, "every layer is switched off: nothing to draw");
        }},
       {{"colours", ValueType::object, "", "", "colours over the theme's"},
        {},
@@ -458,45 +409,15 @@ const std::vector<Job>& job_entries() {
   return entries;
 }
 
-template <class T>
-void take(Given<T>& mine, const Given<T>& theirs) {
-  if (theirs) mine = theirs;
-}
-
 }  // namespace
 
-std::string format_number(double value) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", value);
-  std::string s = buf;
-  // "1e+06" -> "1e6", "1e-06" -> "1e-6": as one would write it in a job.
-  if (const auto e = s.find('e'); e != std::string::npos) {
-    std::string mantissa = s.substr(0, e), exponent = s.substr(e + 1);
-    const bool negative = exponent[0] == '-';
-    if (exponent[0] == '+' || exponent[0] == '-') exponent.erase(0, 1);
-    exponent.erase(0, std::min(exponent.find_first_not_of('0'), exponent.size() - 1));
-    s = mantissa + "e" + (negative ? "-" : "") + exponent;
-  }
-  return s;
-}
-
 void SimulationFields::overlay(const SimulationFields& o) {
-  take(case_name, o.case_name);
-  take(inertia, o.inertia);
-  take(com, o.com);
-  take(omega, o.omega);
-  take(gamma, o.gamma);
-  take(weight, o.weight);
-  take(tol, o.tol);
-  take(step, o.step);
-  take(t_end, o.t_end);
-  take(samples, o.samples);
-  take(formulation, o.formulation);
-  take(method, o.method);
-  take(allow_nonphysical, o.allow_nonphysical);
-  take(normalize_gamma, o.normalize_gamma);
-  take(chart_switch, o.chart_switch);
-  take(max_drift, o.max_drift);
+  for (const auto& info : simulation_field_table())
+    std::visit(
+        [&](auto m) {
+          if (o.*m) this->*m = o.*m;
+        },
+        info.member);
 }
 
 std::string_view output_format_name(OutputFormat f) {

@@ -10,6 +10,7 @@
 
 #include "io/json_reader.hpp"
 #include "job/document.hpp"
+#include "job/fields.hpp"
 
 namespace epviz::job {
 
@@ -23,18 +24,9 @@ struct KeyInfo {
   std::string help;
 };
 
-// Bounds on numbers a job (or `epviz simulate`) may give beyond their type:
-// wide enough for any unit system, narrow enough that energies, steps and
-// the drawn body's proportions stay finite in double and float arithmetic.
-inline constexpr long max_samples = 100'000'000;
-inline constexpr double min_moment = 1e-6, max_moment = 1e6;  // each principal moment
-inline constexpr double max_magnitude = 1e6;  // each component of com, omega, gamma; weight
 inline constexpr double min_plane_extent = 0.01, max_plane_extent = 1000.0;
 inline constexpr double min_camera_distance = 1.2;  // exclusive: the camera would be inside
 inline constexpr double max_camera_distance = 100.0;
-
-// A bound as messages and the keys' table write it: "1e-6", "0.01", "1000".
-std::string format_number(double value);
 
 // Every key of a single render job, in the order a job is written.
 std::vector<KeyInfo> render_job_keys();

@@ -315,14 +315,13 @@ void ControlPanel::draw_view(const LiveScene& scene, PanelActions& out) {
     if (e.scene.view == scene::View::space) e.run.formulation = sim::Formulation::spinor;
     out.rerun = e;
   }
-  auto& l = e.scene.layers;
-  bool layers_changed = ImGui::Checkbox("body", &l.body);
-  ImGui::SameLine();
-  layers_changed |= ImGui::Checkbox("sphere", &l.sphere);
-  ImGui::SameLine();
-  layers_changed |= ImGui::Checkbox("(a, b) plane", &l.riccati);
-  layers_changed |= ImGui::Checkbox("info overlay", &l.overlay);
-  if (layers_changed && (l.body || l.sphere || l.riccati || l.overlay)) out.view = e;
+  bool layers_changed = false;
+  for (std::size_t i = 0; i < scene::layer_count; ++i) {
+    const auto& l = scene::layer_table()[i];
+    if (i % 3 != 0) ImGui::SameLine();  // three checkboxes a row
+    layers_changed |= ImGui::Checkbox(l.panel_label, &(e.scene.layers.*l.member));
+  }
+  if (layers_changed && e.scene.layers.any()) out.view = e;
   if (drag_double("trail length", &e.scene.trail_length, 0.1, 0.5, 1000.0, "%.3g")) out.rerun = e;
   if (ImGui::Button("Reset camera")) {
     e.scene.camera = scene::CameraSettings{};

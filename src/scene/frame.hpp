@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "scene/layers.hpp"
+
 namespace epviz::scene {
 
 using Rgba = std::array<float, 4>;  // sRGB 0..1 as in "#rrggbb", straight alpha
@@ -16,13 +18,6 @@ using Rgba = std::array<float, 4>;  // sRGB 0..1 as in "#rrggbb", straight alpha
 enum class View {
   body,   // body axes fixed on screen; gamma (the vertical seen from the body) moves
   space,  // the vertical fixed (z up); the body turns, precesses and nutates
-};
-
-struct Layers {
-  bool body = true;     // the body, its principal axes, fixed point and centre of mass
-  bool sphere = true;   // translucent unit sphere with the trail
-  bool riccati = true;  // the (a, b) plane panel
-  bool overlay = true;  // ImGui text: case, parameters, time, method, drifts
 };
 
 struct CameraSettings {

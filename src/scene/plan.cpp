@@ -39,9 +39,9 @@ void trail_pixel_scales(const SceneSettings& s, double& sphere_px, double& plane
   q.height = s.height;
   q.camera_distance = s.camera.distance;
   q.plane_extent = s.plane_extent;
-  q.layers = {false, true, false, false};
+  q.layers = Layers::only({Layer::sphere});
   sphere_px = frame_layout(q).sphere_px_per_unit;
-  q.layers = {false, false, true, false};
+  q.layers = Layers::only({Layer::riccati});
   plane_px = frame_layout(q).plane_px_per_unit;
 }
 

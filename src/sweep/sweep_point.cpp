@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "io/json_reader.hpp"
+#include "job/fields.hpp"
 #include "job/schema.hpp"
 #include "physics/cases.hpp"
 #include "physics/invariants.hpp"
@@ -34,16 +35,11 @@ std::array<double, 3> current_vector(job::SimulationFields& f, const std::string
   return {v[0], v[1], v[2]};
 }
 
-// The one field `name` of `f` was given by `origin`, so messages about it name the axis.
-void set_origin(job::SimulationFields& f, const std::string& name, const std::string& origin) {
-  if (name == "inertia" || name == "com" || name == "omega" || name == "gamma")
-    vector_field(f, name).origin = origin;
-  if (name == "weight") f.weight.origin = origin;
-  if (name == "case") f.case_name.origin = origin;
-  if (name == "method") f.method.origin = origin;
-  if (name == "formulation") f.formulation.origin = origin;
-  if (name == "step") f.step.origin = origin;
-  if (name == "tol") f.tol.origin = origin;
+// Every field `f` gives was given by `origin`, so messages about it name the axis.
+void set_origin(job::SimulationFields& f, const std::string& origin) {
+  job::for_each_field(f, [&](const job::FieldInfo&, auto& given) {
+    if (given) given.origin = origin;
+  });
 }
 
 // {name: value} read by the job format's reader: the fields it gives.
@@ -69,7 +65,7 @@ std::optional<bool> method_is_adaptive(const job::SimulationFields& f) {
 PointReader::PointReader(const SweepSpec& spec) : spec_(spec) {
   for (const Axis& axis : spec.axes) {
     AxisTarget t;
-    if (axis.field == "energy") {
+    if (axis.field == energy_axis) {
       t.kind = AxisTarget::Kind::energy;
     } else if (const auto bracket = axis.field.find('['); bracket != std::string::npos) {
       // "omega[1]": the axis reader accepts only this form.
@@ -93,7 +89,7 @@ PointReader::ReadValue& PointReader::value(std::size_t axis_index, std::size_t v
   // first point that takes it.
   if (targets_[axis_index].kind == AxisTarget::Kind::field) {
     v.fields = read_one(spec_, axis, axis.field, value);
-    set_origin(v.fields, axis.field, origin);
+    set_origin(v.fields, origin);
   }
   v.origin = std::move(origin);
   return v;
@@ -148,7 +144,20 @@ PointFields PointReader::operator()(long index) {
     p.fields.tol = {};
     p.ignored.emplace_back("tol");
   }
+  check_ftle_windows(p);
   return p;
+}
+
+void PointReader::check_ftle_windows(const PointFields& p) const {
+  if (!spec_.ftle || !(spec_.ftle->window > 0.0)) return;
+  const double t_end = p.fields.t_end ? *p.fields.t_end : sim::RunSpec{}.t_end;
+  const double least = t_end / job::max_steps_per_run;
+  if (!(spec_.ftle->window >= least))
+    throw io::JobError(spec_.file + ": key 'ftle.window': expected a window from t_end / " +
+                       job::format_number(job::max_steps_per_run) + " (" +
+                       job::format_number(least) + " at point " + std::to_string(p.index) +
+                       ", t_end " + job::format_number(t_end) + "), got " +
+                       job::format_number(spec_.ftle->window));
 }
 
 PointFields point_fields(const SweepSpec& spec, long index) { return PointReader(spec)(index); }
@@ -167,7 +176,14 @@ void set_energy(sim::RunSpec& spec, double energy, const std::string& origin) {
     throw std::invalid_argument(origin + ": below the potential energy " +
                                 std::to_string(potential) +
                                 " of the initial gamma, the lowest energy with this gamma");
-  spec.initial.omega = w * std::sqrt((energy - potential) / kinetic);
+  const Eigen::Vector3d scaled = w * std::sqrt((energy - potential) / kinetic);
+  // The omega it reaches is held to omega's own range, as a given omega is.
+  const auto& field = *job::find_field("omega");
+  for (double x : scaled)
+    if (!field.in_range(x))
+      throw std::invalid_argument(origin + ": gives an omega past omega's range (expected " +
+                                  field.range_text() + "); choose a lower energy");
+  spec.initial.omega = scaled;
 }
 
 }  // namespace epviz::sweep

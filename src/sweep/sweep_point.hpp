@@ -51,6 +51,9 @@ class PointReader {
     bool checked_in_vector = false;  // a component's range, checked in its vector
   };
   ReadValue& value(std::size_t axis_index, std::size_t value_index);
+  // An FTLE window is held to as many windows per run as a fixed step is
+  // to steps (job::max_steps_per_run), over the point's t_end.
+  void check_ftle_windows(const PointFields& p) const;
 
   const SweepSpec& spec_;
   std::vector<AxisTarget> targets_;             // [axis]
@@ -63,7 +66,8 @@ PointFields point_fields(const SweepSpec& spec, long index);
 // Scales spec.initial.omega so that the total energy C1 is `energy`, keeping
 // its direction and gamma. Throws std::invalid_argument (the message starts
 // with `origin`) when no such scaling exists: omega is zero, or `energy` is
-// below the potential energy of the initial gamma.
+// below the potential energy of the initial gamma, or the omega reached is
+// past omega's range (job/fields.hpp).
 void set_energy(sim::RunSpec& spec, double energy, const std::string& origin);
 
 // The resolved run of a point: fields checked and defaults filled (the

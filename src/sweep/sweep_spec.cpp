@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "io/json_reader.hpp"
+#include "job/fields.hpp"
 #include "job/schema.hpp"
 #include "shard/checksum.hpp"
 
@@ -13,11 +14,15 @@ using Json = nlohmann::json;
 
 constexpr long max_axis_values = 100'000;
 
+// What an axis's values are, from its field's type; "energy" and a vector's
+// component take numbers.
 bool is_text_field(const std::string& f) {
-  return f == "case" || f == "method" || f == "formulation";
+  const auto* info = job::find_field(f);
+  return info && info->type == job::FieldType::text;
 }
 bool is_vector_field(const std::string& f) {
-  return f == "inertia" || f == "com" || f == "omega" || f == "gamma";
+  const auto* info = job::find_field(f);
+  return info && info->type == job::FieldType::vec3;
 }
 
 // Numbers from `from` to `to`, both included, evenly spaced (log: in log10).
@@ -90,12 +95,15 @@ Axis read_axis(const Json& value, const std::string& file, std::size_t k) {
 }  // namespace
 
 std::vector<std::string> axis_fields() {
-  std::vector<std::string> f{"case",  "method",  "formulation", "step",   "tol",
-                             "t_end", "samples", "max_drift",   "weight", "energy"};
-  for (const char* v : {"inertia", "com", "omega", "gamma"}) {
-    f.emplace_back(v);
-    for (int i = 0; i < 3; ++i) f.push_back(std::string(v) + "[" + std::to_string(i) + "]");
+  std::vector<std::string> f, components;
+  for (const auto& info : job::simulation_field_table()) {
+    if (!info.sweepable) continue;
+    f.push_back(info.key);
+    if (info.type == job::FieldType::vec3)
+      for (int i = 0; i < 3; ++i) components.push_back(info.key + "[" + std::to_string(i) + "]");
   }
+  f.emplace_back(energy_axis);
+  f.insert(f.end(), components.begin(), components.end());
   return f;
 }
 

@@ -27,6 +27,8 @@ namespace epviz::sweep {
 // Fields an axis may name: the simulation keys themselves, one component of
 // a vector ("inertia[0]"), and "energy", the total energy C1 reached by
 // scaling the initial angular velocity (sweep/energy_level.hpp).
+// The sweepable fields of the table (job/fields.hpp) with their components.
+inline constexpr const char* energy_axis = "energy";
 std::vector<std::string> axis_fields();
 std::string axis_fields_joined();
 

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <sstream>
 
+#include "physics/cases.hpp"
 #include "support/cli.hpp"
 
 namespace epviz {
@@ -51,7 +53,15 @@ INSTANTIATE_TEST_SUITE_P(
                 "needs formulation direct"},
         Refused{"chart_switch_direct", "--no-chart-switch",
                 "chart switching applies only to formulation riccati"},
-        Refused{"tolerance_range", "--tol 0.5", "--tol: tolerance must be between"},
+        Refused{"tolerance_range", "--tol 0.5",
+                "--tol: expected a number from 1e-15 to 0.1, got '0.5'"},
+        // The range holds wherever the tolerance is given, whatever the method.
+        Refused{"job_tolerance_range", "--job {dir}/job.json",
+                "job.json: key 'tol': expected a number from 1e-15 to 0.1, got the number 1e-16",
+                R"({"case": "euler", "tol": 1e-16})"},
+        Refused{"job_tolerance_range_fixed_step", "--job {dir}/job.json",
+                "job.json: key 'tol': expected a number from 1e-15 to 0.1",
+                R"({"case": "euler", "method": "rk4", "tol": 1e-16})"},
         Refused{"nonpositive_moment", "--inertia 1,-2,3", "--inertia"},
         Refused{"triangle_inequality", "--inertia 1,1,3", "triangle"},
         Refused{"non_unit_gamma", "--gamma 0,0,1.1", "--gamma"},
@@ -85,6 +95,28 @@ TEST(Simulate, WaiversAcceptWhatTheyWaive) {
     const auto r = test::run_epviz("simulate --t-end 1 " + waived, dir);
     EXPECT_EQ(r.exit_code, 0) << waived << ": " << r.err;
   }
+}
+
+// The line of `option` in `help`, and the lines CLI11 wraps it onto, up to the next option.
+std::string help_of(const std::string& help, const std::string& option) {
+  const auto at = help.find("  " + option + " ");
+  if (at == std::string::npos) return "";
+  const auto next = help.find("\n  -", at + 1);
+  std::string text = help.substr(at, next == std::string::npos ? std::string::npos : next - at);
+  std::istringstream words(text);
+  std::string word, joined;
+  while (words >> word) joined += (joined.empty() ? "" : " ") + word;
+  return joined;
+}
+
+TEST(SimulateHelp, CaseListsThePresetsByName) {
+  test::TempDir dir;
+  const auto r = test::run_epviz("simulate --help", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::string names;
+  for (const auto& p : physics::case_presets()) names += (names.empty() ? "" : ", ") + p.name;
+  const auto help = help_of(r.out, "--case");
+  EXPECT_NE(help.find(": " + names + ", custom;"), std::string::npos) << help;
 }
 
 }  // namespace

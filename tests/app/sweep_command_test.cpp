@@ -196,6 +196,10 @@ TEST(SweepCommand, BadSweepFilesExitTwoWithOneLineNamingTheKey) {
           {R"({"axes": [{"field": "step", "values": [0.1]}], "simulation": {"method": "rk4", "tol": 1e-6}})",
            "key 'simulation.tol'"},
           {R"({"axes": "step"})", "key 'axes'"},
+          {R"({"axes": [{"field": "t_end", "values": [2]}], "ftle": {"window": 1e-300}})",
+           "key 'ftle.window': expected a window from t_end / 1e9"},
+          {R"({"simulation": {"case": "generic"}, "axes": [{"field": "energy", "values": [1e308]}]})",
+           "): gives an omega past omega's range (expected three numbers from -1e6 to 1e6)"},
       }) {
     std::ofstream(d / "bad.sweep.json") << c.text;
     auto r = run_epviz(

@@ -27,7 +27,8 @@ scene::Frame two_runs(const sim::RunSpec& second) {
                                      sim::Formulation::direct, 12.0, 1);
   scene::SceneSettings s;
   s.width = W, s.height = H, s.fps = 10, s.duration = 2;
-  s.layers = {false, true, true, false};  // sphere and plane: the trails alone
+  s.layers = scene::Layers::only(
+      {scene::Layer::sphere, scene::Layer::riccati});  // sphere and plane: the trails alone
   scene::FrameSource src(
       scene::plan_scene({{first, "a", false, true}, {second, "b", false, true}}, s), s);
   return src.frame(src.frame_count() - 1);

@@ -46,7 +46,12 @@ glm::vec4 background_of(const scene::Frame& f) {
 }
 
 scene::Layers only(bool body, bool sphere, bool riccati, bool overlay) {
-  return {body, sphere, riccati, overlay};
+  auto l = scene::Layers::only({});
+  l.body = body;
+  l.sphere = sphere;
+  l.riccati = riccati;
+  l.overlay = overlay;
+  return l;
 }
 
 // Where the painter's camera puts a point of the 3D view of a picture of size w x h.

@@ -59,12 +59,14 @@ INSTANTIATE_TEST_SUITE_P(Sizes, LayoutAtSize,
                                            std::pair{720, 1280}));
 
 TEST(Layout, OneLayerTakesTheWholePicture) {
-  const auto sphere = scene::frame_layout(request(800, 600, {false, true, false, true}));
+  const auto sphere = scene::frame_layout(
+      request(800, 600, scene::Layers::only({scene::Layer::sphere, scene::Layer::overlay})));
   ASSERT_TRUE(sphere.view_3d);
   EXPECT_FALSE(sphere.panel_column);
   EXPECT_EQ(sphere.view_3d->width, 800);
   EXPECT_EQ(sphere.plane_px_per_unit, 0.0);
-  const auto plane = scene::frame_layout(request(800, 600, {false, false, true, false}));
+  const auto plane =
+      scene::frame_layout(request(800, 600, scene::Layers::only({scene::Layer::riccati})));
   ASSERT_TRUE(plane.panel_column);
   EXPECT_FALSE(plane.view_3d);
   EXPECT_EQ(plane.panel_column->width, 800);

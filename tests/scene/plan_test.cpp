@@ -126,13 +126,15 @@ TEST(Plan, FramesAndTrailSamples) {
 // Trails are kept fine enough for any layers the picture may switch on later.
 TEST(Plan, TrailsAreDecimatedForTheLargestScaleOfEachPart) {
   scene::SceneSettings s;
-  s.layers = {false, false, true, false};  // planned with the plane alone
+  s.layers = scene::Layers::only({scene::Layer::riccati});  // planned with the plane alone
   const auto plan = scene::plan_scene(preset_run(physics::Case::euler, 10), s);
-  for (int bits = 1; bits < 16; ++bits) {
+  for (unsigned bits = 1; bits < (1u << scene::layer_count); ++bits) {
     scene::LayoutRequest q;
     q.width = s.width;
     q.height = s.height;
-    q.layers = {bool(bits & 1), bool(bits & 2), bool(bits & 4), bool(bits & 8)};
+    for (std::size_t i = 0; i < scene::layer_count; ++i)
+      q.layers.*scene::layer_table()[i].member = bits & (1u << i);
+    q.overlay = {scene::kOverlayLines, 3};
     const auto l = scene::frame_layout(q);
     EXPECT_GE(plan.trail_sphere_px, l.sphere_px_per_unit) << bits;
     EXPECT_GE(plan.trail_plane_px, l.plane_px_per_unit) << bits;
