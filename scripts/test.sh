@@ -6,21 +6,30 @@
 #   EPVIZ_SANITIZERS=all|asan|tsan|none   which sanitizer passes (default all)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Each stage says when it ended, so that a CI log shows where the time went
+# (docs/benchmarks.md, "Build and test time").
+export EPVIZ_TEST_STARTED=${EPVIZ_TEST_STARTED:-$(date +%s)}
+stage_done() { echo "test.sh: $1 done at $(($(date +%s) - EPVIZ_TEST_STARTED)) s"; }
 # The README's first command comes first: on a fresh machine only the packages
 # `scripts/setup.sh --build` installs are there at that point, so this checks
 # that the quick start (and the CI recipes in docs/ci.md, which build the same
 # way) need nothing more. The full build then reuses its objects.
 EPVIZ_WERROR=ON bash scripts/quickstart.sh
+stage_done "quick start (set-up, epviz, the main job)"
 EPVIZ_WERROR=ON bash scripts/build.sh
+stage_done "set-up and Release build"
 ctest --test-dir build --output-on-failure -j2
+stage_done "Release tests"
 # ASan + UBSan on the suite (build-asan/, clang, which also builds the fuzz
 # targets) and TSan on the server's tests (build-tsan/); docs/architecture.md,
 # "Sanitizers", has what runs where and what it costs.
 sanitizers=${EPVIZ_SANITIZERS:-all}
 bash tests/sanitizers/run.sh "$sanitizers"
+stage_done "sanitizer passes"
 # libFuzzer on the job reader, simulate's options, the page protocol and the
 # sweep reader, from the committed corpora, 60 s each, two at a time; in the
 # ASan tree when the sanitizer pass built it, else in build-fuzz/.
 fuzz_build=build-fuzz
 case "$sanitizers" in all | asan) fuzz_build=build-asan ;; esac
 EPVIZ_FUZZ_BUILD=$fuzz_build bash scripts/fuzz.sh 60
+stage_done "fuzzing"

@@ -13,6 +13,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 here=tests/sanitizers
+# When run from scripts/test.sh, each stage says when it ended (seconds since
+# the test command started); alone, since this script started.
+started=${EPVIZ_TEST_STARTED:-$(date +%s)}
+stage_done() { echo "sanitizers: $1 done at $(($(date +%s) - started)) s"; }
 which=${1:-all}
 case "$which" in
   all | asan | tsan) ;;
@@ -37,6 +41,7 @@ configure() {
 if [ "$which" != tsan ]; then
   configure build-asan -DEPVIZ_SANITIZE=address,undefined -DEPVIZ_BUILD_FUZZ=ON
   cmake --build build-asan
+  stage_done "ASan build"
   # Tests left out under ASan, each with its reason (they all run in the Release build):
   asan_excluded=(
     # Browser tests: headless Chromium and Node do the work; our code in them
@@ -60,11 +65,13 @@ if [ "$which" != tsan ]; then
     LSAN_OPTIONS=suppressions=$PWD/$here/lsan.supp:print_suppressions=0 \
     UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --test-dir build-asan --output-on-failure -j2 -E "$exclude"
+  stage_done "ASan tests"
 fi
 
 if [ "$which" != asan ]; then
   configure build-tsan -DEPVIZ_SANITIZE=thread
   cmake --build build-tsan --target test_serve test_sweep
+  stage_done "TSan build"
   # The gtest binaries directly: ctest would also list the programs not built here.
   # Left out: a test that runs the epviz command (its option parsing, single
   # threaded), which only the ASan tree builds. EPVIZ_TEST_SLOWDOWN stretches
@@ -74,4 +81,5 @@ if [ "$which" != asan ]; then
     build-tsan/tests/test_serve --gtest_filter=-ServeOrigin.AMalformedAllowOriginIsABadOption
   # The sweep's pool of threads and its row writer.
   TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 build-tsan/tests/test_sweep
+  stage_done "TSan tests"
 fi
