@@ -17,7 +17,7 @@ using Json = nlohmann::json;
 std::string error_of(const Json& j) {
   try {
     job::read_job(j, "job.json");
-  } catch (const io::JobError& e) {
+  } catch (const io::BadInput& e) {
     return e.what();
   }
   return "";
