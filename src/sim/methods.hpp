@@ -1,7 +1,9 @@
 #pragma once
 // Every fact about the integrators and the formulations epviz offers, in one
 // table each. Names, orders, step control, the formulation a method needs and
-// the help text are all read from here; nothing else spells them.
+// the help text are read from here by every command, job and sweep. The one
+// other spelling of a name is the stepper's own `name` in numerics/, which its
+// failure reports carry (numerics knows nothing of this table).
 #include <array>
 #include <string_view>
 
