@@ -171,7 +171,7 @@ TEST(Render, OddSizedGifIsDrawnAtThatSize) {
   j["output"]["name"] = "clip";
   j["width"] = 161;
   j["height"] = 121;
-  const auto r = test::run_epviz("render " + write_job(dir, j).string(), dir);
+  const auto r = test::run_epviz("render " + dir.write("job.json", j.dump(2)).string(), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto gif = dir / "video" / "clip.gif";
   const std::string probe =
