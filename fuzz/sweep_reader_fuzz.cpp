@@ -41,7 +41,7 @@ void read_sweep(std::string_view text) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {
     read_sweep({reinterpret_cast<const char*>(data), size});
-  } catch (const io::BadInput&) {  // and app::UsageError, the same type
+  } catch (const io::BadInput&) {           // and app::UsageError, the same type
   } catch (const std::invalid_argument&) {  // an energy level no omega reaches
   }
   return 0;

@@ -68,8 +68,8 @@ PreparedJob prepare(RenderJob job, const RenderOptions& o) {
   check_file_name(job.file.string() + ": output.name", job.output.name);
   check_output_dir(o.out.empty() ? job.file.string() + ": output.dir" : "--out", job.output.dir);
   const auto video = job::video_format(job.output.format);
-  if (const auto why = video ? io::video_size_problem(*video, job.scene.width, job.scene.height)
-                             : std::string();
+  if (const auto why =
+          video ? io::video_size_problem(*video, job.scene.width, job.scene.height) : std::string();
       !why.empty())
     throw UsageError(job.file.string() + ": " + why);
   if (video && !io::ffmpeg_available())

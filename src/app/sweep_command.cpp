@@ -66,8 +66,8 @@ int run_sweep(const SweepOptions& o) {
   check_output_file("--out", out_given.string());
   std::optional<shard::RowsShard> rows_shard;
   if (shard) {
-    shard::RowsBatch batch{{fs::absolute(o.file).lexically_normal().string(), spec.hash, {}},
-                           out_given, total};
+    shard::RowsBatch batch{
+        {fs::absolute(o.file).lexically_normal().string(), spec.hash, {}}, out_given, total};
     auto& command = batch.origin.command;
     command = {"epviz", "sweep", batch.origin.source, "--out",
                fs::absolute(out_given).lexically_normal().string()};

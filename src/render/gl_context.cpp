@@ -59,7 +59,7 @@ std::unique_ptr<GlContext> make_context(std::string_view backend, int width, int
   std::string allowed;
   for (const auto& name : gl_backends()) allowed += (allowed.empty() ? "" : ", ") + name;
   throw io::BadInput("unknown GL backend '" + std::string(backend) +
-                              "' (from --gl or EPVIZ_GL); allowed: " + allowed);
+                     "' (from --gl or EPVIZ_GL); allowed: " + allowed);
 }
 
 }  // namespace

@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 #include <regex>
 
-#include "support/cli.hpp"
 #include "io/png_reader.hpp"
+#include "support/cli.hpp"
 
 namespace epviz {
 namespace {

@@ -2,9 +2,9 @@
 // docs/ci.md states and the reports describe; and the frames checked by default.
 #include <gtest/gtest.h>
 
-#include "support/cli.hpp"
 #include "check/frame_choice.hpp"
 #include "check/tolerance.hpp"
+#include "support/cli.hpp"
 
 namespace epviz::check {
 namespace {

@@ -5,10 +5,10 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "support/cli.hpp"
 #include "check/golden_record.hpp"
 #include "check/job_check.hpp"
 #include "io/png_reader.hpp"
+#include "support/cli.hpp"
 #include "test_images.hpp"
 
 namespace epviz::check {

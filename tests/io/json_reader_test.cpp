@@ -16,8 +16,8 @@
 
 namespace {
 
-using epviz::io::describe;
 using epviz::io::BadInput;
+using epviz::io::describe;
 using epviz::io::ObjectReader;
 using epviz::io::parse_json_text;
 using epviz::io::printable;

@@ -5,10 +5,10 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "support/cli.hpp"
 #include "job/schema.hpp"
 #include "live/job_file.hpp"
 #include "scene/theme.hpp"
+#include "support/cli.hpp"
 
 namespace epviz::live {
 namespace {

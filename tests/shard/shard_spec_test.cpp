@@ -91,8 +91,9 @@ TEST(ShardOptions, TheOptionWinsOverTheEnvironment) {
 TEST(ShardOptions, TheCountCompletesAnIndexOnlyEnvironment) {
   EXPECT_EQ(shard_from_options("", "5", env_of({{"JOB_COMPLETION_INDEX", "4"}})),
             (ShardSpec{4, 5}));
-  EXPECT_NE(refusal([] { shard_from_options("", "", env_of({{"JOB_COMPLETION_INDEX", "4"}})); })
-                .find("JOB_COMPLETION_INDEX is set but the number of shards is not known"),
+  EXPECT_NE(refusal([] {
+              shard_from_options("", "", env_of({{"JOB_COMPLETION_INDEX", "4"}}));
+            }).find("JOB_COMPLETION_INDEX is set but the number of shards is not known"),
             std::string::npos);
 }
 
@@ -101,9 +102,9 @@ TEST(ShardOptions, RefusalsNameTheOption) {
   EXPECT_EQ(refusal([&] { shard_from_options("1/4", "3", none); }),
             "--shard-count: 3 disagrees with --shard '1/4'; give one of them");
   for (const char* bad : {"0", "-2", "x", "1000001", "2.5"})
-    EXPECT_EQ(refusal([&] { shard_from_options("", bad, none); }),
-              "--shard-count: expected a whole number from 1 to 1000000, got '" +
-                  std::string(bad) + "'");
+    EXPECT_EQ(
+        refusal([&] { shard_from_options("", bad, none); }),
+        "--shard-count: expected a whole number from 1 to 1000000, got '" + std::string(bad) + "'");
   EXPECT_NE(refusal([&] { shard_from_options("4/4", "", none); }).find("--shard: expected I/N"),
             std::string::npos);
 }
