@@ -74,8 +74,8 @@ TEST(ServeOrigin, ARepeatedHostOrOriginIsABadRequest) {
   const std::string evil = "evil.example:" + std::to_string(port);
   for (const auto& [first, second] : {std::pair(own(port), evil), std::pair(evil, own(port))}) {
     SCOPED_TRACE(first + " then " + second);
-    const auto page =
-        exchange(port, {.target = "/", .upgrade = false, .host = first, .repeated = {{"Host", second}}});
+    const auto page = exchange(
+        port, {.target = "/", .upgrade = false, .host = first, .repeated = {{"Host", second}}});
     EXPECT_EQ(page.result(), http::status::bad_request) << page.body();
     EXPECT_NE(page.body().find("more than one Host header"), std::string::npos) << page.body();
   }
@@ -89,10 +89,11 @@ TEST(ServeOrigin, ARepeatedHostOrOriginIsABadRequest) {
         << socket.body();
   }
   // The same copy twice is no less ambiguous to a reader that joins them.
-  EXPECT_EQ(exchange(port, {.host = own(port), .origin = good_origin,
-                            .repeated = {{"Origin", good_origin}}})
-                .result(),
-            http::status::bad_request);
+  EXPECT_EQ(
+      exchange(port,
+               {.host = own(port), .origin = good_origin, .repeated = {{"Origin", good_origin}}})
+          .result(),
+      http::status::bad_request);
   EXPECT_TRUE(server.log->wait_for({"refused a request for /ws", "more than one Origin header"}))
       << server.log->all();
   EXPECT_EQ(server.server->stats().connections_accepted, 0);
