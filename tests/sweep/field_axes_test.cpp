@@ -90,7 +90,7 @@ std::string point_error(const SweepSpec& s, long index) {
   try {
     PointReader read(s);
     read(index);
-  } catch (const io::JobError& e) {
+  } catch (const io::BadInput& e) {
     return e.what();
   }
   return "";
