@@ -4,10 +4,12 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <climits>
 #include <system_error>
 
 #include "app/usage_error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/printable.hpp"
 
 namespace epviz::app {
 namespace {
@@ -17,11 +19,22 @@ namespace fs = std::filesystem;
 // Room left in a file name for "_000123.png" or ".tmp-<pid>" after output.name.
 constexpr std::size_t kLongestName = 200;
 
+// Bounded and escaped: a path comes from the user and may be kilobytes long
+// or hold a newline; the message stays one short line.
 std::string in_quotes(const fs::path& p) {
   std::string text(1, '\'');
-  text += p.string();
+  text += io::printable(p.string(), 200);
   text += '\'';
   return text;
+}
+
+// Longer than the system takes (a name over NAME_MAX bytes, a path over
+// PATH_MAX): refused here, before work, not by the first mkdir.
+bool too_long(const fs::path& absolute) {
+  if (absolute.native().size() >= PATH_MAX) return true;
+  for (const fs::path& part : absolute)
+    if (part.native().size() > NAME_MAX) return true;
+  return false;
 }
 
 std::string errno_text(int error) { return std::system_category().message(error); }
@@ -61,6 +74,10 @@ void check_output_file(const std::string& option, const std::string& path) {
 void check_output_dir(const std::string& what, const fs::path& dir) {
   std::error_code ec;
   const fs::path absolute = fs::absolute(dir, ec);
+  if (too_long(absolute))
+    throw UsageError(what + ": " + in_quotes(dir) + " is too long (at most " +
+                     std::to_string(NAME_MAX) + " bytes a name, " + std::to_string(PATH_MAX - 1) +
+                     " bytes the whole path)");
   fs::path existing = absolute;
   while (!fs::exists(existing, ec) && existing.has_relative_path())
     existing = existing.parent_path();

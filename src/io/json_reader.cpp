@@ -5,8 +5,12 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <set>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "io/printable.hpp"
 
@@ -165,23 +169,40 @@ Json parse_json_text(std::string_view text, const std::string& file) {
 
 Json read_json_file(const std::filesystem::path& path) {
   const std::string file = path.string();
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw BadInput(file_name(file) + ": is a directory, not a job file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
+  // Opened without blocking: opening a named pipe otherwise waits, for ever,
+  // for a writer to appear. Each wait for data is bounded instead.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0)
     throw BadInput(file_name(file) + ": cannot open the file for reading (" + std::strerror(errno) +
                    ")");
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat info {};
+  if (::fstat(fd, &info) == 0 && S_ISDIR(info.st_mode))
+    throw BadInput(file_name(file) + ": is a directory, not a job file");
   // Read at most one byte past the limit: /dev/zero or an endless pipe ends here.
   std::string text;
   char buffer[1 << 16];
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-    text.append(buffer, std::size_t(in.gcount()));
+  for (;;) {
+    pollfd ready{fd, POLLIN, 0};
+    const int polled = ::poll(&ready, 1, json_file_wait_seconds * 1000);
+    if (polled < 0 && errno == EINTR) continue;
+    if (polled == 0)
+      throw BadInput(file_name(file) + ": nothing to read for " +
+                     std::to_string(json_file_wait_seconds) +
+                     " s (a pipe nobody writes to?); give a regular file");
+    const ssize_t got = polled < 0 ? -1 : ::read(fd, buffer, sizeof buffer);
+    if (got < 0 && (errno == EAGAIN || errno == EINTR)) continue;
+    if (got < 0)
+      throw BadInput(file_name(file) + ": cannot read the file (" + std::strerror(errno) + ")");
+    if (got == 0) break;
+    text.append(buffer, std::size_t(got));
     if (text.size() > max_json_file_bytes)
       throw BadInput(file_name(file) + ": larger than " +
                      std::to_string(max_json_file_bytes >> 20) + " MiB, the limit for a job file");
   }
-  if (in.bad()) throw BadInput(file_name(file) + ": cannot read the file");
   return parse_json_text(text, file);
 }
 

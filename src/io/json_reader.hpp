@@ -26,8 +26,13 @@ inline constexpr std::size_t max_json_file_bytes = std::size_t{16} << 20;
 // the recursion of whatever walks the value later.
 inline constexpr int max_json_depth = 64;
 
-// Reads and parses a whole file (at most max_json_file_bytes, so a device or a
-// pipe is not read forever); the root must be an object. Errors name the file
+// A pipe (a named one nobody opened for writing, or a stalled generator) may
+// never deliver: reading gives up after this long without a byte.
+inline constexpr int json_file_wait_seconds = 5;
+
+// Reads and parses a whole file (at most max_json_file_bytes and with no wait
+// for data longer than json_file_wait_seconds, so a device or a pipe is not
+// read forever); the root must be an object. Errors name the file
 // and, for a syntax error, the line and column.
 nlohmann::json read_json_file(const std::filesystem::path& path);
 // The same for text already read; `file` names it in messages.

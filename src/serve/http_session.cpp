@@ -45,6 +45,18 @@ std::string peer_of(beast::tcp_stream& stream) {
   return endpoint.address().to_string() + ":" + std::to_string(endpoint.port());
 }
 
+// A second Host or Origin makes the request ambiguous: a proxy and this
+// server could each believe a different copy, so which one is checked must
+// not be a choice made here. HTTP says such a request is malformed (400).
+std::optional<std::string> repeated_header(const http::request<http::string_body>& request) {
+  for (const http::field field : {http::field::host, http::field::origin}) {
+    if (request.count(field) < 2) continue;
+    const auto name = http::to_string(field);
+    return "more than one " + std::string(name.data(), name.size()) + " header";
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<std::string> HttpSession::refusal(const Request& request) const {
@@ -88,10 +100,14 @@ void HttpSession::on_request(beast::error_code ec) {
   }
   Request request = parser_->release();
   const std::string path = path_of(request);
-  if (auto problem = refusal(request)) {
+  std::optional<std::string> problem = repeated_header(request);
+  const bool malformed = problem.has_value();
+  if (!malformed) problem = refusal(request);
+  if (problem) {
     context_.log("refused a request for " + std::string(path.substr(0, 100)) + " from " +
                  peer_of(stream_) + ": " + *problem);
-    return respond(request, http::status::forbidden, "text/plain", *problem + "\n");
+    return respond(request, malformed ? http::status::bad_request : http::status::forbidden,
+                   "text/plain", *problem + "\n");
   }
   if (websocket::is_upgrade(request)) {
     if (path == "/ws") return upgrade(std::move(request));

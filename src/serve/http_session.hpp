@@ -1,5 +1,6 @@
 #pragma once
-// A freshly accepted TCP connection speaking HTTP: refuses (403) requests
+// A freshly accepted TCP connection speaking HTTP: answers 400 to a request
+// with more than one Host or Origin header, refuses (403) requests
 // whose Host does not name this server and upgrades from other pages'
 // origins (OriginPolicy), serves the page at "/", 404 elsewhere, and hands an upgrade request for "/ws" to a new
 // WebSocketConnection (or refuses it with 503 when max_clients are connected).

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "io/json_reader.hpp"
+#include "io/printable.hpp"
 #include "job/fields.hpp"
 #include "job/schema.hpp"
 #include "physics/cases.hpp"
@@ -83,8 +84,9 @@ PointReader::ReadValue& PointReader::value(std::size_t axis_index, std::size_t v
   if (!v.origin.empty()) return v;
   const Axis& axis = spec_.axes[axis_index];
   const Json& value = axis.values[value_index];
-  std::string origin =
-      spec_.file + ": key '" + axis.key + "' (" + axis.field + " = " + value.dump() + ")";
+  // Quoted short and on one line: a value may be a 100 KB string.
+  std::string origin = spec_.file + ": key '" + axis.key + "' (" + axis.field + " = " +
+                       io::printable(value.dump(), 60) + ")";
   // A component is checked in the vector it goes into, by operator() at the
   // first point that takes it.
   if (targets_[axis_index].kind == AxisTarget::Kind::field) {

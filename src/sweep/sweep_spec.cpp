@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "io/json_reader.hpp"
+#include "io/printable.hpp"
 #include "job/fields.hpp"
 #include "job/schema.hpp"
 #include "shard/checksum.hpp"
@@ -195,7 +196,8 @@ SweepSpec read_sweep(const Json& root, const std::string& file) {
         bool found = false;
         for (const auto& ax : s.axes) found |= ax.field == *name;
         if (!found)
-          ar.fail(name == &q.x ? "x" : "y", "'" + *name + "' is not one of the sweep's axes");
+          ar.fail(name == &q.x ? "x" : "y",
+                  "'" + io::printable(*name) + "' is not one of the sweep's axes");
       }
       ar.finish();
       s.atlases.push_back(q);

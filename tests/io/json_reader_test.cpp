@@ -2,12 +2,15 @@
 // message on one line and short, whatever the value or key holds.
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
 
 #include "io/json_reader.hpp"
 #include "io/printable.hpp"
@@ -167,6 +170,27 @@ TEST_F(JsonFile, AMissingFileSaysWhy) {
   EXPECT_NE(message.find("none.json: cannot open the file for reading (No such file"),
             std::string::npos)
       << message;
+}
+
+// The file is opened without waiting for a writer, and then waits for one:
+// a generator that opens the pipe late and writes in pieces is read whole.
+TEST_F(JsonFile, APipeWhoseWriterComesLateIsReadWhole) {
+  const auto fifo = dir_ / "late.fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::thread writer([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    std::ofstream out(fifo);
+    out << "{\"a\": " << std::flush;
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    out << "[1, 2]}";
+  });
+  json read;
+  EXPECT_NO_THROW(read = epviz::io::read_json_file(fifo));
+  // Should the reader have given up first, a reader here lets the writer end.
+  const int fd = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
+  writer.join();
+  if (fd >= 0) ::close(fd);
+  EXPECT_EQ(read, json::parse(R"({"a": [1, 2]})"));
 }
 
 TEST_F(JsonFile, AFileNameWithANewlineStaysOnOneLine) {

@@ -64,6 +64,41 @@ TEST(ServeOrigin, ForgedHostGets403ForThePageAndTheSocket) {
       http::status::ok);
 }
 
+// Which copy of a repeated header counts is not this server's choice: a proxy
+// in front may have read the other one. Each order is tried, so a server that
+// checks only the first (or only the last) copy lets one of them through.
+TEST(ServeOrigin, ARepeatedHostOrOriginIsABadRequest) {
+  TestServer server;
+  const unsigned short port = server.port();
+  const std::string good_origin = "http://" + own(port);
+  const std::string evil = "evil.example:" + std::to_string(port);
+  for (const auto& [first, second] : {std::pair(own(port), evil), std::pair(evil, own(port))}) {
+    SCOPED_TRACE(first + " then " + second);
+    const auto page = exchange(
+        port, {.target = "/", .upgrade = false, .host = first, .repeated = {{"Host", second}}});
+    EXPECT_EQ(page.result(), http::status::bad_request) << page.body();
+    EXPECT_NE(page.body().find("more than one Host header"), std::string::npos) << page.body();
+  }
+  for (const auto& [first, second] :
+       {std::pair(good_origin, "http://" + evil), std::pair("http://" + evil, good_origin)}) {
+    SCOPED_TRACE(first + " then " + second);
+    const auto socket =
+        exchange(port, {.host = own(port), .origin = first, .repeated = {{"Origin", second}}});
+    EXPECT_EQ(socket.result(), http::status::bad_request) << socket.body();
+    EXPECT_NE(socket.body().find("more than one Origin header"), std::string::npos)
+        << socket.body();
+  }
+  // The same copy twice is no less ambiguous to a reader that joins them.
+  EXPECT_EQ(
+      exchange(port,
+               {.host = own(port), .origin = good_origin, .repeated = {{"Origin", good_origin}}})
+          .result(),
+      http::status::bad_request);
+  EXPECT_TRUE(server.log->wait_for({"refused a request for /ws", "more than one Origin header"}))
+      << server.log->all();
+  EXPECT_EQ(server.server->stats().connections_accepted, 0);
+}
+
 TEST(ServeOrigin, AllowOriginLetsThatPageIn) {
   TestServer server([](ServerOptions& o) { o.allowed_origins = {"https://viz.example.org"}; });
   const unsigned short port = server.port();

@@ -309,6 +309,7 @@ http::response<http::string_body> exchange(unsigned short port, const HandReques
   http::request<http::empty_body> request{http::verb::get, r.target, 11};
   if (r.host) request.set(http::field::host, *r.host);
   if (r.origin) request.set(http::field::origin, *r.origin);
+  for (const auto& [name, value] : r.repeated) request.insert(name, value);
   if (r.upgrade) {
     request.set(http::field::connection, "Upgrade");
     request.set(http::field::upgrade, "websocket");

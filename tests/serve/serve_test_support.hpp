@@ -197,12 +197,14 @@ boost::beast::http::response<boost::beast::http::string_body> http_get(unsigned 
 // A request written by hand, for what the server must refuse (by hand rather
 // than with websocket::stream::handshake, which in Boost 1.74 does not hand
 // back the response of a declined upgrade): the target, whether it asks for a
-// WebSocket upgrade, and the Host and Origin headers, left out when absent.
+// WebSocket upgrade, and the Host and Origin headers, left out when absent;
+// `repeated` are further (name, value) lines sent after them as they are.
 struct HandRequest {
   std::string target = "/ws";
   bool upgrade = true;
   std::optional<std::string> host = {};
   std::optional<std::string> origin = {};
+  std::vector<std::pair<std::string, std::string>> repeated = {};
 };
 // Sends it and returns the response (101 for an accepted upgrade).
 boost::beast::http::response<boost::beast::http::string_body> exchange(unsigned short port,

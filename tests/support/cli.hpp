@@ -22,10 +22,12 @@ struct CliResult {
 
 // `args` is appended to the binary path as shell words; stdin is /dev/null.
 // The output is captured through two files in `dir`, removed afterwards.
-inline CliResult run_epviz(const std::string& args, const TempDir& dir) {
+// `wrapper` goes before the binary ("timeout 20" where a defect would hang).
+inline CliResult run_epviz(const std::string& args, const TempDir& dir,
+                           const std::string& wrapper = "") {
   const auto out = dir / ".stdout", err = dir / ".stderr";
-  const std::string cmd = std::string(EPVIZ_BINARY) + " " + args + " >" + out.string() + " 2>" +
-                          err.string() + " </dev/null";
+  const std::string cmd = wrapper + " " + std::string(EPVIZ_BINARY) + " " + args + " >" +
+                          out.string() + " 2>" + err.string() + " </dev/null";
   const int status = std::system(cmd.c_str());
   CliResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
