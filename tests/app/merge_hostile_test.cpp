@@ -59,7 +59,7 @@ TEST_F(MergeHostile, TheLawfulShardMerges) {
 
 TEST_F(MergeHostile, AnOutputOutsideTheFolderIsRefusedAndTheVictimKept) {
   const fs::path victim = d_ / "victim";
-  for (const std::string output : {victim.string(), std::string("../victim")}) {
+  for (const std::string& output : {victim.string(), std::string("../victim")}) {
     std::ofstream(victim, std::ios::trunc) << "precious";
     edit([&](Json& j) { j["output"] = output; });
     expect_bad_input(merge(), "key 'output'");
@@ -71,7 +71,7 @@ TEST_F(MergeHostile, AFileOutsideTheFolderIsNotRead) {
   // The same bytes outside: size and checksum agree with the manifest.
   const std::string rows_name = Json::parse(slurp(manifest_))["files"][0]["path"];
   fs::copy_file(shards_ / rows_name, d_ / "x.jsonl");
-  for (const std::string path : {std::string("../x.jsonl"), (d_ / "x.jsonl").string()}) {
+  for (const std::string& path : {std::string("../x.jsonl"), (d_ / "x.jsonl").string()}) {
     edit([&](Json& j) { j["files"][0]["path"] = path; });
     expect_bad_input(merge(), "key 'files[0].path'");
     EXPECT_FALSE(fs::exists(merged_)) << path;

@@ -99,7 +99,7 @@ INSTANTIATE_TEST_SUITE_P(
         HostileCase{"ChecksumNotHex", "/files/0/checksum", "$(rm)", "files[0].checksum"},
         HostileCase{"RangeWithAGap", "/first", 3, "first"},
         HostileCase{"RangeOfAnotherShard", "/end", 3, "first"}),
-    [](const auto& info) { return info.param.name; });
+    [](const auto& param_info) { return param_info.param.name; });
 
 }  // namespace
 }  // namespace epviz::shard
