@@ -56,18 +56,19 @@ void check_batch(Batch& b, const fs::path& dir) {
   const auto& any = b.shards.begin()->second;
   for (long i = 0; i < b.count; ++i) {
     auto it = b.shards.find(i);
-    const bool intact = it != b.shards.end() && it->second.completed;
     std::vector<std::string> found;
+    if (it != b.shards.end() && it->second.completed) {
+      found = file_problems(it->second, dir);
+      if (found.empty()) continue;
+    }
+    if (b.problems.size() >= max_listed_problems) {  // counted without building its lines
+      ++b.unlisted;
+      continue;
+    }
     if (it == b.shards.end())
       found.push_back("missing (no manifest in " + io::printable(dir.string(), 300) + ")");
     else if (!it->second.completed)
       found.push_back("not completed (killed, failed or still running)");
-    if (intact) found = file_problems(it->second, dir);
-    if (found.empty()) continue;
-    if (b.problems.size() >= max_listed_problems) {
-      ++b.unlisted;
-      continue;
-    }
     const std::string tag = "shard " + std::to_string(i) + "/" + std::to_string(b.count);
     const std::string redo = "; run: " + rerun_command(any, i);
     for (const auto& p : found) b.problems.push_back(tag + ": " + p + redo);
