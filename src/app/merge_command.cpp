@@ -67,9 +67,8 @@ std::vector<sweep::AtlasRequest> saved_atlases(const shard::Manifest& m, const s
   return {};
 }
 
-void merge_sweep(const shard::Batch& b, const fs::path& dir, const fs::path& out_dir,
+void merge_sweep(const shard::Batch& b, const std::vector<Json>& rows, const fs::path& out_dir,
                  const MergeOptions& o) {
-  const auto rows = shard::merged_rows(b, dir);
   std::string text;
   for (const auto& r : rows) text += r.dump() + "\n";
   const auto& any = b.shards.begin()->second;
@@ -120,6 +119,9 @@ int run_merge(const MergeOptions& o) {
     shard::check_batch(b, dir);
     for (const auto& p : b.problems)
       std::fprintf(stderr, "epviz: %s: %s\n", shard::batch_name(b).c_str(), p.c_str());
+    if (b.unlisted)
+      std::fprintf(stderr, "epviz: %s: and %ld more shards like these\n",
+                   shard::batch_name(b).c_str(), b.unlisted);
     incomplete += !b.problems.empty();
   }
   if (incomplete) {
@@ -127,12 +129,16 @@ int run_merge(const MergeOptions& o) {
                  incomplete, batches.size(), o.dir.c_str());
     return 4;
   }
+  // Every sweep's rows are read and checked before anything is written.
+  std::vector<std::vector<Json>> rows(batches.size());
+  for (std::size_t i = 0; i < batches.size(); ++i)
+    if (batches[i].kind == "sweep") rows[i] = shard::merged_rows(batches[i], dir);
   fs::create_directories(out_dir);
-  for (const auto& b : batches) {
-    if (b.kind == "sweep")
-      merge_sweep(b, dir, out_dir, o);
+  for (std::size_t i = 0; i < batches.size(); ++i) {
+    if (batches[i].kind == "sweep")
+      merge_sweep(batches[i], rows[i], out_dir, o);
     else
-      merge_render(b, dir, out_dir);
+      merge_render(batches[i], dir, out_dir);
   }
   return 0;
 }

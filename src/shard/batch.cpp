@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "io/bad_input.hpp"
+#include "io/printable.hpp"
 
 namespace epviz::shard {
 
@@ -25,10 +26,24 @@ std::vector<Batch> read_batches(const fs::path& dir) {
     auto& b = by_key[m.kind + "/" + m.hash];
     b.kind = m.kind;
     b.hash = m.hash;
+    const std::string name = io::printable(f.string(), 300);
     if (b.count && b.count != m.shard.count)
-      throw io::BadInput(f.string() + ": shard of " + std::to_string(m.shard.count) +
+      throw io::BadInput(name + ": shard of " + std::to_string(m.shard.count) +
                          " while other shards of the same batch say " + std::to_string(b.count) +
                          "; remove the manifests of the old split");
+    // Shards of one batch that disagree on these would leave items to no shard
+    // or join into two outputs.
+    if (!b.shards.empty()) {
+      const auto& other = b.shards.begin()->second;
+      if (other.total != m.total)
+        throw io::BadInput(name + ": key 'total': " + std::to_string(m.total) +
+                           " while other shards of the same batch say " +
+                           std::to_string(other.total));
+      if (other.output != m.output)
+        throw io::BadInput(name + ": key 'output': '" + io::printable(m.output) +
+                           "' while other shards of the same batch say '" +
+                           io::printable(other.output) + "'");
+    }
     b.count = m.shard.count;
     b.shards[m.shard.index] = std::move(m);
   }
@@ -40,19 +55,23 @@ std::vector<Batch> read_batches(const fs::path& dir) {
 void check_batch(Batch& b, const fs::path& dir) {
   const auto& any = b.shards.begin()->second;
   for (long i = 0; i < b.count; ++i) {
+    auto it = b.shards.find(i);
+    std::vector<std::string> found;
+    if (it != b.shards.end() && it->second.completed) {
+      found = file_problems(it->second, dir);
+      if (found.empty()) continue;
+    }
+    if (b.problems.size() >= max_listed_problems) {  // counted without building its lines
+      ++b.unlisted;
+      continue;
+    }
+    if (it == b.shards.end())
+      found.push_back("missing (no manifest in " + io::printable(dir.string(), 300) + ")");
+    else if (!it->second.completed)
+      found.push_back("not completed (killed, failed or still running)");
     const std::string tag = "shard " + std::to_string(i) + "/" + std::to_string(b.count);
     const std::string redo = "; run: " + rerun_command(any, i);
-    auto it = b.shards.find(i);
-    if (it == b.shards.end()) {
-      b.problems.push_back(tag + ": missing (no manifest in " + dir.string() + ")" + redo);
-      continue;
-    }
-    if (!it->second.completed) {
-      b.problems.push_back(tag + ": not completed (killed, failed or still running)" + redo);
-      continue;
-    }
-    for (const auto& p : file_problems(it->second, dir))
-      b.problems.push_back(tag + ": " + p + redo);
+    for (const auto& p : found) b.problems.push_back(tag + ": " + p + redo);
   }
 }
 

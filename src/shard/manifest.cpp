@@ -3,6 +3,7 @@
 #include "io/atomic_file.hpp"
 #include "io/json_reader.hpp"
 #include "shard/checksum.hpp"
+#include "shard/manifest_checks.hpp"
 
 namespace epviz::shard {
 
@@ -44,8 +45,13 @@ nlohmann::ordered_json to_json(const Manifest& m) {
 
 Manifest read_manifest(const fs::path& path) {
   const auto json = io::read_json_file(path);
-  io::ObjectReader r(json, path.string());
+  const std::string name = path.string();  // ObjectReader quotes it in messages
+  io::ObjectReader r(json, name);
   Manifest m;
+  // Fails on what `problem` says is wrong with the value at `key`.
+  auto check = [](const io::ObjectReader& reader, const char* key, const std::string& problem) {
+    if (!problem.empty()) reader.fail(key, problem);
+  };
   auto text = [&](const char* key) {
     auto v = r.string(key);
     if (!v) r.fail(key, "missing");
@@ -56,33 +62,51 @@ Manifest read_manifest(const fs::path& path) {
     if (!v) r.fail(key, "missing");
     return *v;
   };
-  m.kind = text("kind");
+  const auto kind = r.choice("kind", {"sweep", "render"});
+  if (!kind) r.fail("kind", "missing");
+  m.kind = *kind;
   m.source = text("source");
+  check(r, "source", text_problem(m.source));
   m.hash = text("hash");
+  check(r, "hash", hash_problem(m.hash));
   m.shard.count = integer("shards", 1, max_shards);
   m.shard.index = integer("shard", 0, m.shard.count - 1);
   m.total = integer("total", 0, 1L << 50);
   m.items.first = integer("first", 0, m.total);
   m.items.end = integer("end", m.items.first, m.total);
+  // Any other range would leave points or frames to no shard, or to two.
+  if (m.items != shard_range(m.total, m.shard)) {
+    const auto want = shard_range(m.total, m.shard);
+    r.fail("first", "shard " + std::to_string(m.shard.index) + " of " +
+                        std::to_string(m.shard.count) + " of " + std::to_string(m.total) +
+                        " items does " + std::to_string(want.first) + " to " +
+                        std::to_string(want.end) + " (first, end), not " +
+                        std::to_string(m.items.first) + " to " + std::to_string(m.items.end));
+  }
   m.output = text("output");
+  check(r, "output", output_name_problem(m.output));
   const auto* command = r.raw("command");
   if (!command || !command->is_array()) r.fail("command", "expected an array of strings");
   for (const auto& a : *command) {
     if (!a.is_string()) r.fail("command", "expected an array of strings");
     m.command.push_back(a.get<std::string>());
   }
+  check(r, "command", command_problem(m.command, m.kind, m.source));
   const auto* files = r.raw("files");
   if (!files || !files->is_array()) r.fail("files", "expected an array of objects");
   for (std::size_t i = 0; i < files->size(); ++i) {
-    io::ObjectReader f((*files)[i], path.string(), "files[" + std::to_string(i) + "]");
+    io::ObjectReader f((*files)[i], name, "files[" + std::to_string(i) + "]");
     ManifestFile mf;
     auto p = f.string("path");
     auto b = f.integer("bytes", 0, 1L << 50);
     auto c = f.string("checksum");
     if (!p || !b || !c) f.fail("path", "each file needs path, bytes and checksum");
     mf.path = *p;
+    check(f, "path", file_path_problem(mf.path));
+    if (m.kind == "render") check(f, "path", render_file_problem(mf.path, m.output));
     mf.bytes = std::uintmax_t(*b);
     mf.checksum = *c;
+    check(f, "checksum", hash_problem(mf.checksum));
     f.finish();
     m.files.push_back(mf);
   }

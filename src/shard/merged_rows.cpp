@@ -5,6 +5,8 @@
 #include <set>
 
 #include "io/bad_input.hpp"
+#include "io/json_reader.hpp"
+#include "io/printable.hpp"
 
 namespace epviz::shard {
 
@@ -13,18 +15,30 @@ using Json = nlohmann::json;
 
 namespace {
 
+// The rows of `file`, each an object with an integer "index" and a string
+// "sweep": what the merge sorts and checks by, so that a hostile row is a
+// message naming the file and line, not an exception of the JSON library.
 std::vector<Json> read_rows(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
   std::vector<Json> rows;
   std::string line;
   long n = 0;
+  const std::string name = io::printable(file.string(), 300);  // one line in messages
   while (std::getline(in, line)) {
     ++n;
+    Json row;
     try {
-      rows.push_back(Json::parse(line));
+      row = Json::parse(line);
     } catch (const Json::exception&) {
-      throw io::BadInput(file.string() + ": line " + std::to_string(n) + " is not a JSON row");
+      throw io::BadInput(name + ": line " + std::to_string(n) + " is not a JSON row");
     }
+    if (!row.is_object() || !row.contains("index") || !row["index"].is_number_integer() ||
+        !row.contains("sweep") || !row["sweep"].is_string())
+      throw io::BadInput(name + ": line " + std::to_string(n) +
+                         ": expected an object with an integer \"index\" and a string "
+                         "\"sweep\", got " +
+                         io::describe(row));
+    rows.push_back(std::move(row));
   }
   return rows;
 }
@@ -36,13 +50,14 @@ std::vector<Json> merged_rows(const Batch& b, const fs::path& dir) {
   std::set<long> seen;
   for (const auto& [i, m] : b.shards) {
     for (const auto& f : m.files) {
+      const std::string name = io::printable((dir / f.path).string(), 300);
       for (auto& r : read_rows(dir / f.path)) {
-        const long index = r.is_object() ? r.value("index", -1L) : -1L;
-        if (index < m.items.first || index >= m.items.end || r.value("sweep", "") != b.hash)
-          throw io::BadInput((dir / f.path).string() + ": a row (index " + std::to_string(index) +
+        const long index = r["index"].get<long>();
+        if (index < m.items.first || index >= m.items.end || r["sweep"] != b.hash)
+          throw io::BadInput(name + ": a row (index " + std::to_string(index) +
                              ") that is not one of shard " + std::to_string(i) + "'s points");
         if (!seen.insert(index).second)
-          throw io::BadInput((dir / f.path).string() + ": point " + std::to_string(index) +
+          throw io::BadInput(name + ": point " + std::to_string(index) +
                              " twice");
         rows.push_back(std::move(r));
       }

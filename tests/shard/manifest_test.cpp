@@ -53,7 +53,7 @@ TEST(Manifest, RoundTripsAndFindsChangedFiles) {
 
 TEST(Manifest, ReadingIsStrict) {
   test::TempDir d;
-  std::ofstream(d / "m.json") << R"({"kind":"sweep","source":"s","hash":"h","shard":3,)"
+  std::ofstream(d / "m.json") << R"({"kind":"sweep","source":"s","hash":"ab","shard":3,)"
                                  R"("shards":2,"first":0,"end":1,"total":1,"command":[],)"
                                  R"("output":"","files":[],"completed":true})";
   try {

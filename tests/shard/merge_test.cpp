@@ -48,6 +48,13 @@ class Merge : public ::testing::Test {
     }
     return "";
   }
+  // Shard `index`'s manifest (of a 2-shard split) with `key` set to `value`.
+  void edit_manifest(long index, const std::string& key, const nlohmann::json& value) {
+    const fs::path file = dir_ / manifest_name("aa-2", {index, 2});
+    auto j = nlohmann::json::parse(test::slurp(file));
+    j[key] = value;
+    std::ofstream(file, std::ios::trunc) << j.dump();
+  }
   static std::string row(long index, const std::string& hash) {
     return R"({"index":)" + std::to_string(index) + R"(,"sweep":")" + hash + "\"}\n";
   }
@@ -94,6 +101,57 @@ TEST_F(Merge, APointWithoutARowIsNamedWithTheCommandThatRedoesItsShard) {
   EXPECT_NE(merge_refusal().find("shard 0/2: point 1 has no row; run: epviz sweep"),
             std::string::npos)
       << merge_refusal();
+}
+
+TEST_F(Merge, HostileRowsAreRefusedNamingTheFileAndLine) {
+  for (const std::string bad : {R"({"index":"1","sweep":"aa"})", R"({"index":1,"sweep":7})",
+                                R"({"index":1.5,"sweep":"aa"})", R"([1,"aa"])", R"({"sweep":"aa"})"}) {
+    write_shard("aa", 0, row(0, "aa") + bad + "\n");
+    write_shard("aa", 1, row(2, "aa") + row(3, "aa"));
+    const auto why = merge_refusal();
+    EXPECT_NE(why.find("aa-2.shard-0-of-2.jsonl: line 2: expected an object"), std::string::npos)
+        << bad << ": " << why;
+  }
+}
+
+TEST_F(Merge, ARangeWithAGapBetweenShardsIsRefused) {
+  // Shard 1 claims points 3.. only: point 2 would belong to no shard.
+  write_shard("aa", 0, row(0, "aa") + row(1, "aa"));
+  write_shard("aa", 1, row(3, "aa"));
+  edit_manifest(1, "first", 3);
+  try {
+    read_batches(dir_);
+    FAIL() << "a gap at point 2 was accepted";
+  } catch (const io::BadInput& e) {
+    EXPECT_NE(std::string(e.what()).find("key 'first'"), std::string::npos) << e.what();
+  }
+  // The same gap made by another total: shard 1 of 2 of 6 points does 3..5.
+  edit_manifest(1, "total", 6);
+  edit_manifest(1, "end", 6);
+  try {
+    read_batches(dir_);
+    FAIL() << "shards of 4 and 6 points were accepted as one batch";
+  } catch (const io::BadInput& e) {
+    EXPECT_NE(std::string(e.what()).find("key 'total'"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(Merge, ShardsOfOneBatchThatNameTwoOutputsAreRefused) {
+  write_shard("aa", 0, row(0, "aa") + row(1, "aa"));
+  write_shard("aa", 1, row(2, "aa") + row(3, "aa"));
+  edit_manifest(1, "output", "other.jsonl");
+  EXPECT_THROW(read_batches(dir_), io::BadInput);
+}
+
+TEST_F(Merge, AMillionMissingShardsListOnlyAFew) {
+  write_shard("aa", 0, row(0, "aa"), max_shards);
+  auto batches = read_batches(dir_);
+  ASSERT_EQ(batches.size(), 1u);
+  check_batch(batches[0], dir_);
+  EXPECT_EQ(batches[0].problems.size(), max_listed_problems);
+  EXPECT_EQ(batches[0].unlisted, max_shards - 1 - long(max_listed_problems));
+  EXPECT_EQ(batches[0].problems.back().rfind("shard 8/1000000: missing", 0), 0u)
+      << batches[0].problems.back();
 }
 
 }  // namespace

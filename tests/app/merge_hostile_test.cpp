@@ -1,0 +1,116 @@
+// `epviz merge` of manifests other machines or users wrote: one that would
+// make it write or read outside its folder, run ffmpeg on rows or echo a
+// foreign command is refused before any work, on one line naming the file and
+// key; a batch of a million missing shards is summarised, not listed.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+
+#include <nlohmann/json.hpp>
+
+#include "support/cli.hpp"
+#include "support/temp_dir.hpp"
+
+namespace epviz::test {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+const char* kTinySweep = R"({
+  "simulation": {"case": "generic", "t_end": 1, "samples": 2},
+  "axes": [{"field": "energy", "values": [1.5, 3.0]}]})";
+
+// "shards" holding one lawful, completed shard (0 of 1) of a sweep of two
+// points, whose merge would write shards/rows.jsonl.
+class MergeHostile : public ::testing::Test {
+ protected:
+  TempDir d_;
+  fs::path shards_ = d_ / "shards";
+  fs::path merged_ = shards_ / "rows.jsonl";
+  fs::path manifest_;
+
+  void SetUp() override {
+    std::ofstream(d_ / "s.sweep.json") << kTinySweep;
+    fs::create_directories(shards_);
+    ASSERT_EQ(run_epviz("sweep " + (d_ / "s.sweep.json").string() + " --out " + merged_.string() +
+                            " --shard 0/1",
+                        d_)
+                  .exit_code,
+              0);
+    for (const auto& e : fs::directory_iterator(shards_))
+      if (e.path().string().ends_with(".manifest.json")) manifest_ = e.path();
+    ASSERT_FALSE(manifest_.empty());
+  }
+  void edit(const std::function<void(Json&)>& change) {
+    Json j = Json::parse(slurp(manifest_));
+    change(j);
+    std::ofstream(manifest_, std::ios::trunc) << j.dump();
+  }
+  CliResult merge() { return run_epviz("merge " + shards_.string(), d_); }
+};
+
+TEST_F(MergeHostile, TheLawfulShardMerges) {
+  EXPECT_EQ(merge().exit_code, 0);
+  EXPECT_EQ(line_count(slurp(merged_)), 2u);
+}
+
+TEST_F(MergeHostile, AnOutputOutsideTheFolderIsRefusedAndTheVictimKept) {
+  const fs::path victim = d_ / "victim";
+  for (const std::string& output : {victim.string(), std::string("../victim")}) {
+    std::ofstream(victim, std::ios::trunc) << "precious";
+    edit([&](Json& j) { j["output"] = output; });
+    expect_bad_input(merge(), "key 'output'");
+    EXPECT_EQ(slurp(victim), "precious") << output;
+  }
+}
+
+TEST_F(MergeHostile, AFileOutsideTheFolderIsNotRead) {
+  // The same bytes outside: size and checksum agree with the manifest.
+  const std::string rows_name = Json::parse(slurp(manifest_))["files"][0]["path"];
+  fs::copy_file(shards_ / rows_name, d_ / "x.jsonl");
+  for (const std::string& path : {std::string("../x.jsonl"), (d_ / "x.jsonl").string()}) {
+    edit([&](Json& j) { j["files"][0]["path"] = path; });
+    expect_bad_input(merge(), "key 'files[0].path'");
+    EXPECT_FALSE(fs::exists(merged_)) << path;
+  }
+}
+
+TEST_F(MergeHostile, ARowsFileIsNotHandedToFfmpegAsARender) {
+  edit([](Json& j) {
+    j["kind"] = "render";
+    j["command"][1] = "render";
+  });
+  expect_bad_input(merge(), "key 'files[0].path'");
+  edit([](Json& j) { j["kind"] = "film"; });
+  expect_bad_input(merge(), "key 'kind'");
+}
+
+TEST_F(MergeHostile, AForeignCommandIsNotEchoedAsAdvice) {
+  edit([](Json& j) {
+    j["command"] = {"rm", "-rf", "/"};
+    j["completed"] = false;  // so that the merge would advise rerunning it
+  });
+  const auto r = merge();
+  expect_bad_input(r, "key 'command'");
+  EXPECT_EQ(r.err.find("run: rm"), std::string::npos) << r.err;
+}
+
+TEST_F(MergeHostile, AMillionMissingShardsAreSummarisedInAFewLines) {
+  edit([](Json& j) {
+    j["shards"] = 1000000;
+    j["first"] = 0;
+    j["end"] = 1;  // shard 0 of a million of 2 points does point 0
+  });
+  const auto r = merge();
+  EXPECT_EQ(r.exit_code, 4) << r.err.substr(0, 500);
+  EXPECT_LE(line_count(r.err), 12u) << r.err.substr(0, 500);
+  EXPECT_NE(r.err.find("shard 1/1000000: missing"), std::string::npos) << r.err.substr(0, 500);
+  EXPECT_NE(r.err.find("and 999991 more shards"), std::string::npos) << r.err.substr(0, 2000);
+  EXPECT_FALSE(fs::exists(merged_));
+}
+
+}  // namespace
+}  // namespace epviz::test
