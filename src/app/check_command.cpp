@@ -237,16 +237,16 @@ std::vector<CheckJob> prepare_jobs(const CheckOptions& o) {
       throw UsageError(shown + ": " + e.what());
     }
     g.golden_dir = check::golden_dir_of(job.file, o.golden);
-    const auto key = fs::weakly_canonical(g.golden_dir);
-    if (auto [it, fresh] = golden_owner.emplace(key, shown); !fresh)
-      throw UsageError(shown + ": its goldens would share " + g.golden_dir.string() + " with " +
-                       it->second + " (jobs need distinct file names)");
     g.shown = shown;
     g.job_file = job.file;
     g.frame_count = c.plan.frames;
     g.width = job.scene.width;
     g.height = job.scene.height;
     check::check_golden_inputs(g, o.update);
+    const auto key = fs::weakly_canonical(g.golden_dir);
+    if (auto [it, fresh] = golden_owner.emplace(key, shown); !fresh)
+      throw UsageError(shown + ": its goldens would share " + g.golden_dir.string() + " with " +
+                       it->second + " (jobs need distinct file names)");
     c.job = std::move(job);
     jobs.push_back(std::move(c));
   }
