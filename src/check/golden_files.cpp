@@ -65,7 +65,10 @@ void check_golden_inputs(const GoldenJob& job, bool update) {
     if (golden_file_exists(path) && !update && !io::read_png_size(path))
       refuse(path, "a damaged golden: not a PNG; re-baseline it with --update");
   }
-  (void)read_golden_record(job.golden_dir / "golden.json");
+  // --update keeps the recorded frames whose files are there: look at them now.
+  if (const auto rec = read_golden_record(job.golden_dir / "golden.json"))
+    for (const int f : rec->frames)
+      if (f < job.frame_count) golden_file_exists(job.golden_path(f));
 }
 
 void write_golden_png(const fs::path& path, const ImageView& image) {
