@@ -70,14 +70,14 @@ long peak_rss_kib() {
 class HostileGoldens : public ::testing::Test {
  protected:
   void SetUp() override {
-    std::ofstream(dir_ / "kov.json") << "{\"a job\": 1}\n";
-    job_.shown = "jobs/kov.json";
-    job_.job_file = dir_ / "kov.json";
-    job_.golden_dir = dir_ / "golden" / "kov";
-    job_.frame_count = 10;
-    job_.frames = {0};
-    job_.width = 40;
-    job_.height = 30;
+    std::ofstream(dir_ / "kov.json") << "{}\n";
+    job_ = {.shown = "jobs/kov.json",
+            .job_file = dir_ / "kov.json",
+            .golden_dir = dir_ / "golden" / "kov",
+            .frame_count = 10,
+            .frames = {0},
+            .width = 40,
+            .height = 30};
     fs::create_directories(job_.golden_dir);
   }
   CheckSettings settings() const {
