@@ -153,7 +153,7 @@ void PointReader::check_ftle_windows(const PointFields& p) const {
   const double t_end = p.fields.t_end ? *p.fields.t_end : sim::RunSpec{}.t_end;
   const double least = t_end / job::max_steps_per_run;
   if (!(spec_.ftle->window >= least))
-    throw io::JobError(spec_.file + ": key 'ftle.window': expected a window from t_end / " +
+    throw io::BadInput(spec_.file + ": key 'ftle.window': expected a window from t_end / " +
                        job::format_number(job::max_steps_per_run) + " (" +
                        job::format_number(least) + " at point " + std::to_string(p.index) +
                        ", t_end " + job::format_number(t_end) + "), got " +
