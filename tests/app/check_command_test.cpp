@@ -294,7 +294,9 @@ TEST_P(CheckRejects, WithOneLineExitTwoAndNothingWritten) {
   const auto& bad = GetParam();
   write_job(dir_ / "bench.json", {{"bench", {{"quick", true}}}});
   fs::create_directories(dir_ / "empty");
-  if (!fs::exists(dir_ / "fifo.xml")) ASSERT_EQ(mkfifo((dir_ / "fifo.xml").c_str(), 0600), 0);
+  if (!fs::exists(dir_ / "fifo.xml")) {
+    ASSERT_EQ(mkfifo((dir_ / "fifo.xml").c_str(), 0600), 0);
+  }
   std::string args = std::regex_replace(bad.args, std::regex("JOB"), job());
   args = std::regex_replace(args, std::regex("DIR"), dir_.path().string());
   const auto r = epviz("check " + args);
