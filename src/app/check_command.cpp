@@ -1,12 +1,16 @@
 #include "app/check_command.hpp"
 
 #include <CLI/CLI.hpp>
+#include <fcntl.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cctype>
 #include <chrono>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <future>
@@ -29,6 +33,7 @@
 #include "check/tolerance.hpp"
 #include "io/atomic_file.hpp"
 #include "io/frame_range.hpp"
+#include "io/printable.hpp"
 #include "render/gl_choice.hpp"
 
 namespace epviz::app {
@@ -179,6 +184,45 @@ void check_output_paths(const CheckOptions& o) {
   (void)render::GlChoice(o.gl);
 }
 
+// A FIFO given to --junit is written directly at the end. Opened now without
+// blocking, it fails when nobody reads it (rather than hanging after the whole
+// run); the descriptor is held until the run ends so that the reader does not
+// see the end of the stream before the XML comes.
+class FifoReaderCheck {
+ public:
+  explicit FifoReaderCheck(const std::string& target) {
+    std::error_code ec;
+    if (target.empty() || !fs::is_fifo(target, ec)) return;
+    fd_ = ::open(target.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd_ < 0)
+      throw UsageError("--junit: '" + io::printable(target, 200) + "' is a FIFO that " +
+                       (errno == ENXIO ? std::string("nobody reads")
+                                       : "cannot be opened: " + std::string(std::strerror(errno))));
+  }
+  ~FifoReaderCheck() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  FifoReaderCheck(const FifoReaderCheck&) = delete;
+  FifoReaderCheck& operator=(const FifoReaderCheck&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
+// Creates the report folder and makes sure a file can be made in it (a
+// directory like /proc/self exists but takes no files).
+void make_report_folder(const std::string& report) {
+  std::error_code ec;
+  fs::create_directories(report, ec);
+  const auto probe = fs::path(report) / (".epviz-probe-" + std::to_string(::getpid()));
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  if (fd < 0)
+    throw UsageError("--report: cannot create files in '" + io::printable(report, 200) +
+                     "': " + std::strerror(errno));
+  ::close(fd);
+  fs::remove(probe);
+}
+
 std::vector<CheckJob> prepare_jobs(const CheckOptions& o) {
   const auto specs = frame_specs(o.frames);
   std::vector<CheckJob> jobs;
@@ -193,15 +237,16 @@ std::vector<CheckJob> prepare_jobs(const CheckOptions& o) {
       throw UsageError(shown + ": " + e.what());
     }
     g.golden_dir = check::golden_dir_of(job.file, o.golden);
-    const auto key = fs::weakly_canonical(g.golden_dir);
-    if (auto [it, fresh] = golden_owner.emplace(key, shown); !fresh)
-      throw UsageError(shown + ": its goldens would share " + g.golden_dir.string() + " with " +
-                       it->second + " (jobs need distinct file names)");
     g.shown = shown;
     g.job_file = job.file;
     g.frame_count = c.plan.frames;
     g.width = job.scene.width;
     g.height = job.scene.height;
+    check::check_golden_inputs(g, o.update);
+    const auto key = fs::weakly_canonical(g.golden_dir);
+    if (auto [it, fresh] = golden_owner.emplace(key, shown); !fresh)
+      throw UsageError(shown + ": its goldens would share " + g.golden_dir.string() + " with " +
+                       it->second + " (jobs need distinct file names)");
     c.job = std::move(job);
     jobs.push_back(std::move(c));
   }
@@ -315,8 +360,9 @@ int run_check(const CheckOptions& o) {
   const check::Tolerance t = tolerance_from(o);
   const int workers = o.workers.empty() ? 1 : int(parse_integer("-j", o.workers, 1, 64));
   check_output_paths(o);
+  const FifoReaderCheck junit_reader(o.junit);
   const auto jobs = prepare_jobs(o);
-  if (!o.report.empty() && !o.update) fs::create_directories(o.report);
+  if (!o.report.empty() && !o.update) make_report_folder(o.report);
 
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::thread> threads;

@@ -5,8 +5,11 @@
 
 #include "check/golden_record.hpp"
 #include "io/atomic_file.hpp"
+#include "io/bad_input.hpp"
 #include "io/frame_names.hpp"
+#include "io/png_reader.hpp"
 #include "io/png_writer.hpp"
+#include "io/printable.hpp"
 
 namespace epviz::check {
 
@@ -19,6 +22,53 @@ fs::path GoldenJob::golden_path(int frame) const {
 fs::path golden_dir_of(const fs::path& job_file, const fs::path& golden_root) {
   const fs::path name = job_file.stem();
   return golden_root.empty() ? job_file.parent_path() / "golden" / name : golden_root / name;
+}
+
+namespace {
+
+[[noreturn]] void refuse(const fs::path& path, const std::string& what) {
+  throw io::BadInput(io::printable(path.string(), 200) + ": " + what);
+}
+
+// A golden may be missing or a regular file; anything else in a golden folder
+// (a link git checked out, a FIFO, a directory) is refused before reading or
+// writing through it.
+bool golden_file_exists(const fs::path& path) {
+  std::error_code ec;
+  const auto type = fs::symlink_status(path, ec).type();
+  if (type == fs::file_type::not_found) return false;
+  if (type == fs::file_type::symlink)
+    refuse(path, "a golden is a symbolic link; goldens must be regular files");
+  if (type != fs::file_type::regular) refuse(path, "a golden is not a regular file");
+  return true;
+}
+
+// The golden folder, or the nearest of its parents that exists, must be a directory.
+void check_golden_folder(const fs::path& dir) {
+  for (fs::path p = dir; !p.empty(); p = p.parent_path()) {
+    std::error_code ec;
+    const auto type = fs::status(p, ec).type();
+    if (type == fs::file_type::directory) return;
+    if (type != fs::file_type::not_found)
+      refuse(p, "the golden folder " + io::printable(dir.string(), 200) +
+                    " would be under this, which is not a directory");
+    if (p == p.parent_path()) return;
+  }
+}
+
+}  // namespace
+
+void check_golden_inputs(const GoldenJob& job, bool update) {
+  check_golden_folder(job.golden_dir);
+  for (const int f : job.frames) {
+    const fs::path path = job.golden_path(f);
+    if (golden_file_exists(path) && !update && !io::read_png_size(path))
+      refuse(path, "a damaged golden: not a PNG; re-baseline it with --update");
+  }
+  // --update keeps the recorded frames whose files are there: look at them now.
+  if (const auto rec = read_golden_record(job.golden_dir / "golden.json"))
+    for (const int f : rec->frames)
+      if (f < job.frame_count) golden_file_exists(job.golden_path(f));
 }
 
 void write_golden_png(const fs::path& path, const ImageView& image) {
@@ -36,6 +86,7 @@ std::vector<fs::path> write_goldens(const GoldenJob& job, std::span<const ImageV
   std::vector<fs::path> written;
   for (std::size_t k = 0; k < images.size(); ++k) {
     written.push_back(job.golden_path(job.frames[k]));
+    golden_file_exists(written.back());  // never write through a link
     write_golden_png(written.back(), images[k]);
   }
   GoldenRecord rec;
@@ -45,10 +96,11 @@ std::vector<fs::path> write_goldens(const GoldenJob& job, std::span<const ImageV
   rec.job_file = job.job_file.filename().string();
   rec.job_hash = job_file_hash(job.job_file);
   const fs::path record = job.golden_dir / "golden.json";
+  golden_file_exists(record);
   std::set<int> frames(job.frames.begin(), job.frames.end());
   if (auto old = read_golden_record(record))
     for (const int f : old->frames)
-      if (f < job.frame_count && fs::exists(job.golden_path(f))) frames.insert(f);
+      if (f < job.frame_count && golden_file_exists(job.golden_path(f))) frames.insert(f);
   rec.frames.assign(frames.begin(), frames.end());
   rec.width = job.width;
   rec.height = job.height;

@@ -27,6 +27,13 @@ struct GoldenJob {
 std::filesystem::path golden_dir_of(const std::filesystem::path& job_file,
                                     const std::filesystem::path& golden_root);
 
+// Goldens and golden.json come from version control and are hostile input:
+// throws io::BadInput naming the file when the golden folder would be under a
+// file, when a golden of job.frames is a link or not a regular file (or, when
+// comparing, not a PNG), or when golden.json is not a golden record
+// (read_golden_record). Called before anything is drawn.
+void check_golden_inputs(const GoldenJob& job, bool update);
+
 // What drew the frames (GL_RENDERER, GL_VERSION), recorded in golden.json.
 struct RendererInfo {
   std::string renderer, version;

@@ -6,6 +6,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "io/bad_input.hpp"
+#include "io/printable.hpp"
+
 namespace epviz::check {
 
 std::uint64_t fnv1a64(std::string_view bytes) {
@@ -40,23 +43,55 @@ std::string to_json_text(const GoldenRecord& r) {
   return j.dump(2) + "\n";
 }
 
+namespace {
+
+constexpr std::uintmax_t kMaxRecordBytes = 1 << 20;
+
+[[noreturn]] void refuse(const std::filesystem::path& file, const std::string& what) {
+  throw io::BadInput(io::printable(file.string(), 200) + ": " + what);
+}
+
+}  // namespace
+
 std::optional<GoldenRecord> read_golden_record(const std::filesystem::path& file) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const auto type = fs::symlink_status(file, ec).type();
+  if (type == fs::file_type::not_found) return std::nullopt;
+  if (type != fs::file_type::regular)
+    refuse(file, "not a regular file (golden.json must be a plain file written by --update)");
+  if (fs::file_size(file, ec) > kMaxRecordBytes)
+    refuse(file, "larger than 1 MiB; not a golden record (re-create it with --update)");
   std::ifstream in(file);
-  if (!in) return std::nullopt;
+  if (!in) refuse(file, "cannot be read");
+  std::string key;
   try {
     const auto j = nlohmann::json::parse(in);
     GoldenRecord r;
-    r.epviz_version = j.at("epviz_version").get<std::string>();
-    r.gl_renderer = j.at("gl_renderer").get<std::string>();
-    r.gl_version = j.at("gl_version").get<std::string>();
-    r.job_file = j.value("job_file", "");
-    r.job_hash = j.value("job_hash", "");
-    r.frames = j.value("frames", std::vector<int>{});
-    r.width = j.value("width", 0);
-    r.height = j.value("height", 0);
+    key = "epviz_version";
+    r.epviz_version = j.at(key).get<std::string>();
+    key = "gl_renderer";
+    r.gl_renderer = j.at(key).get<std::string>();
+    key = "gl_version";
+    r.gl_version = j.at(key).get<std::string>();
+    key = "job_file";
+    r.job_file = j.value(key, "");
+    key = "job_hash";
+    r.job_hash = j.value(key, "");
+    key = "frames";
+    r.frames = j.value(key, std::vector<int>{});
+    for (const int f : r.frames)
+      if (f < 0) refuse(file, "frames: " + std::to_string(f) + " is not a frame (allowed: 0 or more)");
+    key = "width";
+    r.width = j.value(key, 0);
+    key = "height";
+    r.height = j.value(key, 0);
+    if (r.width < 0 || r.height < 0) refuse(file, "width, height: expected 0 or more");
     return r;
-  } catch (const nlohmann::json::exception&) {
-    return std::nullopt;
+  } catch (const nlohmann::json::exception& e) {
+    refuse(file, (key.empty() ? std::string("not JSON") : key + ": missing or of the wrong type") +
+                     " (" + io::printable(e.what(), 120) +
+                     "); a damaged golden record: re-create it with --update");
   }
 }
 

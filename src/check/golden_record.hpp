@@ -29,7 +29,10 @@ std::uint64_t fnv1a64(std::string_view bytes);
 std::string job_file_hash(const std::filesystem::path& file);
 
 std::string to_json_text(const GoldenRecord& r);
-// nullopt when the file is missing or not a golden record.
+// nullopt when the file is missing. golden.json comes from version control:
+// a link, a FIFO, a directory, more than 1 MiB, or content that is not a golden
+// record (a key missing or of the wrong type, a negative frame) throws
+// io::BadInput naming the file and the key.
 std::optional<GoldenRecord> read_golden_record(const std::filesystem::path& file);
 
 }  // namespace epviz::check

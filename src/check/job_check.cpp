@@ -6,13 +6,14 @@
 #include "io/frame_names.hpp"
 #include "io/png_reader.hpp"
 #include "io/png_writer.hpp"
+#include "io/printable.hpp"
 
 namespace epviz::check {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string size_text(int width, int height) {
+std::string size_text(std::int64_t width, std::int64_t height) {
   return std::to_string(width) + "x" + std::to_string(height);
 }
 
@@ -33,8 +34,9 @@ JobOutcome JobChecker::compare(const GoldenJob& job, std::size_t index,
   if (auto rec = read_golden_record(job.golden_dir / "golden.json");
       rec && (rec->gl_renderer != gl.renderer || rec->gl_version != gl.version))
     out.warnings.push_back("epviz: warning: " + job.shown + ": goldens were made with " +
-                           rec->gl_renderer + ", " + rec->gl_version + "; this run uses " +
-                           gl.renderer + ", " + gl.version +
+                           io::printable(rec->gl_renderer, 120) + ", " +
+                           io::printable(rec->gl_version, 120) + "; this run uses " +
+                           io::printable(gl.renderer, 120) + ", " + io::printable(gl.version, 120) +
                            " (see docs/ci.md: --metric ssim, or re-baseline with --update)");
   std::vector<int> missing;
   for (std::size_t k = 0; k < job.frames.size(); ++k) {
@@ -71,27 +73,38 @@ void JobChecker::compare_frame(const GoldenJob& job, std::size_t index, const Im
     r.actual_image = report_image(job, index, r.frame, "actual");
     io::write_png_rgba(report / r.actual_image, actual.width, actual.height, actual.rgba);
   };
-  const auto golden = io::read_png_rgba(golden_path);
-  if (!golden) {
-    r.problem = "no golden " + golden_path.string();
-    missing.push_back(r.frame);
-    keep_actual();
-    return;
-  }
   auto keep_golden = [&] {
     if (report.empty()) return;
     r.golden_image = report_image(job, index, r.frame, "golden");
     fs::copy_file(golden_path, report / r.golden_image, fs::copy_options::overwrite_existing);
   };
-  if (golden->width != actual.width || golden->height != actual.height) {
+  auto damaged = [&](const char* why) {
+    r.problem = "the golden " + golden_path.string() + " is damaged (" + why +
+                "); re-baseline with: " + settings_.update_command(job, {r.frame});
+    keep_actual();
+  };
+  // The header's size first: a golden is decoded only when it is the frame's
+  // size, so a small file claiming a huge image costs nothing.
+  const auto size = io::read_png_size(golden_path);
+  std::error_code ec;
+  if (!size && fs::exists(golden_path, ec)) return damaged("not a PNG");
+  if (!size) {
+    r.problem = "no golden " + golden_path.string();
+    missing.push_back(r.frame);
+    keep_actual();
+    return;
+  }
+  if (size->width != actual.width || size->height != actual.height) {
     r.problem = "the golden " + golden_path.string() + " is " +
-                size_text(golden->width, golden->height) + " but the frame is " +
+                size_text(size->width, size->height) + " but the frame is " +
                 size_text(actual.width, actual.height) +
                 "; re-baseline with: " + settings_.update_command(job, job.frames);
     keep_golden();
     keep_actual();
     return;
   }
+  const auto golden = io::read_png_rgba(golden_path);
+  if (!golden) return damaged("its image data cannot be decoded");
   const auto verdict = judge_.judge(actual, {golden->width, golden->height, golden->rgba});
   r.passed = verdict.passed;
   r.measure = verdict.measure;

@@ -2,12 +2,51 @@
 
 #include <stb/stb_image.h>
 
-namespace epviz::io {
+#include <array>
+#include <fstream>
+#include <iterator>
+#include <string_view>
 
-std::optional<RgbaPixels> read_png_rgba(const std::filesystem::path& path) {
+namespace epviz::io {
+namespace {
+
+// Opening a FIFO or a device would block or read forever.
+bool is_regular(const std::filesystem::path& path) {
+  std::error_code ec;
+  return std::filesystem::is_regular_file(path, ec);
+}
+
+std::int64_t big_endian32(const unsigned char* p) {
+  return (std::int64_t(p[0]) << 24) | (std::int64_t(p[1]) << 16) | (std::int64_t(p[2]) << 8) |
+         std::int64_t(p[3]);
+}
+
+}  // namespace
+
+std::optional<PngSize> read_png_size(const std::filesystem::path& path) {
+  if (!is_regular(path)) return std::nullopt;
+  // Signature (8 bytes), then the first chunk: length (4), "IHDR", width, height.
+  std::array<unsigned char, 24> head{};
+  std::ifstream in(path, std::ios::binary);
+  if (!in.read(reinterpret_cast<char*>(head.data()), head.size())) return std::nullopt;
+  constexpr std::string_view signature("\x89PNG\r\n\x1a\n", 8);
+  if (std::string_view(reinterpret_cast<const char*>(head.data()), 8) != signature ||
+      std::string_view(reinterpret_cast<const char*>(head.data()) + 12, 4) != "IHDR")
+    return std::nullopt;
+  return PngSize{big_endian32(&head[16]), big_endian32(&head[20])};
+}
+
+std::optional<RgbaPixels> read_png_rgba(const std::filesystem::path& path,
+                                        std::int64_t max_pixels) {
+  const auto size = read_png_size(path);
+  if (!size || size->width * size->height > max_pixels) return std::nullopt;
+  std::ifstream in(path, std::ios::binary);
+  const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
+                                         std::istreambuf_iterator<char>());
   RgbaPixels out;
   int channels = 0;
-  unsigned char* data = stbi_load(path.c_str(), &out.width, &out.height, &channels, 4);
+  unsigned char* data = stbi_load_from_memory(bytes.data(), int(bytes.size()), &out.width,
+                                              &out.height, &channels, 4);
   if (data == nullptr) return std::nullopt;
   out.rgba.assign(data, data + std::size_t(out.width) * std::size_t(out.height) * 4);
   stbi_image_free(data);

@@ -4,6 +4,8 @@
 // command that creates it, and bad input exits 2 with one line.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -256,17 +258,52 @@ struct BadCheck {
 };
 void PrintTo(const BadCheck& b, std::ostream* os) { *os << b.name; }
 
+// Goldens come from version control: a link, a FIFO or a golden.json that is
+// not a file is refused before anything is drawn, and nothing is written
+// through a link.
+TEST_F(Check, HostileGoldensAreRefusedBeforeWork) {
+  ASSERT_EQ(epviz("check " + job() + " --frames 0 --update").exit_code, 0);
+  const auto victim = dir_ / "victim.txt";
+  std::ofstream(victim) << "keep me";
+  fs::remove(golden(0));
+  fs::create_symlink(victim, golden(0));
+  for (const char* mode : {"", " --update"})
+    test::expect_bad_input(epviz("check " + job() + " --frames 0" + mode),
+                           "frame_0000.png: a golden is a symbolic link");
+  EXPECT_EQ(test::slurp(victim), "keep me");
+  fs::remove(golden(0));
+  ASSERT_EQ(mkfifo(golden(0).c_str(), 0600), 0);
+  test::expect_bad_input(epviz("check " + job() + " --frames 0"), "a golden is not a regular file");
+  fs::remove(golden(0));
+  const auto record = golden(0).parent_path() / "golden.json";
+  fs::remove(record);
+  fs::create_directory(record);
+  for (const char* mode : {"", " --update"})
+    test::expect_bad_input(epviz("check " + job() + " --frames 0" + mode),
+                           "golden.json: not a regular file");
+  fs::remove(record);
+  std::ofstream(record) << R"({"epviz_version": "1", "gl_renderer": "r", "gl_version": "v",)"
+                        << R"( "frames": [-5]})";
+  test::expect_bad_input(epviz("check " + job() + " --frames 0 --update"),
+                         "golden.json: frames: -5 is not a frame");
+}
+
 class CheckRejects : public Check, public ::testing::WithParamInterface<BadCheck> {};
 
 TEST_P(CheckRejects, WithOneLineExitTwoAndNothingWritten) {
   const auto& bad = GetParam();
   write_job(dir_ / "bench.json", {{"bench", {{"quick", true}}}});
   fs::create_directories(dir_ / "empty");
+  if (!fs::exists(dir_ / "fifo.xml")) {
+    ASSERT_EQ(mkfifo((dir_ / "fifo.xml").c_str(), 0600), 0);
+  }
   std::string args = std::regex_replace(bad.args, std::regex("JOB"), job());
   args = std::regex_replace(args, std::regex("DIR"), dir_.path().string());
   const auto r = epviz("check " + args);
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
-  EXPECT_NE(r.err.find(bad.must_name), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(std::regex_replace(bad.must_name, std::regex("DIR"), dir_.path().string())),
+            std::string::npos)
+      << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_EQ(r.out, "");
   EXPECT_FALSE(fs::exists(dir_ / "jobs" / "golden"));
@@ -292,6 +329,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadCheck{"workers", "JOB -j 0", "-j"},
         BadCheck{"unknown_gl", "JOB --gl vulkan --update", "--gl: unknown GL backend 'vulkan'"},
         BadCheck{"report_parent_missing", "JOB --report DIR/no/such/rep", "--report: directory"},
+        BadCheck{"report_takes_no_files", "JOB --report /proc/self",
+                 "--report: cannot create files in '/proc/self'"},
+        BadCheck{"golden_folder_under_a_file", "JOB --golden DIR/jobs/kov.json",
+                 "kov.json: the golden folder"},
+        BadCheck{"junit_fifo_nobody_reads", "JOB --junit DIR/fifo.xml",
+                 "--junit: 'DIR/fifo.xml' is a FIFO that nobody reads"},
         BadCheck{"junit_parent_missing", "JOB --junit DIR/no/j.xml", "--junit: directory"},
         BadCheck{"missing_job", "DIR/none.json --update", "none.json: cannot open"},
         BadCheck{"bench_job", "DIR/bench.json",

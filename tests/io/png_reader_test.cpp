@@ -1,0 +1,60 @@
+// io::read_png_size reads a PNG's size from its header alone, and
+// io::read_png_rgba refuses what is not a regular file or claims more pixels
+// than it may decode.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <fstream>
+
+#include "support/temp_dir.hpp"
+#include "io/png_reader.hpp"
+#include "io/png_writer.hpp"
+
+namespace epviz::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(PngReader, TheSizeComesFromTheHeader) {
+  test::TempDir dir;
+  const auto file = dir / "a.png";
+  const std::vector<std::uint8_t> rgba(7 * 5 * 4, 200);
+  write_png_rgba(file, 7, 5, rgba);
+  const auto size = read_png_size(file);
+  ASSERT_TRUE(size);
+  EXPECT_EQ(size->width, 7);
+  EXPECT_EQ(size->height, 5);
+  // A header alone, claiming 4 billion pixels (bytes written by hand: the
+  // signature, then IHDR's length, type, width and height, big-endian).
+  const auto huge = dir / "huge.png";
+  std::ofstream(huge, std::ios::binary)
+      .write("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR\0\1\0\0\0\1\0\0\x08\x06\0\0\0", 29);
+  const auto claimed = read_png_size(huge);
+  ASSERT_TRUE(claimed);
+  EXPECT_EQ(claimed->width, 65536);
+  EXPECT_EQ(claimed->height, 65536);
+  EXPECT_FALSE(read_png_rgba(huge));
+  std::ofstream(dir / "text.png") << "hello, this is not a PNG file at all";
+  EXPECT_FALSE(read_png_size(dir / "text.png"));
+}
+
+TEST(PngReader, ImagesOverTheCapAreNotDecoded) {
+  test::TempDir dir;
+  const auto file = dir / "a.png";
+  const std::vector<std::uint8_t> rgba(8 * 8 * 4, 100);
+  write_png_rgba(file, 8, 8, rgba);
+  EXPECT_TRUE(read_png_rgba(file, 64));
+  EXPECT_FALSE(read_png_rgba(file, 63));
+}
+
+TEST(PngReader, AFifoIsNotOpened) {
+  test::TempDir dir;
+  const auto fifo = dir / "f.png";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  // Opening a FIFO nobody writes would block forever.
+  EXPECT_FALSE(read_png_size(fifo));
+  EXPECT_FALSE(read_png_rgba(fifo));
+}
+
+}  // namespace
+}  // namespace epviz::io
