@@ -81,7 +81,8 @@ std::optional<GoldenRecord> read_golden_record(const std::filesystem::path& file
     key = "frames";
     r.frames = j.value(key, std::vector<int>{});
     for (const int f : r.frames)
-      if (f < 0) refuse(file, "frames: " + std::to_string(f) + " is not a frame (allowed: 0 or more)");
+      if (f < 0)
+        refuse(file, "frames: " + std::to_string(f) + " is not a frame (allowed: 0 or more)");
     key = "width";
     r.width = j.value(key, 0);
     key = "height";

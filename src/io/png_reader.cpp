@@ -45,8 +45,8 @@ std::optional<RgbaPixels> read_png_rgba(const std::filesystem::path& path,
                                          std::istreambuf_iterator<char>());
   RgbaPixels out;
   int channels = 0;
-  unsigned char* data = stbi_load_from_memory(bytes.data(), int(bytes.size()), &out.width,
-                                              &out.height, &channels, 4);
+  unsigned char* data =
+      stbi_load_from_memory(bytes.data(), int(bytes.size()), &out.width, &out.height, &channels, 4);
   if (data == nullptr) return std::nullopt;
   out.rgba.assign(data, data + std::size_t(out.width) * std::size_t(out.height) * 4);
   stbi_image_free(data);

@@ -19,7 +19,7 @@ struct Batch {
   long count = 0;
   std::map<long, Manifest> shards;    // by shard index
   std::vector<std::string> problems;  // one line each, with the command that redoes the shard
-  long unlisted = 0;  // shards with problems past max_listed_problems, counted only
+  long unlisted = 0;                  // shards with problems past max_listed_problems, counted only
 };
 
 // A batch of a million shards with one manifest must not print a million lines.

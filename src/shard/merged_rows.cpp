@@ -57,8 +57,7 @@ std::vector<Json> merged_rows(const Batch& b, const fs::path& dir) {
           throw io::BadInput(name + ": a row (index " + std::to_string(index) +
                              ") that is not one of shard " + std::to_string(i) + "'s points");
         if (!seen.insert(index).second)
-          throw io::BadInput(name + ": point " + std::to_string(index) +
-                             " twice");
+          throw io::BadInput(name + ": point " + std::to_string(index) + " twice");
         rows.push_back(std::move(r));
       }
     }

@@ -11,10 +11,10 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "support/cli.hpp"
 #include "check/golden_record.hpp"
 #include "check/job_check.hpp"
 #include "io/bad_input.hpp"
+#include "support/cli.hpp"
 #include "test_images.hpp"
 
 namespace epviz::check {
@@ -87,8 +87,8 @@ class HostileGoldens : public ::testing::Test {
     return s;
   }
   JobOutcome compare(const TestImage& image) {
-    return JobChecker(settings()).compare(job_, 0, std::vector<ImageView>{image.view()},
-                                          std::nullopt);
+    return JobChecker(settings())
+        .compare(job_, 0, std::vector<ImageView>{image.view()}, std::nullopt);
   }
   std::string bad_input_message() {
     try {
@@ -115,8 +115,7 @@ TEST_F(HostileGoldens, ABombIsReportedMisSizedWithoutDecoding) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_LT(seconds, 1.0);
   EXPECT_LT(peak_rss_kib() - rss_before, 100 * 1024);
-  EXPECT_NE(out.results[0].problem.find("is 23000x23000 but the frame is 40x30"),
-            std::string::npos)
+  EXPECT_NE(out.results[0].problem.find("is 23000x23000 but the frame is 40x30"), std::string::npos)
       << out.results[0].problem;
 }
 
@@ -128,8 +127,7 @@ TEST_F(HostileGoldens, ADamagedGoldenIsSaidToBeDamaged) {
   std::ofstream(job_.golden_path(0), std::ios::binary) << full.substr(0, 40);
   const auto out = compare(image);
   EXPECT_FALSE(out.results[0].passed);
-  EXPECT_NE(out.results[0].problem.find("is damaged"), std::string::npos)
-      << out.results[0].problem;
+  EXPECT_NE(out.results[0].problem.find("is damaged"), std::string::npos) << out.results[0].problem;
   // Not a PNG at all: refused before any work.
   std::ofstream(job_.golden_path(0)) << "not a png";
   EXPECT_NE(bad_input_message().find("frame_0000.png: a damaged golden"), std::string::npos)

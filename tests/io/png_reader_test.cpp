@@ -6,9 +6,9 @@
 
 #include <fstream>
 
-#include "support/temp_dir.hpp"
 #include "io/png_reader.hpp"
 #include "io/png_writer.hpp"
+#include "support/temp_dir.hpp"
 
 namespace epviz::io {
 namespace {

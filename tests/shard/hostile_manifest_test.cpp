@@ -30,8 +30,8 @@ Json lawful_render() {
   auto j = lawful();
   j["kind"] = "render";
   j["output"] = "movie.mp4";
-  j["command"] = {"epviz", "render", "/s/a.sweep.json", "--out", "/r", "--width", "64",
-                  "--height", "48", "--format", "mp4"};
+  j["command"] = {"epviz",    "render", "/s/a.sweep.json", "--out", "/r", "--width", "64",
+                  "--height", "48",     "--format",        "mp4"};
   j["files"][0]["path"] = "movie.shard-1-of-2.mp4";
   return j;
 }
@@ -86,8 +86,8 @@ INSTANTIATE_TEST_SUITE_P(
         HostileCase{"AbsoluteFile", "/files/0/path", "/etc/passwd", "files[0].path"},
         HostileCase{"UnknownKind", "/kind", "rows", "kind"},
         HostileCase{"KindOtherThanTheCommands", "/kind", "render", "command"},
-        HostileCase{"RenderOfARowsFile", "/files/0/path", "a.shard-1-of-2.jsonl",
-                    "files[0].path", true},
+        HostileCase{"RenderOfARowsFile", "/files/0/path", "a.shard-1-of-2.jsonl", "files[0].path",
+                    true},
         HostileCase{"RenderToARowsFile", "/output", "a.jsonl", "files[0].path", true},
         HostileCase{"RenderOptionOfASweep", "/command/3", "-j", "command", true},
         HostileCase{"ForeignCommand", "/command", Json{"rm", "-rf", "/"}, "command"},

@@ -104,8 +104,9 @@ TEST_F(Merge, APointWithoutARowIsNamedWithTheCommandThatRedoesItsShard) {
 }
 
 TEST_F(Merge, HostileRowsAreRefusedNamingTheFileAndLine) {
-  for (const std::string bad : {R"({"index":"1","sweep":"aa"})", R"({"index":1,"sweep":7})",
-                                R"({"index":1.5,"sweep":"aa"})", R"([1,"aa"])", R"({"sweep":"aa"})"}) {
+  for (const std::string bad :
+       {R"({"index":"1","sweep":"aa"})", R"({"index":1,"sweep":7})",
+        R"({"index":1.5,"sweep":"aa"})", R"([1,"aa"])", R"({"sweep":"aa"})"}) {
     write_shard("aa", 0, row(0, "aa") + bad + "\n");
     write_shard("aa", 1, row(2, "aa") + row(3, "aa"));
     const auto why = merge_refusal();
