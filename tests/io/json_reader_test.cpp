@@ -1,6 +1,7 @@
 // Strict JSON reading under hostile files: errors, never crashes; every
 // message on one line and short, whatever the value or key holds.
 #include <gtest/gtest.h>
+#include <sys/ioctl.h>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -15,6 +16,7 @@
 #include "io/json_reader.hpp"
 #include "io/printable.hpp"
 #include "support/errors.hpp"
+#include "support/eventually.hpp"
 #include "support/temp_dir.hpp"
 
 namespace {
@@ -177,12 +179,26 @@ TEST_F(JsonFile, AMissingFileSaysWhy) {
 TEST_F(JsonFile, APipeWhoseWriterComesLateIsReadWhole) {
   const auto fifo = dir_ / "late.fifo";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  // The writer opens only once the reader has the pipe open (before that a
+  // non-blocking open for writing fails), and writes its second piece only
+  // once the reader has drained the first (FIONREAD counts what is unread).
   std::thread writer([&] {
-    std::this_thread::sleep_for(std::chrono::milliseconds(300));
-    std::ofstream out(fifo);
-    out << "{\"a\": " << std::flush;
-    std::this_thread::sleep_for(std::chrono::milliseconds(300));
-    out << "[1, 2]}";
+    int fd = -1;
+    const bool opened = epviz::test::eventually(
+        [&] { return (fd = ::open(fifo.c_str(), O_WRONLY | O_NONBLOCK)) >= 0; },
+        std::chrono::seconds(10));
+    if (!opened) return;
+    const std::string first = "{\"a\": ", second = "[1, 2]}";
+    const bool wrote_first = ::write(fd, first.data(), first.size()) == ssize_t(first.size());
+    const bool drained =
+        wrote_first && epviz::test::eventually(
+                           [&] {
+                             int unread = -1;
+                             return ::ioctl(fd, FIONREAD, &unread) == 0 && unread == 0;
+                           },
+                           std::chrono::seconds(10));
+    if (drained) (void)!::write(fd, second.data(), second.size());
+    ::close(fd);
   });
   json read;
   EXPECT_NO_THROW(read = epviz::io::read_json_file(fifo));
