@@ -253,10 +253,7 @@ TEST_F(Check, NumericalFailureFailsTheFramesFromThereOnAndWritesNoGoldens) {
   EXPECT_NE(r.out.find("numerical failure before this frame"), std::string::npos) << r.out;
 }
 
-struct BadCheck {
-  std::string name, args, must_name;
-};
-void PrintTo(const BadCheck& b, std::ostream* os) { *os << b.name; }
+using BadCheck = epviz::test::RefusedCase;
 
 // Goldens come from version control: a link, a FIFO or a golden.json that is
 // not a file is refused before anything is drawn, and nothing is written
@@ -340,7 +337,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCheck{"bench_job", "DIR/bench.json",
                  "bench.json: a bench-figures job has no frames to check"},
         BadCheck{"empty_directory", "DIR/empty", "empty: no render jobs"}),
-    [](const auto& param_info) { return param_info.param.name; });
+    epviz::test::case_name);
 
 }  // namespace
 }  // namespace epviz
