@@ -44,22 +44,7 @@ int run_sweep(const SweepOptions& o) {
                                      : int(parse_integer("-j", o.jobs, 1, 4096));
   const auto shard = shard::shard_from_options(o.shard, o.shard_count);
 
-  // Every point is resolved before any runs: a bad value anywhere in the
-  // sweep stops every shard alike, before any work.
   const long total = spec.point_count();
-  std::vector<sweep::PreparedPoint> points;
-  points.reserve(std::size_t(total));
-  sweep::PointReader read_point(spec);
-  for (long i = 0; i < total; ++i) {
-    try {
-      auto p = read_point(i);
-      auto run = sweep::resolve_point(p, [](const SimulationFields& f) { return resolve(f); });
-      points.push_back(sweep::prepared_point(p, std::move(run)));
-    } catch (const std::invalid_argument& e) {  // an energy no state of the body reaches
-      throw UsageError(e.what());
-    }
-  }
-
   const fs::path out_given =
       o.out.empty() ? fs::path(sweep_stem(o.file) + ".jsonl") : fs::path(o.out);
   if (o.out == "-") throw UsageError("--out: rows are appended to a file, not standard output");
@@ -83,9 +68,24 @@ int run_sweep(const SweepOptions& o) {
       throw UsageError(out.string() + ": holds point " + std::to_string(i) +
                        ", outside this shard's points " + std::to_string(range.first) + ".." +
                        std::to_string(range.end - 1) + "; give another --out");
+
+  // Every point is resolved before any runs: a bad value anywhere in the
+  // sweep stops every shard alike, before any work. Only this shard's points
+  // still to run are kept, so that a shard's memory is in proportion to its
+  // own range, however large the sweep.
   std::vector<sweep::PreparedPoint> pending;
-  for (long i = range.first; i < range.end; ++i)
-    if (!existing.indices.count(i)) pending.push_back(std::move(points[std::size_t(i)]));
+  pending.reserve(std::size_t(range.size()));
+  sweep::PointReader read_point(spec);
+  for (long i = 0; i < total; ++i) {
+    try {
+      auto p = read_point(i);
+      auto run = sweep::resolve_point(p, [](const SimulationFields& f) { return resolve(f); });
+      if (i >= range.first && i < range.end && !existing.indices.count(i))
+        pending.push_back(sweep::prepared_point(p, std::move(run)));
+    } catch (const std::invalid_argument& e) {  // an energy no state of the body reaches
+      throw UsageError(e.what());
+    }
+  }
 
   if (rows_shard) shard::start_rows_shard(*rows_shard);  // "completed": false until the end
 

@@ -68,6 +68,13 @@ std::optional<ShardSpec> shard_from_environment(const Environment& env, long cou
                        std::to_string(min) + " to " + std::to_string(max) +
                        " are not consecutive; give the array as --array=A-B (step 1) or pass "
                        "--shard I/N");
+    // --shard-count is for the environments that give only an index; with
+    // Slurm it may only say the same as the array (a script that passes it
+    // everywhere), never another count: that would run the wrong share.
+    if (count_option >= 1 && count_option != count)
+      throw ShardError("--shard-count " + std::to_string(count_option) +
+                       " disagrees with SLURM_ARRAY_TASK_COUNT " + std::to_string(count) +
+                       ": give the array as many tasks as shards, or pass --shard I/N");
     if (count < 1 || id < min || id - min >= count)
       throw ShardError("SLURM_ARRAY_TASK_ID: task " + std::to_string(id) + " is not one of the " +
                        std::to_string(count) + " tasks from " + std::to_string(min) +

@@ -42,8 +42,9 @@ Environment process_environment();
 //   Kubernetes: JOB_COMPLETION_INDEX of `count_option` (the Job's completions)
 //   AWS Batch:  AWS_BATCH_JOB_ARRAY_INDEX of `count_option` (the array size)
 // The last two do not say how many tasks there are: `count_option` (the value
-// of --shard-count, 0 when not given) must. Throws ShardError for values that
-// do not make a shard, naming the variable.
+// of --shard-count, 0 when not given) must; with Slurm it must agree with
+// SLURM_ARRAY_TASK_COUNT. Throws ShardError for values that do not make a
+// shard, naming the variable.
 std::optional<ShardSpec> shard_from_environment(const Environment& env, long count_option);
 
 // The shard this process does, from the options of `epviz sweep` and `epviz

@@ -2,7 +2,6 @@
 // FIFO) directly, follows symbolic links, and keeps memory flat however many
 // samples are asked for.
 #include <gtest/gtest.h>
-#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -10,6 +9,7 @@
 #include <thread>
 
 #include "support/cli.hpp"
+#include "support/peak_rss.hpp"
 
 namespace epviz {
 namespace {
@@ -100,18 +100,8 @@ TEST(SimulateStreams, SymlinkIsFollowedAndKept) {
 
 // Peak resident memory (kB) of one `epviz simulate` child.
 long peak_rss_kb(const std::string& samples) {
-  const pid_t child = ::fork();
-  if (child == 0) {
-    std::freopen("/dev/null", "w", stdout);
-    ::execl(EPVIZ_BINARY, EPVIZ_BINARY, "simulate", "--case", "lagrange", "--samples",
-            samples.c_str(), "--csv", "/dev/null", static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  int status = 0;
-  rusage usage{};
-  if (::wait4(child, &status, 0, &usage) != child || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    return -1;
-  return usage.ru_maxrss;
+  return test::peak_rss_kb(
+      {"simulate", "--case", "lagrange", "--samples", samples, "--csv", "/dev/null"});
 }
 
 TEST(SimulateStreams, MemoryDoesNotGrowWithSamples) {

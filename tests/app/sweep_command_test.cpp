@@ -13,6 +13,7 @@
 #include "io/subprocess.hpp"
 #include "support/cli.hpp"
 #include "support/eventually.hpp"
+#include "support/peak_rss.hpp"
 #include "sweep/rows_by_index.hpp"
 
 namespace epviz::test {
@@ -148,6 +149,33 @@ TEST(SweepCommand, ShardsMergeToTheUnshardedRows) {
   std::string line;
   long expect = 0;
   while (std::getline(in, line)) EXPECT_EQ(Json::parse(line)["index"], expect++);
+}
+
+// A sweep of `side` x `side` x 2 points, each a one-step run.
+std::string square_sweep(int side) {
+  return R"({"simulation": {"case": "generic", "t_end": 0.1, "samples": 1, "method": "rk4",
+      "step": 0.1, "gamma": [0, 0, 1], "normalize_gamma": true, "omega": [1.0, 0.8, 0.6]},
+    "axes": [{"field": "gamma[1]", "from": -0.95, "to": 0.95, "count": )" +
+         std::to_string(side) + R"(},
+             {"field": "gamma[0]", "from": -0.95, "to": 0.95, "count": )" +
+         std::to_string(side) + R"(},
+             {"field": "energy", "values": [3.0, 4.0]}]})";
+}
+
+TEST(SweepCommand, AShardsMemoryIsInProportionToItsOwnRange) {
+  TempDir d;
+  // 200,000 and 2,000 points, cut so that shard 0 runs 200 points of each.
+  std::ofstream(d / "large.sweep.json") << square_sweep(316);
+  std::ofstream(d / "small.sweep.json") << square_sweep(32);
+  const long small =
+      peak_rss_kb({"sweep", "small.sweep.json", "--shard", "0/10", "--quiet"}, d.path().string());
+  const long large =
+      peak_rss_kb({"sweep", "large.sweep.json", "--shard", "0/1000", "--quiet"}, d.path().string());
+  ASSERT_GT(small, 0);
+  ASSERT_GT(large, 0);
+  // Every point prepared and kept would take about 70 MB more for the large sweep.
+  EXPECT_LT(large - small, 16 * 1024)
+      << "peak RSS " << small << " kB for a shard of 2,000 points, " << large << " kB of 200,000";
 }
 
 TEST(MergeCommand, NamesAMissingOrDamagedShardAndTheCommandThatRedoesIt) {

@@ -88,6 +88,19 @@ TEST(ShardOptions, TheOptionWinsOverTheEnvironment) {
   EXPECT_EQ(shard_from_options("", "6", env_of({})), std::nullopt);  // no array job: all of it
 }
 
+TEST(ShardOptions, ACountThatContradictsTheSlurmArrayIsRefused) {
+  const auto slurm = env_of({{"SLURM_ARRAY_TASK_ID", "1"}, {"SLURM_ARRAY_TASK_COUNT", "4"}});
+  try {
+    shard_from_options("", "8", slurm);
+    FAIL() << "--shard-count 8 in an array of 4 tasks was taken";
+  } catch (const ShardError& e) {
+    EXPECT_NE(std::string(e.what()).find("--shard-count 8"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("SLURM_ARRAY_TASK_COUNT 4"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(shard_from_options("", "4", slurm), (ShardSpec{1, 4}));  // the same count is fine
+}
+
 TEST(ShardOptions, TheCountCompletesAnIndexOnlyEnvironment) {
   EXPECT_EQ(shard_from_options("", "5", env_of({{"JOB_COMPLETION_INDEX", "4"}})),
             (ShardSpec{4, 5}));
