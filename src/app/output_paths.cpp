@@ -16,7 +16,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Room left in a file name for "_000123.png" or ".tmp-<pid>" after output.name.
+// Room left in a file name for "_000123.png" or a temporary's suffix (34
+// characters, io/temp_name.hpp) after output.name.
 constexpr std::size_t kLongestName = 200;
 
 // Bounded and escaped: a path comes from the user and may be kilobytes long

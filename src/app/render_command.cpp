@@ -22,6 +22,7 @@
 #include "io/image_tiling.hpp"
 #include "io/png_writer.hpp"
 #include "io/progress.hpp"
+#include "io/temp_name.hpp"
 #include "io/temp_registry.hpp"
 #include "io/video_writer.hpp"
 #include "job/schema.hpp"

@@ -14,6 +14,7 @@
 #include "app/usage_error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/progress.hpp"
+#include "io/temp_name.hpp"
 #include "io/temp_registry.hpp"
 #include "physics/cases.hpp"
 #include "sim/failure_advice.hpp"

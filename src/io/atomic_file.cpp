@@ -10,6 +10,7 @@
 #include <system_error>
 #include <utility>
 
+#include "io/temp_name.hpp"
 #include "io/temp_registry.hpp"
 
 namespace epviz::io {
@@ -30,7 +31,7 @@ bool is_regular_or_missing(const fs::path& p) {
 
 std::filesystem::path temporary_path_for(const std::filesystem::path& target) {
   std::filesystem::path temporary = target;
-  temporary += ".tmp-" + std::to_string(::getpid());
+  temporary += temporary_suffix(::getpid());
   return temporary;
 }
 

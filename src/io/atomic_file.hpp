@@ -1,5 +1,5 @@
 #pragma once
-// Atomic file writes: the data goes to "<name>.tmp-<pid>" in the target's
+// Atomic file writes: the data goes to a temporary (temp_name.hpp) in the target's
 // directory and is renamed over the target only once it is complete, so a
 // reader (or a later `--resume`) never sees a partial file under the real name.
 //
@@ -24,7 +24,8 @@ class FileWriteError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The temporary name used while `target` is being written: "<target>.tmp-<pid>".
+// The temporary name used while `target` is being written:
+// "<target>.epviz-tmp-<machine>-<pid>" (temp_name.hpp).
 // It lives in the same directory so that the final rename stays on one file system.
 std::filesystem::path temporary_path_for(const std::filesystem::path& target);
 

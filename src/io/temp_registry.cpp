@@ -98,36 +98,4 @@ std::size_t registered_temporaries() {
   return n;
 }
 
-bool parse_temporary_name(const std::string& name, pid_t& pid) {
-  const auto at = name.rfind(".tmp-");
-  if (at == std::string::npos || at == 0) return false;
-  const std::string digits = name.substr(at + 5);
-  if (digits.empty() || digits.size() > 9) return false;
-  for (char c : digits)
-    if (c < '0' || c > '9') return false;
-  pid = pid_t(std::stol(digits));
-  return pid > 0;
-}
-
-std::vector<std::filesystem::path> remove_stale_temporaries(const std::filesystem::path& dir) {
-  namespace fs = std::filesystem;
-  std::vector<fs::path> removed;
-  std::error_code ec;
-  fs::directory_iterator it(dir.empty() ? fs::path(".") : dir, ec);
-  if (ec) return removed;
-  for (; it != fs::directory_iterator(); it.increment(ec)) {
-    if (ec) break;
-    pid_t pid = 0;
-    if (!parse_temporary_name(it->path().filename().string(), pid)) continue;
-    if (pid == ::getpid()) continue;
-    if (!it->is_symlink(ec) && it->is_regular_file(ec)) {
-      // kill(pid, 0) fails with ESRCH only when no such process exists; EPERM
-      // means it exists under another user.
-      if (::kill(pid, 0) == 0 || errno != ESRCH) continue;
-      if (fs::remove(it->path(), ec)) removed.push_back(it->path());
-    }
-  }
-  return removed;
-}
-
 }  // namespace epviz::io

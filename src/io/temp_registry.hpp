@@ -1,11 +1,12 @@
 #pragma once
 // Temporaries that must not outlive the process. A file being written
-// atomically ("<name>.tmp-<pid>", atomic_file.hpp) or by an ffmpeg child is
+// atomically (temp_name.hpp, atomic_file.hpp) or by an ffmpeg child is
 // registered here while it exists; on SIGINT or SIGTERM the handler removes
 // every registered temporary, kills registered children (so that they cannot
 // write the file again), and re-raises the signal with its default action, so
 // the process still dies of that signal. SIGKILL cannot be caught: what it
-// leaves behind is removed by remove_stale_temporaries() on the next run.
+// leaves behind is removed by remove_stale_temporaries() (temp_name.hpp) on
+// the next run.
 //
 // The table has a fixed size and the handler uses only async-signal-safe calls
 // (unlink, kill, signal, raise); paths are copied into fixed buffers when
@@ -14,7 +15,6 @@
 
 #include <cstddef>
 #include <filesystem>
-#include <vector>
 
 namespace epviz::io {
 
@@ -33,14 +33,5 @@ void forget_child(int slot) noexcept;
 
 // How many temporaries are registered now (for tests).
 std::size_t registered_temporaries();
-
-// Whether `name` has the shape of a temporary ("<anything>.tmp-<digits>"), and its pid.
-bool parse_temporary_name(const std::string& name, pid_t& pid);
-
-// Removes the temporaries in `dir` whose writing process no longer exists
-// (a run killed with SIGKILL, a crash). Temporaries of live processes, of this
-// process, and anything that is not a regular file are kept. Returns the paths
-// removed; errors (an unreadable directory) are ignored: this is housekeeping.
-std::vector<std::filesystem::path> remove_stale_temporaries(const std::filesystem::path& dir);
 
 }  // namespace epviz::io

@@ -3,7 +3,7 @@
 // (`ffmpeg -f rawvideo -pix_fmt rgba -s WxH -r FPS -i - ...`, as matplotlib's
 // FFMpegWriter does), started through io/subprocess.hpp (no shell, so any path works).
 //
-// ffmpeg writes to "<target>.tmp-<pid>" (atomic_file.hpp's temporary name) in
+// ffmpeg writes to atomic_file.hpp's temporary name for the target in
 // the target's directory; finish() waits for ffmpeg and renames the temporary
 // over the target only if ffmpeg succeeded. A failed run, an exception or a
 // destructor without finish() kills ffmpeg and removes the temporary, so the

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
+#include "io/temp_name.hpp"
 #include "support/cli.hpp"
 #include "support/dead_pid.hpp"
 #include "support/eventually.hpp"
@@ -28,7 +29,7 @@ std::vector<std::string> temporaries_in(const fs::path& dir) {
   std::vector<std::string> found;
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(dir, ec))
-    if (e.path().filename().string().find(".tmp-") != std::string::npos)
+    if (io::parse_temporary_name(e.path().filename().string()))
       found.push_back(e.path().filename().string());
   return found;
 }
@@ -61,7 +62,7 @@ void expect_signal_cleans_up_video(int sig) {
   const pid_t child = start_epviz({"render", (dir / "job.json").string()});
   ASSERT_GT(child, 0);
   // Mid-way through the frames: ffmpeg has written encoded ones to the temporary.
-  const auto temporary = out / ("clip.mp4.tmp-" + std::to_string(child));
+  const auto temporary = out / ("clip.mp4" + io::temporary_suffix(child));
   const bool writing = test::eventually(
       [&] {
         std::error_code ec;
@@ -87,8 +88,8 @@ TEST(Signals, RenderRemovesStaleTemporariesOfDeadProcesses) {
   test::TempDir dir;
   const auto out = dir / "frames";
   fs::create_directories(out);
-  const auto stale = out / ("x.mp4.tmp-" + std::to_string(dead_pid()));
-  const auto live = out / ("y.mp4.tmp-" + std::to_string(::getpid()));  // this test is alive
+  const auto stale = out / ("x.mp4" + io::temporary_suffix(dead_pid()));
+  const auto live = out / ("y.mp4" + io::temporary_suffix(::getpid()));  // this test is alive
   std::ofstream(stale) << "left by a killed run";
   std::ofstream(live) << "being written";
   const auto j = test::small_render_job(out, 2, 1.0);
@@ -101,7 +102,7 @@ TEST(Signals, RenderRemovesStaleTemporariesOfDeadProcesses) {
 
 TEST(Signals, SimulateRemovesStaleTemporariesBesideItsOutputs) {
   test::TempDir dir;
-  const auto stale = dir / ("s.csv.tmp-" + std::to_string(dead_pid()));
+  const auto stale = dir / ("s.csv" + io::temporary_suffix(dead_pid()));
   std::ofstream(stale) << "left by a killed run";
   const auto r =
       test::run_epviz("simulate --case euler --samples 5 --csv " + (dir / "s.csv").string(), dir);

@@ -8,6 +8,7 @@
 
 #include <thread>
 
+#include "io/temp_name.hpp"
 #include "support/cli.hpp"
 #include "support/peak_rss.hpp"
 
@@ -56,7 +57,7 @@ TEST(SimulateStreams, DevNullStaysADevice) {
   struct stat st {};
   ASSERT_EQ(::stat("/dev/null", &st), 0);
   EXPECT_TRUE(S_ISCHR(st.st_mode));
-  EXPECT_FALSE(fs::exists(std::string("/dev/null.tmp-")));
+  EXPECT_FALSE(fs::exists("/dev/null" + io::temporary_suffix(::getpid())));
 }
 
 TEST(SimulateStreams, DevFullIsOneLineWriteErrorExitOne) {

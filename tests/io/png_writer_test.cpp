@@ -15,6 +15,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/png_writer.hpp"
+#include "io/temp_name.hpp"
 #include "support/temp_dir.hpp"
 
 namespace {
@@ -26,7 +27,7 @@ class PngFiles : public epviz::test::TempDirTest {
  protected:
   bool has_temporaries() const {
     for (const auto& entry : fs::directory_iterator(dir_))
-      if (entry.path().filename().string().find(".tmp-") != std::string::npos) return true;
+      if (parse_temporary_name(entry.path().filename().string())) return true;
     return false;
   }
 };
@@ -131,7 +132,7 @@ TEST_F(PngFiles, AtomicWriteReplacesTheOldFileWhole) {
 
 TEST_F(PngFiles, TemporaryNameCarriesThePid) {
   EXPECT_EQ(temporary_path_for(dir_ / "a.png").filename().string(),
-            "a.png.tmp-" + std::to_string(::getpid()));
+            "a.png" + temporary_suffix(::getpid()));
 }
 
 TEST_F(PngFiles, AsyncWriterWritesEveryFrame) {
