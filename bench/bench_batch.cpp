@@ -65,8 +65,8 @@ void ensemble_scalar_dop853(benchmark::State& state) {
       steps += s.stats().steps + s.stats().rejected_steps;
     }
   }
-  state.counters["per_step"] = benchmark::Counter(double(steps), benchmark::Counter::kIsRate |
-                                                                     benchmark::Counter::kInvert);
+  state.counters["per_step"] =
+      benchmark::Counter(double(steps), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(ensemble_scalar_dop853)->Unit(benchmark::kMillisecond);
 
@@ -81,8 +81,8 @@ void ensemble_batch_dop853(benchmark::State& state, numerics::SimdPath path, int
     for (const auto& r : results) steps += r.steps + r.rejected_steps;
     benchmark::DoNotOptimize(results.data());
   }
-  state.counters["per_step"] = benchmark::Counter(double(steps), benchmark::Counter::kIsRate |
-                                                                     benchmark::Counter::kInvert);
+  state.counters["per_step"] =
+      benchmark::Counter(double(steps), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 // One benchmark per path this CPU has and lane count.
@@ -90,8 +90,8 @@ const bool registered = [] {
   for (numerics::SimdPath path : numerics::kSimdPaths) {
     if (!numerics::cpu_supports(path)) continue;
     for (int width : {1, 2, 4, 8}) {
-      const std::string name = "ensemble_batch_dop853/" + std::string(numerics::name(path)) +
-                               "/W" + std::to_string(width);
+      const std::string name = "ensemble_batch_dop853/" + std::string(numerics::name(path)) + "/W" +
+                               std::to_string(width);
       benchmark::RegisterBenchmark(name.c_str(), ensemble_batch_dop853, path, width)
           ->Unit(benchmark::kMillisecond);
     }

@@ -45,8 +45,8 @@ struct BatchTask {
 template <int D>
 struct BatchResult {
   std::vector<std::array<double, D>> outputs;  // at out_times (those reached when failed)
-  std::array<double, D> x{};  // at t_end, or the last accepted state when failed
-  double t = 0;               // t_end, or the time of the last accepted state when failed
+  std::array<double, D> x{};                   // at t_end, or the last accepted state when failed
+  double t = 0;  // t_end, or the time of the last accepted state when failed
   long steps = 0, rejected_steps = 0;
   std::optional<Failure> failure;
 };
@@ -209,8 +209,8 @@ class BatchEmbedded {
 };
 
 template <BatchSystem Sys, int W, class Tableau>
-auto BatchEmbedded<Sys, W, Tableau>::run(
-    const std::vector<BatchTask<D>>& tasks) -> std::vector<BatchResult<D>> {
+auto BatchEmbedded<Sys, W, Tableau>::run(const std::vector<BatchTask<D>>& tasks)
+    -> std::vector<BatchResult<D>> {
   queue_ = std::make_unique<batch::TaskQueue<D>>(tasks);
   L_ = std::make_unique<Lanes>();
   L_->atol = opts_.atol;
@@ -228,9 +228,9 @@ auto BatchEmbedded<Sys, W, Tableau>::run(
       accepted_[l] = task_[l] >= 0 && decide(l);
       if (!accepted_[l]) continue;
       const auto& task = queue_->task(task_[l]);
-      need_dense = need_dense || L_->t[l] >= task.t_end ||
-                   (next_out_[l] < task.out_times.size() &&
-                    task.out_times[next_out_[l]] <= L_->t[l]);
+      need_dense =
+          need_dense || L_->t[l] >= task.t_end ||
+          (next_out_[l] < task.out_times.size() && task.out_times[next_out_[l]] <= L_->t[l]);
     }
     if (need_dense) kernels_.dense(*L_, sys_);
     for (int l = 0; l < W; ++l) {
@@ -380,9 +380,9 @@ bool BatchEmbedded<Sys, W, Tableau>::decide(int l) {
   h_next_[l] = h * fac;
   if (++consecutive_rejects_[l] > opts_.max_consecutive_rejects) {
     if (nonfinite_trials_[l] > 0)
-      fail(l, FailureKind::non_finite,
-           batch::format_detail("trial states not finite (NaN or Inf) even with step size %.3g",
-                                h));
+      fail(
+          l, FailureKind::non_finite,
+          batch::format_detail("trial states not finite (NaN or Inf) even with step size %.3g", h));
     else
       fail(l, FailureKind::rejections,
            std::to_string(consecutive_rejects_[l]) +
@@ -400,8 +400,7 @@ void BatchEmbedded<Sys, W, Tableau>::emit_outputs(int l) {
     const double t = task.out_times[next_out_[l]];
     if (!(t <= L_->t[l])) break;
     std::array<double, D> x;
-    for (int i = 0; i < D; ++i)
-      x[std::size_t(i)] = stepped_[l] ? dense(l, i, t) : L_->x[i][l];
+    for (int i = 0; i < D; ++i) x[std::size_t(i)] = stepped_[l] ? dense(l, i, t) : L_->x[i][l];
     result.outputs.push_back(x);
   }
 }

@@ -81,8 +81,8 @@ struct EmbeddedKernel {
   template <class Row, std::size_t Nterms, std::size_t... J>
   static std::index_sequence<Terms<Row, Nterms>::idx[J]...> nonzero(std::index_sequence<J...>);
   template <class Row, std::size_t Nterms>
-  using Nonzero = decltype(nonzero<Row, Nterms>(
-      std::make_index_sequence<Terms<Row, Nterms>::count>{}));
+  using Nonzero =
+      decltype(nonzero<Row, Nterms>(std::make_index_sequence<Terms<Row, Nterms>::count>{}));
 
   // sum_j Row[j] k[j][i][l] over the nonzero weights, left to right.
   template <class Row, std::size_t J0, std::size_t... J>
@@ -175,7 +175,8 @@ struct EmbeddedKernel {
           q[i][l] = e * e;
         }
       }
-      for (int l = 0; l < W; ++l) L.err[l] = abs(L.h[l]) * __builtin_sqrt(eigen_order_sum(q, l) / n);
+      for (int l = 0; l < W; ++l)
+        L.err[l] = abs(L.h[l]) * __builtin_sqrt(eigen_order_sum(q, l) / n);
     }
   }
 

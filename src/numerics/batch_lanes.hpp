@@ -26,9 +26,9 @@ namespace epviz::numerics {
 // always_inline: it is compiled into each instruction set's kernel.
 template <class Sys>
 concept BatchSystem = (Sys::dim > 0) && (Sys::dim % 2 == 0) && requires(const Sys& s) {
-  s.template rhs<1>(std::declval<const double (&)[1]>(),
-                    std::declval<const double (&)[Sys::dim][1]>(),
-                    std::declval<double (&)[Sys::dim][1]>());
+  s.template rhs<1>(std::declval<const double(&)[1]>(),
+                    std::declval<const double(&)[Sys::dim][1]>(),
+                    std::declval<double(&)[Sys::dim][1]>());
 };
 
 // Lanes of an embedded Runge–Kutta method (Tableau as in rk_tableaus.hpp).

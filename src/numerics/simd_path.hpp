@@ -19,7 +19,7 @@ enum class SimdPath {
 };
 
 inline constexpr std::array<SimdPath, 4> kSimdPaths{SimdPath::scalar, SimdPath::sse2,
-                                                     SimdPath::avx2, SimdPath::avx512};
+                                                    SimdPath::avx2, SimdPath::avx512};
 
 // "scalar", "sse2", "avx2", "avx512".
 std::string_view name(SimdPath path);

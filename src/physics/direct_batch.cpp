@@ -62,8 +62,8 @@ std::vector<DirectBatchResult> run(const DirectBatchSystem& sys,
                                    const DirectBatchSettings& settings) {
   if (settings.method == BatchMethod::rk4)
     return numerics::BatchRk4<DirectBatchSystem, W>(sys, kernels.rk4, settings.rk4).run(tasks);
-  return numerics::BatchEmbedded<DirectBatchSystem, W, numerics::Dop853Tableau>(
-             sys, kernels.dop853, settings.adaptive)
+  return numerics::BatchEmbedded<DirectBatchSystem, W, numerics::Dop853Tableau>(sys, kernels.dop853,
+                                                                                settings.adaptive)
       .run(tasks);
 }
 

@@ -95,10 +95,9 @@ inline ::testing::AssertionResult same_bits(const std::array<double, 6>& a,
 inline ::testing::AssertionResult identical(const DirectBatchResult& a,
                                             const DirectBatchResult& b) {
   if (a.steps != b.steps || a.rejected_steps != b.rejected_steps)
-    return ::testing::AssertionFailure() << "steps " << a.steps << "/" << a.rejected_steps
-                                         << " vs " << b.steps << "/" << b.rejected_steps;
-  if (bits(a.t) != bits(b.t))
-    return ::testing::AssertionFailure() << "t " << a.t << " vs " << b.t;
+    return ::testing::AssertionFailure() << "steps " << a.steps << "/" << a.rejected_steps << " vs "
+                                         << b.steps << "/" << b.rejected_steps;
+  if (bits(a.t) != bits(b.t)) return ::testing::AssertionFailure() << "t " << a.t << " vs " << b.t;
   if (a.failure.has_value() != b.failure.has_value())
     return ::testing::AssertionFailure() << "one failed, the other did not";
   if (a.failure &&
