@@ -281,10 +281,10 @@ bool BatchEmbedded<Sys, W, Tableau>::start(int l) {
     finish(l, std::nullopt);
     return false;
   }
-  double t[1] = {task.t0}, x[D][1], k0[D][1];
-  for (int i = 0; i < D; ++i) x[i][0] = L_->x[i][l];
-  sys_.template rhs<1>(t, x, k0);
-  for (int i = 0; i < D; ++i) L_->k[0][i][l] = k0[i][0];
+  double x[D], k0[D];
+  for (int i = 0; i < D; ++i) x[i] = L_->x[i][l];
+  sys_.rhs(task.t0, x, k0);
+  for (int i = 0; i < D; ++i) L_->k[0][i][l] = k0[i];
   if (!batch::lane_finite(L_->k[0], l) || !batch::lane_finite(L_->x, l)) {
     fail(l, FailureKind::non_finite, "state or derivative not finite (NaN or Inf)");
     return false;
@@ -296,22 +296,21 @@ bool BatchEmbedded<Sys, W, Tableau>::start(int l) {
 // As EmbeddedRk::initial_step (Hairer's HINIT), for lane l.
 template <BatchSystem Sys, int W, class Tableau>
 double BatchEmbedded<Sys, W, Tableau>::initial_step(int l) const {
-  double sk[D], q[D][1], x1[D][1], k1[D][1];
+  double sk[D], q[D], x1[D], k1[D];
   for (int i = 0; i < D; ++i) sk[i] = opts_.atol + opts_.rtol * std::abs(L_->x[i][l]);
-  for (int i = 0; i < D; ++i) q[i][0] = (L_->k[0][i][l] / sk[i]) * (L_->k[0][i][l] / sk[i]);
-  const double dnf = eigen_order_sum(q, 0);
-  for (int i = 0; i < D; ++i) q[i][0] = (L_->x[i][l] / sk[i]) * (L_->x[i][l] / sk[i]);
-  const double dny = eigen_order_sum(q, 0);
+  for (int i = 0; i < D; ++i) q[i] = (L_->k[0][i][l] / sk[i]) * (L_->k[0][i][l] / sk[i]);
+  const double dnf = eigen_order_sum(q);
+  for (int i = 0; i < D; ++i) q[i] = (L_->x[i][l] / sk[i]) * (L_->x[i][l] / sk[i]);
+  const double dny = eigen_order_sum(q);
   double h = (dnf <= 1e-10 || dny <= 1e-10) ? 1e-6 : 0.01 * std::sqrt(dny / dnf);
   h = std::min(h, opts_.h_max);
-  for (int i = 0; i < D; ++i) x1[i][0] = L_->x[i][l] + h * L_->k[0][i][l];
-  const double t1[1] = {L_->t[l] + h};
-  sys_.template rhs<1>(t1, x1, k1);
+  for (int i = 0; i < D; ++i) x1[i] = L_->x[i][l] + h * L_->k[0][i][l];
+  sys_.rhs(L_->t[l] + h, x1, k1);
   for (int i = 0; i < D; ++i) {
-    const double d = (k1[i][0] - L_->k[0][i][l]) / sk[i];
-    q[i][0] = d * d;
+    const double d = (k1[i] - L_->k[0][i][l]) / sk[i];
+    q[i] = d * d;
   }
-  const double der2 = std::sqrt(eigen_order_sum(q, 0)) / h;
+  const double der2 = std::sqrt(eigen_order_sum(q)) / h;
   const double der12 = std::max(std::abs(der2), std::sqrt(dnf));
   if (!std::isfinite(der12)) return h * 1e-2;
   const double x = 0.01 / der12;

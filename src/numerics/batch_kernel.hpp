@@ -54,14 +54,62 @@ struct RowRef {
   static constexpr const auto& w = R;
 };
 
+// W lanes of doubles as one value: GCC's and clang's vector extension (one
+// register, or several on a narrower instruction set), a plain double for one
+// lane. Written with these rather than loops over the lanes, which GCC
+// vectorised across the components instead, with a transpose per stage.
+template <int W>
+struct LaneVector {
+  typedef double type __attribute__((vector_size(8 * W)));
+  typedef long long mask __attribute__((vector_size(8 * W)));
+};
+template <>
+struct LaneVector<1> {
+  using type = double;
+  using mask = long long;
+};
+
 // Tag: a type local to the instantiating unit (see above).
+template <int W, class Tag>
+struct Lanewise {
+  using V = typename LaneVector<W>::type;
+  using Mask = typename LaneVector<W>::mask;
+
+  [[gnu::always_inline]] static inline V load(const double (&row)[W]) {
+    V v;
+    __builtin_memcpy(&v, row, sizeof v);
+    return v;
+  }
+  [[gnu::always_inline]] static inline void store(double (&row)[W], V v) {
+    __builtin_memcpy(row, &v, sizeof v);
+  }
+  [[gnu::always_inline]] static inline V abs(V a) {
+    if constexpr (W == 1) {
+      return __builtin_fabs(a);
+    } else {
+      return (V)((Mask)a & (Mask{} + 0x7fffffffffffffffLL));
+    }
+  }
+  // std::max's choice, lane by lane: b only where a < b.
+  [[gnu::always_inline]] static inline V max(V a, V b) {
+    if constexpr (W == 1) {
+      return a < b ? b : a;
+    } else {
+      const Mask m = a < b;
+      return (V)((m & (Mask)b) | (~m & (Mask)a));
+    }
+  }
+};
+
 template <class Sys, int W, class Tableau, class Tag>
-struct EmbeddedKernel {
+struct EmbeddedKernel : Lanewise<W, Tag> {
+  using Base = Lanewise<W, Tag>;
+  using Base::abs, Base::load, Base::max, Base::store;
+  using typename Base::V;
   static constexpr int D = Sys::dim;
   static constexpr int S = Tableau::stages;
   static constexpr int N = Tableau::total;
   using Lanes = EmbeddedLanes<D, W, Tableau>;
-  using Block = double[D][W];
   using Stages = double[N][D][W];
 
   static constexpr bool error_needs_fsal = Tableau::e[S] != 0.0 || Tableau::e2[S] != 0.0;
@@ -84,45 +132,34 @@ struct EmbeddedKernel {
   using Nonzero =
       decltype(nonzero<Row, Nterms>(std::make_index_sequence<Terms<Row, Nterms>::count>{}));
 
-  // sum_j Row[j] k[j][i][l] over the nonzero weights, left to right.
+  // sum_j Row[j] k[j][i] over the nonzero weights, left to right.
   template <class Row, std::size_t J0, std::size_t... J>
-  [[gnu::always_inline]] static inline double dot_seq(const Stages& k, int i, int l,
-                                                      std::index_sequence<J0, J...>) {
-    double sum = weight<Row, J0> * k[J0][i][l];
-    ((sum += weight<Row, J> * k[J][i][l]), ...);
+  [[gnu::always_inline]] static inline V dot_seq(const Stages& k, int i,
+                                                 std::index_sequence<J0, J...>) {
+    V sum = weight<Row, J0> * load(k[J0][i]);
+    ((sum += weight<Row, J> * load(k[J][i])), ...);
     return sum;
   }
   template <class Row, std::size_t Nterms>
-  [[gnu::always_inline]] static inline double dot(const Stages& k, int i, int l) {
-    return dot_seq<Row>(k, i, l, Nonzero<Row, Nterms>{});
-  }
-
-  // out = x0 + h sum_j Row[j] k[j] (the sum also into *sum_out when given).
-  template <class Row, std::size_t Nterms>
-  [[gnu::always_inline]] static inline void advance(Block& out, const Block& x0,
-                                                    const double (&h)[W], const Stages& k,
-                                                    Block* sum_out = nullptr) {
-    for (int i = 0; i < D; ++i) {
-      for (int l = 0; l < W; ++l) {
-        const double s = dot<Row, Nterms>(k, i, l);
-        if (sum_out) (*sum_out)[i][l] = s;
-        out[i][l] = x0[i][l] + h[l] * s;
-      }
-    }
+  [[gnu::always_inline]] static inline V dot(const Stages& k, int i) {
+    return dot_seq<Row>(k, i, Nonzero<Row, Nterms>{});
   }
 
   // Stages I... from base points (t, x) with steps h.
   template <std::size_t... I>
   [[gnu::always_inline]] static inline void stages_from(Lanes& L, const Sys& sys,
-                                                        const double (&t)[W], const Block& x,
+                                                        const double (&t)[W],
+                                                        const double (&x)[D][W],
                                                         const double (&h)[W],
                                                         std::index_sequence<I...>) {
+    const V tv = load(t), hv = load(h);
     (
         [&] {
-          advance<RowAt<Tableau::a, I>, I>(L.tmp, x, h, L.k);
+          V y[D], dy[D];
+          for (int i = 0; i < D; ++i) y[i] = load(x[i]) + hv * dot<RowAt<Tableau::a, I>, I>(L.k, i);
           constexpr double c = Tableau::c[I];
-          for (int l = 0; l < W; ++l) L.tt[l] = t[l] + c * h[l];
-          sys.template rhs<W>(L.tt, L.tmp, L.k[I]);
+          sys.rhs(tv + c * hv, y, dy);
+          for (int i = 0; i < D; ++i) store(L.k[I][i], dy[i]);
         }(),
         ...);
   }
@@ -132,77 +169,74 @@ struct EmbeddedKernel {
   template <std::size_t Begin, std::size_t End>
   using Range = decltype(offset<Begin>(std::make_index_sequence<End - Begin>{}));
 
-  [[gnu::always_inline]] static inline double abs(double v) { return __builtin_fabs(v); }
-  // std::max's choice: b only when a < b.
-  [[gnu::always_inline]] static inline double max(double a, double b) { return a < b ? b : a; }
-
   static void attempt(Lanes& L, const Sys& sys) {
     stages_from(L, sys, L.t, L.x, L.h, Range<1, S>{});
-    advance<RowRef<Tableau::b>, S>(L.xnew, L.x, L.h, L.k, &L.acc);
-    for (int l = 0; l < W; ++l) L.tt[l] = L.t[l] + L.h[l];
-    sys.template rhs<W>(L.tt, L.xnew, L.k[S]);
+    const V h = load(L.h);
+    V xnew[D], dx[D];
+    for (int i = 0; i < D; ++i) {
+      const V s = dot<RowRef<Tableau::b>, S>(L.k, i);
+      store(L.acc[i], s);
+      xnew[i] = load(L.x[i]) + h * s;
+      store(L.xnew[i], xnew[i]);
+    }
+    sys.rhs(load(L.t) + h, xnew, dx);
+    for (int i = 0; i < D; ++i) store(L.k[S][i], dx[i]);
     error_norm(L);
   }
 
   // Hairer's error norm, as EmbeddedRk::error_norm computes it.
   [[gnu::always_inline]] static inline void error_norm(Lanes& L) {
-    double inv_sk[D][W];
-    for (int i = 0; i < D; ++i)
-      for (int l = 0; l < W; ++l)
-        inv_sk[i][l] = 1.0 / (L.atol + L.rtol * max(abs(L.x[i][l]), abs(L.xnew[i][l])));
     constexpr double n = double(D);
     if constexpr (Tableau::two_estimators) {
-      double q3[D][W], q5[D][W];
+      V q3[D], q5[D];
       for (int i = 0; i < D; ++i) {
-        for (int l = 0; l < W; ++l) {
-          const double e3 = (L.acc[i][l] - dot<RowRef<Tableau::bhh>, S>(L.k, i, l)) * inv_sk[i][l];
-          const double e5 = dot<RowRef<Tableau::e2>, error_terms>(L.k, i, l) * inv_sk[i][l];
-          q3[i][l] = e3 * e3;
-          q5[i][l] = e5 * e5;
-        }
+        const V inv_sk = 1.0 / (L.atol + L.rtol * max(abs(load(L.x[i])), abs(load(L.xnew[i]))));
+        const V e3 = (load(L.acc[i]) - dot<RowRef<Tableau::bhh>, S>(L.k, i)) * inv_sk;
+        const V e5 = dot<RowRef<Tableau::e2>, error_terms>(L.k, i) * inv_sk;
+        q3[i] = e3 * e3;
+        q5[i] = e5 * e5;
       }
+      double e3[W], e5[W];
+      store(e3, eigen_order_sum(q3));
+      store(e5, eigen_order_sum(q5));
       for (int l = 0; l < W; ++l) {
-        const double e3 = eigen_order_sum(q3, l), e5 = eigen_order_sum(q5, l);
-        double deno = e5 + 0.01 * e3;
+        double deno = e5[l] + 0.01 * e3[l];
         if (deno <= 0.0) deno = 1.0;
-        L.err[l] = abs(L.h[l]) * e5 / __builtin_sqrt(n * deno);
+        L.err[l] = __builtin_fabs(L.h[l]) * e5[l] / __builtin_sqrt(n * deno);
       }
     } else {
-      double q[D][W];
+      V q[D];
       for (int i = 0; i < D; ++i) {
-        for (int l = 0; l < W; ++l) {
-          const double e = dot<RowRef<Tableau::e>, error_terms>(L.k, i, l) * inv_sk[i][l];
-          q[i][l] = e * e;
-        }
+        const V inv_sk = 1.0 / (L.atol + L.rtol * max(abs(load(L.x[i])), abs(load(L.xnew[i]))));
+        const V e = dot<RowRef<Tableau::e>, error_terms>(L.k, i) * inv_sk;
+        q[i] = e * e;
       }
-      for (int l = 0; l < W; ++l)
-        L.err[l] = abs(L.h[l]) * __builtin_sqrt(eigen_order_sum(q, l) / n);
+      double sum[W];
+      store(sum, eigen_order_sum(q));
+      for (int l = 0; l < W; ++l) L.err[l] = __builtin_fabs(L.h[l]) * __builtin_sqrt(sum[l] / n);
     }
   }
 
   // As EmbeddedRk::prepare_dense.
   static void dense(Lanes& L, const Sys& sys) {
     stages_from(L, sys, L.t_prev, L.x_prev, L.h_last, Range<S + 1, N>{});
+    const V h = load(L.h_last);
     for (int i = 0; i < D; ++i) {
-      for (int l = 0; l < W; ++l) {
-        const double h = L.h_last[l];
-        const double c1 = L.x[i][l] - L.x_prev[i][l];
-        const double c2 = h * L.k[0][i][l] - c1;
-        L.cont[0][i][l] = L.x_prev[i][l];
-        L.cont[1][i][l] = c1;
-        L.cont[2][i][l] = c2;
-        L.cont[3][i][l] = c1 - h * L.k[S][i][l] - c2;
-      }
+      const V c1 = load(L.x[i]) - load(L.x_prev[i]);
+      const V c2 = h * load(L.k[0][i]) - c1;
+      store(L.cont[0][i], load(L.x_prev[i]));
+      store(L.cont[1][i], c1);
+      store(L.cont[2][i], c2);
+      store(L.cont[3][i], c1 - h * load(L.k[S][i]) - c2);
     }
-    dense_rows(L, std::make_index_sequence<Tableau::dense_rows>{});
+    dense_rows(L, h, std::make_index_sequence<Tableau::dense_rows>{});
   }
   template <std::size_t... R>
-  [[gnu::always_inline]] static inline void dense_rows(Lanes& L, std::index_sequence<R...>) {
+  [[gnu::always_inline]] static inline void dense_rows(Lanes& L, V h, std::index_sequence<R...>) {
     (
         [&] {
           for (int i = 0; i < D; ++i)
-            for (int l = 0; l < W; ++l)
-              L.cont[4 + R][i][l] = L.h_last[l] * dot<RowAt<Tableau::d, R>, N>(L.k, i, l);
+            store(L.cont[4 + R][i], h * dot<RowAt<Tableau::d, R>, N>(L.k, i));
         }(),
         ...);
   }
@@ -212,32 +246,26 @@ struct EmbeddedKernel {
 
 // As Rk4::step, lane by lane.
 template <class Sys, int W, class Tag>
-struct Rk4KernelImpl {
+struct Rk4KernelImpl : Lanewise<W, Tag> {
+  using Base = Lanewise<W, Tag>;
+  using Base::load, Base::store;
+  using typename Base::V;
   static constexpr int D = Sys::dim;
   using Lanes = Rk4Lanes<D, W>;
 
-  [[gnu::always_inline]] static inline void stage(Lanes& L, const Sys& sys, int from,
-                                                  const double (&f)[W], int into) {
-    for (int i = 0; i < D; ++i)
-      for (int l = 0; l < W; ++l) L.tmp[i][l] = L.x[i][l] + f[l] * L.k[from][i][l];
-    sys.template rhs<W>(L.tt, L.tmp, L.k[into]);
-  }
-
   static void step(Lanes& L, const Sys& sys) {
-    double h2[W];
-    for (int l = 0; l < W; ++l) h2[l] = 0.5 * L.h[l];
-    sys.template rhs<W>(L.t, L.x, L.k[0]);
-    for (int l = 0; l < W; ++l) L.tt[l] = L.t[l] + h2[l];
-    stage(L, sys, 0, h2, 1);
-    stage(L, sys, 1, h2, 2);
-    for (int l = 0; l < W; ++l) L.tt[l] = L.t[l] + L.h[l];
-    stage(L, sys, 2, L.h, 3);
-    for (int i = 0; i < D; ++i) {
-      for (int l = 0; l < W; ++l) {
-        const double sum = L.k[0][i][l] + 2.0 * (L.k[1][i][l] + L.k[2][i][l]) + L.k[3][i][l];
-        L.xnew[i][l] = L.x[i][l] + (L.h[l] / 6.0) * sum;
-      }
-    }
+    const V t = load(L.t), h = load(L.h), h2 = 0.5 * h;
+    V x[D], k1[D], k2[D], k3[D], k4[D], y[D];
+    for (int i = 0; i < D; ++i) x[i] = load(L.x[i]);
+    sys.rhs(t, x, k1);
+    for (int i = 0; i < D; ++i) y[i] = x[i] + h2 * k1[i];
+    sys.rhs(t + h2, y, k2);
+    for (int i = 0; i < D; ++i) y[i] = x[i] + h2 * k2[i];
+    sys.rhs(t + h2, y, k3);
+    for (int i = 0; i < D; ++i) y[i] = x[i] + h * k3[i];
+    sys.rhs(t + h, y, k4);
+    for (int i = 0; i < D; ++i)
+      store(L.xnew[i], x[i] + (h / 6.0) * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]));
   }
 
   static constexpr Rk4Kernel<Sys, W> table{&step};

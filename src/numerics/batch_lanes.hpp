@@ -18,17 +18,16 @@ namespace epviz::numerics {
 // A system the batch steppers can advance (e.g. physics/direct_rhs_batch.hpp):
 //
 //   static constexpr int dim = D;     // an even dimension (see eigen_order_sum)
-//   template <int W>
-//   [[gnu::always_inline]] void rhs(const double (&t)[W], const double (&x)[D][W],
-//                                   double (&dxdt)[D][W]) const;
+//   template <class T>
+//   [[gnu::always_inline]] void rhs(const T& t, const T (&x)[D], T (&dxdt)[D]) const;
 //
-// rhs must treat every lane alike and alone (no operation across lanes), and be
-// always_inline: it is compiled into each instruction set's kernel.
+// T is a double or a vector of W doubles (GCC's and clang's vector extension),
+// so rhs is written once with +, -, * and / only, and acts on each lane alone.
+// It must be always_inline: it is compiled into each instruction set's kernel.
 template <class Sys>
 concept BatchSystem = (Sys::dim > 0) && (Sys::dim % 2 == 0) && requires(const Sys& s) {
-  s.template rhs<1>(std::declval<const double(&)[1]>(),
-                    std::declval<const double(&)[Sys::dim][1]>(),
-                    std::declval<double(&)[Sys::dim][1]>());
+  s.rhs(std::declval<const double&>(), std::declval<const double(&)[Sys::dim]>(),
+        std::declval<double(&)[Sys::dim]>());
 };
 
 // Lanes of an embedded Runge–Kutta method (Tableau as in rk_tableaus.hpp).
@@ -36,11 +35,10 @@ template <int D, int W, class Tableau>
 struct EmbeddedLanes {
   static constexpr int N = Tableau::total;
   static constexpr int M = 4 + Tableau::dense_rows;
-  alignas(64) double x[D][W];       // state at t
-  alignas(64) double x_prev[D][W];  // state at the start of the last accepted step
-  alignas(64) double xnew[D][W];    // trial state at t + h
-  alignas(64) double acc[D][W];     // sum_j b_j k_j of the trial step
-  alignas(64) double tmp[D][W];
+  alignas(64) double x[D][W];        // state at t
+  alignas(64) double x_prev[D][W];   // state at the start of the last accepted step
+  alignas(64) double xnew[D][W];     // trial state at t + h
+  alignas(64) double acc[D][W];      // sum_j b_j k_j of the trial step
   alignas(64) double k[N][D][W];     // stages; k[0] = f(t, x)
   alignas(64) double cont[M][D][W];  // dense output coefficients of the last accepted step
   alignas(64) double t[W];
@@ -48,7 +46,6 @@ struct EmbeddedLanes {
   alignas(64) double h[W];       // size of the trial step
   alignas(64) double h_last[W];  // size of the last accepted step
   alignas(64) double err[W];     // error norm of the trial step (<= 1: accepted)
-  alignas(64) double tt[W];
   double atol = 0, rtol = 0;
 };
 
@@ -69,11 +66,8 @@ template <int D, int W>
 struct Rk4Lanes {
   alignas(64) double x[D][W];
   alignas(64) double xnew[D][W];  // x + h (k1 + 2 (k2 + k3) + k4) / 6
-  alignas(64) double k[4][D][W];
-  alignas(64) double tmp[D][W];
   alignas(64) double t[W];
   alignas(64) double h[W];
-  alignas(64) double tt[W];
 };
 
 template <class Sys, int W>
@@ -81,25 +75,25 @@ struct Rk4Kernel {
   void (*step)(Rk4Lanes<Sys::dim, W>&, const Sys&);  // xnew from (t, x) with step h
 };
 
-// sum_i q[i][l] in the order Eigen's fixed-size sum() adds a vector of even
-// size D with two-double packets (SSE2, the plain x86-64 build of the scalar
+// sum_i q[i] in the order Eigen's fixed-size sum() adds a vector of even size
+// D with two-double packets (SSE2, the plain x86-64 build of the scalar
 // steppers): the packets (q0, q1), (q2, q3), ... are added by halving the list,
 // p0 + (p1 + p2) for D = 6, then the two halves of the result. The batch
 // steppers sum their error norms in this order so that a lane takes the very
-// steps of the scalar stepper (embedded_rk.hpp).
-template <int D, int W, int Start, int Len, int Half>
-[[gnu::always_inline]] inline double packet_sum(const double (&q)[D][W], int l) {
+// steps of the scalar stepper (embedded_rk.hpp). T: a double or W lanes of them.
+template <int Start, int Len, int Half, class T, int D>
+[[gnu::always_inline]] inline T packet_sum(const T (&q)[D]) {
   if constexpr (Len == 1) {
-    return q[2 * Start + Half][l];
+    return q[2 * Start + Half];
   } else {
-    return packet_sum<D, W, Start, Len / 2, Half>(q, l) +
-           packet_sum<D, W, Start + Len / 2, Len - Len / 2, Half>(q, l);
+    return packet_sum<Start, Len / 2, Half>(q) +
+           packet_sum<Start + Len / 2, Len - Len / 2, Half>(q);
   }
 }
-template <int D, int W>
-[[gnu::always_inline]] inline double eigen_order_sum(const double (&q)[D][W], int l) {
+template <class T, int D>
+[[gnu::always_inline]] inline T eigen_order_sum(const T (&q)[D]) {
   static_assert(D % 2 == 0, "the order of Eigen's sum is mirrored for even sizes only");
-  return packet_sum<D, W, 0, D / 2, 0>(q, l) + packet_sum<D, W, 0, D / 2, 1>(q, l);
+  return packet_sum<0, D / 2, 0>(q) + packet_sum<0, D / 2, 1>(q);
 }
 
 }  // namespace epviz::numerics

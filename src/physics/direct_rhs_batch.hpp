@@ -20,22 +20,20 @@ struct DirectBatchSystem {
   // The constants as DirectSystem computes them (direct_batch.cpp).
   static DirectBatchSystem of(const Body& body);
 
-  // x = (Omega, gamma); dxdt = (Omega', gamma x Omega), lane by lane.
-  template <int W>
-  [[gnu::always_inline]] inline void rhs(const double (&)[W], const double (&x)[6][W],
-                                         double (&dxdt)[6][W]) const {
+  // x = (Omega, gamma); dxdt = (Omega', gamma x Omega). T: a double or a
+  // vector of doubles (numerics/batch_lanes.hpp), lane by lane.
+  template <class T>
+  [[gnu::always_inline]] inline void rhs(const T& /*t*/, const T (&x)[6], T (&dxdt)[6]) const {
     const double d0 = inertia[1] - inertia[2], d1 = inertia[2] - inertia[0],
                  d2 = inertia[0] - inertia[1];
-    for (int l = 0; l < W; ++l) {
-      const double w0 = x[0][l], w1 = x[1][l], w2 = x[2][l];
-      const double g0 = x[3][l], g1 = x[4][l], g2 = x[5][l];
-      dxdt[0][l] = (d0 * w1 * w2 + g1 * pr[2] - g2 * pr[1]) * inv_inertia[0];
-      dxdt[1][l] = (d1 * w2 * w0 + g2 * pr[0] - g0 * pr[2]) * inv_inertia[1];
-      dxdt[2][l] = (d2 * w0 * w1 + g0 * pr[1] - g1 * pr[0]) * inv_inertia[2];
-      dxdt[3][l] = w2 * g1 - w1 * g2;
-      dxdt[4][l] = w0 * g2 - w2 * g0;
-      dxdt[5][l] = w1 * g0 - w0 * g1;
-    }
+    const T w0 = x[0], w1 = x[1], w2 = x[2];
+    const T g0 = x[3], g1 = x[4], g2 = x[5];
+    dxdt[0] = (d0 * w1 * w2 + g1 * pr[2] - g2 * pr[1]) * inv_inertia[0];
+    dxdt[1] = (d1 * w2 * w0 + g2 * pr[0] - g0 * pr[2]) * inv_inertia[1];
+    dxdt[2] = (d2 * w0 * w1 + g0 * pr[1] - g1 * pr[0]) * inv_inertia[2];
+    dxdt[3] = w2 * g1 - w1 * g2;
+    dxdt[4] = w0 * g2 - w2 * g0;
+    dxdt[5] = w1 * g0 - w0 * g1;
   }
 };
 
