@@ -117,6 +117,18 @@ class TaskQueue {
   return buf;
 }
 
+// Readies every busy lane for an attempt (prepare(l)), refilling with load(l)
+// the lanes whose trajectory ends or fails on the way; false when all are idle.
+template <int W, class Prepare, class Load>
+bool ready_lanes(const long (&task)[W], Prepare&& prepare, Load&& load) {
+  bool any = false;
+  for (int l = 0; l < W; ++l) {
+    while (task[l] >= 0 && !prepare(l)) load(l);
+    any = any || task[l] >= 0;
+  }
+  return any;
+}
+
 template <int D, int W>
 bool lane_finite(const double (&x)[D][W], int l) {
   for (int i = 0; i < D; ++i)
@@ -216,12 +228,9 @@ auto BatchEmbedded<Sys, W, Tableau>::run(const std::vector<BatchTask<D>>& tasks)
   L_->atol = opts_.atol;
   L_->rtol = opts_.rtol;
   for (int l = 0; l < W; ++l) load(l);
-  for (;;) {
-    bool any = false;
-    for (int l = 0; l < W; ++l)
-      while (task_[l] >= 0 && !prepare(l)) load(l);
-    for (int l = 0; l < W; ++l) any = any || task_[l] >= 0;
-    if (!any) break;
+  const auto prepare_lane = [this](int l) { return prepare(l); };
+  const auto load_lane = [this](int l) { load(l); };
+  while (batch::ready_lanes(task_, prepare_lane, load_lane)) {
     kernels_.attempt(*L_, sys_);
     bool need_dense = false;
     for (int l = 0; l < W; ++l) {

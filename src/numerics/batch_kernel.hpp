@@ -13,7 +13,7 @@
 // are compiled with -ffp-contract=off so that no path fuses a multiply and an
 // add that the others round twice (docs/ensembles.md).
 //
-// No standard library templates here (only builtins): an inline function of
+// No standard library templates called here (only builtins): an inline function of
 // the standard library instantiated in an AVX-512 unit could be chosen by the
 // linker for every caller.
 #include <array>
@@ -24,21 +24,22 @@
 
 namespace epviz::numerics::batch {
 
+// The nonzero weights of a row, as embedded_rk.hpp's detail:: helpers find
+// them; repeated here because that header brings Eigen, which must stay out of
+// these units (it refuses -mavx512f without -mfma, and its inline functions
+// would be compiled for the unit's instruction set).
 template <std::size_t N>
 constexpr std::size_t count_nonzero(const std::array<double, N>& w, std::size_t n) {
   std::size_t c = 0;
-  for (std::size_t j = 0; j < n; ++j)
-    if (w[j] != 0.0) ++c;
+  for (std::size_t j = 0; j < n; ++j) c += w[j] != 0.0;
   return c;
 }
 
-// The indices j < n with w[j] != 0, in increasing order.
 template <std::size_t Count, std::size_t N>
 constexpr std::array<std::size_t, Count> nonzero_indices(const std::array<double, N>& w,
                                                          std::size_t n) {
   std::array<std::size_t, Count> idx{};
-  std::size_t c = 0;
-  for (std::size_t j = 0; j < n; ++j)
+  for (std::size_t j = 0, c = 0; j < n; ++j)
     if (w[j] != 0.0) idx[c++] = j;
   return idx;
 }

@@ -30,12 +30,9 @@ class BatchRk4 {
     queue_ = std::make_unique<batch::TaskQueue<D>>(tasks);
     L_ = std::make_unique<Rk4Lanes<D, W>>();
     for (int l = 0; l < W; ++l) load(l);
-    for (;;) {
-      bool any = false;
-      for (int l = 0; l < W; ++l)
-        while (task_[l] >= 0 && !prepare(l)) load(l);
-      for (int l = 0; l < W; ++l) any = any || task_[l] >= 0;
-      if (!any) break;
+    const auto prepare_lane = [this](int l) { return prepare(l); };
+    const auto load_lane = [this](int l) { load(l); };
+    while (batch::ready_lanes(task_, prepare_lane, load_lane)) {
       kernel_.step(*L_, sys_);
       for (int l = 0; l < W; ++l)
         if (task_[l] >= 0 && !advance(l)) load(l);

@@ -1,5 +1,5 @@
-// The direct system's batch kernels for AVX-512 F and DQ, 512-bit vectors (-mavx512f -mavx512dq); the flags are set for this
-// file alone in CMakeLists.txt, always with -ffp-contract=off.
+// The direct system's batch kernels for AVX-512 F and DQ, 512-bit vectors (-mavx512f -mavx512dq);
+// the flags are set for this file alone in CMakeLists.txt, always with -ffp-contract=off.
 #include "physics/direct_batch_kernels.hpp"
 
 namespace epviz::physics::batch_isa {

@@ -1,5 +1,5 @@
-// The direct system's batch kernels for SSE2, 128-bit vectors (plain x86-64); the flags are set for this
-// file alone in CMakeLists.txt, always with -ffp-contract=off.
+// The direct system's batch kernels for SSE2, 128-bit vectors (plain x86-64); the flags are set for
+// this file alone in CMakeLists.txt, always with -ffp-contract=off.
 #include "physics/direct_batch_kernels.hpp"
 
 namespace epviz::physics::batch_isa {
