@@ -42,4 +42,11 @@ std::vector<DirectBatchResult> integrate_direct_batch(const Body& body,
                                                       const std::vector<DirectBatchTask>& tasks,
                                                       const DirectBatchSettings& settings = {});
 
+// The same, the tasks shared among `threads` threads (each running batches of
+// W lanes on chunks taken in turn): the results are bitwise those of
+// integrate_direct_batch. Bad input throws before any thread starts.
+std::vector<DirectBatchResult> integrate_direct_batch_parallel(
+    const Body& body, const std::vector<DirectBatchTask>& tasks,
+    const DirectBatchSettings& settings = {}, int threads = 2);
+
 }  // namespace epviz::physics

@@ -274,5 +274,25 @@ TEST(DirectBatch, InvariantsAreConserved) {
   }
 }
 
+// Two threads of W lanes each, taking chunks in turn: the same results, bit
+// for bit, as one batch (and so as each trajectory alone).
+TEST(DirectBatch, ParallelOverThreadsGivesTheSameResults) {
+  const auto tasks = mixed_tasks(300);
+  DirectBatchSettings settings;
+  settings.adaptive = tolerance(1e-8);
+  const auto serial = integrate_direct_batch(generic_body(), tasks, settings);
+  for (int threads : {1, 2, 3}) {
+    const auto parallel = integrate_direct_batch_parallel(generic_body(), tasks, settings, threads);
+    ASSERT_EQ(parallel.size(), tasks.size());
+    for (std::size_t i = 0; i < tasks.size(); ++i)
+      EXPECT_TRUE(identical(parallel[i], serial[i])) << threads << " threads, trajectory " << i;
+  }
+  EXPECT_THROW(integrate_direct_batch_parallel(generic_body(), tasks, settings, 0),
+               std::invalid_argument);
+  settings.width = 5;
+  EXPECT_THROW(integrate_direct_batch_parallel(generic_body(), tasks, settings),
+               std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace epviz::physics
