@@ -18,6 +18,7 @@
 #include "render/gl_context.hpp"
 #endif
 #include "io/bad_input.hpp"
+#include "numerics/simd_path.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   app.set_version_flag("--version", [] {
     std::string text = "epviz " EPVIZ_VERSION " (git " EPVIZ_GIT_COMMIT ")";
+    text += "\nbatch SIMD path: " + epviz::numerics::simd_path_report();
 #ifdef EPVIZ_HAVE_RENDER
     text += "\nGL backend (auto): " + epviz::render::probe_gl_backend();
 #endif

@@ -1,0 +1,102 @@
+// Ensembles: ns per trajectory-step of 4,096 trajectories of the direct
+// system by DOP853 at one tolerance, the scalar stepper one trajectory at a
+// time against the batch stepper on each instruction set of this CPU and lane
+// count (docs/ensembles.md has the figures).
+//
+//   build/bench/epviz_bench --benchmark_filter=ensemble
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "numerics/embedded_rk.hpp"
+#include "physics/direct.hpp"
+#include "physics/direct_batch.hpp"
+
+namespace {
+
+using namespace epviz;
+
+constexpr int kTrajectories = 4096;
+constexpr double kTolerance = 1e-10;
+
+physics::Body ensemble_body() {
+  physics::Body b;
+  b.inertia = {1.0, 1.6, 2.1};
+  b.com = {0.3, -0.2, 0.5};
+  b.weight = 2.0;
+  return b;
+}
+
+// Initial states spread over a box of angular velocities, t_end from 2 to 4.
+const std::vector<physics::DirectBatchTask>& ensemble() {
+  static const std::vector<physics::DirectBatchTask> tasks = [] {
+    std::vector<physics::DirectBatchTask> t;
+    for (int i = 0; i < kTrajectories; ++i) {
+      physics::InitialState s;
+      s.omega = {-1.0 + 2.0 * (i % 16) / 15.0, -1.0 + 2.0 * ((i / 16) % 16) / 15.0,
+                 0.5 + (i / 256) / 16.0};
+      s.gamma = physics::Vector3d(0.1 * std::sin(i), 0.2, 1.0).normalized();
+      t.push_back(physics::direct_batch_task(s, 2.0 + 2.0 * (i % 7) / 6.0));
+    }
+    return t;
+  }();
+  return tasks;
+}
+
+numerics::AdaptiveOptions options() {
+  numerics::AdaptiveOptions o;
+  o.rtol = o.atol = kTolerance;
+  return o;
+}
+
+void ensemble_scalar_dop853(benchmark::State& state) {
+  const physics::DirectSystem sys(ensemble_body());
+  long steps = 0;
+  for (auto _ : state) {
+    for (const auto& task : ensemble()) {
+      numerics::Dop853<physics::DirectSystem> s(sys, options());
+      physics::DirectSystem::State x;
+      for (int i = 0; i < 6; ++i) x[i] = task.x0[std::size_t(i)];
+      s.init(task.t0, x);
+      while (s.t() < task.t_end) s.step();
+      benchmark::DoNotOptimize(s.dense(task.t_end));
+      steps += s.stats().steps + s.stats().rejected_steps;
+    }
+  }
+  state.counters["per_step"] =
+      benchmark::Counter(double(steps), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(ensemble_scalar_dop853)->Unit(benchmark::kMillisecond);
+
+void ensemble_batch_dop853(benchmark::State& state, numerics::SimdPath path, int width) {
+  physics::DirectBatchSettings settings;
+  settings.adaptive = options();
+  settings.path = path;
+  settings.width = width;
+  long steps = 0;
+  for (auto _ : state) {
+    const auto results = physics::integrate_direct_batch(ensemble_body(), ensemble(), settings);
+    for (const auto& r : results) steps += r.steps + r.rejected_steps;
+    benchmark::DoNotOptimize(results.data());
+  }
+  state.counters["per_step"] =
+      benchmark::Counter(double(steps), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+// One benchmark per path this CPU has and lane count.
+const bool registered = [] {
+  for (numerics::SimdPath path : numerics::kSimdPaths) {
+    if (!numerics::cpu_supports(path)) continue;
+    for (int width : {1, 2, 4, 8}) {
+      const std::string name = "ensemble_batch_dop853/" + std::string(numerics::name(path)) + "/W" +
+                               std::to_string(width);
+      benchmark::RegisterBenchmark(name.c_str(), ensemble_batch_dop853, path, width)
+          ->Unit(benchmark::kMillisecond);
+    }
+  }
+  return true;
+}();
+
+}  // namespace

@@ -1,0 +1,431 @@
+#pragma once
+// Batch steppers: many independent trajectories of one system advanced W at a
+// time in structure-of-arrays lanes (batch_lanes.hpp), with the arithmetic
+// compiled per instruction set (batch_kernel.hpp) and everything else here.
+//
+//   BatchEmbedded<Sys, W, Dop853Tableau>   DOP853 with the step-size control of
+//                                          EmbeddedRk (embedded_rk.hpp)
+//   BatchRk4<Sys, W>                       the classical RK4, fixed step
+//
+// No lockstep: every lane has its own t, step size, counters and failure, and
+// each attempt of every lane is decided on its own. A lane whose trajectory
+// ends or fails takes the next pending trajectory at once, so the batch never
+// waits for its slowest member. A lane's results are bitwise those of the
+// scalar stepper on its trajectory (the same operations in the same order),
+// whatever its neighbours, W or the instruction set (docs/ensembles.md).
+//
+// Output: DOP853 interpolates its dense output at the requested times (the
+// scalar pattern `while (s.t() < t_out) s.step(); s.dense(t_out)`); RK4 steps
+// exactly to them (rk4_step_towards).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "numerics/batch_lanes.hpp"
+#include "numerics/embedded_rk.hpp"
+#include "numerics/failure.hpp"
+
+namespace epviz::numerics {
+
+template <int D>
+struct BatchTask {
+  double t0 = 0, t_end = 0;
+  std::array<double, D> x0{};
+  std::vector<double> out_times;  // ascending, within [t0, t_end]
+};
+
+template <int D>
+struct BatchResult {
+  std::vector<std::array<double, D>> outputs;  // at out_times (those reached when failed)
+  std::array<double, D> x{};                   // at t_end, or the last accepted state when failed
+  double t = 0;  // t_end, or the time of the last accepted state when failed
+  long steps = 0, rejected_steps = 0;
+  std::optional<Failure> failure;
+};
+
+// Throws std::invalid_argument naming the first task whose times are not
+// finite, whose t_end < t0 or whose output times leave [t0, t_end] or descend.
+template <int D>
+void check_batch_tasks(const std::vector<BatchTask<D>>& tasks) {
+  for (std::size_t i = 0; i < tasks.size(); ++i) {
+    const auto& task = tasks[i];
+    const auto bad = [&](const char* what) {
+      throw std::invalid_argument("batch task " + std::to_string(i) + ": " + what);
+    };
+    if (!std::isfinite(task.t0) || !std::isfinite(task.t_end) || task.t_end < task.t0)
+      bad("t0 and t_end must be finite with t_end >= t0");
+    double last = task.t0;
+    for (double t : task.out_times) {
+      if (!(t >= last && t <= task.t_end)) bad("output times must ascend within [t0, t_end]");
+      last = t;
+    }
+  }
+}
+
+struct BatchRk4Options {
+  double h = 0.01;               // step size (the last step before an output time is shorter)
+  long max_steps = 100'000'000;  // per trajectory
+};
+
+// The RK4 step from t towards target with step size h: h, or the rest when it
+// is at most h (up to 1e-9 h, so that round-off leaves no sliver of a step).
+struct Rk4Step {
+  double h;
+  bool lands;  // the step ends exactly at target
+};
+inline Rk4Step rk4_step_towards(double t, double target, double h) {
+  const double rest = target - t;
+  if (rest <= h * (1.0 + 1e-9)) return {rest, true};
+  return {h, false};
+}
+
+namespace batch {
+
+// The trajectories not yet started and the results of all.
+template <int D>
+class TaskQueue {
+ public:
+  explicit TaskQueue(const std::vector<BatchTask<D>>& tasks) : tasks_(tasks) {
+    check_batch_tasks(tasks);
+    results_.resize(tasks.size());
+    for (std::size_t i = 0; i < tasks.size(); ++i)
+      results_[i].outputs.reserve(tasks[i].out_times.size());
+  }
+  // The index of the next trajectory, or -1 when none is left.
+  long take() { return next_ < tasks_.size() ? long(next_++) : -1; }
+  const BatchTask<D>& task(long i) const { return tasks_[std::size_t(i)]; }
+  BatchResult<D>& result(long i) { return results_[std::size_t(i)]; }
+  std::vector<BatchResult<D>> release() { return std::move(results_); }
+
+ private:
+  const std::vector<BatchTask<D>>& tasks_;
+  std::vector<BatchResult<D>> results_;
+  std::size_t next_ = 0;
+};
+
+[[gnu::noinline]] inline std::string format_detail(const char* f, double v) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+// Readies every busy lane for an attempt (prepare(l)), refilling with load(l)
+// the lanes whose trajectory ends or fails on the way; false when all are idle.
+template <int W, class Prepare, class Load>
+bool ready_lanes(const long (&task)[W], Prepare&& prepare, Load&& load) {
+  bool any = false;
+  for (int l = 0; l < W; ++l) {
+    while (task[l] >= 0 && !prepare(l)) load(l);
+    any = any || task[l] >= 0;
+  }
+  return any;
+}
+
+template <int D, int W>
+bool lane_finite(const double (&x)[D][W], int l) {
+  for (int i = 0; i < D; ++i)
+    if (!std::isfinite(x[i][l])) return false;
+  return true;
+}
+
+template <int D, int W>
+void copy_lane(double (&to)[D][W], const double (&from)[D][W], int l) {
+  for (int i = 0; i < D; ++i) to[i][l] = from[i][l];
+}
+
+template <int D, int W>
+std::array<double, D> lane(const double (&x)[D][W], int l) {
+  std::array<double, D> a;
+  for (int i = 0; i < D; ++i) a[std::size_t(i)] = x[i][l];
+  return a;
+}
+
+}  // namespace batch
+
+template <BatchSystem Sys, int W, class Tableau>
+class BatchEmbedded {
+ public:
+  static constexpr int D = Sys::dim;
+  static constexpr const char* name = Tableau::name;
+  using Kernels = EmbeddedKernels<Sys, W, Tableau>;
+
+  // Throws std::invalid_argument for the options EmbeddedRk refuses.
+  BatchEmbedded(Sys sys, const Kernels& kernels, AdaptiveOptions opts = {})
+      : sys_(std::move(sys)), kernels_(kernels), opts_(opts) {
+    EmbeddedRk<Probe, Tableau> validate(Probe{}, opts_);  // the very checks of the scalar stepper
+    fac_min_ = opts_.fac_min < 0 ? Tableau::default_fac_min : opts_.fac_min;
+    fac_max_ = opts_.fac_max < 0 ? Tableau::default_fac_max : opts_.fac_max;
+    beta_ = opts_.beta < 0 ? Tableau::default_beta : opts_.beta;
+    expo_ = Tableau::error_exponent - Tableau::beta_coupling * beta_;
+  }
+
+  std::vector<BatchResult<D>> run(const std::vector<BatchTask<D>>& tasks);
+
+ private:
+  using Lanes = EmbeddedLanes<D, W, Tableau>;
+  static constexpr int S = Tableau::stages;
+  static constexpr int M = Lanes::M;
+  static constexpr double kLogErrFloor = -9.210340371976182;  // as EmbeddedRk's
+
+  // A one-dimensional system for the option checks of EmbeddedRk.
+  struct Probe {
+    static constexpr int dim = 1;
+    using State = Vec<1>;
+    void rhs(double, const State&, State& dx) const { dx[0] = 0; }
+  };
+
+  void load(int l);
+  bool start(int l);  // false when the trajectory ended or failed at its start
+  bool prepare(int l);
+  bool decide(int l);  // true when accepted
+  double initial_step(int l) const;
+  void emit_outputs(int l);
+  void finish(int l, std::optional<Failure> failure);
+  void fail(int l, FailureKind kind, std::string detail) {
+    finish(l, Failure{L_->t[l], name, kind, std::move(detail)});
+  }
+  double dense(int l, int i, double t) const {
+    const double s = (t - L_->t_prev[l]) / L_->h_last[l];
+    const double s1 = 1.0 - s;
+    double r = L_->cont[M - 1][i][l];
+    for (int j = M - 2; j >= 0; --j) r = L_->cont[j][i][l] + ((j % 2 == 0) ? s : s1) * r;
+    return r;
+  }
+  double err_power(double err) const {
+    if (expo_ == 0.125) return 1.0 / std::sqrt(std::sqrt(std::sqrt(err)));
+    return std::exp(-expo_ * std::log(err));
+  }
+
+  Sys sys_;
+  Kernels kernels_;
+  AdaptiveOptions opts_;
+  double fac_min_, fac_max_, beta_, expo_;
+
+  std::unique_ptr<Lanes> L_;
+  std::unique_ptr<batch::TaskQueue<D>> queue_;
+  // Per lane: the trajectory (-1: idle), its next output, and the controller's state.
+  long task_[W];
+  std::size_t next_out_[W];
+  double h_next_[W], log_err_old_[W];
+  long attempts_[W];
+  int consecutive_rejects_[W], nonfinite_trials_[W];
+  bool last_rejected_[W], accepted_[W], stepped_[W];
+};
+
+template <BatchSystem Sys, int W, class Tableau>
+auto BatchEmbedded<Sys, W, Tableau>::run(const std::vector<BatchTask<D>>& tasks)
+    -> std::vector<BatchResult<D>> {
+  queue_ = std::make_unique<batch::TaskQueue<D>>(tasks);
+  L_ = std::make_unique<Lanes>();
+  L_->atol = opts_.atol;
+  L_->rtol = opts_.rtol;
+  for (int l = 0; l < W; ++l) load(l);
+  const auto prepare_lane = [this](int l) { return prepare(l); };
+  const auto load_lane = [this](int l) { load(l); };
+  while (batch::ready_lanes(task_, prepare_lane, load_lane)) {
+    kernels_.attempt(*L_, sys_);
+    bool need_dense = false;
+    for (int l = 0; l < W; ++l) {
+      accepted_[l] = task_[l] >= 0 && decide(l);
+      if (!accepted_[l]) continue;
+      const auto& task = queue_->task(task_[l]);
+      need_dense =
+          need_dense || L_->t[l] >= task.t_end ||
+          (next_out_[l] < task.out_times.size() && task.out_times[next_out_[l]] <= L_->t[l]);
+    }
+    if (need_dense) kernels_.dense(*L_, sys_);
+    for (int l = 0; l < W; ++l) {
+      if (!accepted_[l]) continue;
+      emit_outputs(l);
+      if (L_->t[l] >= queue_->task(task_[l]).t_end) {
+        finish(l, std::nullopt);
+        load(l);
+      } else {
+        batch::copy_lane(L_->k[0], L_->k[S], l);  // FSAL
+      }
+    }
+  }
+  L_.reset();
+  auto results = queue_->release();
+  queue_.reset();
+  return results;
+}
+
+template <BatchSystem Sys, int W, class Tableau>
+void BatchEmbedded<Sys, W, Tableau>::load(int l) {
+  for (;;) {
+    task_[l] = queue_->take();
+    if (task_[l] < 0) {
+      // Idle: harmless numbers for the kernels to chew on.
+      for (int i = 0; i < D; ++i) L_->x[i][l] = L_->k[0][i][l] = 0.0;
+      L_->t[l] = L_->h[l] = 0.0;
+      return;
+    }
+    if (start(l)) return;
+  }
+}
+
+template <BatchSystem Sys, int W, class Tableau>
+bool BatchEmbedded<Sys, W, Tableau>::start(int l) {
+  const auto& task = queue_->task(task_[l]);
+  L_->t[l] = L_->t_prev[l] = task.t0;
+  for (int i = 0; i < D; ++i) L_->x[i][l] = L_->x_prev[i][l] = task.x0[std::size_t(i)];
+  h_next_[l] = opts_.h_init > 0 ? std::min(opts_.h_init, opts_.h_max) : 0.0;
+  log_err_old_[l] = kLogErrFloor;
+  attempts_[l] = 0;
+  consecutive_rejects_[l] = nonfinite_trials_[l] = 0;
+  last_rejected_[l] = false;
+  stepped_[l] = false;
+  next_out_[l] = 0;
+  emit_outputs(l);  // those at t0: x0, as EmbeddedRk::dense before a step
+  if (task.t_end <= task.t0) {
+    finish(l, std::nullopt);
+    return false;
+  }
+  double x[D], k0[D];
+  for (int i = 0; i < D; ++i) x[i] = L_->x[i][l];
+  sys_.rhs(task.t0, x, k0);
+  for (int i = 0; i < D; ++i) L_->k[0][i][l] = k0[i];
+  if (!batch::lane_finite(L_->k[0], l) || !batch::lane_finite(L_->x, l)) {
+    fail(l, FailureKind::non_finite, "state or derivative not finite (NaN or Inf)");
+    return false;
+  }
+  if (h_next_[l] <= 0.0) h_next_[l] = initial_step(l);
+  return true;
+}
+
+// As EmbeddedRk::initial_step (Hairer's HINIT), for lane l.
+template <BatchSystem Sys, int W, class Tableau>
+double BatchEmbedded<Sys, W, Tableau>::initial_step(int l) const {
+  double sk[D], q[D], x1[D], k1[D];
+  for (int i = 0; i < D; ++i) sk[i] = opts_.atol + opts_.rtol * std::abs(L_->x[i][l]);
+  for (int i = 0; i < D; ++i) q[i] = (L_->k[0][i][l] / sk[i]) * (L_->k[0][i][l] / sk[i]);
+  const double dnf = eigen_order_sum(q);
+  for (int i = 0; i < D; ++i) q[i] = (L_->x[i][l] / sk[i]) * (L_->x[i][l] / sk[i]);
+  const double dny = eigen_order_sum(q);
+  double h = (dnf <= 1e-10 || dny <= 1e-10) ? 1e-6 : 0.01 * std::sqrt(dny / dnf);
+  h = std::min(h, opts_.h_max);
+  for (int i = 0; i < D; ++i) x1[i] = L_->x[i][l] + h * L_->k[0][i][l];
+  sys_.rhs(L_->t[l] + h, x1, k1);
+  for (int i = 0; i < D; ++i) {
+    const double d = (k1[i] - L_->k[0][i][l]) / sk[i];
+    q[i] = d * d;
+  }
+  const double der2 = std::sqrt(eigen_order_sum(q)) / h;
+  const double der12 = std::max(std::abs(der2), std::sqrt(dnf));
+  if (!std::isfinite(der12)) return h * 1e-2;
+  const double x = 0.01 / der12;
+  const double root = Tableau::order == 8 ? std::sqrt(std::sqrt(std::sqrt(x)))
+                                          : std::exp(std::log(x) / double(Tableau::order));
+  const double h1 = der12 <= 1e-15 ? std::max(1e-6, h * 1e-3) : root;
+  return std::min({100.0 * h, h1, opts_.h_max});
+}
+
+// The checks at the top of EmbeddedRk::step's loop; sets the trial step size.
+template <BatchSystem Sys, int W, class Tableau>
+bool BatchEmbedded<Sys, W, Tableau>::prepare(int l) {
+  const double h = std::min(h_next_[l], opts_.h_max);
+  if (attempts_[l] >= opts_.max_steps) {
+    fail(l, FailureKind::step_budget,
+         "step budget of " + std::to_string(opts_.max_steps) + " steps exhausted");
+    return false;
+  }
+  if (!(h >= 16.0 * std::numeric_limits<double>::epsilon() * std::abs(L_->t[l])) || h <= 0.0) {
+    fail(l, FailureKind::step_underflow,
+         batch::format_detail("step size %.3g below the round-off limit", h));
+    return false;
+  }
+  ++attempts_[l];
+  L_->h[l] = h;
+  return true;
+}
+
+// The rest of EmbeddedRk::step's loop, for lane l after an attempt.
+template <BatchSystem Sys, int W, class Tableau>
+bool BatchEmbedded<Sys, W, Tableau>::decide(int l) {
+  auto& result = queue_->result(task_[l]);
+  const double h = L_->h[l], err = L_->err[l];
+  const bool finite = std::isfinite(err) && batch::lane_finite(L_->xnew, l);
+  if (finite && err <= 1.0) {
+    double fac;
+    if (beta_ == 0.0) {
+      fac = opts_.safety * err_power(err);
+    } else {
+      const double log_err = std::log(err);
+      fac = opts_.safety * std::exp(beta_ * log_err_old_[l] - expo_ * log_err);
+      log_err_old_[l] = std::max(log_err, kLogErrFloor);
+    }
+    fac = std::clamp(fac, fac_min_, fac_max_);
+    if (last_rejected_[l]) fac = std::min(fac, 1.0);
+    L_->t_prev[l] = L_->t[l];
+    batch::copy_lane(L_->x_prev, L_->x, l);
+    L_->t[l] += h;
+    batch::copy_lane(L_->x, L_->xnew, l);
+    L_->h_last[l] = h;
+    h_next_[l] = h * fac;
+    last_rejected_[l] = false;
+    consecutive_rejects_[l] = nonfinite_trials_[l] = 0;
+    stepped_[l] = true;
+    ++result.steps;
+    return true;
+  }
+  ++result.rejected_steps;
+  last_rejected_[l] = true;
+  double fac = fac_min_;
+  if (finite) {
+    fac = std::max(fac_min_, opts_.safety * err_power(err));
+  } else {
+    ++nonfinite_trials_[l];
+  }
+  h_next_[l] = h * fac;
+  if (++consecutive_rejects_[l] > opts_.max_consecutive_rejects) {
+    if (nonfinite_trials_[l] > 0)
+      fail(
+          l, FailureKind::non_finite,
+          batch::format_detail("trial states not finite (NaN or Inf) even with step size %.3g", h));
+    else
+      fail(l, FailureKind::rejections,
+           std::to_string(consecutive_rejects_[l]) +
+               batch::format_detail(" consecutive rejected steps (last step size %.3g)", h));
+    load(l);
+  }
+  return false;
+}
+
+template <BatchSystem Sys, int W, class Tableau>
+void BatchEmbedded<Sys, W, Tableau>::emit_outputs(int l) {
+  const auto& task = queue_->task(task_[l]);
+  auto& result = queue_->result(task_[l]);
+  for (; next_out_[l] < task.out_times.size(); ++next_out_[l]) {
+    const double t = task.out_times[next_out_[l]];
+    if (!(t <= L_->t[l])) break;
+    std::array<double, D> x;
+    for (int i = 0; i < D; ++i) x[std::size_t(i)] = stepped_[l] ? dense(l, i, t) : L_->x[i][l];
+    result.outputs.push_back(x);
+  }
+}
+
+template <BatchSystem Sys, int W, class Tableau>
+void BatchEmbedded<Sys, W, Tableau>::finish(int l, std::optional<Failure> failure) {
+  const auto& task = queue_->task(task_[l]);
+  auto& result = queue_->result(task_[l]);
+  if (failure) {
+    result.t = L_->t[l];
+    result.x = batch::lane(L_->x, l);
+  } else {
+    result.t = task.t_end;
+    for (int i = 0; i < D; ++i)
+      result.x[std::size_t(i)] = stepped_[l] ? dense(l, i, task.t_end) : L_->x[i][l];
+  }
+  result.failure = std::move(failure);
+}
+
+}  // namespace epviz::numerics

@@ -1,0 +1,23 @@
+#pragma once
+// Included by each direct_batch_<isa>.cpp only: the kernel table of that unit,
+// instantiated with a tag type of the unit's anonymous namespace
+// (numerics/batch_kernel.hpp says why).
+#include "numerics/batch_kernel.hpp"
+#include "physics/direct_batch_isa.hpp"
+
+namespace epviz::physics::batch_isa {
+
+template <int W, class Tag>
+constexpr DirectKernelsOf<W> direct_kernels_of() {
+  using Sys = DirectBatchSystem;
+  return {numerics::batch::EmbeddedKernel<Sys, W, numerics::Dop853Tableau, Tag>::table,
+          numerics::batch::Rk4KernelImpl<Sys, W, Tag>::table};
+}
+
+template <class Tag>
+constexpr DirectKernels direct_kernels() {
+  return {direct_kernels_of<1, Tag>(), direct_kernels_of<2, Tag>(), direct_kernels_of<4, Tag>(),
+          direct_kernels_of<8, Tag>()};
+}
+
+}  // namespace epviz::physics::batch_isa

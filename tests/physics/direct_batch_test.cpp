@@ -1,0 +1,298 @@
+// The batch steppers on the direct system: every lane is the trajectory
+// integrated alone by the scalar stepper, bit for bit, whatever the lane
+// count, the neighbours (finishing or failing at other times) and the
+// instruction set; the invariants as an independent check of the motion.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "direct_batch_reference.hpp"
+#include "helpers.hpp"
+#include "physics/direct_rhs_batch.hpp"
+#include "physics/invariants.hpp"
+
+namespace epviz::physics {
+namespace {
+
+using numerics::SimdPath;
+using test::identical;
+
+// A generic (chaotic) top: neighbouring trajectories part, so a lane that
+// borrowed anything from another would show.
+Body generic_body() {
+  Body b;
+  b.inertia = {1.0, 1.6, 2.1};
+  b.com = {0.3, -0.2, 0.5};
+  b.weight = 2.0;
+  return b;
+}
+
+// n trajectories with t_end from 1.5 to 9 in no order and a few output times
+// each, so that lanes finish at different times and are refilled.
+std::vector<DirectBatchTask> mixed_tasks(int n) {
+  std::vector<DirectBatchTask> tasks;
+  for (int i = 0; i < n; ++i) {
+    InitialState s;
+    s.omega = {0.4 + 0.07 * i, -0.8 + 0.05 * (i % 5), 1.1 - 0.03 * i};
+    s.gamma = Vector3d(0.2 * std::sin(i), 0.3, 1.0).normalized();
+    const double t_end = 1.5 + double((i * 7) % 11) * 0.75;
+    tasks.push_back(direct_batch_task(s, t_end, {0.0, t_end / 3, t_end / 2, t_end / 2}));
+  }
+  return tasks;
+}
+
+numerics::AdaptiveOptions tolerance(double tol) {
+  numerics::AdaptiveOptions o;
+  o.rtol = o.atol = tol;
+  return o;
+}
+
+std::vector<SimdPath> paths_of_this_cpu() {
+  std::vector<SimdPath> paths;
+  for (SimdPath p : numerics::kSimdPaths)
+    if (numerics::cpu_supports(p)) paths.push_back(p);
+  return paths;
+}
+
+void expect_each_lane_alone(const Body& body, const std::vector<DirectBatchTask>& tasks,
+                            DirectBatchSettings settings) {
+  std::vector<DirectBatchResult> alone;
+  for (const auto& task : tasks)
+    alone.push_back(settings.method == BatchMethod::rk4
+                        ? test::rk4_alone(body, task, settings.rk4)
+                        : test::dop853_alone(body, task, settings.adaptive));
+  for (SimdPath path : paths_of_this_cpu()) {
+    for (int width : {1, 2, 4, 8}) {
+      settings.path = path;
+      settings.width = width;
+      const auto batch = integrate_direct_batch(body, tasks, settings);
+      ASSERT_EQ(batch.size(), tasks.size());
+      for (std::size_t i = 0; i < tasks.size(); ++i)
+        EXPECT_TRUE(identical(batch[i], alone[i]))
+            << "trajectory " << i << ", path " << numerics::name(path) << ", " << width << " lanes";
+    }
+  }
+}
+
+TEST(DirectBatch, RhsIsDirectSystemsBitwise) {
+  const Body body = generic_body();
+  const DirectSystem scalar(body);
+  const DirectBatchSystem batch = DirectBatchSystem::of(body);
+  test::Random rnd;
+  for (int trial = 0; trial < 8; ++trial) {
+    DirectSystem::State xs, d;
+    xs << rnd.vec(), rnd.unit();
+    double x[6], dx[6];
+    for (int i = 0; i < 6; ++i) x[i] = xs[i];
+    batch.rhs(0.0, x, dx);
+    scalar.rhs(0.0, xs, d);
+    for (int i = 0; i < 6; ++i) EXPECT_EQ(test::bits(dx[i]), test::bits(d[i]));
+  }
+}
+
+// W = 1 reproduces the scalar DOP853 bit for bit (not merely to 1e-13): the
+// batch performs its operations in its order, down to the summation order of
+// Eigen's sum() in the error norm and the initial step (eigen_order_sum), and
+// neither is compiled with fused multiply-adds.
+TEST(DirectBatch, Dop853LanesAreTheScalarStepperAloneBitwise) {
+  DirectBatchSettings settings;
+  settings.adaptive = tolerance(1e-9);
+  expect_each_lane_alone(generic_body(), mixed_tasks(19), settings);
+}
+
+TEST(DirectBatch, Dop853WithGivenInitialStepAndPiControl) {
+  DirectBatchSettings settings;
+  settings.adaptive = tolerance(1e-7);
+  settings.adaptive.h_init = 0.3;  // rejected at first
+  settings.adaptive.beta = 0.04;
+  settings.adaptive.h_max = 0.5;
+  expect_each_lane_alone(generic_body(), mixed_tasks(9), settings);
+}
+
+TEST(DirectBatch, Rk4LanesAreTheScalarStepperAloneBitwise) {
+  DirectBatchSettings settings;
+  settings.method = BatchMethod::rk4;
+  settings.rk4.h = 0.013;
+  expect_each_lane_alone(generic_body(), mixed_tasks(11), settings);
+}
+
+TEST(DirectBatch, AFailingLaneFailsAloneAndTheOthersFinishAsAlone) {
+  auto tasks = mixed_tasks(13);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  tasks[2].x0[4] = nan;                                      // fails at its start
+  tasks[7].x0[0] = std::numeric_limits<double>::infinity();  // likewise
+  for (BatchMethod method : {BatchMethod::dop853, BatchMethod::rk4}) {
+    DirectBatchSettings settings;
+    settings.method = method;
+    settings.adaptive = tolerance(1e-9);
+    const auto batch = integrate_direct_batch(generic_body(), tasks, settings);
+    for (std::size_t i : {2u, 7u}) {
+      ASSERT_TRUE(batch[i].failure) << i;
+      EXPECT_EQ(batch[i].failure->kind, numerics::FailureKind::non_finite);
+    }
+    int failed = 0;
+    for (const auto& r : batch) failed += r.failure.has_value();
+    EXPECT_EQ(failed, 2);
+    expect_each_lane_alone(generic_body(), tasks, settings);
+  }
+}
+
+// The step budget is per trajectory: the long ones fail in the middle of the
+// batch (step_budget), the short ones finish, each as alone.
+TEST(DirectBatch, StepBudgetStopsTheLongTrajectoriesOnly) {
+  DirectBatchSettings settings;
+  settings.adaptive = tolerance(1e-10);
+  const auto tasks = mixed_tasks(12);
+  // The budget: the median of the attempts the trajectories need.
+  std::vector<long> attempts;
+  for (const auto& r : integrate_direct_batch(generic_body(), tasks, settings))
+    attempts.push_back(r.steps + r.rejected_steps);
+  std::sort(attempts.begin(), attempts.end());
+  settings.adaptive.max_steps = attempts[attempts.size() / 2];
+  const auto batch = integrate_direct_batch(generic_body(), tasks, settings);
+  int failed = 0, finished = 0;
+  for (const auto& r : batch) {
+    if (r.failure) {
+      EXPECT_EQ(r.failure->kind, numerics::FailureKind::step_budget);
+    }
+    (r.failure ? failed : finished)++;
+  }
+  EXPECT_GT(failed, 0);
+  EXPECT_GT(finished, 0);
+  expect_each_lane_alone(generic_body(), tasks, settings);
+}
+
+// An absolute tolerance far below round-off: the step size underflows.
+TEST(DirectBatch, UnreachableToleranceUnderflowsLikeAlone) {
+  DirectBatchSettings settings;
+  settings.adaptive.rtol = 0;
+  settings.adaptive.atol = 1e-300;
+  auto tasks = mixed_tasks(5);
+  const auto batch = integrate_direct_batch(generic_body(), tasks, settings);
+  for (const auto& r : batch) {
+    ASSERT_TRUE(r.failure);
+    EXPECT_NE(r.failure->kind, numerics::FailureKind::non_finite) << r.failure->message();
+  }
+  expect_each_lane_alone(generic_body(), tasks, settings);
+}
+
+class ScopedSimdEnv {
+ public:
+  explicit ScopedSimdEnv(const char* value) {
+    if (const char* old = std::getenv("EPVIZ_SIMD")) old_ = old;
+    ::setenv("EPVIZ_SIMD", value, 1);
+  }
+  ~ScopedSimdEnv() {
+    if (old_.empty())
+      ::unsetenv("EPVIZ_SIMD");
+    else
+      ::setenv("EPVIZ_SIMD", old_.c_str(), 1);
+  }
+
+ private:
+  std::string old_;
+};
+
+TEST(DirectBatch, ForcedPathsGiveTheScalarPathsResultsBitwise) {
+  const auto tasks = mixed_tasks(10);
+  DirectBatchSettings settings;
+  settings.path = SimdPath::scalar;
+  const auto scalar = integrate_direct_batch(generic_body(), tasks, settings);
+  for (SimdPath path : paths_of_this_cpu()) {
+    ScopedSimdEnv env(std::string(numerics::name(path)).c_str());
+    EXPECT_EQ(numerics::chosen_simd_path(), path);
+    const auto forced = integrate_direct_batch(generic_body(), tasks);  // path from EPVIZ_SIMD
+    for (std::size_t i = 0; i < tasks.size(); ++i)
+      EXPECT_TRUE(identical(forced[i], scalar[i])) << numerics::name(path) << " " << i;
+  }
+}
+
+std::string refusal(const char* value) {
+  ScopedSimdEnv env(value);
+  try {
+    integrate_direct_batch(generic_body(), mixed_tasks(1));
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+TEST(DirectBatch, SimdVariableIsCheckedBeforeWork) {
+  EXPECT_EQ(refusal("avx3"), "EPVIZ_SIMD=avx3: unknown; allowed: scalar, sse2, avx2, avx512");
+  for (SimdPath path : numerics::kSimdPaths) {
+    if (numerics::cpu_supports(path)) continue;
+    const std::string what = refusal(std::string(numerics::name(path)).c_str());
+    EXPECT_NE(what.find("this CPU lacks that instruction set"), std::string::npos) << what;
+  }
+  {
+    ScopedSimdEnv empty("");
+    EXPECT_EQ(numerics::chosen_simd_path(), numerics::widest_simd_path());
+  }
+  EXPECT_TRUE(numerics::cpu_supports(SimdPath::scalar));
+}
+
+TEST(DirectBatch, BadTasksAndWidthsAreRefused) {
+  auto tasks = mixed_tasks(3);
+  tasks[1].out_times = {1.0, 0.5};
+  EXPECT_THROW(integrate_direct_batch(generic_body(), tasks), std::invalid_argument);
+  tasks = mixed_tasks(3);
+  tasks[2].t_end = -1.0;
+  EXPECT_THROW(integrate_direct_batch(generic_body(), tasks), std::invalid_argument);
+  DirectBatchSettings settings;
+  settings.width = 3;
+  EXPECT_THROW(integrate_direct_batch(generic_body(), mixed_tasks(3), settings),
+               std::invalid_argument);
+}
+
+// Energy, |gamma|^2 and the area integral, which the steppers know nothing
+// of, stay within the tolerance's reach over every trajectory of a batch.
+TEST(DirectBatch, InvariantsAreConserved) {
+  const Body body = generic_body();
+  DirectBatchSettings settings;
+  settings.adaptive = tolerance(1e-11);
+  auto tasks = mixed_tasks(16);
+  const auto batch = integrate_direct_batch(body, tasks, settings);
+  for (std::size_t i = 0; i < tasks.size(); ++i) {
+    const auto& x0 = tasks[i].x0;
+    const auto& x1 = batch[i].x;
+    ASSERT_FALSE(batch[i].failure);
+    const Vector3d w0(x0[0], x0[1], x0[2]), g0(x0[3], x0[4], x0[5]);
+    const Vector3d w1(x1[0], x1[1], x1[2]), g1(x1[3], x1[4], x1[5]);
+    const Invariants a = invariants(body, Case::generic, w0, g0);
+    const Invariants b = invariants(body, Case::generic, w1, g1);
+    const Invariants scale = invariant_scales(body, Case::generic, w0, g0);
+    EXPECT_LT(std::abs(b.energy - a.energy) / scale.energy, 1e-8) << i;
+    EXPECT_LT(std::abs(b.area - a.area) / scale.area, 1e-8) << i;
+    EXPECT_LT(std::abs(b.gamma_norm2 - a.gamma_norm2) / scale.gamma_norm2, 1e-8) << i;
+    EXPECT_GT(batch[i].steps, 10);
+  }
+}
+
+// Two threads of W lanes each, taking chunks in turn: the same results, bit
+// for bit, as one batch (and so as each trajectory alone).
+TEST(DirectBatch, ParallelOverThreadsGivesTheSameResults) {
+  const auto tasks = mixed_tasks(300);
+  DirectBatchSettings settings;
+  settings.adaptive = tolerance(1e-8);
+  const auto serial = integrate_direct_batch(generic_body(), tasks, settings);
+  for (int threads : {1, 2, 3}) {
+    const auto parallel = integrate_direct_batch_parallel(generic_body(), tasks, settings, threads);
+    ASSERT_EQ(parallel.size(), tasks.size());
+    for (std::size_t i = 0; i < tasks.size(); ++i)
+      EXPECT_TRUE(identical(parallel[i], serial[i])) << threads << " threads, trajectory " << i;
+  }
+  EXPECT_THROW(integrate_direct_batch_parallel(generic_body(), tasks, settings, 0),
+               std::invalid_argument);
+  settings.width = 5;
+  EXPECT_THROW(integrate_direct_batch_parallel(generic_body(), tasks, settings),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace epviz::physics
