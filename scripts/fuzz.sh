@@ -17,7 +17,8 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 seconds=${1:-60}
 shift $(($# > 0 ? 1 : 0))
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_job_reader fuzz_simulate_options fuzz_protocol fuzz_sweep_reader)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_job_reader fuzz_simulate_options fuzz_protocol fuzz_sweep_reader
+  fuzz_manifest_reader fuzz_golden_reader)
 build=${EPVIZ_FUZZ_BUILD:-$root/build-fuzz}
 
 # The largest input each target is tried with: a job file can be long (and
@@ -28,6 +29,8 @@ max_len() {
     fuzz_sweep_reader) echo 65536 ;;
     fuzz_simulate_options) echo 4096 ;;
     fuzz_protocol) echo 65536 ;;
+    fuzz_manifest_reader) echo 16384 ;;
+    fuzz_golden_reader) echo 16384 ;;
     *) echo 4096 ;;
   esac
 }

@@ -27,10 +27,11 @@ stage_done "Release tests"
 sanitizers=${EPVIZ_SANITIZERS:-all}
 bash tests/sanitizers/run.sh "$sanitizers"
 stage_done "sanitizer passes"
-# libFuzzer on the job reader, simulate's options, the page protocol and the
-# sweep reader, from the committed corpora, 60 s each, two at a time; in the
+# libFuzzer on the job reader, simulate's options, the page protocol, the
+# sweep reader, shard manifests and golden PNGs, from the committed corpora,
+# 40 s each, two at a time; in the
 # ASan tree when the sanitizer pass built it, else in build-fuzz/.
 fuzz_build=build-fuzz
 case "$sanitizers" in all | asan) fuzz_build=build-asan ;; esac
-EPVIZ_FUZZ_BUILD=$fuzz_build bash scripts/fuzz.sh 60
+EPVIZ_FUZZ_BUILD=$fuzz_build bash scripts/fuzz.sh 40
 stage_done "fuzzing"

@@ -39,7 +39,9 @@ std::optional<PngSize> read_png_size(const std::filesystem::path& path) {
 std::optional<RgbaPixels> read_png_rgba(const std::filesystem::path& path,
                                         std::int64_t max_pixels) {
   const auto size = read_png_size(path);
-  if (!size || size->width * size->height > max_pixels) return std::nullopt;
+  // Divided, not multiplied: a header may claim 2^32 - 1 by 2^32 - 1.
+  if (!size || size->width < 1 || size->height < 1 || size->width > max_pixels / size->height)
+    return std::nullopt;
   std::ifstream in(path, std::ios::binary);
   const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
                                          std::istreambuf_iterator<char>());

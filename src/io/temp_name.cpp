@@ -32,8 +32,7 @@ std::string make_machine_token() {
   // other pids, even on the same host and boot.
   const std::string pid_namespace = fs::read_symlink("/proc/self/ns/pid", ec).string();
   const std::string identity = std::string(host) + '\n' +
-                               first_line("/proc/sys/kernel/random/boot_id") + '\n' +
-                               pid_namespace;
+                               first_line("/proc/sys/kernel/random/boot_id") + '\n' + pid_namespace;
   std::uint64_t hash = 14695981039346656037ull;  // FNV-1a, 64 bits
   for (unsigned char c : identity) hash = (hash ^ c) * 1099511628211ull;
   char text[17];

@@ -5,6 +5,8 @@
 #include <sys/stat.h>
 
 #include <fstream>
+#include <limits>
+#include <string>
 
 #include "io/png_reader.hpp"
 #include "io/png_writer.hpp"
@@ -45,6 +47,23 @@ TEST(PngReader, ImagesOverTheCapAreNotDecoded) {
   write_png_rgba(file, 8, 8, rgba);
   EXPECT_TRUE(read_png_rgba(file, 64));
   EXPECT_FALSE(read_png_rgba(file, 63));
+}
+
+TEST(PngReader, SizesWhoseProductOverflowsAreRefused) {
+  test::TempDir dir;
+  // 4294967295 x 4294967295 (the largest a header can hold): the product of
+  // the two does not fit in 64 bits, which UBSan reported before the check
+  // was a division. And zero by anything, which is no image.
+  for (const char* size : {"\xff\xff\xff\xff\xff\xff\xff\xff", "\0\0\0\0\0\0\0\x08"}) {
+    const auto file = dir / "claims.png";
+    std::string bytes("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR", 16);
+    bytes.append(size, 8);
+    bytes.append("\x08\x06\0\0\0", 5);
+    std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+    ASSERT_TRUE(read_png_size(file));
+    EXPECT_FALSE(read_png_rgba(file));
+    EXPECT_FALSE(read_png_rgba(file, std::numeric_limits<std::int64_t>::max()));
+  }
 }
 
 TEST(PngReader, AFifoIsNotOpened) {
