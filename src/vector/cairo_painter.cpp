@@ -28,7 +28,17 @@ void fill_triangles(cairo_t* cr, const render::DrawList& list) {
     }
     set_colour(cr, colour);
     cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
-    cairo_fill(cr);
+    if (colour.a < 1.0f) {
+      cairo_fill(cr);
+      continue;
+    }
+    // Opaque fills that touch (a colour bar's bands) would show hairline
+    // seams where a rasteriser antialiases both edges; a quarter pixel of
+    // their own colour around each closes them, as GL's multisampling does.
+    cairo_fill_preserve(cr);
+    cairo_set_line_width(cr, 0.5);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
+    cairo_stroke(cr);
   }
 }
 
