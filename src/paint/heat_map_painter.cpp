@@ -231,12 +231,15 @@ FigureDrawing draw_heat_map(const HeatMapSpec& spec, const ChartOptions& options
     list.add_text(label({b.x + font_px * 0.5f, (a.y + b.y) * 0.5f}, spec.missing, TextAnchor::left,
                         quiet_ink));
   }
-  // The colour bar: a strip per pixel row, low values at the bottom.
+  // The colour bar: 64 bands, low values at the bottom. Each band reaches
+  // down to the bar's bottom and the higher ones are drawn first, so that no
+  // edge between two bands lies on paper: a vector file's rasteriser would
+  // show one as a pale hairline.
   const Viewport& b = l.colour_bar;
   std::vector<render::ColouredVertex> strip;
   constexpr int kSteps = 64;
-  for (int k = 0; k < kSteps; ++k) {
-    const float y1 = float(b.y + b.height) - float(b.height) * float(k) / kSteps;
+  for (int k = kSteps - 1; k >= 0; --k) {
+    const float y1 = float(b.y + b.height);
     const float y0 = float(b.y + b.height) - float(b.height) * float(k + 1) / kSteps;
     const double v = l.lo + (l.hi - l.lo) * (double(k) + 0.5) / kSteps;
     const double value = spec.log_scale ? std::pow(10.0, v) : v;

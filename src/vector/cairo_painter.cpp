@@ -32,9 +32,9 @@ void fill_triangles(cairo_t* cr, const render::DrawList& list) {
       cairo_fill(cr);
       continue;
     }
-    // Opaque fills that touch (a colour bar's bands) would show hairline
-    // seams where a rasteriser antialiases both edges; a quarter pixel of
-    // their own colour around each closes them, as GL's multisampling does.
+    // Opaque fills that touch (the cells of a large heat map) show hairline
+    // seams where a rasteriser antialiases both edges, at some zooms; a
+    // quarter pixel of their own colour around each mostly closes them.
     cairo_fill_preserve(cr);
     cairo_set_line_width(cr, 0.5);
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
