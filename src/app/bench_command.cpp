@@ -373,10 +373,12 @@ int run_bench(const BenchRequest& request) {
   opts.quick = request.quick;
   if (!request.job.empty()) opts.custom = job_problem(request.job);
   opts.cases = parse_cases(request.cases, !request.job.empty());
+#ifdef EPVIZ_HAVE_RENDER
+  (void)vector::parse_figure_format(request.format);  // before --out is created
+#endif
   prepare_outputs(request);
 #ifdef EPVIZ_HAVE_RENDER
   (void)render::GlChoice(request.gl);  // the charts come after every study: checked before
-  (void)vector::parse_figure_format(request.format);
 #endif
   const auto t0 = std::chrono::steady_clock::now();
   const auto rows = run_studies(opts);

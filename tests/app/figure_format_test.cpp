@@ -50,5 +50,33 @@ TEST(FigureFormatOption, BenchWritesEveryChartAsSvg) {
   EXPECT_NE(ok.out.find(std::to_string(svgs) + " charts written"), std::string::npos) << ok.out;
 }
 
+// `merge --format pdf` writes the sweep's atlas as a PDF whose title is text,
+// and draws no PNG.
+TEST(FigureFormatOption, MergeWritesTheAtlasAsPdf) {
+  if (std::system("command -v pdftotext >/dev/null") != 0) GTEST_SKIP() << "no pdftotext";
+  TempDir dir;
+  const auto sweep = dir.write("small.sweep.json", R"({
+    "simulation": {"case": "generic", "t_end": 5, "samples": 5, "max_drift": 0.1},
+    "axes": [{"field": "method", "values": ["rk4", "midpoint"]},
+             {"field": "step", "values": [1.0, 0.25, 0.05]},
+             {"field": "energy", "values": [1.5, 10]}],
+    "atlas": [{"metric": "largest_stable:step", "x": "energy", "y": "method"}]})");
+  std::filesystem::create_directories(dir / "rows");
+  const auto s = run_epviz("sweep " + sweep.string() + " --out " +
+                               (dir / "rows/rows.jsonl").string() + " --shard 0/1 --quiet",
+                           dir);
+  ASSERT_EQ(s.exit_code, 0) << s.err;
+  const auto m = run_epviz("merge " + (dir / "rows").string() + " --format pdf", dir);
+  ASSERT_EQ(m.exit_code, 0) << m.err;
+  const auto pdf = dir / "rows/atlas_largest_stable_step_energy_method.pdf";
+  ASSERT_TRUE(std::filesystem::exists(pdf)) << m.out;
+  EXPECT_FALSE(std::filesystem::exists(dir / "rows/atlas_largest_stable_step_energy_method.png"));
+  const auto text = dir / "atlas.txt";
+  ASSERT_EQ(std::system(("pdftotext " + pdf.string() + " " + text.string()).c_str()), 0);
+  const std::string words = test::slurp(text);
+  for (const char* w : {"largest stable step", "energy", "method", "rk4", "midpoint"})
+    EXPECT_NE(words.find(w), std::string::npos) << w << " not in\n" << words;
+}
+
 }  // namespace
 }  // namespace epviz

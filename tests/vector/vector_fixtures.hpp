@@ -9,25 +9,17 @@
 #include <string>
 
 #include "chart/chart_spec.hpp"
+#include "paint/figure_fixtures.hpp"
 
 namespace epviz::testing {
 
-// A chart with two series on log-log axes, keyed labels in Unicode.
+// The paint tests' log-log chart of two series, its labels in Unicode.
 inline chart::Figure unicode_chart() {
-  chart::ChartSpec s;
+  chart::ChartSpec s = two_series();
   s.title = "Drift of γ over time";
   s.x_label = "time t / T₀";
   s.y_label = "|ΔΩ|² error";
-  s.log_x = s.log_y = true;
-  chart::ChartSeries a, b;
-  a.name = "rk4 (Ω₃ = 5)";
-  b.name = "gauss6";
-  for (int i = 0; i < 8; ++i) {
-    const double x = std::pow(10.0, -1.0 + 0.4 * i);
-    a.points.push_back({x, 1e-8 * std::pow(x, 1.5)});
-    b.points.push_back({x, 1e-12 * std::pow(x, 1.0)});
-  }
-  s.series = {a, b};
+  s.series[0].name = "rk4 (Ω₃ = 5)";
   return {"drift.png", s};
 }
 
