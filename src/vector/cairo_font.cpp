@@ -1,12 +1,26 @@
 #include "vector/cairo_font.hpp"
 
+#include <cairo-ft.h>
+
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace epviz::vector {
 namespace {
 
 constexpr const char* kFamily = "DejaVu Sans";
+
+// The family fontconfig found for kFamily: another one where DejaVu Sans is
+// not installed, which would give figures another layout than their PNGs.
+std::string resolved_family(cairo_t* cr) {
+  cairo_scaled_font_t* font = cairo_get_scaled_font(cr);
+  if (cairo_scaled_font_get_type(font) != CAIRO_FONT_TYPE_FT) return {};
+  const FT_Face face = cairo_ft_scaled_font_lock_face(font);
+  std::string family = face != nullptr && face->family_name != nullptr ? face->family_name : "";
+  cairo_ft_scaled_font_unlock_face(font);
+  return family;
+}
 
 }  // namespace
 
@@ -23,13 +37,14 @@ CairoFont::CairoFont(float px) : px_(px) {
   cairo_set_font_size(cr_, 1.0);
   cairo_font_extents_t unit;
   cairo_font_extents(cr_, &unit);
-  if (cairo_status(cr_) != CAIRO_STATUS_SUCCESS || !(unit.ascent + unit.descent > 0.0)) {
+  if (cairo_status(cr_) != CAIRO_STATUS_SUCCESS || !(unit.ascent + unit.descent > 0.0) ||
+      resolved_family(cr_) != kFamily) {
     cairo_destroy(cr_);
     cairo_surface_destroy(surface_);
     cairo_font_options_destroy(options_);
     throw std::runtime_error(
-        "cairo cannot measure the font DejaVu Sans for vector figures; install the Debian "
-        "package fonts-dejavu-core");
+        "no font for the text in vector figures: fontconfig finds no DejaVu Sans; install the "
+        "Debian package fonts-dejavu-core");
   }
   em_ = double(px) / (unit.ascent + unit.descent);
   cairo_set_font_size(cr_, em_);
