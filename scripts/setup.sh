@@ -27,18 +27,18 @@ esac
 # libegl-mesa0 is the EGL driver libegl1 dispatches to; without it only OSMesa draws.
 runtime_packages=(
   libegl1 libegl-mesa0 libosmesa6 ffmpeg fonts-dejavu-core
-  libturbojpeg0 libstb0 zlib1g libgsl27 libgslcblas0
+  libturbojpeg0 libstb0 zlib1g libgsl27 libgslcblas0 libcairo2
 )
 build_packages=(
   build-essential cmake ninja-build pkg-config lld
   libeigen3-dev libboost-dev
   libcli11-dev nlohmann-json3-dev
   libosmesa6-dev libgl-dev libegl-dev libglm-dev libimgui-dev libstb-dev zlib1g-dev
-  libturbojpeg0-dev libgsl-dev
+  libturbojpeg0-dev libgsl-dev libcairo2-dev
 )
 test_packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
-  python3-scipy
+  python3-scipy poppler-utils librsvg2-bin
   chromium
   clang-format python3 clang libclang-rt-14-dev
   slurmctld slurmd slurm-client munge

@@ -31,6 +31,8 @@
 #include "paint/figure_painter.hpp"
 #include "render/gl_choice.hpp"
 #include "study/bench_figures.hpp"
+#include "vector/figure_format.hpp"
+#include "vector/vector_figure.hpp"
 #endif
 
 namespace epviz::app {
@@ -330,11 +332,18 @@ nlohmann::json bench_document(const std::vector<StudyRow>& rows, bool quick, dou
 }
 
 #ifdef EPVIZ_HAVE_RENDER
-// Draws the bench's figures with epviz's own offscreen renderer, one PNG each.
+// Draws the bench's figures with epviz's own offscreen renderer, one PNG each,
+// or with cairo, one SVG or PDF each (no GL needed).
 std::size_t write_figures(const std::vector<StudyRow>& rows, const fs::path& out_dir,
-                          const std::string& gl) {
+                          const std::string& gl, vector::FigureFormat format) {
   const auto figures = bench_figures(rows);
   if (figures.empty()) return 0;
+  if (format != vector::FigureFormat::png) {
+    for (const auto& f : figures)
+      vector::write_vector_figure(out_dir / vector::figure_file_name(f.file_name, format), f,
+                                  format);
+    return figures.size();
+  }
   const auto context = render::GlChoice(gl).open();
   for (const auto& figure : figures) {
     const auto image = paint::paint_figure(*context, figure);
@@ -351,7 +360,8 @@ void write_outputs(const BenchRequest& request, const std::vector<StudyRow>& row
   if (request.out.empty()) return;
   io::write_file_atomically(fs::path(request.out) / "bench.json", text);
 #ifdef EPVIZ_HAVE_RENDER
-  const std::size_t n = write_figures(rows, request.out, request.gl);
+  const std::size_t n =
+      write_figures(rows, request.out, request.gl, vector::parse_figure_format(request.format));
   std::printf("%zu charts written to %s\n", n, request.out.c_str());
 #endif
 }
@@ -363,6 +373,9 @@ int run_bench(const BenchRequest& request) {
   opts.quick = request.quick;
   if (!request.job.empty()) opts.custom = job_problem(request.job);
   opts.cases = parse_cases(request.cases, !request.job.empty());
+#ifdef EPVIZ_HAVE_RENDER
+  (void)vector::parse_figure_format(request.format);  // before --out is created
+#endif
   prepare_outputs(request);
 #ifdef EPVIZ_HAVE_RENDER
   (void)render::GlChoice(request.gl);  // the charts come after every study: checked before
@@ -388,6 +401,9 @@ std::function<int()> add_bench_command(CLI::App& app) {
   cmd->add_option("--out", request->out,
                   "create this directory and write bench.json and the charts (PNG) there");
   add_gl_option(*cmd, request->gl, "for the charts");
+  cmd->add_option("--format", request->format,
+                  "the charts' files with --out: png (GL), svg or pdf (cairo, vector; no GL "
+                  "needed) (default png)");
   cmd->add_option("--cases", request->cases,
                   "comma-separated presets for the work-precision and drift studies (default all; "
                   "none with --job unless named; custom: the --job body)");

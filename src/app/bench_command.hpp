@@ -18,11 +18,12 @@ std::function<int()> add_bench_command(CLI::App& app);
 // (render_jobs/bench_figures.json: `epviz render` draws the bench's figures).
 struct BenchRequest {
   bool quick = false;
-  std::string json;   // write the rows here ("" for none)
-  std::string out;    // directory for bench.json and the charts ("" for none)
-  std::string cases;  // comma-separated presets ("" for all)
-  std::string gl;     // GL backend for the charts ("" for $EPVIZ_GL or auto)
-  std::string job;    // a render job whose simulation is a body to study too ("" for none)
+  std::string json;    // write the rows here ("" for none)
+  std::string out;     // directory for bench.json and the charts ("" for none)
+  std::string cases;   // comma-separated presets ("" for all)
+  std::string gl;      // GL backend for the charts ("" for $EPVIZ_GL or auto)
+  std::string format;  // the charts' files: png, svg or pdf ("" for png)
+  std::string job;     // a render job whose simulation is a body to study too ("" for none)
 };
 int run_bench(const BenchRequest& request);
 

@@ -18,6 +18,8 @@
 #ifdef EPVIZ_HAVE_RENDER
 #include "paint/figure_painter.hpp"
 #include "render/gl_choice.hpp"
+#include "vector/figure_format.hpp"
+#include "vector/vector_figure.hpp"
 #endif
 
 namespace epviz::app {
@@ -27,31 +29,38 @@ namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
 struct MergeOptions {
-  std::string dir, out, gl;
+  std::string dir, out, gl, format;
   std::vector<std::string> atlases;
 };
 
 void draw_atlases(const std::vector<Json>& rows, const std::vector<sweep::AtlasRequest>& requests,
-                  const fs::path& out_dir, const std::string& gl) {
+                  const fs::path& out_dir, const MergeOptions& o) {
   if (requests.empty()) return;
   std::vector<sweep::AtlasFigure> figures;
   for (const auto& q : requests)
     for (auto& f : sweep::atlas_figures(rows, q)) figures.push_back(std::move(f));
 #ifdef EPVIZ_HAVE_RENDER
-  const auto context = render::GlChoice(gl).open();
+  const auto format = vector::parse_figure_format(o.format);
+  std::unique_ptr<render::GlContext> context;  // PNG only: vector files need no GL
+  if (format == vector::FigureFormat::png) context = render::GlChoice(o.gl).open();
   for (const auto& f : figures) {
     paint::ChartOptions options;
     options.width = 1280;
     options.height = 900;
     // As a figure: no taller than the grid needs (a few rows leave no blank band).
-    const auto image = paint::paint_figure(*context, {f.file_name, f.heat_map}, options);
-    const fs::path path = out_dir / f.file_name;
-    io::write_png_rgba(path, image.width, image.height, image.pixels);
+    const chart::Figure figure{f.file_name, f.heat_map};
+    const fs::path path = out_dir / vector::figure_file_name(f.file_name, format);
+    if (context) {
+      const auto image = paint::paint_figure(*context, figure, options);
+      io::write_png_rgba(path, image.width, image.height, image.pixels);
+    } else {
+      vector::write_vector_figure(path, figure, format, options);
+    }
     std::printf("  atlas %s\n", path.string().c_str());
   }
 #else
   (void)out_dir;
-  (void)gl;
+  (void)o;
   throw UsageError("--atlas: this epviz was built without the renderer (EPVIZ_BUILD_RENDER=OFF)");
 #endif
 }
@@ -79,7 +88,7 @@ void merge_sweep(const shard::Batch& b, const std::vector<Json>& rows, const fs:
   std::vector<sweep::AtlasRequest> requests;
   for (const auto& a : o.atlases) requests.push_back(sweep::parse_atlas_option(a));
   if (o.atlases.empty()) requests = saved_atlases(any, b.hash);
-  draw_atlases(rows, requests, out_dir, o.gl);
+  draw_atlases(rows, requests, out_dir, o);
 }
 
 void merge_render(const shard::Batch& b, const fs::path& dir, const fs::path& out_dir) {
@@ -102,6 +111,7 @@ void merge_render(const shard::Batch& b, const fs::path& dir, const fs::path& ou
 int run_merge(const MergeOptions& o) {
 #ifdef EPVIZ_HAVE_RENDER
   (void)render::GlChoice(o.gl);  // an unknown backend is refused before anything is merged
+  (void)vector::parse_figure_format(o.format);
 #endif
   const fs::path dir = o.dir;
   std::error_code ec;
@@ -158,6 +168,9 @@ std::function<int()> add_merge_command(CLI::App& app) {
                   "sweep file's \"atlas\" list)")
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   add_gl_option(*cmd, o->gl, "for atlases");
+  cmd->add_option("--format", o->format,
+                  "the atlases' files: png (GL), svg or pdf (cairo, vector; no GL needed) "
+                  "(default png)");
   return [o] { return run_merge(*o); };
 }
 

@@ -4,8 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "paint/figure_drawing.hpp"
 #include "render/draw_list.hpp"
-#include "render/renderer.hpp"
 
 namespace epviz::paint {
 namespace {
@@ -253,29 +253,24 @@ ChartLayout chart_layout(const ChartSpec& spec, int width, int height, const Cha
   return l;
 }
 
-render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec,
-                              const ChartOptions& requested) {
-  context.make_current();
+FigureDrawing draw_chart(const ChartSpec& spec, const ChartOptions& requested,
+                         const ChartFont& font) {
   // Keep the requested font size, but grow the picture downwards when a long
   // legend (many series) would not fit beside the plot: nothing is cut off.
   ChartOptions options = requested;
-  options.font_px = chart_font_px(requested);
-  render::Renderer renderer(context, renderer_options(options));
-  const ChartFont font = chart_font(*renderer.overlay());
   const float font_px = font.px;
   ChartLayout l = chart_layout(spec, options.width, options.height, font);
   const int legend_bottom = l.legend.y + l.legend.height + int(font_px);
   if (l.legend_outside && legend_bottom > options.height) {
     options.height = legend_bottom;
-    renderer.resize(options.width, options.height);
     l = chart_layout(spec, options.width, options.height, font);
   }
+  FigureDrawing drawing{options.width, options.height, {}};
   const Viewport& a = l.plot_area;
   const float line = font_px * 1.35f;
   const float tick = std::max(4.0f, font_px * 0.45f);
   const float stroke = std::max(1.5f, font_px * 0.14f);
 
-  renderer.begin_frame(kPaper);
   DrawList axes;
   const float x0 = float(a.x), x1 = float(a.x + a.width), y0 = float(a.y),
               y1 = float(a.y + a.height);
@@ -316,7 +311,7 @@ render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec,
   if (!spec.x_label.empty())
     axes.add_text(
         label({(x0 + x1) * 0.5f, y1 + font_px * 0.45f + line}, spec.x_label, TextAnchor::top));
-  renderer.draw_2d(axes);
+  drawing.layers.push_back({std::move(axes), std::nullopt});
 
   // Data, clipped to the plot area: lines first, then all markers on top.
   DrawList lines, markers;
@@ -349,10 +344,10 @@ render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec,
       }
     }
   }
-  renderer.draw_2d(lines, &a);
+  drawing.layers.push_back({std::move(lines), a});
   const Viewport marker_clip =
       a.inset(-int(marker_r) - 2, -int(marker_r) - 2, -int(marker_r) - 2, -int(marker_r) - 2);
-  renderer.draw_2d(markers, &marker_clip);
+  drawing.layers.push_back({std::move(markers), marker_clip});
 
   if (!spec.series.empty()) {
     DrawList legend;
@@ -378,9 +373,9 @@ render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec,
                   colour);
       legend.add_text(label({lx1 + font_px * 0.6f, cy}, r.name, TextAnchor::left));
     }
-    renderer.draw_2d(legend);
+    drawing.layers.push_back({std::move(legend), std::nullopt});
   }
-  return renderer.finish_frame();
+  return drawing;
 }
 
 }  // namespace epviz::paint

@@ -43,8 +43,9 @@ struct ChartLayout {
 // The layout paint_chart uses for `spec` at width x height with the labels in `font`.
 ChartLayout chart_layout(const ChartSpec& spec, int width, int height, const ChartFont& font);
 
-// Renders a chart; `context` must be current (any size). The picture grows
-// downwards when a legend beside the plot is taller than it.
+// Renders a chart (draw_chart in figure_drawing.hpp) with GL; `context` must be
+// current (any size). The picture grows downwards when a legend beside the
+// plot is taller than it.
 render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec,
                               const ChartOptions& options = {});
 

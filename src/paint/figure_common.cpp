@@ -13,11 +13,6 @@ float chart_font_px(const ChartOptions& options) {
   return std::clamp(float(options.height) / 40.0f, 13.0f, 30.0f);
 }
 
-ChartFont chart_font(const render::ImGuiOverlay& overlay) {
-  return {overlay.label_font_px(),
-          [&overlay](const std::string& text) { return overlay.text_size(text).x; }};
-}
-
 std::string decade_label(int exponent) {
   if (exponent == 0) return "1";
   return "1e" + std::to_string(exponent);
@@ -82,18 +77,6 @@ render::TextLabel label(glm::vec2 at, std::string text, render::TextAnchor ancho
   l.colour = colour;
   l.anchor = anchor;
   return l;
-}
-
-render::RendererOptions renderer_options(const ChartOptions& options) {
-  render::RendererOptions ro;
-  ro.width = options.width;
-  ro.height = options.height;
-  ro.msaa_samples = options.msaa_samples;
-  ro.overlay = true;
-  ro.overlay_options.builtin_font = options.builtin_font;
-  ro.overlay_options.font_size_px = chart_font_px(options);
-  ro.overlay_options.light_style = true;
-  return ro;
 }
 
 }  // namespace epviz::paint

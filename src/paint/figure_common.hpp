@@ -1,7 +1,8 @@
 #pragma once
 // What the figure painters (chart, table, heat map) share: the options, the
 // labels' font as their layouts measure it, the page's colours, axis ranges
-// and ticks, and the renderer they draw with.
+// and ticks. No GL here: the GL painter (figure_painter.hpp) and the vector
+// painter (vector/) draw the same layouts.
 #include <functional>
 #include <limits>
 #include <string>
@@ -12,8 +13,6 @@
 
 #include "chart/chart_spec.hpp"
 #include "render/draw_list.hpp"
-#include "render/gui_overlay.hpp"
-#include "render/renderer.hpp"
 
 namespace epviz::paint {
 
@@ -39,13 +38,12 @@ struct ChartOptions {
 float chart_font_px(const ChartOptions& options);
 
 // The labels' font as a layout needs it: the height of a line of text, and
-// how wide a text is drawn, measured on the font the labels are drawn with.
+// how wide a text is drawn, measured on the font the labels are drawn with
+// (the GL painter's overlay, or cairo for vector files).
 struct ChartFont {
   float px = 13.0f;
   std::function<float(const std::string&)> width;
 };
-// The font `overlay` draws labels with; the overlay must outlive the result.
-ChartFont chart_font(const render::ImGuiOverlay& overlay);
 
 // The log10 decade labels: "1" for 1e0, else "1e-8" style.
 std::string decade_label(int exponent);
@@ -78,8 +76,5 @@ std::vector<Tick> axis_ticks(double lo, double hi, bool log_axis, int max_labels
 
 render::TextLabel label(glm::vec2 at, std::string text, render::TextAnchor anchor,
                         glm::vec4 colour = kInk);
-
-// A renderer for a figure: light style, the options' font and size.
-render::RendererOptions renderer_options(const ChartOptions& options);
 
 }  // namespace epviz::paint

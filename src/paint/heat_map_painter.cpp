@@ -4,9 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "paint/figure_drawing.hpp"
 #include "render/colour_map.hpp"
 #include "render/draw_list.hpp"
-#include "render/renderer.hpp"
 
 namespace epviz::paint {
 namespace {
@@ -146,22 +146,16 @@ std::optional<glm::vec4> heat_map_colour(const HeatMapSpec& spec, const HeatMapL
   return heat_map()(float(t), 1.0f);
 }
 
-namespace {
-
-// `fit_grid`: the picture no taller than the grid needs.
-render::RgbaImage draw_heat_map(render::GlContext& context, const HeatMapSpec& spec,
-                                const ChartOptions& options, bool fit_grid) {
-  context.make_current();
-  render::Renderer renderer(context, renderer_options(options));
-  const ChartFont font = chart_font(*renderer.overlay());
+FigureDrawing draw_heat_map(const HeatMapSpec& spec, const ChartOptions& options,
+                            const ChartFont& font, bool fit_grid) {
   const float font_px = font.px;
   const float line = font_px * 1.35f;
   HeatMapLayout l = heat_map_layout(spec, options.width, options.height, font);
+  FigureDrawing drawing{options.width, options.height, {}};
   if (fit_grid && l.natural_height < options.height) {
-    renderer.resize(options.width, l.natural_height);
+    drawing.height = l.natural_height;
     l = heat_map_layout(spec, options.width, l.natural_height, font);
   }
-  renderer.begin_frame(kPaper);
   DrawList list;
   if (!spec.title.empty())
     list.add_text(
@@ -237,12 +231,15 @@ render::RgbaImage draw_heat_map(render::GlContext& context, const HeatMapSpec& s
     list.add_text(label({b.x + font_px * 0.5f, (a.y + b.y) * 0.5f}, spec.missing, TextAnchor::left,
                         quiet_ink));
   }
-  // The colour bar: a strip per pixel row, low values at the bottom.
+  // The colour bar: 64 bands, low values at the bottom. Each band reaches
+  // down to the bar's bottom and the higher ones are drawn first, so that no
+  // edge between two bands lies on paper: a vector file's rasteriser would
+  // show one as a pale hairline.
   const Viewport& b = l.colour_bar;
   std::vector<render::ColouredVertex> strip;
   constexpr int kSteps = 64;
-  for (int k = 0; k < kSteps; ++k) {
-    const float y1 = float(b.y + b.height) - float(b.height) * float(k) / kSteps;
+  for (int k = kSteps - 1; k >= 0; --k) {
+    const float y1 = float(b.y + b.height);
     const float y0 = float(b.y + b.height) - float(b.height) * float(k + 1) / kSteps;
     const double v = l.lo + (l.hi - l.lo) * (double(k) + 0.5) / kSteps;
     const double value = spec.log_scale ? std::pow(10.0, v) : v;
@@ -268,20 +265,8 @@ render::RgbaImage draw_heat_map(render::GlContext& context, const HeatMapSpec& s
   }
   list.add_text(
       label({float(b.x), float(b.y) - font_px * 0.9f}, spec.value_label, TextAnchor::bottom_left));
-  renderer.draw_2d(list);
-  return renderer.finish_frame();
-}
-
-}  // namespace
-
-render::RgbaImage paint_heat_map(render::GlContext& context, const HeatMapSpec& spec,
-                                 const ChartOptions& options) {
-  return draw_heat_map(context, spec, options, false);
-}
-
-render::RgbaImage paint_heat_map_fitted(render::GlContext& context, const HeatMapSpec& spec,
-                                        const ChartOptions& options) {
-  return draw_heat_map(context, spec, options, true);
+  drawing.layers.push_back({std::move(list), std::nullopt});
+  return drawing;
 }
 
 }  // namespace epviz::paint

@@ -40,7 +40,8 @@ HeatMapLayout heat_map_layout(const HeatMapSpec& spec, int width, int height,
 std::optional<glm::vec4> heat_map_colour(const HeatMapSpec& spec, const HeatMapLayout& layout,
                                          double value);
 
-// Renders a heat map; `context` must be current (any size).
+// Renders a heat map (draw_heat_map in figure_drawing.hpp) with GL; `context`
+// must be current (any size).
 render::RgbaImage paint_heat_map(render::GlContext& context, const HeatMapSpec& spec,
                                  const ChartOptions& options = {});
 // The same, in a picture no taller than the grid needs (HeatMapLayout::natural_height),

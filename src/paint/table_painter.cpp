@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "paint/figure_drawing.hpp"
 #include "render/draw_list.hpp"
-#include "render/renderer.hpp"
 
 namespace epviz::paint {
 namespace {
@@ -15,11 +15,8 @@ using render::TextAnchor;
 
 }  // namespace
 
-render::RgbaImage paint_table(render::GlContext& context, const TableSpec& spec,
-                              const ChartOptions& options) {
-  context.make_current();
-  render::Renderer renderer(context, renderer_options(options));
-  const ChartFont font = chart_font(*renderer.overlay());
+FigureDrawing draw_table(const TableSpec& spec, const ChartOptions& options,
+                         const ChartFont& font) {
   const float font_px = font.px;
   const float line = font_px * 1.5f;
   std::size_t columns = spec.header.size();
@@ -43,7 +40,6 @@ render::RgbaImage paint_table(render::GlContext& context, const TableSpec& spec,
     for (float& w : widths) w *= avail / total;
   total = std::min(total, avail);
 
-  renderer.begin_frame(kPaper);
   DrawList list;
   const float left = std::max(margin, (float(options.width) - total) * 0.5f);
   float y = font_px * 0.8f;
@@ -83,8 +79,9 @@ render::RgbaImage paint_table(render::GlContext& context, const TableSpec& spec,
     list.add_text(
         label({left, y + font_px * 0.4f}, more, TextAnchor::top_left, {0.4f, 0.4f, 0.4f, 1.0f}));
   }
-  renderer.draw_2d(list);
-  return renderer.finish_frame();
+  FigureDrawing drawing{options.width, options.height, {}};
+  drawing.layers.push_back({std::move(list), std::nullopt});
+  return drawing;
 }
 
 }  // namespace epviz::paint

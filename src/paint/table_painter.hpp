@@ -8,8 +8,9 @@
 
 namespace epviz::paint {
 
-// Renders a table; `context` must be current (any size). Rows that do not fit
-// the picture's height are left out and counted under the last rule.
+// Renders a table (draw_table in figure_drawing.hpp) with GL; `context` must be
+// current (any size). Rows that do not fit the picture's height are left out
+// and counted under the last rule.
 render::RgbaImage paint_table(render::GlContext& context, const TableSpec& spec,
                               const ChartOptions& options = {});
 

@@ -45,6 +45,23 @@ std::filesystem::path default_font_file(bool& builtin) {
       "TTF file (or to 'builtin' for ImGui's bitmap font, which renders differently)");
 }
 
+// The characters a label may use beyond ImGui's default (Latin-1): axis
+// titles and legends name physical quantities (γ, Ω, ω₃, 10⁻⁸, ≤, −, →).
+// Only the glyphs the font has are baked.
+const ImWchar* label_glyph_ranges() {
+  static const ImWchar ranges[] = {
+      0x0020, 0x00FF,  // Basic Latin, Latin-1 (², ³, ·, °, ±, ×)
+      0x0370, 0x03FF,  // Greek
+      0x2010, 0x2044,  // dashes, quotes, bullets, primes, fraction slash
+      0x2070, 0x209F,  // superscripts and subscripts
+      0x2100, 0x214F,  // letterlike symbols (ℏ, Å)
+      0x2190, 0x21FF,  // arrows
+      0x2200, 0x22FF,  // mathematical operators (−, ≈, ≤, ∞, ∂)
+      0,
+  };
+  return ranges;
+}
+
 ImU32 to_imgui_colour(const glm::vec4& c) {
   return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, c.a));
 }
@@ -85,7 +102,8 @@ ImGuiOverlay::ImGuiOverlay(const OverlayOptions& options) : options_(options) {
   if (!builtin) {
     std::error_code error;
     if (std::filesystem::is_regular_file(file, error))
-      font_ = io.Fonts->AddFontFromFileTTF(file.c_str(), options.font_size_px);
+      font_ = io.Fonts->AddFontFromFileTTF(file.c_str(), options.font_size_px, nullptr,
+                                           label_glyph_ranges());
     if (font_ == nullptr) {
       ImGui::DestroyContext(context_);
       throw std::runtime_error("cannot load the font '" + file.string() +

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "paint/figure_common.hpp"
+#include "paint/figure_painter.hpp"
 #include "render/gui_overlay.hpp"
 #include "render/render_test_support.hpp"
 

@@ -1,0 +1,124 @@
+#include "vector/cairo_painter.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "render/gui_overlay.hpp"
+
+namespace epviz::vector {
+namespace {
+
+void set_colour(cairo_t* cr, const glm::vec4& c) {
+  cairo_set_source_rgba(cr, double(c.r), double(c.g), double(c.b), double(c.a));
+}
+
+// Consecutive triangles of one colour are filled as one path: the two halves
+// of a rectangle (or a translucent band) then show no seam and no overlap.
+void fill_triangles(cairo_t* cr, const render::DrawList& list) {
+  const auto& v = list.triangles();
+  std::size_t i = 0;
+  while (i + 2 < v.size()) {
+    const glm::vec4 colour = v[i].colour;
+    cairo_new_path(cr);
+    for (; i + 2 < v.size() && v[i].colour == colour; i += 3) {
+      cairo_move_to(cr, v[i].position.x, v[i].position.y);
+      cairo_line_to(cr, v[i + 1].position.x, v[i + 1].position.y);
+      cairo_line_to(cr, v[i + 2].position.x, v[i + 2].position.y);
+      cairo_close_path(cr);
+    }
+    set_colour(cr, colour);
+    cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+    if (colour.a < 1.0f) {
+      cairo_fill(cr);
+      continue;
+    }
+    // Opaque fills that touch (the cells of a large heat map) show hairline
+    // seams where a rasteriser antialiases both edges, at some zooms; a
+    // quarter pixel of their own colour around each mostly closes them.
+    cairo_fill_preserve(cr);
+    cairo_set_line_width(cr, 0.5);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
+    cairo_stroke(cr);
+  }
+}
+
+void stroke_polylines(cairo_t* cr, const render::DrawList& list) {
+  const auto& v = list.line_vertices();
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+  for (const auto& p : list.polylines()) {
+    cairo_new_path(cr);
+    for (std::size_t k = 0; k < p.count; ++k) {
+      const glm::vec3& at = v[p.first + k].position;
+      if (k == 0)
+        cairo_move_to(cr, at.x, at.y);
+      else
+        cairo_line_to(cr, at.x, at.y);
+    }
+    if (p.closed) cairo_close_path(cr);
+    set_colour(cr, v[p.first].colour);
+    cairo_set_line_width(cr, p.width_px);
+    cairo_stroke(cr);
+  }
+}
+
+void draw_markers(cairo_t* cr, const render::DrawList& list) {
+  for (const auto& m : list.markers()) {
+    // radius_px is the outer radius, outline included.
+    const double r = m.radius_px, w = m.outline_px;
+    cairo_new_path(cr);
+    cairo_arc(cr, m.position.x, m.position.y, r - w * 0.5, 0.0, 2.0 * std::numbers::pi);
+    set_colour(cr, m.fill);
+    if (w > 0.0) {
+      cairo_fill_preserve(cr);
+      set_colour(cr, m.outline);
+      cairo_set_line_width(cr, w);
+      cairo_stroke(cr);
+    } else {
+      cairo_fill(cr);
+    }
+  }
+}
+
+void draw_text(cairo_t* cr, const render::TextLabel& label, const CairoFont& font) {
+  if (label.text.empty()) return;
+  const glm::vec2 size{font.width(label.text), font.px()};
+  const glm::vec2 corner =
+      render::anchored_top_left(glm::vec2(label.position) + label.offset_px, size, label.anchor);
+  // Whole pixels, as the overlay places labels.
+  const glm::vec2 at{std::round(corner.x), std::round(corner.y)};
+  if (label.background.a > 0.0f) {
+    const float pad = 3.0f;
+    cairo_rectangle(cr, at.x - pad, at.y - pad + 1.0f, size.x + 2.0f * pad,
+                    size.y + 2.0f * pad - 2.0f);
+    set_colour(cr, label.background);
+    cairo_fill(cr);
+  }
+  set_colour(cr, label.colour);
+  cairo_move_to(cr, at.x, at.y + font.baseline());
+  cairo_show_text(cr, label.text.c_str());
+}
+
+}  // namespace
+
+void paint_drawing(cairo_t* cr, const paint::FigureDrawing& drawing, const CairoFont& font) {
+  set_colour(cr, paint::kPaper);
+  cairo_paint(cr);
+  for (const auto& layer : drawing.layers) {
+    cairo_save(cr);
+    if (layer.clip) {
+      const auto& c = *layer.clip;
+      cairo_rectangle(cr, c.x, c.y, c.width, c.height);
+      cairo_clip(cr);
+    }
+    fill_triangles(cr, layer.list);
+    stroke_polylines(cr, layer.list);
+    draw_markers(cr, layer.list);
+    cairo_restore(cr);
+  }
+  font.select(cr);
+  for (const auto& layer : drawing.layers)
+    for (const auto& label : layer.list.labels()) draw_text(cr, label, font);
+}
+
+}  // namespace epviz::vector

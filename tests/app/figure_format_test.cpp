@@ -1,0 +1,82 @@
+// --format of `epviz bench` and `epviz merge`: a bad value is refused before
+// any work; `bench --format svg` writes every chart as a well-formed SVG and
+// no PNG.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include "support/cli.hpp"
+
+namespace epviz {
+namespace {
+
+using test::run_epviz;
+using test::TempDir;
+
+TEST(FigureFormatOption, BadValueIsRefusedBeforeAnyWork) {
+  TempDir dir;
+  const auto bench = run_epviz("bench --quick --format eps --out " + (dir / "o").string(), dir);
+  test::expect_bad_input(bench,
+                         "--format: 'eps' is not a figure format (expected png, svg or pdf)");
+  EXPECT_EQ(bench.err.find("work-precision"), std::string::npos) << "a study ran: " << bench.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "o"));
+  test::expect_bad_input(run_epviz("merge " + dir.path().string() + " --format jpg", dir),
+                         "--format: 'jpg'");
+}
+
+TEST(FigureFormatOption, BenchWritesEveryChartAsSvg) {
+  if (std::system("command -v python3 >/dev/null") != 0) GTEST_SKIP() << "no python3";
+  TempDir dir;
+  const auto out = dir / "charts";
+  const auto r = run_epviz(
+      "bench --quick --cases euler --format svg --gl nonsense-unused --out " + out.string(), dir);
+  ASSERT_EQ(r.exit_code, 2) << "--gl is still checked: " << r.err;
+  const auto ok = run_epviz("bench --quick --cases euler --format svg --out " + out.string(), dir);
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  int svgs = 0;
+  for (const auto& e : std::filesystem::directory_iterator(out)) {
+    const auto name = e.path().filename().string();
+    if (name == "bench.json") continue;
+    EXPECT_EQ(e.path().extension(), ".svg") << name;
+    const std::string parse =
+        "python3 -c 'import sys, xml.dom.minidom; xml.dom.minidom.parse(sys.argv[1])' '" +
+        e.path().string() + "' 2>&1";
+    EXPECT_EQ(std::system(parse.c_str()), 0) << name << " is not well-formed XML";
+    ++svgs;
+  }
+  EXPECT_GE(svgs, 5);
+  EXPECT_NE(ok.out.find(std::to_string(svgs) + " charts written"), std::string::npos) << ok.out;
+}
+
+// `merge --format pdf` writes the sweep's atlas as a PDF whose title is text,
+// and draws no PNG.
+TEST(FigureFormatOption, MergeWritesTheAtlasAsPdf) {
+  if (std::system("command -v pdftotext >/dev/null") != 0) GTEST_SKIP() << "no pdftotext";
+  TempDir dir;
+  const auto sweep = dir.write("small.sweep.json", R"({
+    "simulation": {"case": "generic", "t_end": 5, "samples": 5, "max_drift": 0.1},
+    "axes": [{"field": "method", "values": ["rk4", "midpoint"]},
+             {"field": "step", "values": [1.0, 0.25, 0.05]},
+             {"field": "energy", "values": [1.5, 10]}],
+    "atlas": [{"metric": "largest_stable:step", "x": "energy", "y": "method"}]})");
+  std::filesystem::create_directories(dir / "rows");
+  const auto s = run_epviz("sweep " + sweep.string() + " --out " +
+                               (dir / "rows/rows.jsonl").string() + " --shard 0/1 --quiet",
+                           dir);
+  ASSERT_EQ(s.exit_code, 0) << s.err;
+  const auto m = run_epviz("merge " + (dir / "rows").string() + " --format pdf", dir);
+  ASSERT_EQ(m.exit_code, 0) << m.err;
+  const auto pdf = dir / "rows/atlas_largest_stable_step_energy_method.pdf";
+  ASSERT_TRUE(std::filesystem::exists(pdf)) << m.out;
+  EXPECT_FALSE(std::filesystem::exists(dir / "rows/atlas_largest_stable_step_energy_method.png"));
+  const auto text = dir / "atlas.txt";
+  ASSERT_EQ(std::system(("pdftotext " + pdf.string() + " " + text.string()).c_str()), 0);
+  const std::string words = test::slurp(text);
+  for (const char* w : {"largest stable step", "energy", "method", "rk4", "midpoint"})
+    EXPECT_NE(words.find(w), std::string::npos) << w << " not in\n" << words;
+}
+
+}  // namespace
+}  // namespace epviz
