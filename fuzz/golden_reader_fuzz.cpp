@@ -39,7 +39,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (image) {
     if (!header || image->width != header->width || image->height != header->height) std::abort();
     if (std::int64_t(image->width) * image->height > kCap) std::abort();
-    if (image->rgba.size() != std::size_t(image->width) * std::size_t(image->height) * 4) std::abort();
+    if (image->rgba.size() != std::size_t(image->width) * std::size_t(image->height) * 4)
+      std::abort();
   }
   return 0;
 }

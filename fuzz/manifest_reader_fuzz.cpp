@@ -25,7 +25,8 @@ using namespace epviz;
 // shard file it may name.
 const fs::path& folder() {
   static const fs::path dir = [] {
-    const fs::path d = fs::temp_directory_path() / ("epviz-fuzz-manifest-" + std::to_string(::getpid()));
+    const fs::path d =
+        fs::temp_directory_path() / ("epviz-fuzz-manifest-" + std::to_string(::getpid()));
     fs::create_directories(d);
     std::ofstream(d / "rows.shard-0-of-2.jsonl") << "{\"index\":0}\n";
     return d;

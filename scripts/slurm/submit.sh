@@ -1,7 +1,9 @@
 #!/bin/bash
 # Submits a sharded sweep or render as a Slurm job array and the merge that
-# runs once every task has succeeded (--dependency=afterok). Prints the two
-# job ids, array first.
+# runs once every task has ended, whether it succeeded or not
+# (--dependency=afterany): the merge names what is missing and, with
+# --resubmit, writes OUTDIR/resubmit.sh, which submits again only the failed
+# shards and then the merge. Prints the two job ids, array first.
 #
 #   scripts/slurm/submit.sh sweep render_jobs/chaos_map.sweep.json results/ 8
 #   scripts/slurm/submit.sh render render_jobs/generic.json frames/ 4 --format mp4
@@ -26,7 +28,7 @@ array=$(sbatch --parsable ${SBATCH_ARGS:-} --array=0-$((shards - 1)) --chdir="$P
   "$here/$kind.sbatch" "$file" "$out" "$@")
 array=${array%%;*}
 # shellcheck disable=SC2086
-merge=$(sbatch --parsable ${SBATCH_ARGS:-} --dependency=afterok:"$array" --chdir="$PWD" \
-  "$here/merge.sbatch" "$out" ${MERGE_ARGS:-})
+merge=$(sbatch --parsable ${SBATCH_ARGS:-} --dependency=afterany:"$array" --chdir="$PWD" \
+  "$here/merge.sbatch" "$out" --resubmit "$out/resubmit.sh" ${MERGE_ARGS:-})
 merge=${merge%%;*}
 echo "$array $merge"

@@ -13,6 +13,7 @@
 #include "io/video_join.hpp"
 #include "shard/batch.hpp"
 #include "shard/merged_rows.hpp"
+#include "shard/resubmit.hpp"
 #include "sweep/atlas.hpp"
 #include "sweep/sweep_spec.hpp"
 #ifdef EPVIZ_HAVE_RENDER
@@ -29,9 +30,24 @@ namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
 struct MergeOptions {
-  std::string dir, out, gl, format;
+  std::string dir, out, gl, format, resubmit;
   std::vector<std::string> atlases;
 };
+
+// This merge as a command line with absolute paths, run again by the
+// resubmit script once the failed shards are redone.
+std::vector<std::string> merge_command_line(const MergeOptions& o) {
+  const auto absolute = [](const std::string& p) {
+    return fs::absolute(p).lexically_normal().string();
+  };
+  std::vector<std::string> c{"epviz", "merge", absolute(o.dir)};
+  if (!o.out.empty()) c.insert(c.end(), {"--out", absolute(o.out)});
+  for (const auto& a : o.atlases) c.insert(c.end(), {"--atlas", a});
+  if (!o.format.empty()) c.insert(c.end(), {"--format", o.format});
+  if (!o.gl.empty()) c.insert(c.end(), {"--gl", o.gl});
+  c.insert(c.end(), {"--resubmit", absolute(o.resubmit)});
+  return c;
+}
 
 void draw_atlases(const std::vector<Json>& rows, const std::vector<sweep::AtlasRequest>& requests,
                   const fs::path& out_dir, const MergeOptions& o) {
@@ -120,6 +136,7 @@ int run_merge(const MergeOptions& o) {
                      "' is not a directory (give the directory the shards wrote to)");
   const fs::path out_dir = o.out.empty() ? dir : fs::path(o.out);
   check_output_dir("--out", out_dir);
+  if (!o.resubmit.empty()) check_output_file("--resubmit", o.resubmit);
   auto batches = shard::read_batches(dir);
   if (batches.empty())
     throw UsageError("DIR: no shard manifests (*" + std::string(shard::manifest_suffix) + ") in " +
@@ -137,6 +154,12 @@ int run_merge(const MergeOptions& o) {
   if (incomplete) {
     std::fprintf(stderr, "epviz: error: %d of %zu batches in %s are incomplete; nothing merged\n",
                  incomplete, batches.size(), o.dir.c_str());
+    if (!o.resubmit.empty()) {
+      io::write_file_atomically(o.resubmit,
+                                shard::slurm_resubmit_script(batches, merge_command_line(o)));
+      std::fprintf(stderr, "epviz: to redo only those shards on Slurm, then this merge: bash %s\n",
+                   shard::shell_quote(o.resubmit).c_str());
+    }
     return 4;
   }
   // Every sweep's rows are read and checked before anything is written.
@@ -171,6 +194,9 @@ std::function<int()> add_merge_command(CLI::App& app) {
   cmd->add_option("--format", o->format,
                   "the atlases' files: png (GL), svg or pdf (cairo, vector; no GL needed) "
                   "(default png)");
+  cmd->add_option("--resubmit", o->resubmit,
+                  "FILE: when shards are missing or incomplete, write a script that submits only "
+                  "those again as Slurm job arrays, then this merge (docs/cluster.md)");
   return [o] { return run_merge(*o); };
 }
 

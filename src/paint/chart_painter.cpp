@@ -85,19 +85,38 @@ struct LegendRow {
   int marker = -1;
   bool gap_before = false;  // half a line of space above (between the two key lists)
 };
+// Whether any point of `s` can be drawn on the chart's axes.
+bool is_drawn(const chart::ChartSeries& s, const ChartSpec& spec) {
+  return std::any_of(s.points.begin(), s.points.end(), [&](const chart::ChartPoint& p) {
+    return std::isfinite(axis_value(p.x, spec.log_x)) && std::isfinite(axis_value(p.y, spec.log_y));
+  });
+}
+
+// The legend names only what the chart shows: a series without a point on
+// the axes (e.g. a method whose cost is counted in another unit) has no row,
+// nor has a colour or marker key that no drawn series uses.
 std::vector<LegendRow> legend_rows(const ChartSpec& spec) {
   std::vector<LegendRow> rows;
-  if (spec.colour_legend.empty() && spec.marker_legend.empty()) {
-    for (std::size_t i = 0; i < spec.series.size(); ++i) {
-      const auto& s = spec.series[i];
-      rows.push_back({s.name, s.colour_key >= 0 ? s.colour_key : int(i),
-                      s.marker_key >= 0 ? s.marker_key : int(i)});
-    }
-    return rows;
+  std::vector<int> colours, markers;  // the keys of the drawn series
+  for (std::size_t i = 0; i < spec.series.size(); ++i) {
+    const auto& s = spec.series[i];
+    if (!is_drawn(s, spec)) continue;
+    const int colour = s.colour_key >= 0 ? s.colour_key : int(i);
+    const int marker = s.marker_key >= 0 ? s.marker_key : int(i);
+    colours.push_back(colour);
+    markers.push_back(marker);
+    if (spec.colour_legend.empty() && spec.marker_legend.empty())
+      rows.push_back({s.name, colour, marker});
   }
-  for (const auto& k : spec.colour_legend) rows.push_back({k.name, k.key, -1});
+  if (spec.colour_legend.empty() && spec.marker_legend.empty()) return rows;
+  const auto used = [](const std::vector<int>& keys, int key) {
+    return std::find(keys.begin(), keys.end(), key) != keys.end();
+  };
+  for (const auto& k : spec.colour_legend)
+    if (used(colours, k.key)) rows.push_back({k.name, k.key, -1});
   bool first = true;
   for (const auto& k : spec.marker_legend) {
+    if (!used(markers, k.key)) continue;
     rows.push_back({k.name, -1, k.key, first && !rows.empty()});
     first = false;
   }

@@ -61,6 +61,7 @@ void check_batch(Batch& b, const fs::path& dir) {
       found = file_problems(it->second, dir);
       if (found.empty()) continue;
     }
+    b.incomplete.push_back(i);
     if (b.problems.size() >= max_listed_problems) {  // counted without building its lines
       ++b.unlisted;
       continue;

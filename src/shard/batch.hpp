@@ -20,6 +20,7 @@ struct Batch {
   std::map<long, Manifest> shards;    // by shard index
   std::vector<std::string> problems;  // one line each, with the command that redoes the shard
   long unlisted = 0;                  // shards with problems past max_listed_problems, counted only
+  std::vector<long> incomplete;       // every shard with a problem, by index, in order
 };
 
 // A batch of a million shards with one manifest must not print a million lines.
@@ -34,8 +35,8 @@ std::string batch_name(const Batch& b);
 // on the number of items or on the merged output's name.
 std::vector<Batch> read_batches(const std::filesystem::path& dir);
 
-// Fills b.problems (the first max_listed_problems) and b.unlisted from the
-// manifests and the files on disk now.
+// Fills b.problems (the first max_listed_problems), b.unlisted and
+// b.incomplete from the manifests and the files on disk now.
 void check_batch(Batch& b, const std::filesystem::path& dir);
 
 }  // namespace epviz::shard

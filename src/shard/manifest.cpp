@@ -153,31 +153,33 @@ std::vector<std::string> file_problems(const Manifest& m, const fs::path& dir) {
   return out;
 }
 
-std::string rerun_command(const Manifest& m, long index) {
-  auto quote = [](const std::string& a) {
-    if (!a.empty() && a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                          "0123456789_-./=:,+@%") == std::string::npos)
-      return a;
-    std::string q(1, '\'');
-    for (char c : a) {
-      if (c == '\'')
-        q.append("'\\''");
-      else
-        q.push_back(c);
-    }
-    q.push_back('\'');
-    return q;
-  };
+std::string shell_quote(const std::string& word) {
+  if (!word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                              "0123456789_-./=:,+@%") == std::string::npos)
+    return word;
+  std::string q(1, '\'');
+  for (char c : word) {
+    if (c == '\'')
+      q.append("'\\''");
+    else
+      q.push_back(c);
+  }
+  q.push_back('\'');
+  return q;
+}
+
+std::string shell_command(const Manifest& m) {
   std::string line;
   for (const auto& a : m.command) {
     if (!line.empty()) line.push_back(' ');
-    line.append(quote(a));
+    line.append(shell_quote(a));
   }
-  line.append(" --shard ");
-  line.append(std::to_string(index));
-  line.push_back('/');
-  line.append(std::to_string(m.shard.count));
   return line;
+}
+
+std::string rerun_command(const Manifest& m, long index) {
+  return shell_command(m) + " --shard " + std::to_string(index) + "/" +
+         std::to_string(m.shard.count);
 }
 
 }  // namespace epviz::shard

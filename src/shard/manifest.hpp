@@ -66,7 +66,15 @@ void add_file(Manifest& m, const std::filesystem::path& dir, const std::filesyst
 // other size, other checksum), one line each; empty when all are intact.
 std::vector<std::string> file_problems(const Manifest& m, const std::filesystem::path& dir);
 
-// The command to run shard `index` again, as one shell line (arguments quoted where needed).
+// `word` as one word of a POSIX shell: as it is when it is plain, else in
+// single quotes (a quote inside written '\'').
+std::string shell_quote(const std::string& word);
+
+// The command that ran the shard, without its shard options, as one shell
+// line (arguments quoted where needed).
+std::string shell_command(const Manifest& m);
+
+// The command to run shard `index` again, as one shell line.
 std::string rerun_command(const Manifest& m, long index);
 
 }  // namespace epviz::shard

@@ -151,6 +151,67 @@ TEST(SweepCommand, ShardsMergeToTheUnshardedRows) {
   while (std::getline(in, line)) EXPECT_EQ(Json::parse(line)["index"], expect++);
 }
 
+// Stands in for Slurm's sbatch in PATH: runs a job array's --wrap command
+// once per index of its --array list (with SLURM_ARRAY_TASK_ID set), and any
+// other job's at once; logs its options and prints a job id, as --parsable does.
+const char* kFakeSbatch = R"(#!/bin/bash
+array= wrap= options=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --array=*) array=${1#--array=} ;;
+    --wrap) wrap=$2; shift ;;
+  esac
+  options+=("$1"); shift
+done
+echo "${options[*]}" >> "$SBATCH_LOG"
+if [ -n "$array" ]; then
+  IFS=, read -ra parts <<< "$array"
+  for p in "${parts[@]}"; do
+    for ((i = ${p%-*}; i <= ${p#*-}; i++)); do SLURM_ARRAY_TASK_ID=$i bash -c "$wrap" >/dev/null 2>&1; done
+  done
+else
+  bash -c "$wrap" >"$SBATCH_LOG.merge" 2>&1
+fi
+echo 4242
+)";
+
+TEST(MergeCommand, ResubmitWritesAScriptThatRedoesOnlyTheFailedShardsThenTheMerge) {
+  TempDir d;
+  std::ofstream(d / "s.sweep.json") << kSmallSweep;
+  const std::string sweep = (d / "s.sweep.json").string();
+  const std::string out = (d / "rows.jsonl").string();
+  ASSERT_EQ(run_epviz("sweep " + sweep + " --out " + (d / "whole.jsonl").string(), d).exit_code, 0);
+  fs::create_directories(d / "shards");
+  const std::string shards = (d / "shards" / "rows.jsonl").string();
+  // Of four shards, 0 and 3 finished; 1 never ran and 2 was killed.
+  for (const char* s : {"0/4", "3/4", "2/4"})
+    ASSERT_EQ(run_epviz("sweep " + sweep + " --out " + shards + " --shard " + s, d).exit_code, 0);
+  fs::remove(d / "shards" / "rows.shard-2-of-4.jsonl");
+  const auto script = d / "resubmit.sh";
+  auto m = run_epviz("merge " + (d / "shards").string() + " --resubmit " + script.string(), d);
+  ASSERT_EQ(m.exit_code, 4) << m.err;
+  EXPECT_NE(m.err.find("bash " + script.string()), std::string::npos) << m.err;
+  const std::string text = slurp(script);
+  EXPECT_NE(text.find("--array=1-2 "), std::string::npos) << text;
+
+  // Run it with the stand-in sbatch: the two shards are redone and the merge,
+  // after them, joins all four to the rows of the unsharded sweep.
+  fs::create_directories(d / "bin");
+  std::ofstream(d / "bin" / "sbatch") << kFakeSbatch;
+  fs::permissions(d / "bin" / "sbatch", fs::perms::owner_all);
+  fs::create_symlink(EPVIZ_BINARY, d / "bin" / "epviz");
+  const auto log = d / "sbatch.log";
+  const std::string run = "cd " + d.path().string() + " && PATH=" + (d / "bin").string() +
+                          ":$PATH SBATCH_LOG=" + log.string() + " bash " + script.string() +
+                          " >/dev/null 2>&1";
+  ASSERT_EQ(std::system(run.c_str()), 0) << slurp(log) << slurp(d / "sbatch.log.merge");
+  const std::string calls = slurp(log);
+  EXPECT_NE(calls.find("--dependency=afterany:4242"), std::string::npos) << calls;
+  EXPECT_EQ(line_count(calls), 2u) << calls;
+  EXPECT_EQ(rows_by_index(d / "shards" / "rows.jsonl"), rows_by_index(d / "whole.jsonl"))
+      << slurp(d / "sbatch.log.merge");
+}
+
 // A sweep of `side` x `side` x 2 points, each a one-step run.
 std::string square_sweep(int side) {
   return R"({"simulation": {"case": "generic", "t_end": 0.1, "samples": 1, "method": "rk4",

@@ -108,6 +108,36 @@ TEST(ChartPainter, SeriesWithOneColourKeyShareTheColour) {
   EXPECT_EQ(colour_count(img, l.legend, paint::series_colour(0)), 0);
 }
 
+// A series with nothing to draw (no points, or none on a log axis) has no
+// legend row, nor has a key that only such series use.
+TEST(ChartPainter, TheLegendNamesOnlyWhatIsDrawn) {
+  auto spec = et::two_series();
+  spec.series.push_back({"no points", {}});
+  spec.series.push_back({"not on a log axis", {{-1.0, 1.0}, {1.0, 0.0}}});
+  const auto with_empty = paint::chart_layout(spec, W, H, et::builtin_chart_font());
+  const auto plain = paint::chart_layout(et::two_series(), W, H, et::builtin_chart_font());
+  EXPECT_EQ(with_empty.legend.height, plain.legend.height) << "rows for series not drawn";
+  const auto img = paint::paint_chart(et::shared_gl_context(), spec, test_options());
+  EXPECT_EQ(colour_count(img, with_empty.legend, paint::series_colour(2)), 0);
+  EXPECT_EQ(colour_count(img, with_empty.legend, paint::series_colour(3)), 0);
+  EXPECT_GT(colour_count(img, with_empty.legend, paint::series_colour(1)), 10);
+
+  // Keyed: colour 7 and marker 5 belong only to the empty series.
+  spec.series[0].colour_key = spec.series[1].colour_key = 9;
+  spec.series[2].colour_key = spec.series[3].colour_key = 7;
+  spec.series[0].marker_key = spec.series[2].marker_key = 0;
+  spec.series[1].marker_key = 1;
+  spec.series[3].marker_key = 5;
+  spec.colour_legend = {{"rk4", 9}, {"splitting", 7}};
+  spec.marker_legend = {{"direct", 0}, {"riccati", 1}, {"spinor", 5}};
+  auto shown = spec;
+  shown.series.resize(2);
+  shown.colour_legend.pop_back();
+  shown.marker_legend.pop_back();
+  EXPECT_EQ(paint::chart_layout(spec, W, H, et::builtin_chart_font()).legend.height,
+            paint::chart_layout(shown, W, H, et::builtin_chart_font()).legend.height);
+}
+
 // Sixteen colours before one repeats: enough for every method of the bench
 // (nine of epviz, six of the peers).
 TEST(ChartPainter, PaletteColoursAreDistinct) {
