@@ -7,7 +7,7 @@
 #include <climits>
 #include <system_error>
 
-#include "app/usage_error.hpp"
+#include "io/bad_input.hpp"
 #include "io/atomic_file.hpp"
 #include "io/printable.hpp"
 
@@ -46,28 +46,28 @@ bool writable_directory(const fs::path& dir) { return ::access(dir.c_str(), W_OK
 void check_output_file(const std::string& option, const std::string& path) {
   if (path.empty() || path == "-") return;
   if (path.back() == '/')
-    throw UsageError(option + ": " + in_quotes(path) + " names a directory; give a file name");
+    throw io::BadInput(option + ": " + in_quotes(path) + " names a directory; give a file name");
   io::OutputTarget target;
   try {
     target = io::resolve_output(path);
   } catch (const io::FileWriteError& e) {
-    throw UsageError(option + ": " + e.what());
+    throw io::BadInput(option + ": " + e.what());
   }
   if (target.kind == io::OutputKind::stream) {
     std::error_code ec;
     if (fs::is_directory(target.path, ec))
-      throw UsageError(option + ": " + in_quotes(path) + " is a directory; give a file name");
+      throw io::BadInput(option + ": " + in_quotes(path) + " is a directory; give a file name");
     if (::access(target.path.c_str(), W_OK) != 0)
-      throw UsageError(option + ": cannot write " + in_quotes(path) + ": " + errno_text(errno));
+      throw io::BadInput(option + ": cannot write " + in_quotes(path) + ": " + errno_text(errno));
     return;
   }
   fs::path dir = target.path.parent_path();
   if (dir.empty()) dir = ".";
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
-    throw UsageError(option + ": directory " + in_quotes(fs::absolute(dir)) + " does not exist");
+    throw io::BadInput(option + ": directory " + in_quotes(fs::absolute(dir)) + " does not exist");
   if (!writable_directory(dir))
-    throw UsageError(option + ": directory " + in_quotes(fs::absolute(dir)) +
+    throw io::BadInput(option + ": directory " + in_quotes(fs::absolute(dir)) +
                      " is not writable: " + errno_text(errno));
 }
 
@@ -75,7 +75,7 @@ void check_output_dir(const std::string& what, const fs::path& dir) {
   std::error_code ec;
   const fs::path absolute = fs::absolute(dir, ec);
   if (too_long(absolute))
-    throw UsageError(what + ": " + in_quotes(dir) + " is too long (at most " +
+    throw io::BadInput(what + ": " + in_quotes(dir) + " is too long (at most " +
                      std::to_string(NAME_MAX) + " bytes a name, " + std::to_string(PATH_MAX - 1) +
                      " bytes the whole path)");
   fs::path existing = absolute;
@@ -83,16 +83,16 @@ void check_output_dir(const std::string& what, const fs::path& dir) {
     existing = existing.parent_path();
   if (!fs::is_directory(existing, ec)) {
     if (existing == absolute)
-      throw UsageError(what + ": " + in_quotes(dir) + " exists and is not a directory");
-    throw UsageError(what + ": cannot create " + in_quotes(dir) + ": " + in_quotes(existing) +
+      throw io::BadInput(what + ": " + in_quotes(dir) + " exists and is not a directory");
+    throw io::BadInput(what + ": cannot create " + in_quotes(dir) + ": " + in_quotes(existing) +
                      " is not a directory");
   }
   if (!writable_directory(existing)) {
     const int error = errno;
     if (existing == absolute)
-      throw UsageError(what + ": directory " + in_quotes(dir) +
+      throw io::BadInput(what + ": directory " + in_quotes(dir) +
                        " is not writable: " + errno_text(error));
-    throw UsageError(what + ": cannot create " + in_quotes(dir) + ": " + in_quotes(existing) +
+    throw io::BadInput(what + ": cannot create " + in_quotes(dir) + ": " + in_quotes(existing) +
                      " is not writable: " + errno_text(error));
   }
 }
@@ -103,7 +103,7 @@ void check_file_name(const std::string& what, const std::string& name) {
       "at most 200 bytes";
   bool bad = name.empty() || name == "." || name == ".." || name.size() > kLongestName;
   for (const unsigned char c : name) bad = bad || c == '/' || c < 0x20 || c == 0x7f;
-  if (bad) throw UsageError(what + allowed);
+  if (bad) throw io::BadInput(what + allowed);
 }
 
 }  // namespace epviz::app

@@ -1,18 +1,13 @@
 #pragma once
-// The job files `epviz render` takes are the job format's (job/job_file.hpp).
-#include "app/simulation_fields.hpp"  // resolve(), which every user of a job calls
+// Old names of the job format's (job/job_file.hpp, job/resolve.hpp), kept only
+// for bench_command.cpp until it includes those headers itself.
 #include "job/job_file.hpp"
+#include "job/resolve.hpp"
 
 namespace epviz::app {
 
-using job::BenchFiguresJob;
-using job::GalleryJob;
 using job::LoadedJob;
-using job::output_format_from_name;
-using job::output_format_name;
-using job::OutputFormat;
-using job::OutputSettings;
-using job::RenderJob;
+using job::resolve;
 
 inline LoadedJob load_render_job(const std::filesystem::path& path) {
   return job::load_job_file(path);

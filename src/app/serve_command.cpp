@@ -10,8 +10,9 @@
 
 #include "app/cli_values.hpp"
 #include "app/gl_option.hpp"
-#include "app/render_job.hpp"
-#include "app/usage_error.hpp"
+#include "job/job_file.hpp"
+#include "job/resolve.hpp"
+#include "io/bad_input.hpp"
 #include "io/data_dir.hpp"
 #include "live/live_session.hpp"
 #include "render/gl_choice.hpp"
@@ -41,11 +42,11 @@ bool is_loopback(const std::string& host) {
 }
 
 live::LiveSetup setup_of_single_job(const fs::path& file) {
-  LoadedJob loaded = load_render_job(file);
+  job::LoadedJob loaded = job::load_job_file(file);
   if (!loaded.single)
-    throw UsageError(file.string() + ": serve needs a single render job (this file is a " +
+    throw io::BadInput(file.string() + ": serve needs a single render job (this file is a " +
                      (loaded.gallery ? "gallery" : "bench figures job") + ")");
-  return live::setup_from_job(resolve(loaded.single->simulation), loaded.single->scene);
+  return live::setup_from_job(job::resolve(loaded.single->simulation), loaded.single->scene);
 }
 
 // The case combo loads the case's job from render_jobs/ when it is there
@@ -71,19 +72,19 @@ int run_serve(const ServeOptions& o) {
   else if (o.image == "png")
     so.image_format = serve::ImageFormat::png;
   else
-    throw UsageError("--image: unknown format '" + o.image + "' (allowed: jpeg, png)");
+    throw io::BadInput("--image: unknown format '" + o.image + "' (allowed: jpeg, png)");
   so.page = io::find_data_path("assets/serve.html");
   if (so.page.empty()) {
     std::string searched;
     for (const auto& dir : io::data_search_path()) searched += " " + (dir / "assets").string();
-    throw UsageError("the page serve.html is missing; searched:" + searched +
+    throw io::BadInput("the page serve.html is missing; searched:" + searched +
                      " (set EPVIZ_DATA_DIR)");
   }
   so.record_path = o.record;
   for (const std::string& origin : o.allow_origins) {
     const auto normalized = serve::OriginPolicy::normalize_origin(origin);
     if (!normalized)
-      throw UsageError("--allow-origin: '" + origin +
+      throw io::BadInput("--allow-origin: '" + origin +
                        "' is not an origin (allowed: http://HOST[:PORT] or https://HOST[:PORT], "
                        "no path)");
     so.allowed_origins.push_back(*normalized);
@@ -102,7 +103,7 @@ int run_serve(const ServeOptions& o) {
     live::LiveScene check(
         session.initial);  // a job the scene cannot run is an error now, not per connection
   } catch (const std::exception& e) {
-    throw UsageError((o.job.empty() ? std::string("default scene") : o.job) + ": " + e.what());
+    throw io::BadInput((o.job.empty() ? std::string("default scene") : o.job) + ": " + e.what());
   }
 
   // The GL context belongs to the render thread, which creates it.

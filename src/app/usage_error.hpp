@@ -1,6 +1,6 @@
 #pragma once
-// Bad input from the command line: io::BadInput, the one type every reader's
-// error derives from (the CLI prints its one-line message and exits 2).
+// The old name of io::BadInput, kept only for bench_command.cpp and
+// merge_command.cpp until they name io::BadInput themselves.
 #include "io/bad_input.hpp"
 
 namespace epviz::app {
