@@ -7,9 +7,9 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "job/resolve.hpp"
 #include "io/bad_input.hpp"
 #include "io/json_reader.hpp"
+#include "job/resolve.hpp"
 #include "job/schema.hpp"
 
 namespace {

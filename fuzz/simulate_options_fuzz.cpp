@@ -10,8 +10,8 @@
 
 #include "app/cli_values.hpp"
 #include "app/simulation_fields.hpp"
-#include "job/resolve.hpp"
 #include "io/bad_input.hpp"
+#include "job/resolve.hpp"
 
 namespace {
 

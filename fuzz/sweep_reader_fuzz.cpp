@@ -8,9 +8,9 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "job/resolve.hpp"
 #include "io/bad_input.hpp"
 #include "io/json_reader.hpp"
+#include "job/resolve.hpp"
 #include "sweep/sweep_point.hpp"
 #include "sweep/sweep_spec.hpp"
 

@@ -1,23 +1,18 @@
 #include "app/check_command.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <atomic>
 #include <cctype>
-#include <cerrno>
 #include <chrono>
 #include <cstdio>
-#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <future>
 #include <map>
 #include <memory>
 #include <mutex>
-#include <set>
 #include <thread>
 
 #include "app/cli_values.hpp"
@@ -29,9 +24,9 @@
 #include "check/junit_xml.hpp"
 #include "check/tolerance.hpp"
 #include "io/atomic_file.hpp"
-#include "io/frame_range.hpp"
 #include "io/bad_input.hpp"
-#include "io/printable.hpp"
+#include "io/frame_range.hpp"
+#include "io/output_paths.hpp"
 #include "job/job_file.hpp"
 #include "job/job_list.hpp"
 #include "job/job_plan.hpp"
@@ -91,7 +86,7 @@ check::Tolerance tolerance_from(const CheckOptions& o) {
       t.max_differing_percent = parse_number("--max-differing", o.max_differing);
       if (!(t.max_differing_percent >= 0 && t.max_differing_percent <= 100))
         throw io::BadInput("--max-differing: expected a percentage of pixels from 0 to 100, got '" +
-                         o.max_differing + "'");
+                           o.max_differing + "'");
     }
   } else {
     if (!o.max_differing.empty())
@@ -121,7 +116,7 @@ std::vector<io::FrameRangeSpec> frame_specs(const std::string& text) {
         text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     if (item.empty())
       throw io::BadInput("--frames: empty item in '" + text +
-                       "' (allowed: N, A:B, A:, :B separated by commas)");
+                         "' (allowed: N, A:B, A:, :B separated by commas)");
     try {
       specs.push_back(io::parse_frame_range(item));
     } catch (const io::FrameRangeError& e) {
@@ -151,45 +146,6 @@ void check_output_paths(const CheckOptions& o) {
   (void)render::GlChoice(o.gl);
 }
 
-// A FIFO given to --junit is written directly at the end. Opened now without
-// blocking, it fails when nobody reads it (rather than hanging after the whole
-// run); the descriptor is held until the run ends so that the reader does not
-// see the end of the stream before the XML comes.
-class FifoReaderCheck {
- public:
-  explicit FifoReaderCheck(const std::string& target) {
-    std::error_code ec;
-    if (target.empty() || !fs::is_fifo(target, ec)) return;
-    fd_ = ::open(target.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
-    if (fd_ < 0)
-      throw io::BadInput("--junit: '" + io::printable(target, 200) + "' is a FIFO that " +
-                       (errno == ENXIO ? std::string("nobody reads")
-                                       : "cannot be opened: " + std::string(std::strerror(errno))));
-  }
-  ~FifoReaderCheck() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  FifoReaderCheck(const FifoReaderCheck&) = delete;
-  FifoReaderCheck& operator=(const FifoReaderCheck&) = delete;
-
- private:
-  int fd_ = -1;
-};
-
-// Creates the report folder and makes sure a file can be made in it (a
-// directory like /proc/self exists but takes no files).
-void make_report_folder(const std::string& report) {
-  std::error_code ec;
-  fs::create_directories(report, ec);
-  const auto probe = fs::path(report) / (".epviz-probe-" + std::to_string(::getpid()));
-  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
-  if (fd < 0)
-    throw io::BadInput("--report: cannot create files in '" + io::printable(report, 200) +
-                     "': " + std::strerror(errno));
-  ::close(fd);
-  fs::remove(probe);
-}
-
 std::vector<CheckJob> prepare_jobs(const CheckOptions& o) {
   const auto specs = frame_specs(o.frames);
   std::vector<CheckJob> jobs;
@@ -213,7 +169,7 @@ std::vector<CheckJob> prepare_jobs(const CheckOptions& o) {
     const auto key = fs::weakly_canonical(g.golden_dir);
     if (auto [it, fresh] = golden_owner.emplace(key, shown); !fresh)
       throw io::BadInput(shown + ": its goldens would share " + g.golden_dir.string() + " with " +
-                       it->second + " (jobs need distinct file names)");
+                         it->second + " (jobs need distinct file names)");
     c.job = std::move(job);
     jobs.push_back(std::move(c));
   }
@@ -327,9 +283,9 @@ int run_check(const CheckOptions& o) {
   const check::Tolerance t = tolerance_from(o);
   const int workers = o.workers.empty() ? 1 : int(parse_integer("-j", o.workers, 1, 64));
   check_output_paths(o);
-  const FifoReaderCheck junit_reader(o.junit);
+  const io::FifoReaderCheck junit_reader("--junit", o.junit);
   const auto jobs = prepare_jobs(o);
-  if (!o.report.empty() && !o.update) make_report_folder(o.report);
+  if (!o.report.empty() && !o.update) io::make_output_folder("--report", o.report);
 
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::thread> threads;

@@ -41,7 +41,7 @@ long parse_integer(const std::string& option, const std::string& text, long min_
   auto [ptr, ec] = std::from_chars(text.data(), end, x);
   if (text.empty() || ec != std::errc() || ptr != end || x < min_value || x > max_value)
     throw io::BadInput(option + ": expected an integer from " + std::to_string(min_value) + " to " +
-                     std::to_string(max_value) + ", got '" + io::printable(text) + "'");
+                       std::to_string(max_value) + ", got '" + io::printable(text) + "'");
   return x;
 }
 
@@ -54,7 +54,7 @@ std::array<double, 3> parse_vec3(const std::string& option, const std::string& t
     if (last != (comma == std::string::npos) ||
         !to_double(text.substr(start, last ? std::string::npos : comma - start), v[i]))
       throw io::BadInput(option + ": expected three comma-separated finite numbers X,Y,Z, got '" +
-                       io::printable(text) + "'");
+                         io::printable(text) + "'");
     start = comma + 1;
   }
   return v;
@@ -82,7 +82,7 @@ void require_distinct_files(const std::vector<std::pair<std::string, std::string
       if (a.empty() || b.empty() || a == "-" || b == "-") continue;
       if (canonical_file(a) == canonical_file(b))
         throw io::BadInput(b_option + ": the same file as " + a_option + " ('" + io::printable(b) +
-                         "'); give each its own file");
+                           "'); give each its own file");
     }
 }
 

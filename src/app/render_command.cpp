@@ -12,10 +12,10 @@
 #include "app/bench_command.hpp"
 #include "app/cli_values.hpp"
 #include "app/gl_option.hpp"
-#include "app/output_paths.hpp"
 #include "io/atomic_file.hpp"
 #include "io/bad_input.hpp"
 #include "io/frame_range.hpp"
+#include "io/output_paths.hpp"
 #include "io/png_writer.hpp"
 #include "io/progress.hpp"
 #include "io/temp_registry.hpp"
@@ -38,7 +38,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using job::GalleryJob;
-using job::OutputFormat;
 using job::RenderJob;
 
 struct RenderOptions {
@@ -54,33 +53,37 @@ struct PreparedJob {
   std::string caption;  // under every frame (gallery tiles)
 };
 
-// --format, checked; nullopt when not given.
-std::optional<OutputFormat> format_option(const RenderOptions& o) {
-  if (o.format.empty()) return std::nullopt;
-  auto f = job::output_format_from_name(o.format);
-  if (!f)
-    throw io::BadInput("--format: unknown format '" + o.format + "' (allowed: png, mp4, webm, gif)");
-  return f;
+// --format, checked; when given, `video` becomes its video format (none for png).
+void format_option(const RenderOptions& o, std::optional<io::VideoFormat>& video) {
+  if (o.format.empty()) return;
+  const auto names = job::output_format_names();
+  if (std::find(names.begin(), names.end(), o.format) == names.end()) {
+    std::string allowed;
+    for (const auto& n : names) allowed += (allowed.empty() ? "" : ", ") + n;
+    throw io::BadInput("--format: unknown format '" + o.format + "' (allowed: " + allowed + ")");
+  }
+  video = io::parse_video_format(o.format);
 }
 
 PreparedJob prepare(RenderJob job, const RenderOptions& o) {
   if (!o.width.empty()) job.scene.width = int(parse_integer("--width", o.width, 16, 8192));
   if (!o.height.empty()) job.scene.height = int(parse_integer("--height", o.height, 16, 8192));
-  if (auto f = format_option(o)) job.output.format = *f;
+  format_option(o, job.output.video);
   if (!o.out.empty()) job.output.dir = o.out;
   // Every output is checked before any work, so that nothing is written on exit 2.
-  check_file_name(job.file.string() + ": output.name", job.output.name);
-  check_output_dir(o.out.empty() ? job.file.string() + ": output.dir" : "--out", job.output.dir);
-  const auto video = job::video_format(job.output.format);
+  io::check_file_name(job.file.string() + ": output.name", job.output.name);
+  io::check_output_dir(o.out.empty() ? job.file.string() + ": output.dir" : "--out",
+                       job.output.dir);
+  const auto& video = job.output.video;
   if (const auto why =
           video ? io::video_size_problem(*video, job.scene.width, job.scene.height) : std::string();
       !why.empty())
     throw io::BadInput(job.file.string() + ": " + why);
   if (video && !io::ffmpeg_available())
     throw io::BadInput(
-        "--format " + std::string(job::output_format_name(job.output.format)) +
+        "--format " + std::string(io::video_format_name(*video)) +
         ": ffmpeg not found on PATH; install the Debian package ffmpeg (scripts/setup.sh does)");
-  if (o.resume && job.output.format != OutputFormat::png)
+  if (o.resume && video)
     throw io::BadInput("--resume: applies to PNG sequences only (a video is written whole)");
 
   PreparedJob p;
@@ -118,8 +121,8 @@ RenderStats render_frames(const PreparedJob& p, paint::FramePainter& painter,
   drawer.set_caption(p.caption);
   std::optional<paint::FrameFiles> files;
   if (write_output)
-    files = paint::FrameFiles{job.output.dir, job.output.name, job::video_format(job.output.format),
-                              job.scene.fps, o.resume};
+    files = paint::FrameFiles{job.output.dir, job.output.name, job.output.video, job.scene.fps,
+                              o.resume};
   RenderStats stats;
   stats.written = paint::write_frames(drawer, painter, p.range, files,
                                       progress_options(o, job.file.stem().string()));
@@ -181,11 +184,10 @@ shard::FrameBatch frame_batch(const RenderJob& job, int frames) {
                       "--height",
                       std::to_string(job.scene.height),
                       "--format",
-                      std::string(job::output_format_name(job.output.format))};
+                      std::string(job::output_format_name(job.output.video))};
   b.dir = job.output.dir;
   b.name = job.output.name;
-  if (const auto video = job::video_format(job.output.format))
-    b.video_extension = io::video_format_extension(*video);
+  if (job.output.video) b.video_extension = io::video_format_extension(*job.output.video);
   b.frames = frames;
   return b;
 }
@@ -244,8 +246,8 @@ int render_gallery(GalleryJob g, const RenderOptions& o, const render::GlChoice&
   if (!o.shard.empty())
     throw io::BadInput("--shard: a gallery renders whole jobs; shard a single job");
   if (!o.out.empty()) g.dir = o.out;
-  check_output_dir(o.out.empty() ? g.file.string() + ": dir" : "--out", g.dir);
-  if (auto f = format_option(o)) g.videos = *f == OutputFormat::png ? std::nullopt : f;
+  io::check_output_dir(o.out.empty() ? g.file.string() + ": dir" : "--out", g.dir);
+  format_option(o, g.videos);
   // Check every job before rendering any.
   std::vector<PreparedJob> stills, videos;
   RenderOptions job_opts = o;
@@ -256,14 +258,14 @@ int render_gallery(GalleryJob g, const RenderOptions& o, const render::GlChoice&
     job.scene.height = g.tile_height;
     job.output.dir = g.dir;
     auto still = job;
-    still.output.format = OutputFormat::png;
+    still.output.video.reset();
     auto ps = prepare(still, job_opts);
     const int at = int(std::lround(g.at * (ps.plan.frames - 1)));
     ps.range = {at, at};
     ps.caption = job::tile_caption(ps.job, ps.plan);
     stills.push_back(std::move(ps));
     if (g.videos) {
-      job.output.format = *g.videos;
+      job.output.video = g.videos;
       job.output.name = job.file.stem().string();
       videos.push_back(prepare(job, job_opts));
     }
@@ -271,8 +273,9 @@ int render_gallery(GalleryJob g, const RenderOptions& o, const render::GlChoice&
   if (g.grid_video) {
     job::grid_video_size(g, int(stills.size()));
     if (!io::ffmpeg_available())
-      throw io::BadInput(g.file.string() +
-                       ": grid_video: ffmpeg not found on PATH; install the Debian package ffmpeg");
+      throw io::BadInput(
+          g.file.string() +
+          ": grid_video: ffmpeg not found on PATH; install the Debian package ffmpeg");
   }
   fs::create_directories(g.dir);
   io::remove_stale_temporaries(g.dir);
@@ -312,7 +315,7 @@ int render_gallery(GalleryJob g, const RenderOptions& o, const render::GlChoice&
 }
 
 int run_render(const RenderOptions& o) {
-  check_output_file("--report-json", o.report_json);
+  io::check_output_file("--report-json", o.report_json);
   // SIGINT/SIGTERM remove the temporaries of the frames and videos being written.
   io::install_temporary_cleanup();
   const render::GlChoice gl(o.gl);

@@ -8,16 +8,16 @@
 #include <optional>
 
 #include "app/cli_values.hpp"
-#include "app/output_paths.hpp"
 #include "app/simulation_fields.hpp"
-#include "job/resolve.hpp"
-#include "sweep/simulation_output.hpp"
-#include "io/bad_input.hpp"
 #include "io/atomic_file.hpp"
+#include "io/bad_input.hpp"
+#include "io/output_paths.hpp"
 #include "io/progress.hpp"
 #include "io/temp_registry.hpp"
+#include "job/resolve.hpp"
 #include "physics/cases.hpp"
 #include "sim/failure_advice.hpp"
+#include "sweep/simulation_output.hpp"
 
 namespace epviz::app {
 namespace {
@@ -49,10 +49,10 @@ void check_step_budget(const sim::RunSpec& spec) {
   if (sim::is_adaptive(spec.method)) return;
   const double steps = spec.t_end / spec.step;
   if (steps > double(spec.max_steps))
-    throw io::BadInput("--t-end: " + fmt(spec.t_end) + " with --step " + fmt(spec.step) + " needs " +
-                     fmt(steps) + " steps, more than the step budget of " +
-                     fmt(double(spec.max_steps)) +
-                     " (--max-steps); shorten --t-end or take a larger --step");
+    throw io::BadInput("--t-end: " + fmt(spec.t_end) + " with --step " + fmt(spec.step) +
+                       " needs " + fmt(steps) + " steps, more than the step budget of " +
+                       fmt(double(spec.max_steps)) +
+                       " (--max-steps); shorten --t-end or take a larger --step");
 }
 
 // Removes temporaries that killed runs left beside `path` (the process is gone).
@@ -85,8 +85,8 @@ int run_simulate(const RawOptions& raw) {
   if (!raw.job.empty()) fields = fields_from_job(raw.job);
   fields.overlay(fields_from_options(raw.sim));
   require_distinct_files({{"--csv", raw.csv}, {"--report-json", raw.report_json}});
-  check_output_file("--csv", raw.csv);
-  check_output_file("--report-json", raw.report_json);
+  io::check_output_file("--csv", raw.csv);
+  io::check_output_file("--report-json", raw.report_json);
   const bool csv_to_stdout = !raw.csv.empty() && io::writes_to_standard_output(raw.csv);
   const bool report_to_stdout =
       !raw.report_json.empty() && io::writes_to_standard_output(raw.report_json);

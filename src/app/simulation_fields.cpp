@@ -41,7 +41,7 @@ void require_in_range(const job::FieldInfo& f, const std::string& text, const Nu
   for (double x : numbers)
     if (!f.in_range(x))
       throw io::BadInput(f.flag + ": expected " + f.range_text() + ", got '" + io::printable(text) +
-                       "'");
+                         "'");
 }
 void set_from_option(const job::FieldInfo& f, const SimulationOptions::Value& v,
                      Given<std::array<double, 3>>& g) {

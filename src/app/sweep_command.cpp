@@ -9,12 +9,12 @@
 #include <thread>
 
 #include "app/cli_values.hpp"
-#include "app/output_paths.hpp"
 #include "app/simulation_fields.hpp"
-#include "job/resolve.hpp"
 #include "io/bad_input.hpp"
 #include "io/json_reader.hpp"
+#include "io/output_paths.hpp"
 #include "io/progress.hpp"
+#include "job/resolve.hpp"
 #include "shard/rows_shard.hpp"
 #include "shard/shard_spec.hpp"
 #include "sweep/sweep_runner.hpp"
@@ -64,7 +64,7 @@ int run_sweep(const SweepOptions& o) {
   const fs::path out_given =
       o.out.empty() ? fs::path(sweep_stem(o.file) + ".jsonl") : fs::path(o.out);
   if (o.out == "-") throw io::BadInput("--out: rows are appended to a file, not standard output");
-  check_output_file("--out", out_given.string());
+  io::check_output_file("--out", out_given.string());
   std::optional<shard::RowsShard> rows_shard;
   if (shard) {
     shard::RowsBatch batch{
@@ -82,8 +82,8 @@ int run_sweep(const SweepOptions& o) {
   for (long i : existing.indices)
     if (i < range.first || i >= range.end)
       throw io::BadInput(out.string() + ": holds point " + std::to_string(i) +
-                       ", outside this shard's points " + std::to_string(range.first) + ".." +
-                       std::to_string(range.end - 1) + "; give another --out");
+                         ", outside this shard's points " + std::to_string(range.first) + ".." +
+                         std::to_string(range.end - 1) + "; give another --out");
   std::vector<sweep::PreparedPoint> pending;
   for (long i = range.first; i < range.end; ++i)
     if (!existing.indices.count(i)) pending.push_back(std::move(points[std::size_t(i)]));

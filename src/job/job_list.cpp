@@ -9,7 +9,8 @@ namespace epviz::job {
 
 namespace fs = std::filesystem;
 
-std::vector<std::pair<RenderJob, std::string>> render_jobs_in(const std::vector<std::string>& args) {
+std::vector<std::pair<RenderJob, std::string>> render_jobs_in(
+    const std::vector<std::string>& args) {
   std::vector<std::pair<RenderJob, std::string>> out;
   std::set<fs::path> seen;
   auto add = [&](RenderJob job, const std::string& shown) {
@@ -21,8 +22,8 @@ std::vector<std::pair<RenderJob, std::string>> render_jobs_in(const std::vector<
     if (loaded.bench) {
       if (from_dir) return;
       throw io::BadInput(file.string() +
-                       ": a bench-figures job has no frames to check (allowed: a render job, a "
-                       "gallery or a directory of them)");
+                         ": a bench-figures job has no frames to check (allowed: a render job, a "
+                         "gallery or a directory of them)");
     }
     if (loaded.gallery)
       for (auto& j : loaded.gallery->jobs) add(j, j.file.string());

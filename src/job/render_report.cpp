@@ -71,9 +71,8 @@ nlohmann::json render_report(const RenderJob& job, const scene::ScenePlan& plan,
   j["frames_skipped"] = counts.frames_skipped;
   j["seconds"] = counts.seconds;
   j["output"] = job.output.dir.string();
-  j["failure"] = failure
-                     ? nlohmann::json(sim::failure_line(*failure, sim::SettingsIn::render_job))
-                     : nlohmann::json(nullptr);
+  j["failure"] = failure ? nlohmann::json(sim::failure_line(*failure, sim::SettingsIn::render_job))
+                         : nlohmann::json(nullptr);
   j["failure_kind"] = failure ? nlohmann::json(std::string(numerics::name(failure->kind)))
                               : nlohmann::json(nullptr);
   if (runs.is_array() && !runs.empty()) {

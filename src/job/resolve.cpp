@@ -50,7 +50,7 @@ sim::RunSpec resolve(const SimulationFields& f) {
     auto found = physics::case_from_name(*f.case_name);
     if (!found)
       throw io::BadInput(f.case_name.origin + ": unknown case '" + io::printable(*f.case_name) +
-                       "' (allowed: " + find_field("case")->choices + ")");
+                         "' (allowed: " + find_field("case")->choices + ")");
     c = *found;
   }
   const auto& p = physics::preset(c == physics::Case::custom ? physics::Case::generic : c);
@@ -67,15 +67,15 @@ sim::RunSpec resolve(const SimulationFields& f) {
     auto v = sim::formulation_from_name(*f.formulation);
     if (!v)
       throw io::BadInput(f.formulation.origin + ": unknown formulation '" +
-                       io::printable(*f.formulation) +
-                       "' (allowed: " + sim::names_joined(sim::all_formulations(), ", ") + ")");
+                         io::printable(*f.formulation) +
+                         "' (allowed: " + sim::names_joined(sim::all_formulations(), ", ") + ")");
     spec.formulation = *v;
   }
   if (f.method) {
     auto v = sim::method_from_name(*f.method);
     if (!v)
       throw io::BadInput(f.method.origin + ": unknown method '" + io::printable(*f.method) +
-                       "' (allowed: " + sim::names_joined(sim::all_methods(), ", ") + ")");
+                         "' (allowed: " + sim::names_joined(sim::all_methods(), ", ") + ")");
     spec.method = *v;
   }
   if (auto why = sim::incompatibility(spec.method, spec.formulation))
@@ -85,20 +85,20 @@ sim::RunSpec resolve(const SimulationFields& f) {
   if (sim::is_adaptive(spec.method)) {
     if (f.step)
       throw io::BadInput(f.step.origin + ": method " + m +
-                       " is adaptive and takes a tolerance (--tol), not a step");
+                         " is adaptive and takes a tolerance (--tol), not a step");
     if (f.tol) spec.tol = *f.tol;  // in range: the field table's bounds hold where it is read
   } else {
     if (f.tol)
       throw io::BadInput(f.tol.origin + ": method " + m +
-                       " has a fixed step and takes --step, not a tolerance "
-                       "(adaptive methods: " +
-                       sim::names_joined(sim::adaptive_methods(), ", ") + ")");
+                         " has a fixed step and takes --step, not a tolerance "
+                         "(adaptive methods: " +
+                         sim::names_joined(sim::adaptive_methods(), ", ") + ")");
     if (f.step) spec.step = *f.step;
   }
   if (f.chart_switch) {
     if (spec.formulation != sim::Formulation::riccati)
       throw io::BadInput(f.chart_switch.origin +
-                       ": chart switching applies only to formulation riccati");
+                         ": chart switching applies only to formulation riccati");
     spec.chart_switch = *f.chart_switch;
   }
   if (f.t_end) spec.t_end = *f.t_end;
@@ -106,7 +106,7 @@ sim::RunSpec resolve(const SimulationFields& f) {
   if (f.samples) spec.samples = int(*f.samples);
   if (!sim::is_adaptive(spec.method) && spec.t_end / spec.step > max_steps_per_run)
     throw io::BadInput(f.step.origin + ": t_end / step exceeds " +
-                     format_number(max_steps_per_run) + " steps");
+                       format_number(max_steps_per_run) + " steps");
 
   try {
     physics::validate_body(spec.body, f.allow_nonphysical && *f.allow_nonphysical);
@@ -118,7 +118,7 @@ sim::RunSpec resolve(const SimulationFields& f) {
   }
   if (auto broken = physics::broken_condition(spec.case_id, spec.body, spec.initial))
     throw io::BadInput(f.case_name.origin + ": " + *broken +
-                     " (for a nearby non-integrable body give no case, or case generic)");
+                       " (for a nearby non-integrable body give no case, or case generic)");
   return spec;
 }
 

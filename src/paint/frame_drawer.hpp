@@ -23,8 +23,7 @@ class FrameDrawer {
   // Frame `index` (indices must not decrease), valid until the painter's next
   // paint. `paint_lock`, when given, is held while painting only. Throws
   // numerics::IntegrationError on a numerical failure.
-  const render::RgbaImage& draw(int index, FramePainter& painter,
-                                std::mutex* paint_lock = nullptr);
+  const render::RgbaImage& draw(int index, FramePainter& painter, std::mutex* paint_lock = nullptr);
   const scene::FrameSource& source() const { return source_; }
   // A caption drawn under every frame (gallery tiles).
   void set_caption(std::string caption) { caption_ = std::move(caption); }

@@ -20,7 +20,7 @@ struct FrameFiles {
   std::string name;
   std::optional<io::VideoFormat> video;  // empty: a PNG sequence
   double fps = 30.0;                     // of the video
-  bool resume = false;  // PNG: skip frames whose file is already complete
+  bool resume = false;                   // PNG: skip frames whose file is already complete
 };
 
 struct FramesWritten {

@@ -10,7 +10,8 @@
 namespace epviz::paint {
 
 GridVideoWritten write_grid_video(std::span<const GridScene> scenes, const GridVideo& video,
-                                  FramePainter& painter, const io::ProgressOptions& progress_options,
+                                  FramePainter& painter,
+                                  const io::ProgressOptions& progress_options,
                                   const std::function<void(const numerics::Failure&)>& on_failure) {
   GridVideoWritten out;
   std::vector<std::unique_ptr<FrameDrawer>> drawers;
@@ -19,9 +20,9 @@ GridVideoWritten write_grid_video(std::span<const GridScene> scenes, const GridV
   for (const auto& s : scenes) {
     drawers.push_back(std::make_unique<FrameDrawer>(*s.plan, *s.settings));
     drawers.back()->set_caption(s.caption);
-    tiles.push_back({video.tile_width, video.tile_height,
-                     std::vector<std::uint8_t>(
-                         std::size_t(video.tile_width) * video.tile_height * 4, 0)});
+    tiles.push_back(
+        {video.tile_width, video.tile_height,
+         std::vector<std::uint8_t>(std::size_t(video.tile_width) * video.tile_height * 4, 0)});
     out.frames = std::max(out.frames, s.plan->frames);
   }
   out.size = io::tiled_size(int(scenes.size()), video.tile_width, video.tile_height, video.tiling);

@@ -1,17 +1,19 @@
-#include "app/output_paths.hpp"
+#include "io/output_paths.hpp"
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <climits>
+#include <cstring>
 #include <system_error>
 
-#include "io/bad_input.hpp"
 #include "io/atomic_file.hpp"
+#include "io/bad_input.hpp"
 #include "io/printable.hpp"
 
-namespace epviz::app {
+namespace epviz::io {
 namespace {
 
 namespace fs = std::filesystem;
@@ -23,7 +25,7 @@ constexpr std::size_t kLongestName = 200;
 // or hold a newline; the message stays one short line.
 std::string in_quotes(const fs::path& p) {
   std::string text(1, '\'');
-  text += io::printable(p.string(), 200);
+  text += printable(p.string(), 200);
   text += '\'';
   return text;
 }
@@ -46,28 +48,28 @@ bool writable_directory(const fs::path& dir) { return ::access(dir.c_str(), W_OK
 void check_output_file(const std::string& option, const std::string& path) {
   if (path.empty() || path == "-") return;
   if (path.back() == '/')
-    throw io::BadInput(option + ": " + in_quotes(path) + " names a directory; give a file name");
-  io::OutputTarget target;
+    throw BadInput(option + ": " + in_quotes(path) + " names a directory; give a file name");
+  OutputTarget target;
   try {
-    target = io::resolve_output(path);
-  } catch (const io::FileWriteError& e) {
-    throw io::BadInput(option + ": " + e.what());
+    target = resolve_output(path);
+  } catch (const FileWriteError& e) {
+    throw BadInput(option + ": " + e.what());
   }
-  if (target.kind == io::OutputKind::stream) {
+  if (target.kind == OutputKind::stream) {
     std::error_code ec;
     if (fs::is_directory(target.path, ec))
-      throw io::BadInput(option + ": " + in_quotes(path) + " is a directory; give a file name");
+      throw BadInput(option + ": " + in_quotes(path) + " is a directory; give a file name");
     if (::access(target.path.c_str(), W_OK) != 0)
-      throw io::BadInput(option + ": cannot write " + in_quotes(path) + ": " + errno_text(errno));
+      throw BadInput(option + ": cannot write " + in_quotes(path) + ": " + errno_text(errno));
     return;
   }
   fs::path dir = target.path.parent_path();
   if (dir.empty()) dir = ".";
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
-    throw io::BadInput(option + ": directory " + in_quotes(fs::absolute(dir)) + " does not exist");
+    throw BadInput(option + ": directory " + in_quotes(fs::absolute(dir)) + " does not exist");
   if (!writable_directory(dir))
-    throw io::BadInput(option + ": directory " + in_quotes(fs::absolute(dir)) +
+    throw BadInput(option + ": directory " + in_quotes(fs::absolute(dir)) +
                      " is not writable: " + errno_text(errno));
 }
 
@@ -75,7 +77,7 @@ void check_output_dir(const std::string& what, const fs::path& dir) {
   std::error_code ec;
   const fs::path absolute = fs::absolute(dir, ec);
   if (too_long(absolute))
-    throw io::BadInput(what + ": " + in_quotes(dir) + " is too long (at most " +
+    throw BadInput(what + ": " + in_quotes(dir) + " is too long (at most " +
                      std::to_string(NAME_MAX) + " bytes a name, " + std::to_string(PATH_MAX - 1) +
                      " bytes the whole path)");
   fs::path existing = absolute;
@@ -83,16 +85,16 @@ void check_output_dir(const std::string& what, const fs::path& dir) {
     existing = existing.parent_path();
   if (!fs::is_directory(existing, ec)) {
     if (existing == absolute)
-      throw io::BadInput(what + ": " + in_quotes(dir) + " exists and is not a directory");
-    throw io::BadInput(what + ": cannot create " + in_quotes(dir) + ": " + in_quotes(existing) +
+      throw BadInput(what + ": " + in_quotes(dir) + " exists and is not a directory");
+    throw BadInput(what + ": cannot create " + in_quotes(dir) + ": " + in_quotes(existing) +
                      " is not a directory");
   }
   if (!writable_directory(existing)) {
     const int error = errno;
     if (existing == absolute)
-      throw io::BadInput(what + ": directory " + in_quotes(dir) +
+      throw BadInput(what + ": directory " + in_quotes(dir) +
                        " is not writable: " + errno_text(error));
-    throw io::BadInput(what + ": cannot create " + in_quotes(dir) + ": " + in_quotes(existing) +
+    throw BadInput(what + ": cannot create " + in_quotes(dir) + ": " + in_quotes(existing) +
                      " is not writable: " + errno_text(error));
   }
 }
@@ -103,7 +105,33 @@ void check_file_name(const std::string& what, const std::string& name) {
       "at most 200 bytes";
   bool bad = name.empty() || name == "." || name == ".." || name.size() > kLongestName;
   for (const unsigned char c : name) bad = bad || c == '/' || c < 0x20 || c == 0x7f;
-  if (bad) throw io::BadInput(what + allowed);
+  if (bad) throw BadInput(what + allowed);
 }
 
-}  // namespace epviz::app
+FifoReaderCheck::FifoReaderCheck(const std::string& option, const std::string& target) {
+  std::error_code ec;
+  if (target.empty() || !fs::is_fifo(target, ec)) return;
+  fd_ = ::open(target.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd_ < 0)
+    throw BadInput(option + ": '" + printable(target, 200) + "' is a FIFO that " +
+                   (errno == ENXIO ? std::string("nobody reads")
+                                   : "cannot be opened: " + std::string(std::strerror(errno))));
+}
+
+FifoReaderCheck::~FifoReaderCheck() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void make_output_folder(const std::string& option, const std::string& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  const auto probe = fs::path(dir) / (".epviz-probe-" + std::to_string(::getpid()));
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  if (fd < 0)
+    throw BadInput(option + ": cannot create files in '" + printable(dir, 200) +
+                   "': " + std::strerror(errno));
+  ::close(fd);
+  fs::remove(probe);
+}
+
+}  // namespace epviz::io
