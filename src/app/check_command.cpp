@@ -105,29 +105,6 @@ check::Tolerance tolerance_from(const CheckOptions& o) {
   return t;
 }
 
-// --frames as a list of ranges (syntax checked now, ends resolved per job).
-std::vector<io::FrameRangeSpec> frame_specs(const std::string& text) {
-  std::vector<io::FrameRangeSpec> specs;
-  if (text.empty()) return specs;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t comma = text.find(',', start);
-    const std::string item =
-        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    if (item.empty())
-      throw io::BadInput("--frames: empty item in '" + text +
-                         "' (allowed: N, A:B, A:, :B separated by commas)");
-    try {
-      specs.push_back(io::parse_frame_range(item));
-    } catch (const io::FrameRangeError& e) {
-      throw io::BadInput(e.what());
-    }
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return specs;
-}
-
 void check_output_paths(const CheckOptions& o) {
   if (!o.report.empty()) {
     if (fs::exists(o.report) && !fs::is_directory(o.report))
@@ -147,7 +124,7 @@ void check_output_paths(const CheckOptions& o) {
 }
 
 std::vector<CheckJob> prepare_jobs(const CheckOptions& o) {
-  const auto specs = frame_specs(o.frames);
+  const auto specs = io::parse_frame_ranges(o.frames);
   std::vector<CheckJob> jobs;
   std::map<fs::path, std::string> golden_owner;
   for (auto& [job, shown] : job::render_jobs_in(o.jobs)) {

@@ -70,7 +70,7 @@ void check_output_file(const std::string& option, const std::string& path) {
     throw BadInput(option + ": directory " + in_quotes(fs::absolute(dir)) + " does not exist");
   if (!writable_directory(dir))
     throw BadInput(option + ": directory " + in_quotes(fs::absolute(dir)) +
-                     " is not writable: " + errno_text(errno));
+                   " is not writable: " + errno_text(errno));
 }
 
 void check_output_dir(const std::string& what, const fs::path& dir) {
@@ -78,8 +78,8 @@ void check_output_dir(const std::string& what, const fs::path& dir) {
   const fs::path absolute = fs::absolute(dir, ec);
   if (too_long(absolute))
     throw BadInput(what + ": " + in_quotes(dir) + " is too long (at most " +
-                     std::to_string(NAME_MAX) + " bytes a name, " + std::to_string(PATH_MAX - 1) +
-                     " bytes the whole path)");
+                   std::to_string(NAME_MAX) + " bytes a name, " + std::to_string(PATH_MAX - 1) +
+                   " bytes the whole path)");
   fs::path existing = absolute;
   while (!fs::exists(existing, ec) && existing.has_relative_path())
     existing = existing.parent_path();
@@ -87,15 +87,15 @@ void check_output_dir(const std::string& what, const fs::path& dir) {
     if (existing == absolute)
       throw BadInput(what + ": " + in_quotes(dir) + " exists and is not a directory");
     throw BadInput(what + ": cannot create " + in_quotes(dir) + ": " + in_quotes(existing) +
-                     " is not a directory");
+                   " is not a directory");
   }
   if (!writable_directory(existing)) {
     const int error = errno;
     if (existing == absolute)
       throw BadInput(what + ": directory " + in_quotes(dir) +
-                       " is not writable: " + errno_text(error));
-    throw BadInput(what + ": cannot create " + in_quotes(dir) + ": " + in_quotes(existing) +
                      " is not writable: " + errno_text(error));
+    throw BadInput(what + ": cannot create " + in_quotes(dir) + ": " + in_quotes(existing) +
+                   " is not writable: " + errno_text(error));
   }
 }
 

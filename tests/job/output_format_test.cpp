@@ -11,8 +11,9 @@ namespace epviz::job {
 namespace {
 
 JobDocument with_format(const std::string& format) {
-  return read_job(nlohmann::json{{"simulation", {{"case", "euler"}}}, {"output", {{"format", format}}}},
-                  "job.json");
+  return read_job(
+      nlohmann::json{{"simulation", {{"case", "euler"}}}, {"output", {{"format", format}}}},
+      "job.json");
 }
 
 TEST(OutputFormat, PngAndEveryVideoFormatAreNamed) {
