@@ -7,9 +7,9 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "app/simulation_fields.hpp"
-#include "app/usage_error.hpp"
+#include "io/bad_input.hpp"
 #include "io/json_reader.hpp"
+#include "job/resolve.hpp"
 #include "job/schema.hpp"
 
 namespace {
@@ -26,7 +26,7 @@ void read_render_job(std::string_view text) {
       job::read_job(io::parse_json_text(written, "written.json"), "written.json");
   if (job::write_job(again).dump() != written) std::abort();
 
-  (void)app::resolve(doc.simulation);
+  (void)job::resolve(doc.simulation);
 }
 
 }  // namespace
@@ -34,7 +34,7 @@ void read_render_job(std::string_view text) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {
     read_render_job({reinterpret_cast<const char*>(data), size});
-  } catch (const io::BadInput&) {  // and app::UsageError, the same type
+  } catch (const io::BadInput&) {
   }
   return 0;
 }

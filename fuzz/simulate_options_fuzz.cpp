@@ -10,7 +10,8 @@
 
 #include "app/cli_values.hpp"
 #include "app/simulation_fields.hpp"
-#include "app/usage_error.hpp"
+#include "io/bad_input.hpp"
+#include "job/resolve.hpp"
 
 namespace {
 
@@ -25,7 +26,7 @@ void parse_simulate(const std::vector<std::string>& args) {
   std::vector<const char*> argv{"epviz-simulate"};
   for (const auto& a : args) argv.push_back(a.c_str());
   app.parse(int(argv.size()), argv.data());
-  (void)app::resolve(app::fields_from_options(options));
+  (void)job::resolve(app::fields_from_options(options));
 }
 
 }  // namespace
@@ -41,7 +42,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     parse_simulate(args);
   } catch (const CLI::Error&) {
-  } catch (const app::UsageError&) {
+  } catch (const io::BadInput&) {
   }
   return 0;
 }

@@ -8,9 +8,9 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "app/simulation_fields.hpp"
-#include "app/usage_error.hpp"
+#include "io/bad_input.hpp"
 #include "io/json_reader.hpp"
+#include "job/resolve.hpp"
 #include "sweep/sweep_point.hpp"
 #include "sweep/sweep_spec.hpp"
 
@@ -32,7 +32,7 @@ void read_sweep(std::string_view text) {
     for (std::size_t k = 0; k < c.size(); ++k)
       if (c[k] >= spec.axes[k].values.size()) std::abort();
     const auto p = read_point(i);
-    (void)sweep::resolve_point(p, [](const job::SimulationFields& f) { return app::resolve(f); });
+    (void)sweep::resolve_point(p, [](const job::SimulationFields& f) { return job::resolve(f); });
   }
 }
 
@@ -41,7 +41,7 @@ void read_sweep(std::string_view text) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {
     read_sweep({reinterpret_cast<const char*>(data), size});
-  } catch (const io::BadInput&) {           // and app::UsageError, the same type
+  } catch (const io::BadInput&) {
   } catch (const std::invalid_argument&) {  // an energy level no omega reaches
   }
   return 0;

@@ -13,11 +13,12 @@
 #include <thread>
 
 #include "app/gl_option.hpp"
-#include "app/render_job.hpp"
 #include "app/simulation_fields.hpp"
 #include "app/text_table.hpp"
-#include "app/usage_error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/bad_input.hpp"
+#include "job/job_file.hpp"
+#include "job/resolve.hpp"
 #include "physics/cases.hpp"
 #include "study/bench_json.hpp"
 #include "study/invariant_cost.hpp"
@@ -64,7 +65,7 @@ std::vector<physics::Case> parse_cases(const std::string& list, bool have_job) {
     const auto c = physics::case_from_name(item);
     if (c == physics::Case::custom) {
       if (!have_job)
-        throw UsageError(
+        throw io::BadInput(
             "--cases: 'custom' needs --job FILE (a render job whose \"simulation\" gives the "
             "body)");
       continue;
@@ -72,7 +73,7 @@ std::vector<physics::Case> parse_cases(const std::string& list, bool have_job) {
     if (!c) {
       std::string names;
       for (const auto& p : physics::case_presets()) names += (names.empty() ? "" : ", ") + p.name;
-      throw UsageError("--cases: unknown case '" + item + "' (expected a comma-separated list of " +
+      throw io::BadInput("--cases: unknown case '" + item + "' (expected a comma-separated list of " +
                        names + (have_job ? ", custom" : "") + ")");
     }
     cases.push_back(*c);
@@ -83,12 +84,12 @@ std::vector<physics::Case> parse_cases(const std::string& list, bool have_job) {
 // The body and initial state of a render job's "simulation" (a single job),
 // checked as `epviz render` checks them.
 study::Problem job_problem(const std::string& file) {
-  if (!fs::is_regular_file(file)) throw UsageError("--job: no such file '" + file + "'");
-  const LoadedJob loaded = load_render_job(file);
+  if (!fs::is_regular_file(file)) throw io::BadInput("--job: no such file '" + file + "'");
+  const job::LoadedJob loaded = job::load_job_file(file);
   if (!loaded.single)
-    throw UsageError("--job: '" + file +
+    throw io::BadInput("--job: '" + file +
                      "' is a gallery or bench-figures job; expected a single render job");
-  const sim::RunSpec spec = resolve(loaded.single->simulation);
+  const sim::RunSpec spec = job::resolve(loaded.single->simulation);
   study::Problem p;
   p.id = spec.case_id;
   p.name = spec.case_id == physics::Case::custom ? "custom" : physics::case_name(spec.case_id);
@@ -102,17 +103,17 @@ void prepare_outputs(const BenchRequest& request) {
   if (!request.json.empty()) {
     const auto dir = fs::absolute(request.json).parent_path();
     if (!fs::is_directory(dir))
-      throw UsageError("--json: directory '" + dir.string() + "' does not exist");
+      throw io::BadInput("--json: directory '" + dir.string() + "' does not exist");
     if (fs::is_directory(request.json))
-      throw UsageError("--json: '" + request.json + "' is a directory");
+      throw io::BadInput("--json: '" + request.json + "' is a directory");
   }
   if (!request.out.empty()) {
     if (fs::exists(request.out) && !fs::is_directory(request.out))
-      throw UsageError("--out: '" + request.out + "' exists and is not a directory");
+      throw io::BadInput("--out: '" + request.out + "' exists and is not a directory");
     std::error_code ec;
     fs::create_directories(request.out, ec);
     if (ec)
-      throw UsageError("--out: cannot create directory '" + request.out + "': " + ec.message());
+      throw io::BadInput("--out: cannot create directory '" + request.out + "': " + ec.message());
   }
 }
 

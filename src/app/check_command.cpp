@@ -1,30 +1,22 @@
 #include "app/check_command.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <atomic>
 #include <cctype>
-#include <cerrno>
 #include <chrono>
 #include <cstdio>
-#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <future>
 #include <map>
 #include <memory>
 #include <mutex>
-#include <set>
 #include <thread>
 
 #include "app/cli_values.hpp"
 #include "app/gl_option.hpp"
-#include "app/job_frames.hpp"
-#include "app/render_job.hpp"
-#include "app/usage_error.hpp"
 #include "check/frame_choice.hpp"
 #include "check/frame_result.hpp"
 #include "check/html_report.hpp"
@@ -32,14 +24,21 @@
 #include "check/junit_xml.hpp"
 #include "check/tolerance.hpp"
 #include "io/atomic_file.hpp"
+#include "io/bad_input.hpp"
 #include "io/frame_range.hpp"
-#include "io/printable.hpp"
+#include "io/output_paths.hpp"
+#include "job/job_file.hpp"
+#include "job/job_list.hpp"
+#include "job/job_plan.hpp"
+#include "paint/frame_drawer.hpp"
 #include "render/gl_choice.hpp"
+#include "scene/plan.hpp"
 
 namespace epviz::app {
 namespace {
 
 namespace fs = std::filesystem;
+using job::RenderJob;
 
 struct CheckOptions {
   std::vector<std::string> jobs;
@@ -79,25 +78,25 @@ check::Tolerance tolerance_from(const CheckOptions& o) {
   if (o.metric == "ssim")
     t.metric = Metric::ssim;
   else if (o.metric != "pixel")
-    throw UsageError("--metric: unknown metric '" + o.metric + "' (allowed: pixel, ssim)");
+    throw io::BadInput("--metric: unknown metric '" + o.metric + "' (allowed: pixel, ssim)");
   if (t.metric == Metric::pixel) {
     if (!o.threshold.empty())
       t.max_channel_difference = int(parse_integer("--threshold", o.threshold, 0, 255));
     if (!o.max_differing.empty()) {
       t.max_differing_percent = parse_number("--max-differing", o.max_differing);
       if (!(t.max_differing_percent >= 0 && t.max_differing_percent <= 100))
-        throw UsageError("--max-differing: expected a percentage of pixels from 0 to 100, got '" +
-                         o.max_differing + "'");
+        throw io::BadInput("--max-differing: expected a percentage of pixels from 0 to 100, got '" +
+                           o.max_differing + "'");
     }
   } else {
     if (!o.max_differing.empty())
-      throw UsageError(
+      throw io::BadInput(
           "--max-differing: applies to --metric pixel only (--metric ssim takes --threshold, the "
           "lowest SSIM that passes)");
     if (!o.threshold.empty()) {
       t.min_ssim = parse_number("--threshold", o.threshold);
       if (!(t.min_ssim > 0 && t.min_ssim <= 1))
-        throw UsageError(
+        throw io::BadInput(
             "--threshold: with --metric ssim, expected the lowest SSIM that passes, above 0 and at "
             "most 1, got '" +
             o.threshold + "'");
@@ -106,135 +105,36 @@ check::Tolerance tolerance_from(const CheckOptions& o) {
   return t;
 }
 
-// --frames as a list of ranges (syntax checked now, ends resolved per job).
-std::vector<io::FrameRangeSpec> frame_specs(const std::string& text) {
-  std::vector<io::FrameRangeSpec> specs;
-  if (text.empty()) return specs;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t comma = text.find(',', start);
-    const std::string item =
-        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    if (item.empty())
-      throw UsageError("--frames: empty item in '" + text +
-                       "' (allowed: N, A:B, A:, :B separated by commas)");
-    try {
-      specs.push_back(io::parse_frame_range(item));
-    } catch (const io::FrameRangeError& e) {
-      throw UsageError(e.what());
-    }
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return specs;
-}
-
-// The render jobs named on the command line: files, galleries (their jobs)
-// and directories (their *.json files, bench-figures jobs skipped).
-std::vector<std::pair<RenderJob, std::string>> expand_jobs(const std::vector<std::string>& args) {
-  std::vector<std::pair<RenderJob, std::string>> out;
-  std::set<fs::path> seen;
-  auto add = [&](RenderJob job, const std::string& shown) {
-    const auto key = fs::weakly_canonical(job.file);
-    if (seen.insert(key).second) out.emplace_back(std::move(job), shown);
-  };
-  auto add_loaded = [&](const fs::path& file, bool from_dir) {
-    auto loaded = load_render_job(file);
-    if (loaded.bench) {
-      if (from_dir) return;
-      throw UsageError(file.string() +
-                       ": a bench-figures job has no frames to check (allowed: a render job, a "
-                       "gallery or a directory of them)");
-    }
-    if (loaded.gallery)
-      for (auto& j : loaded.gallery->jobs) add(j, j.file.string());
-    else
-      add(std::move(*loaded.single), file.string());
-  };
-  for (const auto& arg : args) {
-    if (fs::is_directory(arg)) {
-      std::vector<fs::path> files;
-      for (const auto& e : fs::directory_iterator(arg))
-        if (e.is_regular_file() && e.path().extension() == ".json") files.push_back(e.path());
-      std::sort(files.begin(), files.end());
-      if (files.empty()) throw UsageError(arg + ": no render jobs (*.json) in this directory");
-      for (const auto& f : files) add_loaded(f, true);
-    } else {
-      add_loaded(arg, false);
-    }
-  }
-  return out;
-}
-
 void check_output_paths(const CheckOptions& o) {
   if (!o.report.empty()) {
     if (fs::exists(o.report) && !fs::is_directory(o.report))
-      throw UsageError("--report: '" + o.report + "' exists and is not a directory");
+      throw io::BadInput("--report: '" + o.report + "' exists and is not a directory");
     const auto parent = fs::absolute(o.report).parent_path();
     if (!fs::is_directory(parent))
-      throw UsageError("--report: directory '" + parent.string() + "' does not exist");
+      throw io::BadInput("--report: directory '" + parent.string() + "' does not exist");
   }
   if (!o.junit.empty()) {
     if (fs::is_directory(o.junit))
-      throw UsageError("--junit: '" + o.junit + "' is a directory; expected a file name");
+      throw io::BadInput("--junit: '" + o.junit + "' is a directory; expected a file name");
     const auto parent = fs::absolute(o.junit).parent_path();
     if (!fs::is_directory(parent))
-      throw UsageError("--junit: directory '" + parent.string() + "' does not exist");
+      throw io::BadInput("--junit: directory '" + parent.string() + "' does not exist");
   }
   (void)render::GlChoice(o.gl);
 }
 
-// A FIFO given to --junit is written directly at the end. Opened now without
-// blocking, it fails when nobody reads it (rather than hanging after the whole
-// run); the descriptor is held until the run ends so that the reader does not
-// see the end of the stream before the XML comes.
-class FifoReaderCheck {
- public:
-  explicit FifoReaderCheck(const std::string& target) {
-    std::error_code ec;
-    if (target.empty() || !fs::is_fifo(target, ec)) return;
-    fd_ = ::open(target.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
-    if (fd_ < 0)
-      throw UsageError("--junit: '" + io::printable(target, 200) + "' is a FIFO that " +
-                       (errno == ENXIO ? std::string("nobody reads")
-                                       : "cannot be opened: " + std::string(std::strerror(errno))));
-  }
-  ~FifoReaderCheck() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  FifoReaderCheck(const FifoReaderCheck&) = delete;
-  FifoReaderCheck& operator=(const FifoReaderCheck&) = delete;
-
- private:
-  int fd_ = -1;
-};
-
-// Creates the report folder and makes sure a file can be made in it (a
-// directory like /proc/self exists but takes no files).
-void make_report_folder(const std::string& report) {
-  std::error_code ec;
-  fs::create_directories(report, ec);
-  const auto probe = fs::path(report) / (".epviz-probe-" + std::to_string(::getpid()));
-  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
-  if (fd < 0)
-    throw UsageError("--report: cannot create files in '" + io::printable(report, 200) +
-                     "': " + std::strerror(errno));
-  ::close(fd);
-  fs::remove(probe);
-}
-
 std::vector<CheckJob> prepare_jobs(const CheckOptions& o) {
-  const auto specs = frame_specs(o.frames);
+  const auto specs = io::parse_frame_ranges(o.frames);
   std::vector<CheckJob> jobs;
   std::map<fs::path, std::string> golden_owner;
-  for (auto& [job, shown] : expand_jobs(o.jobs)) {
+  for (auto& [job, shown] : job::render_jobs_in(o.jobs)) {
     CheckJob c;
-    c.plan = plan_job(job);
+    c.plan = job::plan_job(job);
     auto& g = c.golden;
     try {
       g.frames = check::frames_to_check(specs, c.plan.frames);
     } catch (const io::FrameRangeError& e) {
-      throw UsageError(shown + ": " + e.what());
+      throw io::BadInput(shown + ": " + e.what());
     }
     g.golden_dir = check::golden_dir_of(job.file, o.golden);
     g.shown = shown;
@@ -245,8 +145,8 @@ std::vector<CheckJob> prepare_jobs(const CheckOptions& o) {
     check::check_golden_inputs(g, o.update);
     const auto key = fs::weakly_canonical(g.golden_dir);
     if (auto [it, fresh] = golden_owner.emplace(key, shown); !fresh)
-      throw UsageError(shown + ": its goldens would share " + g.golden_dir.string() + " with " +
-                       it->second + " (jobs need distinct file names)");
+      throw io::BadInput(shown + ": its goldens would share " + g.golden_dir.string() + " with " +
+                         it->second + " (jobs need distinct file names)");
     c.job = std::move(job);
     jobs.push_back(std::move(c));
   }
@@ -281,7 +181,7 @@ check::JobChecker job_checker(const CheckOptions& o, const check::Tolerance& t,
 
 // Compares the frames drawn (or writes them as goldens with --update).
 check::JobOutcome check_frames(check::JobChecker& checker, const CheckOptions& o, const CheckJob& c,
-                               std::size_t index, const RenderedFrames& rendered) {
+                               std::size_t index, const paint::DrawnFrames& rendered) {
   std::vector<check::ImageView> images;
   for (const auto& im : rendered.images) images.push_back({im.width, im.height, im.pixels});
   std::optional<std::string> failure;
@@ -338,7 +238,7 @@ std::vector<std::future<check::JobOutcome>> check_jobs(const std::vector<CheckJo
                                                             c.job.scene.height);
           }
           const auto rendered =
-              render_job_frames(c.plan, c.job.scene, c.golden.frames, *painter, paint_lock.get());
+              paint::draw_frames(c.plan, c.job.scene, c.golden.frames, *painter, paint_lock.get());
           drop_painter();
           (*promises)[i].set_value(check_frames(checker, o, c, i, rendered));
         } catch (...) {
@@ -360,9 +260,9 @@ int run_check(const CheckOptions& o) {
   const check::Tolerance t = tolerance_from(o);
   const int workers = o.workers.empty() ? 1 : int(parse_integer("-j", o.workers, 1, 64));
   check_output_paths(o);
-  const FifoReaderCheck junit_reader(o.junit);
+  const io::FifoReaderCheck junit_reader("--junit", o.junit);
   const auto jobs = prepare_jobs(o);
-  if (!o.report.empty() && !o.update) make_report_folder(o.report);
+  if (!o.report.empty() && !o.update) io::make_output_folder("--report", o.report);
 
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::thread> threads;

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "app/usage_error.hpp"
+#include "io/bad_input.hpp"
 #include "io/printable.hpp"
 
 namespace epviz::app {
@@ -30,7 +30,7 @@ std::filesystem::path canonical_file(const std::string& path) {
 double parse_number(const std::string& option, const std::string& text) {
   double x = 0.0;
   if (!to_double(text, x))
-    throw UsageError(option + ": expected a finite number, got '" + io::printable(text) + "'");
+    throw io::BadInput(option + ": expected a finite number, got '" + io::printable(text) + "'");
   return x;
 }
 
@@ -40,8 +40,8 @@ long parse_integer(const std::string& option, const std::string& text, long min_
   const char* end = text.data() + text.size();
   auto [ptr, ec] = std::from_chars(text.data(), end, x);
   if (text.empty() || ec != std::errc() || ptr != end || x < min_value || x > max_value)
-    throw UsageError(option + ": expected an integer from " + std::to_string(min_value) + " to " +
-                     std::to_string(max_value) + ", got '" + io::printable(text) + "'");
+    throw io::BadInput(option + ": expected an integer from " + std::to_string(min_value) + " to " +
+                       std::to_string(max_value) + ", got '" + io::printable(text) + "'");
   return x;
 }
 
@@ -53,8 +53,8 @@ std::array<double, 3> parse_vec3(const std::string& option, const std::string& t
     const bool last = (i == 2);
     if (last != (comma == std::string::npos) ||
         !to_double(text.substr(start, last ? std::string::npos : comma - start), v[i]))
-      throw UsageError(option + ": expected three comma-separated finite numbers X,Y,Z, got '" +
-                       io::printable(text) + "'");
+      throw io::BadInput(option + ": expected three comma-separated finite numbers X,Y,Z, got '" +
+                         io::printable(text) + "'");
     start = comma + 1;
   }
   return v;
@@ -81,8 +81,8 @@ void require_distinct_files(const std::vector<std::pair<std::string, std::string
       const auto& [b_option, b] = outputs[i];
       if (a.empty() || b.empty() || a == "-" || b == "-") continue;
       if (canonical_file(a) == canonical_file(b))
-        throw UsageError(b_option + ": the same file as " + a_option + " ('" + io::printable(b) +
-                         "'); give each its own file");
+        throw io::BadInput(b_option + ": the same file as " + a_option + " ('" + io::printable(b) +
+                           "'); give each its own file");
     }
 }
 

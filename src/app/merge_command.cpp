@@ -6,9 +6,9 @@
 #include <memory>
 
 #include "app/gl_option.hpp"
-#include "app/output_paths.hpp"
-#include "app/usage_error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/bad_input.hpp"
+#include "io/output_paths.hpp"
 #include "io/png_writer.hpp"
 #include "io/video_join.hpp"
 #include "shard/batch.hpp"
@@ -77,7 +77,7 @@ void draw_atlases(const std::vector<Json>& rows, const std::vector<sweep::AtlasR
 #else
   (void)out_dir;
   (void)o;
-  throw UsageError("--atlas: this epviz was built without the renderer (EPVIZ_BUILD_RENDER=OFF)");
+  throw io::BadInput("--atlas: this epviz was built without the renderer (EPVIZ_BUILD_RENDER=OFF)");
 #endif
 }
 
@@ -132,14 +132,14 @@ int run_merge(const MergeOptions& o) {
   const fs::path dir = o.dir;
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
-    throw UsageError("DIR: '" + o.dir +
+    throw io::BadInput("DIR: '" + o.dir +
                      "' is not a directory (give the directory the shards wrote to)");
   const fs::path out_dir = o.out.empty() ? dir : fs::path(o.out);
-  check_output_dir("--out", out_dir);
-  if (!o.resubmit.empty()) check_output_file("--resubmit", o.resubmit);
+  io::check_output_dir("--out", out_dir);
+  if (!o.resubmit.empty()) io::check_output_file("--resubmit", o.resubmit);
   auto batches = shard::read_batches(dir);
   if (batches.empty())
-    throw UsageError("DIR: no shard manifests (*" + std::string(shard::manifest_suffix) + ") in " +
+    throw io::BadInput("DIR: no shard manifests (*" + std::string(shard::manifest_suffix) + ") in " +
                      o.dir + "; run epviz sweep or render with --shard I/N there first");
   int incomplete = 0;
   for (auto& b : batches) {

@@ -12,23 +12,24 @@
 #include "app/bench_command.hpp"
 #include "app/cli_values.hpp"
 #include "app/gl_option.hpp"
-#include "app/job_frames.hpp"
-#include "app/output_paths.hpp"
-#include "app/render_job.hpp"
-#include "app/usage_error.hpp"
 #include "io/atomic_file.hpp"
-#include "io/frame_names.hpp"
+#include "io/bad_input.hpp"
 #include "io/frame_range.hpp"
-#include "io/image_tiling.hpp"
+#include "io/output_paths.hpp"
 #include "io/png_writer.hpp"
 #include "io/progress.hpp"
 #include "io/temp_name.hpp"
 #include "io/temp_registry.hpp"
 #include "io/video_writer.hpp"
-#include "job/schema.hpp"
-#include "paint/frame_painter.hpp"
+#include "job/gallery_layout.hpp"
+#include "job/job_file.hpp"
+#include "job/job_plan.hpp"
+#include "job/render_report.hpp"
+#include "numerics/failure.hpp"
+#include "paint/frame_files.hpp"
+#include "paint/grid_video.hpp"
 #include "render/gl_choice.hpp"
-#include "scene/frame_source.hpp"
+#include "scene/plan.hpp"
 #include "shard/checksum.hpp"
 #include "shard/frame_shard.hpp"
 #include "sim/failure_advice.hpp"
@@ -37,6 +38,8 @@ namespace epviz::app {
 namespace {
 
 namespace fs = std::filesystem;
+using job::GalleryJob;
+using job::RenderJob;
 
 struct RenderOptions {
   std::string job, out, frames, width, height, format, gl, report_json, shard, shard_count;
@@ -51,37 +54,41 @@ struct PreparedJob {
   std::string caption;  // under every frame (gallery tiles)
 };
 
-// --format, checked; nullopt when not given.
-std::optional<OutputFormat> format_option(const RenderOptions& o) {
-  if (o.format.empty()) return std::nullopt;
-  auto f = output_format_from_name(o.format);
-  if (!f)
-    throw UsageError("--format: unknown format '" + o.format + "' (allowed: png, mp4, webm, gif)");
-  return f;
+// --format, checked; when given, `video` becomes its video format (none for png).
+void format_option(const RenderOptions& o, std::optional<io::VideoFormat>& video) {
+  if (o.format.empty()) return;
+  const auto names = job::output_format_names();
+  if (std::find(names.begin(), names.end(), o.format) == names.end()) {
+    std::string allowed;
+    for (const auto& n : names) allowed += (allowed.empty() ? "" : ", ") + n;
+    throw io::BadInput("--format: unknown format '" + o.format + "' (allowed: " + allowed + ")");
+  }
+  video = io::parse_video_format(o.format);
 }
 
 PreparedJob prepare(RenderJob job, const RenderOptions& o) {
   if (!o.width.empty()) job.scene.width = int(parse_integer("--width", o.width, 16, 8192));
   if (!o.height.empty()) job.scene.height = int(parse_integer("--height", o.height, 16, 8192));
-  if (auto f = format_option(o)) job.output.format = *f;
+  format_option(o, job.output.video);
   if (!o.out.empty()) job.output.dir = o.out;
   // Every output is checked before any work, so that nothing is written on exit 2.
-  check_file_name(job.file.string() + ": output.name", job.output.name);
-  check_output_dir(o.out.empty() ? job.file.string() + ": output.dir" : "--out", job.output.dir);
-  const auto video = job::video_format(job.output.format);
+  io::check_file_name(job.file.string() + ": output.name", job.output.name);
+  io::check_output_dir(o.out.empty() ? job.file.string() + ": output.dir" : "--out",
+                       job.output.dir);
+  const auto& video = job.output.video;
   if (const auto why =
           video ? io::video_size_problem(*video, job.scene.width, job.scene.height) : std::string();
       !why.empty())
-    throw UsageError(job.file.string() + ": " + why);
+    throw io::BadInput(job.file.string() + ": " + why);
   if (video && !io::ffmpeg_available())
-    throw UsageError(
-        "--format " + std::string(output_format_name(job.output.format)) +
+    throw io::BadInput(
+        "--format " + std::string(io::video_format_name(*video)) +
         ": ffmpeg not found on PATH; install the Debian package ffmpeg (scripts/setup.sh does)");
-  if (o.resume && job.output.format != OutputFormat::png)
-    throw UsageError("--resume: applies to PNG sequences only (a video is written whole)");
+  if (o.resume && video)
+    throw io::BadInput("--resume: applies to PNG sequences only (a video is written whole)");
 
   PreparedJob p;
-  p.plan = plan_job(job);
+  p.plan = job::plan_job(job);
   p.range = o.frames.empty() ? io::all_frames(p.plan.frames)
                              : io::parse_frame_range(o.frames, p.plan.frames);
   p.job = std::move(job);
@@ -95,100 +102,38 @@ io::ProgressMode progress_mode(const RenderOptions& o) {
 }
 
 struct RenderStats {
-  int frames_drawn = 0, frames_skipped = 0;
-  double seconds = 0.0;
-  std::optional<numerics::Failure> failure;
-  std::optional<render::RgbaImage> kept;  // the last frame drawn (for galleries)
-  nlohmann::json runs;                    // app::runs_report after the last frame
+  paint::FramesWritten written;
+  nlohmann::json runs;  // job::runs_report after the last frame
 };
 
-// Renders the prepared job's frame range to its output. Frames before the
-// range are integrated through but not drawn.
-RenderStats render_frames(const PreparedJob& p, paint::FramePainter& painter,
-                          const RenderOptions& o, bool write_output = true) {
-  RenderStats stats;
-  const auto& job = p.job;
-  const auto& s = job.scene;
-  fs::create_directories(job.output.dir);
-  // Temporaries of runs killed before they could clean up (SIGKILL).
-  io::remove_stale_temporaries(job.output.dir);
-  JobFrameDrawer drawer(p.plan, s);
-  drawer.set_caption(p.caption);
-
-  std::unique_ptr<io::AsyncPngWriter> pngs;
-  std::unique_ptr<io::VideoWriter> video;
-  if (write_output && job.output.format == OutputFormat::png) {
-    pngs = std::make_unique<io::AsyncPngWriter>();
-  } else if (write_output) {
-    const auto fmt = *job::video_format(job.output.format);
-    video = std::make_unique<io::VideoWriter>(
-        job.output.dir / (job.output.name + std::string(io::video_format_extension(fmt))), fmt,
-        s.width, s.height, s.fps);
-  }
+io::ProgressOptions progress_options(const RenderOptions& o, std::string label) {
   io::ProgressOptions po;
   po.mode = progress_mode(o);
-  po.label = job.file.stem().string();
-  io::ProgressLine progress(p.range.count(), po);
+  po.label = std::move(label);
+  return po;
+}
 
-  const auto start = std::chrono::steady_clock::now();
-  try {
-    for (int i = p.range.first; i <= p.range.last; ++i) {
-      const fs::path png_path =
-          job.output.dir / io::frame_file_name(i, p.plan.frames, job.output.name + "_", ".png");
-      if (pngs && o.resume && io::png_frame_complete(png_path)) {
-        ++stats.frames_skipped;
-        progress.advance();
-        continue;
-      }
-      const render::RgbaImage& image = drawer.draw(i, painter);
-      if (pngs) pngs->submit(png_path, image.width, image.height, image.pixels);
-      if (video) video->write_frame(image.pixels.data());
-      if (!write_output) stats.kept = image;
-      ++stats.frames_drawn;
-      progress.advance();
-    }
-  } catch (const numerics::IntegrationError& e) {
-    stats.failure = e.failure();
-  }
-  progress.finish();
-  stats.runs = runs_report(drawer.source());
-  if (pngs) pngs->close();
-  if (video && !stats.failure)
-    video->finish();  // a failed video is not kept (its destructor removes it)
-  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+// Renders the prepared job's frame range to its output, or (write_output
+// false) keeps its last frame.
+RenderStats render_frames(const PreparedJob& p, paint::FramePainter& painter,
+                          const RenderOptions& o, bool write_output = true) {
+  const auto& job = p.job;
+  paint::FrameDrawer drawer(p.plan, job.scene);
+  drawer.set_caption(p.caption);
+  std::optional<paint::FrameFiles> files;
+  if (write_output)
+    files = paint::FrameFiles{job.output.dir, job.output.name, job.output.video, job.scene.fps,
+                              o.resume};
+  RenderStats stats;
+  stats.written = paint::write_frames(drawer, painter, p.range, files,
+                                      progress_options(o, job.file.stem().string()));
+  stats.runs = job::runs_report(drawer.source());
   return stats;
 }
 
-// Per run: the step or tolerance used, the work and the drifts; the first
-// run's step and pixel-true horizon also at the top level.
-void add_runs_report(nlohmann::json& j, const nlohmann::json& runs) {
-  if (!runs.is_array() || runs.empty()) return;
-  j["effective_step"] = runs[0]["effective_step"];
-  j["pixel_true_until"] = runs[0]["pixel_true_until"];
-  j["runs"] = runs;
-}
-
 nlohmann::json job_report(const PreparedJob& p, const RenderStats& st) {
-  const auto& run = p.plan.run;
-  nlohmann::json j;
-  j["job"] = p.job.file.string();
-  j["case"] = physics::case_name(run.case_id);
-  j["formulation"] = std::string(sim::name(run.formulation));
-  j["method"] = std::string(sim::name(run.method));
-  j["accuracy"] = p.plan.accuracy_note;
-  if (sim::is_adaptive(run.method)) j["tol"] = run.tol;
-  j["frames"] = p.plan.frames;
-  j["frames_drawn"] = st.frames_drawn;
-  j["frames_skipped"] = st.frames_skipped;
-  j["seconds"] = st.seconds;
-  j["output"] = (p.job.output.dir).string();
-  j["failure"] = st.failure
-                     ? nlohmann::json(sim::failure_line(*st.failure, sim::SettingsIn::render_job))
-                     : nlohmann::json(nullptr);
-  j["failure_kind"] = st.failure ? nlohmann::json(std::string(numerics::name(st.failure->kind)))
-                                 : nlohmann::json(nullptr);
-  add_runs_report(j, st.runs);
-  return j;
+  const auto& w = st.written;
+  return job::render_report(p.job, p.plan, {w.drawn, w.skipped, w.seconds, w.failure}, st.runs);
 }
 
 // Which GL implementation drew the frames (goldens are compared per backend).
@@ -205,10 +150,11 @@ std::FILE* summary_stream(const RenderOptions& o) {
   return !o.report_json.empty() && io::writes_to_standard_output(o.report_json) ? stderr : stdout;
 }
 
-void print_job_line(std::FILE* out, const PreparedJob& p, const RenderStats& st) {
+void print_job_line(std::FILE* out, const PreparedJob& p, const RenderStats& stats) {
+  const auto& st = stats.written;
   std::fprintf(out, "%s: %d frames %dx%d in %.2f s (%.1f frames/s), %s %s, %s -> %s\n",
-               p.job.file.string().c_str(), st.frames_drawn, p.job.scene.width, p.job.scene.height,
-               st.seconds, st.seconds > 0 ? st.frames_drawn / st.seconds : 0.0,
+               p.job.file.string().c_str(), st.drawn, p.job.scene.width, p.job.scene.height,
+               st.seconds, st.seconds > 0 ? st.drawn / st.seconds : 0.0,
                std::string(sim::name(p.plan.run.method)).c_str(), p.plan.accuracy_note.c_str(),
                std::string(sim::name(p.plan.run.formulation)).c_str(),
                p.job.output.dir.string().c_str());
@@ -239,11 +185,10 @@ shard::FrameBatch frame_batch(const RenderJob& job, int frames) {
                       "--height",
                       std::to_string(job.scene.height),
                       "--format",
-                      std::string(output_format_name(job.output.format))};
+                      std::string(job::output_format_name(job.output.video))};
   b.dir = job.output.dir;
   b.name = job.output.name;
-  if (const auto video = job::video_format(job.output.format))
-    b.video_extension = io::video_format_extension(*video);
+  if (job.output.video) b.video_extension = io::video_format_extension(*job.output.video);
   b.frames = frames;
   return b;
 }
@@ -255,7 +200,7 @@ int render_single(RenderJob job, const RenderOptions& o, const render::GlChoice&
   std::optional<shard::FrameShard> shard;
   if (const auto spec = shard::shard_from_options(o.shard, o.shard_count)) {
     if (!o.frames.empty())
-      throw UsageError("--frames: a shard's frames follow from --shard; give one of them");
+      throw io::BadInput("--frames: a shard's frames follow from --shard; give one of them");
     batch = frame_batch(p.job, p.plan.frames);
     shard = shard::plan_frame_shard(batch, *spec);
     p.range = {int(shard->frames.first), int(shard->frames.end - 1)};
@@ -265,98 +210,45 @@ int render_single(RenderJob job, const RenderOptions& o, const render::GlChoice&
   paint::FramePainter painter(*context, p.job.scene.width, p.job.scene.height);
   if (shard) shard::start_frame_shard(*shard);
   const auto st = render_frames(p, painter, o);
-  if (shard && !st.failure) shard::finish_frame_shard(*shard, batch);
+  if (shard && !st.written.failure) shard::finish_frame_shard(*shard, batch);
   print_job_line(summary_stream(o), p, st);
   if (!o.report_json.empty()) {
     auto report = job_report(p, st);
     add_gl_report(report, *context);
     io::write_file_atomically(o.report_json, report.dump(2) + "\n");
   }
-  return report_failure(st.failure);
-}
-
-// The gallery's tiling of its figure and grid video.
-io::TilingOptions gallery_tiling(const GalleryJob& g) {
-  io::TilingOptions tiling;
-  tiling.cols = g.columns;
-  tiling.gap = 4;
-  tiling.margin = 4;
-  tiling.background = {16, 18, 22, 255};
-  return tiling;
-}
-
-// The grid video's size in pixels, checked before any work: a video needs
-// an even width and height.
-std::pair<int, int> grid_size(const GalleryJob& g, int jobs) {
-  const auto tiling = gallery_tiling(g);
-  const int cols = std::min(g.columns, jobs);
-  const int rows = (jobs + cols - 1) / cols;
-  const int width = 2 * tiling.margin + cols * g.tile_width + (cols - 1) * tiling.gap;
-  const int height = 2 * tiling.margin + rows * g.tile_height + (rows - 1) * tiling.gap;
-  if (width % 2 || height % 2)
-    throw UsageError(g.file.string() + ": grid_video: the grid is " + std::to_string(width) + "x" +
-                     std::to_string(height) +
-                     " pixels; a video needs an even width and height (change the tile size)");
-  return {width, height};
+  return report_failure(st.written.failure);
 }
 
 // Every job of the gallery at once, tiled frame by frame into one MP4
-// (grid.mp4): frame i of each job side by side, a job that has ended held
-// at its last frame. Returns the failures (a failed job's tile stays at its
-// last good frame).
+// (grid.mp4). Returns the number of jobs that failed.
 int render_grid_video(const GalleryJob& g, const std::vector<PreparedJob>& jobs,
                       paint::FramePainter& painter, const RenderOptions& o) {
-  std::vector<std::unique_ptr<JobFrameDrawer>> drawers;
-  std::vector<render::RgbaImage> tiles;
-  std::vector<bool> failed(jobs.size(), false);
-  int frames = 0;
-  const double fps = jobs.front().job.scene.fps;  // the first job's: the tiles share one clock
-  for (const auto& p : jobs) {
-    drawers.push_back(std::make_unique<JobFrameDrawer>(p.plan, p.job.scene));
-    drawers.back()->set_caption(p.caption);
-    tiles.push_back({g.tile_width, g.tile_height,
-                     std::vector<std::uint8_t>(std::size_t(g.tile_width) * g.tile_height * 4, 0)});
-    frames = std::max(frames, p.plan.frames);
-  }
-  const auto tiling = gallery_tiling(g);
-  const auto [width, height] = grid_size(g, int(jobs.size()));
-  io::VideoWriter video(g.dir / "grid.mp4", io::VideoFormat::mp4, width, height, fps);
-  io::ProgressOptions po;
-  po.mode = progress_mode(o);
-  po.label = "grid";
-  io::ProgressLine progress(frames, po);
-  for (int i = 0; i < frames; ++i) {
-    for (std::size_t k = 0; k < jobs.size(); ++k) {
-      if (failed[k]) continue;
-      try {
-        tiles[k] = drawers[k]->draw(std::min(i, jobs[k].plan.frames - 1), painter);
-      } catch (const numerics::IntegrationError& e) {
-        failed[k] = true;
-        report_failure(e.failure());
-      }
-    }
-    std::vector<std::span<const std::uint8_t>> spans;
-    for (const auto& t : tiles) spans.emplace_back(t.pixels);
-    const auto grid = io::tile_images(spans, g.tile_width, g.tile_height, tiling);
-    video.write_frame(grid.pixels.data());
-    progress.advance();
-  }
-  progress.finish();
-  video.finish();
+  std::vector<paint::GridScene> scenes;
+  for (const auto& p : jobs) scenes.push_back({&p.plan, &p.job.scene, p.caption});
+  paint::GridVideo video;
+  video.path = g.dir / "grid.mp4";
+  video.tile_width = g.tile_width;
+  video.tile_height = g.tile_height;
+  video.tiling = job::gallery_tiling(g);
+  video.fps = jobs.front().job.scene.fps;  // the first job's: the tiles share one clock
+  const auto written =
+      paint::write_grid_video(scenes, video, painter, progress_options(o, "grid"),
+                              [](const numerics::Failure& f) { report_failure(f); });
   std::fprintf(summary_stream(o), "%s: %d frames of %zu jobs tiled into %s (%dx%d)\n",
-               g.file.string().c_str(), frames, jobs.size(), (g.dir / "grid.mp4").string().c_str(),
-               width, height);
-  return int(std::count(failed.begin(), failed.end(), true));
+               g.file.string().c_str(), written.frames, jobs.size(), video.path.string().c_str(),
+               written.size.width, written.size.height);
+  return written.failures;
 }
 
 int render_gallery(GalleryJob g, const RenderOptions& o, const render::GlChoice& gl) {
   if (!o.frames.empty())
-    throw UsageError("--frames: a gallery renders whole jobs; give --frames to a single job");
+    throw io::BadInput("--frames: a gallery renders whole jobs; give --frames to a single job");
   if (!o.shard.empty())
-    throw UsageError("--shard: a gallery renders whole jobs; shard a single job");
+    throw io::BadInput("--shard: a gallery renders whole jobs; shard a single job");
   if (!o.out.empty()) g.dir = o.out;
-  check_output_dir(o.out.empty() ? g.file.string() + ": dir" : "--out", g.dir);
-  if (auto f = format_option(o)) g.videos = *f == OutputFormat::png ? std::nullopt : f;
+  io::check_output_dir(o.out.empty() ? g.file.string() + ": dir" : "--out", g.dir);
+  format_option(o, g.videos);
   // Check every job before rendering any.
   std::vector<PreparedJob> stills, videos;
   RenderOptions job_opts = o;
@@ -367,23 +259,24 @@ int render_gallery(GalleryJob g, const RenderOptions& o, const render::GlChoice&
     job.scene.height = g.tile_height;
     job.output.dir = g.dir;
     auto still = job;
-    still.output.format = OutputFormat::png;
+    still.output.video.reset();
     auto ps = prepare(still, job_opts);
     const int at = int(std::lround(g.at * (ps.plan.frames - 1)));
     ps.range = {at, at};
-    ps.caption = tile_caption(ps.job, ps.plan);
+    ps.caption = job::tile_caption(ps.job, ps.plan);
     stills.push_back(std::move(ps));
     if (g.videos) {
-      job.output.format = *g.videos;
+      job.output.video = g.videos;
       job.output.name = job.file.stem().string();
       videos.push_back(prepare(job, job_opts));
     }
   }
   if (g.grid_video) {
-    grid_size(g, int(stills.size()));
+    job::grid_video_size(g, int(stills.size()));
     if (!io::ffmpeg_available())
-      throw UsageError(g.file.string() +
-                       ": grid_video: ffmpeg not found on PATH; install the Debian package ffmpeg");
+      throw io::BadInput(
+          g.file.string() +
+          ": grid_video: ffmpeg not found on PATH; install the Debian package ffmpeg");
   }
   fs::create_directories(g.dir);
   io::remove_stale_temporaries(g.dir);
@@ -395,17 +288,16 @@ int render_gallery(GalleryJob g, const RenderOptions& o, const render::GlChoice&
   std::vector<render::RgbaImage> tiles;
   for (const auto& p : stills) {
     auto st = render_frames(p, painter, o, /*write_output=*/false);
-    failures += report_failure(st.failure) != 0;
-    tiles.push_back(st.kept
-                        ? std::move(*st.kept)
+    failures += report_failure(st.written.failure) != 0;
+    tiles.push_back(st.written.kept
+                        ? std::move(*st.written.kept)
                         : render::RgbaImage{g.tile_width, g.tile_height,
                                             std::vector<std::uint8_t>(
                                                 std::size_t(g.tile_width) * g.tile_height * 4, 0)});
   }
   std::vector<std::span<const std::uint8_t>> spans;
   for (const auto& t : tiles) spans.emplace_back(t.pixels);
-  const io::TilingOptions tiling = gallery_tiling(g);
-  const auto figure = io::tile_images(spans, g.tile_width, g.tile_height, tiling);
+  const auto figure = io::tile_images(spans, g.tile_width, g.tile_height, job::gallery_tiling(g));
   const fs::path figure_path = g.dir / "gallery.png";
   io::write_png_rgba(figure_path, figure.width, figure.height, figure.pixels);
   std::fprintf(summary_stream(o), "%s: %zu cases tiled into %s (%dx%d)\n", g.file.string().c_str(),
@@ -416,7 +308,7 @@ int render_gallery(GalleryJob g, const RenderOptions& o, const render::GlChoice&
     print_job_line(summary_stream(o), p, st);
     reports.push_back(job_report(p, st));
     add_gl_report(reports.back(), *context);
-    failures += report_failure(st.failure) != 0;
+    failures += report_failure(st.written.failure) != 0;
   }
   if (g.grid_video) failures += render_grid_video(g, stills, painter, o);
   if (!o.report_json.empty()) io::write_file_atomically(o.report_json, reports.dump(2) + "\n");
@@ -424,14 +316,14 @@ int render_gallery(GalleryJob g, const RenderOptions& o, const render::GlChoice&
 }
 
 int run_render(const RenderOptions& o) {
-  check_output_file("--report-json", o.report_json);
+  io::check_output_file("--report-json", o.report_json);
   // SIGINT/SIGTERM remove the temporaries of the frames and videos being written.
   io::install_temporary_cleanup();
   const render::GlChoice gl(o.gl);
-  auto loaded = load_render_job(o.job);
+  auto loaded = job::load_job_file(o.job);
   if (loaded.bench) {
     if (!o.frames.empty() || !o.format.empty() || o.resume || !o.shard.empty())
-      throw UsageError(o.job + ": a bench-figures job takes only --out and --gl");
+      throw io::BadInput(o.job + ": a bench-figures job takes only --out and --gl");
     BenchRequest b;
     b.quick = loaded.bench->quick;
     for (const auto& c : loaded.bench->cases) b.cases += (b.cases.empty() ? "" : ",") + c;

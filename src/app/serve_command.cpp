@@ -3,15 +3,13 @@
 #include <CLI/CLI.hpp>
 #include <csignal>
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "app/cli_values.hpp"
 #include "app/gl_option.hpp"
-#include "app/render_job.hpp"
-#include "app/usage_error.hpp"
+#include "io/bad_input.hpp"
 #include "io/data_dir.hpp"
 #include "live/live_session.hpp"
 #include "render/gl_choice.hpp"
@@ -20,8 +18,6 @@
 
 namespace epviz::app {
 namespace {
-
-namespace fs = std::filesystem;
 
 struct ServeOptions {
   std::string job, bind = "127.0.0.1", gl, image = "jpeg", save_dir, record;
@@ -40,27 +36,6 @@ bool is_loopback(const std::string& host) {
   return host == "127.0.0.1" || host == "::1" || host == "localhost" || host.rfind("127.", 0) == 0;
 }
 
-live::LiveSetup setup_of_single_job(const fs::path& file) {
-  LoadedJob loaded = load_render_job(file);
-  if (!loaded.single)
-    throw UsageError(file.string() + ": serve needs a single render job (this file is a " +
-                     (loaded.gallery ? "gallery" : "bench figures job") + ")");
-  return live::setup_from_job(resolve(loaded.single->simulation), loaded.single->scene);
-}
-
-// The case combo loads the case's job from render_jobs/ when it is there
-// (the same title, view, camera and trail as the rendered videos), else the
-// built-in preset.
-live::LiveSetup preset_from_jobs(physics::Case c) {
-  const fs::path file = io::find_data_path("render_jobs/" + physics::case_name(c) + ".json");
-  try {
-    if (!file.empty() && fs::is_regular_file(file)) return setup_of_single_job(file);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "epviz serve: %s (using the built-in preset)\n", e.what());
-  }
-  return live::preset_setup(c);
-}
-
 int run_serve(const ServeOptions& o) {
   serve::ServerOptions so;
   so.bind = o.bind;
@@ -71,21 +46,21 @@ int run_serve(const ServeOptions& o) {
   else if (o.image == "png")
     so.image_format = serve::ImageFormat::png;
   else
-    throw UsageError("--image: unknown format '" + o.image + "' (allowed: jpeg, png)");
+    throw io::BadInput("--image: unknown format '" + o.image + "' (allowed: jpeg, png)");
   so.page = io::find_data_path("assets/serve.html");
   if (so.page.empty()) {
     std::string searched;
     for (const auto& dir : io::data_search_path()) searched += " " + (dir / "assets").string();
-    throw UsageError("the page serve.html is missing; searched:" + searched +
-                     " (set EPVIZ_DATA_DIR)");
+    throw io::BadInput("the page serve.html is missing; searched:" + searched +
+                       " (set EPVIZ_DATA_DIR)");
   }
   so.record_path = o.record;
   for (const std::string& origin : o.allow_origins) {
     const auto normalized = serve::OriginPolicy::normalize_origin(origin);
     if (!normalized)
-      throw UsageError("--allow-origin: '" + origin +
-                       "' is not an origin (allowed: http://HOST[:PORT] or https://HOST[:PORT], "
-                       "no path)");
+      throw io::BadInput("--allow-origin: '" + origin +
+                         "' is not an origin (allowed: http://HOST[:PORT] or https://HOST[:PORT], "
+                         "no path)");
     so.allowed_origins.push_back(*normalized);
   }
   so.log = [](const std::string& line) { std::fprintf(stderr, "epviz serve: %s\n", line.c_str()); };
@@ -93,16 +68,16 @@ int run_serve(const ServeOptions& o) {
   const render::GlChoice gl_choice(o.gl);
 
   live::SessionOptions session;
-  session.initial =
-      o.job.empty() ? preset_from_jobs(physics::Case::kovalevskaya) : setup_of_single_job(o.job);
-  session.presets = preset_from_jobs;
+  session.initial = o.job.empty() ? live::preset_from_jobs(physics::Case::kovalevskaya)
+                                  : live::setup_from_job_file(o.job);
+  session.presets = live::preset_from_jobs;
   session.save_dir = o.save_dir;
   session.start_playing = o.play;
   try {
     live::LiveScene check(
         session.initial);  // a job the scene cannot run is an error now, not per connection
   } catch (const std::exception& e) {
-    throw UsageError((o.job.empty() ? std::string("default scene") : o.job) + ": " + e.what());
+    throw io::BadInput((o.job.empty() ? std::string("default scene") : o.job) + ": " + e.what());
   }
 
   // The GL context belongs to the render thread, which creates it.

@@ -8,16 +8,17 @@
 #include <optional>
 
 #include "app/cli_values.hpp"
-#include "app/output_paths.hpp"
 #include "app/simulation_fields.hpp"
-#include "app/simulation_output.hpp"
-#include "app/usage_error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/bad_input.hpp"
+#include "io/output_paths.hpp"
 #include "io/progress.hpp"
 #include "io/temp_name.hpp"
 #include "io/temp_registry.hpp"
+#include "job/resolve.hpp"
 #include "physics/cases.hpp"
 #include "sim/failure_advice.hpp"
+#include "sweep/simulation_output.hpp"
 
 namespace epviz::app {
 namespace {
@@ -49,10 +50,10 @@ void check_step_budget(const sim::RunSpec& spec) {
   if (sim::is_adaptive(spec.method)) return;
   const double steps = spec.t_end / spec.step;
   if (steps > double(spec.max_steps))
-    throw UsageError("--t-end: " + fmt(spec.t_end) + " with --step " + fmt(spec.step) + " needs " +
-                     fmt(steps) + " steps, more than the step budget of " +
-                     fmt(double(spec.max_steps)) +
-                     " (--max-steps); shorten --t-end or take a larger --step");
+    throw io::BadInput("--t-end: " + fmt(spec.t_end) + " with --step " + fmt(spec.step) +
+                       " needs " + fmt(steps) + " steps, more than the step budget of " +
+                       fmt(double(spec.max_steps)) +
+                       " (--max-steps); shorten --t-end or take a larger --step");
 }
 
 // Removes temporaries that killed runs left beside `path` (the process is gone).
@@ -85,20 +86,20 @@ int run_simulate(const RawOptions& raw) {
   if (!raw.job.empty()) fields = fields_from_job(raw.job);
   fields.overlay(fields_from_options(raw.sim));
   require_distinct_files({{"--csv", raw.csv}, {"--report-json", raw.report_json}});
-  check_output_file("--csv", raw.csv);
-  check_output_file("--report-json", raw.report_json);
+  io::check_output_file("--csv", raw.csv);
+  io::check_output_file("--report-json", raw.report_json);
   const bool csv_to_stdout = !raw.csv.empty() && io::writes_to_standard_output(raw.csv);
   const bool report_to_stdout =
       !raw.report_json.empty() && io::writes_to_standard_output(raw.report_json);
   if (csv_to_stdout && report_to_stdout)
-    throw UsageError(
+    throw io::BadInput(
         "--report-json: standard output already carries the samples (--csv); write one of them "
         "to a file");
 
   std::vector<SimulationFields> runs;
   if (fields.case_name && *fields.case_name == "all") {
     if (!raw.csv.empty())
-      throw UsageError("--csv: writes one run's samples; it cannot be combined with --case all");
+      throw io::BadInput("--csv: writes one run's samples; it cannot be combined with --case all");
     for (const auto& p : physics::case_presets()) {
       SimulationFields one = fields;
       one.case_name.set(p.name, fields.case_name.origin);
@@ -110,7 +111,7 @@ int run_simulate(const RawOptions& raw) {
 
   // Resolve every run before integrating any: bad input leaves nothing behind.
   std::vector<sim::RunSpec> specs;
-  for (const auto& f : runs) specs.push_back(resolve(f));
+  for (const auto& f : runs) specs.push_back(job::resolve(f));
   if (!raw.max_steps.empty()) {
     const long budget = long(parse_integer("--max-steps", raw.max_steps, 1, 1'000'000'000'000));
     for (auto& spec : specs) spec.max_steps = budget;
@@ -133,7 +134,7 @@ int run_simulate(const RawOptions& raw) {
   for (const auto& spec : specs) {
     const sim::InvariantMonitor monitor(spec.body, spec.case_id, spec.initial);
     sim::Drifts drift = monitor.no_drift();
-    std::optional<SamplesCsvWriter> csv;
+    std::optional<sweep::SamplesCsvWriter> csv;
     if (csv_file) csv.emplace(spec, *csv_file);
     io::ProgressOptions po;
     po.label = "simulate " + physics::case_name(spec.case_id);
@@ -147,7 +148,7 @@ int run_simulate(const RawOptions& raw) {
     progress.finish();
     if (csv) csv->flush();
     print_summary(summary, spec, result, drift);
-    reports.push_back(run_report(spec, result, drift));
+    reports.push_back(sweep::run_report(spec, result, drift));
     if (result.failure) {
       ++failures;
       std::fprintf(stderr, "epviz: %s\n",

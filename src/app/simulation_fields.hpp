@@ -9,7 +9,6 @@
 #include "job/document.hpp"
 #include "job/fields.hpp"
 #include "job/schema.hpp"
-#include "sim/run_spec.hpp"
 
 namespace CLI {
 class App;  // CLI11: included only where options are defined
@@ -38,13 +37,7 @@ struct SimulationOptions {
 void add_simulation_options(CLI::App& cmd, SimulationOptions& options);
 
 // The fields the options give, each converted and named by its option; throws
-// UsageError for a value that is not a number, a vector, ...
+// io::BadInput for a value that is not a number, a vector, ...
 SimulationFields fields_from_options(const SimulationOptions& options);
-
-// Checks the fields against each other and against physics and fills in the
-// defaults: a case preset's body and state for fields not given (the generic
-// body, labelled custom, without a case or with case "custom"). Throws
-// UsageError naming the origin.
-sim::RunSpec resolve(const SimulationFields& fields);
 
 }  // namespace epviz::app

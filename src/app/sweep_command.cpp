@@ -9,11 +9,12 @@
 #include <thread>
 
 #include "app/cli_values.hpp"
-#include "app/output_paths.hpp"
 #include "app/simulation_fields.hpp"
-#include "app/usage_error.hpp"
+#include "io/bad_input.hpp"
 #include "io/json_reader.hpp"
+#include "io/output_paths.hpp"
 #include "io/progress.hpp"
+#include "job/resolve.hpp"
 #include "shard/rows_shard.hpp"
 #include "shard/shard_spec.hpp"
 #include "sweep/sweep_runner.hpp"
@@ -47,8 +48,8 @@ int run_sweep(const SweepOptions& o) {
   const long total = spec.point_count();
   const fs::path out_given =
       o.out.empty() ? fs::path(sweep_stem(o.file) + ".jsonl") : fs::path(o.out);
-  if (o.out == "-") throw UsageError("--out: rows are appended to a file, not standard output");
-  check_output_file("--out", out_given.string());
+  if (o.out == "-") throw io::BadInput("--out: rows are appended to a file, not standard output");
+  io::check_output_file("--out", out_given.string());
   std::optional<shard::RowsShard> rows_shard;
   if (shard) {
     shard::RowsBatch batch{
@@ -65,9 +66,9 @@ int run_sweep(const SweepOptions& o) {
   const sweep::ExistingRows existing = sweep::resume_rows(out, spec.hash, total);
   for (long i : existing.indices)
     if (i < range.first || i >= range.end)
-      throw UsageError(out.string() + ": holds point " + std::to_string(i) +
-                       ", outside this shard's points " + std::to_string(range.first) + ".." +
-                       std::to_string(range.end - 1) + "; give another --out");
+      throw io::BadInput(out.string() + ": holds point " + std::to_string(i) +
+                         ", outside this shard's points " + std::to_string(range.first) + ".." +
+                         std::to_string(range.end - 1) + "; give another --out");
 
   // Every point is resolved before any runs: a bad value anywhere in the
   // sweep stops every shard alike, before any work. Only this shard's points
@@ -79,11 +80,11 @@ int run_sweep(const SweepOptions& o) {
   for (long i = 0; i < total; ++i) {
     try {
       auto p = read_point(i);
-      auto run = sweep::resolve_point(p, [](const SimulationFields& f) { return resolve(f); });
+      auto run = sweep::resolve_point(p, [](const SimulationFields& f) { return job::resolve(f); });
       if (i >= range.first && i < range.end && !existing.indices.count(i))
         pending.push_back(sweep::prepared_point(p, std::move(run)));
     } catch (const std::invalid_argument& e) {  // an energy no state of the body reaches
-      throw UsageError(e.what());
+      throw io::BadInput(e.what());
     }
   }
 

@@ -83,4 +83,21 @@ FrameRange parse_frame_range(std::string_view text, int frame_count) {
   return resolve_frame_range(parse_frame_range(text), frame_count);
 }
 
+std::vector<FrameRangeSpec> parse_frame_ranges(std::string_view text) {
+  std::vector<FrameRangeSpec> specs;
+  if (text.empty()) return specs;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = text.find(',', start);
+    const auto item = text.substr(start, comma == std::string_view::npos ? comma : comma - start);
+    if (item.empty())
+      throw FrameRangeError("--frames: empty item in '" + std::string(text) +
+                            "' (allowed: N, A:B, A:, :B separated by commas)");
+    specs.push_back(parse_frame_range(item));
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return specs;
+}
+
 }  // namespace epviz::io

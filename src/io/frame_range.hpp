@@ -8,6 +8,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string_view>
+#include <vector>
 
 #include "io/bad_input.hpp"
 
@@ -37,6 +38,10 @@ struct FrameRange {
 
 // Syntax only. Throws FrameRangeError for anything but the four forms.
 FrameRangeSpec parse_frame_range(std::string_view text);
+
+// A comma-separated list of ranges ("0,5:9,20:"), syntax only; empty text:
+// none. Throws FrameRangeError for an empty item or one parse_frame_range refuses.
+std::vector<FrameRangeSpec> parse_frame_ranges(std::string_view text);
 
 // Fills open ends from a job of `frame_count` frames (0..frame_count-1) and
 // validates: an end past the last frame or first > last is an error (no silent

@@ -12,7 +12,7 @@ std::string_view video_format_name(VideoFormat format) {
 }
 
 std::optional<VideoFormat> parse_video_format(std::string_view name) {
-  for (auto f : {VideoFormat::mp4, VideoFormat::webm, VideoFormat::gif})
+  for (auto f : video_formats)
     if (video_format_name(f) == name) return f;
   return std::nullopt;
 }

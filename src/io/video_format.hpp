@@ -1,6 +1,7 @@
 #pragma once
 // The video formats epviz writes through ffmpeg (io/video_writer.hpp), and
 // what each asks of the frames' size.
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -8,6 +9,8 @@
 namespace epviz::io {
 
 enum class VideoFormat { mp4, webm, gif };
+inline constexpr std::array<VideoFormat, 3> video_formats = {VideoFormat::mp4, VideoFormat::webm,
+                                                             VideoFormat::gif};
 
 // "mp4", "webm", "gif".
 std::string_view video_format_name(VideoFormat format);

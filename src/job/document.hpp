@@ -42,15 +42,16 @@ struct SimulationFields {
   void overlay(const SimulationFields& over);
 };
 
-enum class OutputFormat { png, mp4, webm, gif };
-std::string_view output_format_name(OutputFormat f);
-std::optional<OutputFormat> output_format_from_name(std::string_view s);
-// The video format an output is encoded in; nullopt for PNG frames.
-std::optional<io::VideoFormat> video_format(OutputFormat f);
+// A render writes PNG frames or a video in one of io::VideoFormat's formats;
+// "png" is the one format name the job adds to the videos' names.
+// "png", then the video formats' names.
+std::vector<std::string> output_format_names();
+// "png" without a video format, else the video format's name.
+std::string_view output_format_name(const std::optional<io::VideoFormat>& video);
 
 struct OutputSettings {
   std::filesystem::path dir = "out";
-  OutputFormat format = OutputFormat::png;
+  std::optional<io::VideoFormat> video;  // empty: PNG frames
   std::string
       name;  // video file stem, or PNG frame prefix ("frame" -> frame_0042.png); empty: not given
 };

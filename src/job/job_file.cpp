@@ -12,9 +12,15 @@ RenderJob read_single(const nlohmann::json& j, const std::filesystem::path& file
   JobDocument d = read_job(j, file.string());
   RenderJob job{file, std::move(d.simulation), std::move(d.runs), std::move(d.scene),
                 std::move(d.output)};
-  if (job.output.name.empty())
-    job.output.name = job.output.format == OutputFormat::png ? "frame" : file.stem().string();
+  if (job.output.name.empty()) job.output.name = job.output.video ? file.stem().string() : "frame";
   return job;
+}
+
+// The gallery's "videos": none, or a video format's name.
+std::vector<std::string> video_choices() {
+  std::vector<std::string> names{"none"};
+  for (const auto f : io::video_formats) names.emplace_back(io::video_format_name(f));
+  return names;
 }
 
 using Gallery = Entry<GalleryJob>;
@@ -69,14 +75,14 @@ const std::vector<Gallery>& gallery_entries() {
            if (auto v = r.number_in("at", 0, 1, "a fraction of the run from 0 to 1")) g.at = *v;
          },
          [](const GalleryJob& g, Json& j) { j["at"] = g.at; }}}},
-      {{"videos", ValueType::choice, "none", "none, mp4, webm, gif",
+      {{"videos", ValueType::choice, "none", joined(video_choices()),
         "also a video of each job in this format"},
        [](io::ObjectReader& r, GalleryJob& g) {
-         if (auto v = r.choice("videos", {"none", "mp4", "webm", "gif"}))
-           g.videos = *v == "none" ? std::nullopt : output_format_from_name(*v);
+         if (auto v = r.choice("videos", video_choices()))
+           g.videos = io::parse_video_format(*v);  // none: no video
        },
        [](const GalleryJob& g, Json& j) {
-         j["videos"] = g.videos ? std::string(output_format_name(*g.videos)) : "none";
+         j["videos"] = g.videos ? std::string(io::video_format_name(*g.videos)) : "none";
        }},
       {{"grid_video", ValueType::boolean, "false", "true, false",
         "also one MP4 of every job tiled, frame by frame (grid.mp4)"},

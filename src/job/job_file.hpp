@@ -31,9 +31,9 @@ struct GalleryJob {
   std::filesystem::path file;
   std::vector<RenderJob> jobs;
   int tile_width = 640, tile_height = 360, columns = 3;
-  double at = 0.6;                     // which frame to tile, as a fraction of each run
-  std::optional<OutputFormat> videos;  // a video per job in this format (none: stills only)
-  bool grid_video = false;             // also one MP4 of all jobs tiled, frame by frame (grid.mp4)
+  double at = 0.6;                        // which frame to tile, as a fraction of each run
+  std::optional<io::VideoFormat> videos;  // a video per job in this format (none: stills only)
+  bool grid_video = false;  // also one MP4 of all jobs tiled, frame by frame (grid.mp4)
   std::filesystem::path dir = "out/gallery";
 };
 

@@ -144,19 +144,6 @@ std::string fmt(double v) {
   return buf;
 }
 
-std::vector<std::string> format_names() {
-  std::vector<std::string> names;
-  for (auto f : {OutputFormat::png, OutputFormat::mp4, OutputFormat::webm, OutputFormat::gif})
-    names.emplace_back(output_format_name(f));
-  return names;
-}
-
-std::string joined(const std::vector<std::string>& v) {
-  std::string s;
-  for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
-  return s;
-}
-
 // "runs": [{"label": ..., <simulation keys>}, ...]. Every run shares the
 // job's frame times, so t_end and samples stay the job's.
 void read_runs(io::ObjectReader& r, JobDocument& d) {
@@ -384,13 +371,14 @@ const std::vector<Job>& job_entries() {
               if (auto v = r.string("dir")) d.output.dir = *v;
             },
             [](const JobDocument& d, Json& j) { j["dir"] = d.output.dir.string(); }},
-           {{"format", ValueType::choice, "png", joined(format_names()), "PNG frames or a video"},
+           {{"format", ValueType::choice, "png", joined(output_format_names()),
+             "PNG frames or a video"},
             [](io::ObjectReader& r, JobDocument& d) {
-              if (auto v = r.choice("format", format_names()))
-                d.output.format = *output_format_from_name(*v);
+              if (auto v = r.choice("format", output_format_names()))
+                d.output.video = io::parse_video_format(*v);  // png: none
             },
             [](const JobDocument& d, Json& j) {
-              j["format"] = std::string(output_format_name(d.output.format));
+              j["format"] = std::string(output_format_name(d.output.video));
             }},
            {{"name", ValueType::text, "frame (png), the job file's name (video)",
              "a file name without '/'", "PNG frame prefix or video file stem"},
@@ -420,30 +408,14 @@ void SimulationFields::overlay(const SimulationFields& o) {
         info.member);
 }
 
-std::string_view output_format_name(OutputFormat f) {
-  switch (f) {
-    case OutputFormat::png: return "png";
-    case OutputFormat::mp4: return "mp4";
-    case OutputFormat::webm: return "webm";
-    case OutputFormat::gif: return "gif";
-  }
-  return "?";
+std::vector<std::string> output_format_names() {
+  std::vector<std::string> names{"png"};
+  for (const auto f : io::video_formats) names.emplace_back(io::video_format_name(f));
+  return names;
 }
 
-std::optional<OutputFormat> output_format_from_name(std::string_view s) {
-  for (auto f : {OutputFormat::png, OutputFormat::mp4, OutputFormat::webm, OutputFormat::gif})
-    if (output_format_name(f) == s) return f;
-  return std::nullopt;
-}
-
-std::optional<io::VideoFormat> video_format(OutputFormat f) {
-  switch (f) {
-    case OutputFormat::png: return std::nullopt;
-    case OutputFormat::mp4: return io::VideoFormat::mp4;
-    case OutputFormat::webm: return io::VideoFormat::webm;
-    case OutputFormat::gif: return io::VideoFormat::gif;
-  }
-  return std::nullopt;
+std::string_view output_format_name(const std::optional<io::VideoFormat>& video) {
+  return video ? io::video_format_name(*video) : "png";
 }
 
 std::string hex_colour(const scene::Rgba& c) {
@@ -487,6 +459,12 @@ Json write_job(const JobDocument& job) {
   Json j = Json::object();
   write_entries(job_entries(), job, j);
   return j;
+}
+
+std::string entries::joined(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
+  return s;
 }
 
 }  // namespace epviz::job

@@ -15,6 +15,9 @@ namespace epviz::job::entries {
 
 using Json = nlohmann::ordered_json;
 
+// A choice's allowed values for help and messages: "a, b, c".
+std::string joined(const std::vector<std::string>& v);
+
 // One key of an object in a job: what it is (for help and messages), how it
 // is read into `Doc` and how it is written from it. An object's entry has
 // children instead, and an optional check of the object once they are read.

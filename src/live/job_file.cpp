@@ -55,7 +55,7 @@ job::JobDocument job_document(const LiveSetup& setup, const std::string& name,
   d.scene.fps = 30.0;
   d.scene.duration = t_end / std::max(setup.speed, 1e-9);
   d.output.dir = "out/" + name;
-  d.output.format = job::OutputFormat::mp4;
+  d.output.video = io::VideoFormat::mp4;
   d.output.name = name;
   return d;
 }

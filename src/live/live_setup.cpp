@@ -1,5 +1,13 @@
 #include "live/live_setup.hpp"
 
+#include <cstdio>
+#include <exception>
+
+#include "io/bad_input.hpp"
+#include "io/data_dir.hpp"
+#include "job/job_file.hpp"
+#include "job/resolve.hpp"
+
 namespace epviz::live {
 
 LiveSetup preset_setup(physics::Case c) {
@@ -20,6 +28,24 @@ LiveSetup setup_from_job(const sim::RunSpec& run, const scene::SceneSettings& sc
   if (s.scene.trail_length <= 0.0) s.scene.trail_length = run.t_end;
   s.stay_in_case = run.case_id != physics::Case::custom;
   return s;
+}
+
+LiveSetup setup_from_job_file(const std::filesystem::path& file) {
+  job::LoadedJob loaded = job::load_job_file(file);
+  if (!loaded.single)
+    throw io::BadInput(file.string() + ": serve needs a single render job (this file is a " +
+                       (loaded.gallery ? "gallery" : "bench figures job") + ")");
+  return setup_from_job(job::resolve(loaded.single->simulation), loaded.single->scene);
+}
+
+LiveSetup preset_from_jobs(physics::Case c) {
+  const auto file = io::find_data_path("render_jobs/" + physics::case_name(c) + ".json");
+  try {
+    if (!file.empty() && std::filesystem::is_regular_file(file)) return setup_from_job_file(file);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "epviz serve: %s (using the built-in preset)\n", e.what());
+  }
+  return preset_setup(c);
 }
 
 }  // namespace epviz::live

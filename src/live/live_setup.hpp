@@ -3,6 +3,8 @@
 // sim::RunSpec), what is drawn (scene::SceneSettings) and how fast it plays.
 // A render job converts to one (epviz serve JOB) and one converts back to a
 // render job (job_file.hpp), so a setup found interactively can be rendered.
+#include <filesystem>
+
 #include "scene/settings.hpp"
 #include "sim/run_spec.hpp"
 
@@ -22,5 +24,14 @@ LiveSetup preset_setup(physics::Case c);
 // The setup of a render job: `run` as resolved from its simulation fields, the
 // speed that plays the job's t_end over its duration.
 LiveSetup setup_from_job(const sim::RunSpec& run, const scene::SceneSettings& scene);
+
+// The setup of the single render job in `file`. Throws io::BadInput for a
+// gallery or bench-figures job, and what reading the job throws.
+LiveSetup setup_from_job_file(const std::filesystem::path& file);
+
+// The case's job from render_jobs/ when it is there (the same title, view,
+// camera and trail as the rendered videos), else preset_setup(c); a job that
+// cannot be read is reported on stderr and the preset used instead.
+LiveSetup preset_from_jobs(physics::Case c);
 
 }  // namespace epviz::live

@@ -57,6 +57,32 @@ TEST(FrameRange, MalformedValuesNameTheOptionAndTheForms) {
   EXPECT_NE(error_of("99999999999999999999", 100).find("too large"), std::string::npos);
 }
 
+TEST(FrameRange, AListIsRangesSeparatedByCommas) {
+  EXPECT_TRUE(parse_frame_ranges("").empty());
+  const auto specs = parse_frame_ranges("4,10:12,:3,7:");
+  ASSERT_EQ(specs.size(), 4u);
+  EXPECT_EQ(specs[0].first, 4);
+  EXPECT_EQ(specs[0].last, 4);
+  EXPECT_EQ(specs[1].first, 10);
+  EXPECT_EQ(specs[1].last, 12);
+  EXPECT_FALSE(specs[2].first.has_value());
+  EXPECT_FALSE(specs[3].last.has_value());
+}
+
+TEST(FrameRange, AListRefusesAnEmptyItemAndABadOne) {
+  for (const char* text : {",", "1,", ",1", "1,,2"}) {
+    try {
+      parse_frame_ranges(text);
+      ADD_FAILURE() << text << " was accepted";
+    } catch (const FrameRangeError& e) {
+      EXPECT_NE(std::string(e.what()).find("empty item in '" + std::string(text) + "'"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  EXPECT_THROW(parse_frame_ranges("1,a:2"), FrameRangeError);
+}
+
 TEST(FrameRange, EmptyRangeIsAnError) {
   const std::string message = error_of("20:10", 100);
   EXPECT_NE(message.find("--frames '20:10'"), std::string::npos) << message;

@@ -61,7 +61,7 @@ TEST_F(JobFile, AGalleryReadsItsJobsBesideItself) {
   EXPECT_EQ(g.tile_height, 360);  // not given: the default
   EXPECT_EQ(g.columns, 2);
   EXPECT_EQ(g.at, 0.25);
-  EXPECT_EQ(g.videos, OutputFormat::webm);
+  EXPECT_EQ(g.videos, io::VideoFormat::webm);
   EXPECT_EQ(g.dir, "figs");
   EXPECT_FALSE(g.grid_video);
 }

@@ -133,7 +133,7 @@ TEST(JobFile, EveryWrittenFieldIsReadBackEqual) {
     EXPECT_EQ(wc.fps, rc.fps);
     EXPECT_EQ(wc.duration, rc.duration);
     EXPECT_EQ(w.output.dir, r.output.dir);
-    EXPECT_EQ(w.output.format, r.output.format);
+    EXPECT_EQ(w.output.video, r.output.video);
     EXPECT_EQ(w.output.name, r.output.name);
 
     // And what is read writes the same file again, whatever keys the format gains.

@@ -1,5 +1,6 @@
 #pragma once
-// Turning a run into the files users read: the CSV of samples and the JSON report.
+// What `epviz simulate` writes of a run: the CSV of its samples and the JSON
+// report, whose keys start with those a sweep's row has (sweep/run_record.hpp).
 #include <string>
 
 #include <nlohmann/json_fwd.hpp>
@@ -9,15 +10,12 @@
 #include "sim/run_spec.hpp"
 #include "sim/simulate.hpp"
 
-namespace epviz::app {
+namespace epviz::sweep {
 
 // Header: t,omega1,omega2,omega3,gamma1,gamma2,gamma3,a,b,energy,area,gamma_norm_error,extra_integral
 // a, b are the stereographic coordinates of gamma (empty at gamma3 = -1);
 // gamma_norm_error is |gamma| - 1; extra_integral is empty without a fourth integral.
-std::string samples_csv(const sim::RunSpec& spec, const sim::RunResult& result);
-
-// The same CSV written row by row as samples arrive (sim::simulate with a
-// sink), in chunks of about 64 kB, so that memory does not grow with the number
+// Written row by row as samples arrive (sim::simulate with a sink), in chunks of about 64 kB, so that memory does not grow with the number
 // of samples. The header is written by the constructor; flush() writes what is
 // buffered (call it before committing the file).
 class SamplesCsvWriter {
@@ -35,4 +33,4 @@ class SamplesCsvWriter {
 nlohmann::json run_report(const sim::RunSpec& spec, const sim::RunResult& result,
                           const sim::Drifts& drift);
 
-}  // namespace epviz::app
+}  // namespace epviz::sweep

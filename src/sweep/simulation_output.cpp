@@ -1,4 +1,4 @@
-#include "app/simulation_output.hpp"
+#include "sweep/simulation_output.hpp"
 
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -8,7 +8,7 @@
 #include "sim/failure_advice.hpp"
 #include "sweep/run_record.hpp"
 
-namespace epviz::app {
+namespace epviz::sweep {
 namespace {
 
 void put(std::string& out, double x) {
@@ -55,14 +55,6 @@ constexpr std::size_t kChunk = 64 * 1024;
 
 }  // namespace
 
-std::string samples_csv(const sim::RunSpec& spec, const sim::RunResult& result) {
-  std::string out = kCsvHeader;
-  out.reserve(out.size() + result.samples.size() * 13 * 24);
-  sim::InvariantMonitor monitor(spec.body, spec.case_id, spec.initial);
-  for (const auto& s : result.samples) append_row(out, monitor, s);
-  return out;
-}
-
 SamplesCsvWriter::SamplesCsvWriter(const sim::RunSpec& spec, io::AtomicFile& file)
     : monitor_(spec.body, spec.case_id, spec.initial), file_(file), buffer_(kCsvHeader) {
   buffer_.reserve(kChunk + 1024);
@@ -83,7 +75,7 @@ nlohmann::json run_report(const sim::RunSpec& spec, const sim::RunResult& r,
   // The members a sweep's row has too, then the report's own.
   io::JsonLine shared;
   shared.begin_object();
-  sweep::write_run_record(shared, spec, r, drift);
+  write_run_record(shared, spec, r, drift);
   shared.end_object();
   nlohmann::json j = nlohmann::json::parse(shared.str());
   if (spec.formulation == sim::Formulation::riccati) {
@@ -108,4 +100,4 @@ nlohmann::json run_report(const sim::RunSpec& spec, const sim::RunResult& r,
   return j;
 }
 
-}  // namespace epviz::app
+}  // namespace epviz::sweep

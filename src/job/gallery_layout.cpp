@@ -1,0 +1,28 @@
+#include "job/gallery_layout.hpp"
+
+#include <string>
+
+#include "io/bad_input.hpp"
+
+namespace epviz::job {
+
+io::TilingOptions gallery_tiling(const GalleryJob& gallery) {
+  io::TilingOptions tiling;
+  tiling.cols = gallery.columns;
+  tiling.gap = 4;
+  tiling.margin = 4;
+  tiling.background = {16, 18, 22, 255};
+  return tiling;
+}
+
+io::GridSize grid_video_size(const GalleryJob& gallery, int jobs) {
+  const auto grid =
+      io::tiled_size(jobs, gallery.tile_width, gallery.tile_height, gallery_tiling(gallery));
+  if (grid.width % 2 || grid.height % 2)
+    throw io::BadInput(gallery.file.string() + ": grid_video: the grid is " +
+                       std::to_string(grid.width) + "x" + std::to_string(grid.height) +
+                       " pixels; a video needs an even width and height (change the tile size)");
+  return grid;
+}
+
+}  // namespace epviz::job

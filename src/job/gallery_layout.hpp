@@ -1,0 +1,17 @@
+#pragma once
+// How a gallery (job/job_file.hpp) lays its tiles out: the figure and the
+// grid video share one tiling, and the grid video's size is checked before
+// any work.
+#include "io/image_tiling.hpp"
+#include "job/job_file.hpp"
+
+namespace epviz::job {
+
+// The gallery's tiling of its figure and grid video.
+io::TilingOptions gallery_tiling(const GalleryJob& gallery);
+
+// The grid video's size in pixels for `jobs` tiles. Throws io::BadInput naming
+// the gallery file when the width or height is odd (a video needs them even).
+io::GridSize grid_video_size(const GalleryJob& gallery, int jobs);
+
+}  // namespace epviz::job

@@ -1,0 +1,32 @@
+#pragma once
+// What `epviz render --report-json` says of a job after its frames: the job,
+// its run's method and accuracy, the frames drawn and the time taken, the
+// failure if any, and each run's work, drifts and pixel-true horizon.
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "job/job_file.hpp"
+#include "numerics/failure.hpp"
+#include "scene/frame_source.hpp"
+#include "scene/plan.hpp"
+
+namespace epviz::job {
+
+// The frames of a job that were drawn or skipped (--resume), in how long.
+struct RenderCounts {
+  int frames_drawn = 0, frames_skipped = 0;
+  double seconds = 0.0;
+  std::optional<numerics::Failure> failure;
+};
+
+// Per run of a scene after its frames: method, the step used (fixed) or
+// tolerance (adaptive), steps, evaluations, the drift of its steps, and its
+// pixel-true horizon.
+nlohmann::json runs_report(const scene::FrameSource& source);
+
+// The job's report; `runs` is runs_report() after its last frame (its first
+// run's step and pixel-true horizon are repeated at the top level).
+nlohmann::json render_report(const RenderJob& job, const scene::ScenePlan& plan,
+                             const RenderCounts& counts, const nlohmann::json& runs);
+
+}  // namespace epviz::job

@@ -1,0 +1,49 @@
+#pragma once
+// The frames of a planned scene drawn through scene::FrameSource and the
+// frame painter, in increasing order: the simulation runs through the frames
+// in between without drawing them. Shared by `epviz render` (frames to files)
+// and `epviz check` (frames in memory, compared with goldens).
+#include <mutex>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "numerics/failure.hpp"
+#include "paint/frame_painter.hpp"
+#include "render/image.hpp"
+#include "scene/frame_source.hpp"
+#include "scene/plan.hpp"
+
+namespace epviz::paint {
+
+class FrameDrawer {
+ public:
+  FrameDrawer(const scene::ScenePlan& plan, const scene::SceneSettings& settings);
+  // Frame `index` (indices must not decrease), valid until the painter's next
+  // paint. `paint_lock`, when given, is held while painting only. Throws
+  // numerics::IntegrationError on a numerical failure.
+  const render::RgbaImage& draw(int index, FramePainter& painter, std::mutex* paint_lock = nullptr);
+  const scene::FrameSource& source() const { return source_; }
+  // A caption drawn under every frame (gallery tiles).
+  void set_caption(std::string caption) { caption_ = std::move(caption); }
+
+ private:
+  scene::FrameSource source_;
+  std::string caption_;
+};
+
+struct DrawnFrames {
+  std::vector<render::RgbaImage> images;  // one per frame asked for, until a failure
+  std::optional<numerics::Failure> failure;
+};
+
+// Frames `frames` (increasing) of a scene into images. `paint_lock`, when
+// given, is held while painting only, so that simulations of scenes on other
+// threads go on meanwhile (ImGui keeps its current context in one global, so
+// painters on several threads must take turns).
+DrawnFrames draw_frames(const scene::ScenePlan& plan, const scene::SceneSettings& settings,
+                        std::span<const int> frames, FramePainter& painter,
+                        std::mutex* paint_lock = nullptr);
+
+}  // namespace epviz::paint
