@@ -53,6 +53,12 @@ if [ "$which" != tsan ]; then
     '^install_tree$'
     # Formatting and include edges: no code of ours runs.
     '^style_'
+    # The whole quick bench through the command line, about two and a half
+    # minutes of the pass: test_study runs each study's code under ASan, and
+    # FigureFormatOption.* runs the bench command itself (a smaller bench).
+    '^BenchCommand\.QuickRunWritesCompleteRows$'
+    '^BenchCommand\.JobBodyGetsWorkPrecisionRows$'
+    '^Render\.BenchFiguresJobRunsTheStudyAndDrawsItsCharts$'
     # The GL tests' second pass on OSMesa: the same code of ours on another driver
     # (the driver is not instrumented); gl_context_test still makes an OSMesa
     # context and draws with it in the first pass.
