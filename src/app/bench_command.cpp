@@ -73,8 +73,9 @@ std::vector<physics::Case> parse_cases(const std::string& list, bool have_job) {
     if (!c) {
       std::string names;
       for (const auto& p : physics::case_presets()) names += (names.empty() ? "" : ", ") + p.name;
-      throw io::BadInput("--cases: unknown case '" + item + "' (expected a comma-separated list of " +
-                       names + (have_job ? ", custom" : "") + ")");
+      throw io::BadInput("--cases: unknown case '" + item +
+                         "' (expected a comma-separated list of " + names +
+                         (have_job ? ", custom" : "") + ")");
     }
     cases.push_back(*c);
   }
@@ -88,7 +89,7 @@ study::Problem job_problem(const std::string& file) {
   const job::LoadedJob loaded = job::load_job_file(file);
   if (!loaded.single)
     throw io::BadInput("--job: '" + file +
-                     "' is a gallery or bench-figures job; expected a single render job");
+                       "' is a gallery or bench-figures job; expected a single render job");
   const sim::RunSpec spec = job::resolve(loaded.single->simulation);
   study::Problem p;
   p.id = spec.case_id;

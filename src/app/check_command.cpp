@@ -13,6 +13,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "app/cli_values.hpp"
@@ -30,6 +31,7 @@
 #include "job/job_file.hpp"
 #include "job/job_list.hpp"
 #include "job/job_plan.hpp"
+#include "numerics/failure.hpp"
 #include "paint/frame_drawer.hpp"
 #include "render/gl_choice.hpp"
 #include "scene/plan.hpp"
@@ -179,17 +181,6 @@ check::JobChecker job_checker(const CheckOptions& o, const check::Tolerance& t,
   return check::JobChecker(std::move(s));
 }
 
-// Compares the frames drawn (or writes them as goldens with --update).
-check::JobOutcome check_frames(check::JobChecker& checker, const CheckOptions& o, const CheckJob& c,
-                               std::size_t index, const paint::DrawnFrames& rendered) {
-  std::vector<check::ImageView> images;
-  for (const auto& im : rendered.images) images.push_back({im.width, im.height, im.pixels});
-  std::optional<std::string> failure;
-  if (rendered.failure) failure = rendered.failure->message();
-  return o.update ? checker.update(c.golden, images, failure)
-                  : checker.compare(c.golden, index, images, failure);
-}
-
 // Checks every job on `workers` threads, each with its own GL context; the
 // outcomes come back in job order.
 std::vector<std::future<check::JobOutcome>> check_jobs(const std::vector<CheckJob>& jobs,
@@ -237,10 +228,20 @@ std::vector<std::future<check::JobOutcome>> check_jobs(const std::vector<CheckJo
             painter = std::make_unique<paint::FramePainter>(*context, c.job.scene.width,
                                                             c.job.scene.height);
           }
-          const auto rendered =
-              paint::draw_frames(c.plan, c.job.scene, c.golden.frames, *painter, paint_lock.get());
+          // Each frame is checked as soon as it is drawn, and not kept.
+          auto frames = checker.start(c.golden, i, o.update);
+          paint::FrameDrawer drawer(c.plan, c.job.scene);
+          std::optional<std::string> failure;
+          try {
+            for (const int f : c.golden.frames) {
+              const auto& image = drawer.draw(f, *painter, paint_lock.get());
+              frames.add({image.width, image.height, image.pixels});
+            }
+          } catch (const numerics::IntegrationError& e) {
+            failure = e.failure().message();
+          }
           drop_painter();
-          (*promises)[i].set_value(check_frames(checker, o, c, i, rendered));
+          (*promises)[i].set_value(frames.finish(failure));
         } catch (...) {
           drop_painter();
           (*promises)[i].set_exception(std::current_exception());

@@ -133,14 +133,15 @@ int run_merge(const MergeOptions& o) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
     throw io::BadInput("DIR: '" + o.dir +
-                     "' is not a directory (give the directory the shards wrote to)");
+                       "' is not a directory (give the directory the shards wrote to)");
   const fs::path out_dir = o.out.empty() ? dir : fs::path(o.out);
   io::check_output_dir("--out", out_dir);
   if (!o.resubmit.empty()) io::check_output_file("--resubmit", o.resubmit);
   auto batches = shard::read_batches(dir);
   if (batches.empty())
-    throw io::BadInput("DIR: no shard manifests (*" + std::string(shard::manifest_suffix) + ") in " +
-                     o.dir + "; run epviz sweep or render with --shard I/N there first");
+    throw io::BadInput("DIR: no shard manifests (*" + std::string(shard::manifest_suffix) +
+                       ") in " + o.dir +
+                       "; run epviz sweep or render with --shard I/N there first");
   int incomplete = 0;
   for (auto& b : batches) {
     shard::check_batch(b, dir);
@@ -162,6 +163,13 @@ int run_merge(const MergeOptions& o) {
     }
     return 4;
   }
+  // The merged files are written inside the output folder, never through a
+  // link (which could lead anywhere).
+  for (const auto& b : batches)
+    if (const auto& name = b.shards.begin()->second.output; !name.empty())
+      if (const auto link = shard::link_within(out_dir, name); !link.empty())
+        throw io::BadInput(link.string() + ": is a symbolic link; merge writes " + name +
+                           " only as a regular file in " + out_dir.string());
   // Every sweep's rows are read and checked before anything is written.
   std::vector<std::vector<Json>> rows(batches.size());
   for (std::size_t i = 0; i < batches.size(); ++i)

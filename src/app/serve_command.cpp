@@ -11,9 +11,11 @@
 #include "app/gl_option.hpp"
 #include "io/bad_input.hpp"
 #include "io/data_dir.hpp"
+#include "io/printable.hpp"
 #include "live/live_session.hpp"
 #include "render/gl_choice.hpp"
 #include "serve/origin_policy.hpp"
+#include "serve/protocol.hpp"
 #include "serve/server.hpp"
 
 namespace epviz::app {
@@ -21,7 +23,7 @@ namespace {
 
 struct ServeOptions {
   std::string job, bind = "127.0.0.1", gl, image = "jpeg", save_dir, record;
-  std::string port = "8080", quality = "85";
+  std::string port = "8080", quality = "85", max_view = "3840x2160";
   std::vector<std::string> allow_origins;
   bool play = false;
 };
@@ -41,6 +43,18 @@ int run_serve(const ServeOptions& o) {
   so.bind = o.bind;
   so.port = static_cast<unsigned short>(parse_integer("--port", o.port, 0, 65535));
   so.jpeg_quality = int(parse_integer("--quality", o.quality, 1, 100));
+  // A page asks for its view's size; it gets at most this (a 16384^2 view
+  // would be a 1 GiB framebuffer per page), and all pages together are drawn
+  // within two such views a round (ServerOptions::pixel_budget).
+  const auto x = o.max_view.find('x');
+  if (x == std::string::npos)
+    throw io::BadInput("--max-view: expected WIDTHxHEIGHT (e.g. 3840x2160), got '" +
+                       io::printable(o.max_view, 40) + "'");
+  so.max_width =
+      int(parse_integer("--max-view", o.max_view.substr(0, x), 16, serve::max_view_pixels));
+  so.max_height =
+      int(parse_integer("--max-view", o.max_view.substr(x + 1), 16, serve::max_view_pixels));
+  so.pixel_budget = 2L * so.max_width * so.max_height;
   if (o.image == "jpeg")
     so.image_format = serve::ImageFormat::jpeg;
   else if (o.image == "png")
@@ -130,6 +144,10 @@ std::function<int()> add_serve_command(CLI::App& app) {
                   "also accept WebSocket connections from pages of this origin "
                   "(http[s]://HOST[:PORT]; repeatable); by default only the server's own page")
       ->allow_extra_args(false);
+  cmd->add_option("--max-view", o->max_view,
+                  "WIDTHxHEIGHT: the largest view a page gets (each 16..16384); larger requests "
+                  "are drawn at this size")
+      ->capture_default_str();
   cmd->add_flag("--play", o->play, "start playing");
   cmd->add_option("--record", o->record,
                   "record the first connection's events (replayed by the tests)");

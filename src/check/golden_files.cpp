@@ -71,23 +71,29 @@ void check_golden_inputs(const GoldenJob& job, bool update) {
       if (f < job.frame_count) golden_file_exists(job.golden_path(f));
 }
 
-void write_golden_png(const fs::path& path, const ImageView& image) {
-  io::write_png_rgba(path, image.width, image.height, image.rgba,
-                     {.compression_level = 9, .filter = -1});
+std::vector<std::uint8_t> encode_golden_png(const ImageView& image) {
+  return io::encode_png_rgba(image.width, image.height, image.rgba,
+                             {.compression_level = 9, .filter = -1});
 }
 
-std::vector<fs::path> write_goldens(const GoldenJob& job, std::span<const ImageView> images,
+void write_golden_png(const fs::path& path, const ImageView& image) {
+  const auto bytes = encode_golden_png(image);
+  io::write_file_atomically(path, std::as_bytes(std::span(bytes)));
+}
+
+std::vector<fs::path> write_goldens(const GoldenJob& job,
+                                    std::span<const std::vector<std::uint8_t>> pngs,
                                     const RendererInfo& renderer,
                                     const std::string& epviz_version) {
-  if (images.size() != job.frames.size())
-    throw std::invalid_argument(job.shown + ": " + std::to_string(images.size()) + " images for " +
+  if (pngs.size() != job.frames.size())
+    throw std::invalid_argument(job.shown + ": " + std::to_string(pngs.size()) + " images for " +
                                 std::to_string(job.frames.size()) + " frames");
   fs::create_directories(job.golden_dir);
   std::vector<fs::path> written;
-  for (std::size_t k = 0; k < images.size(); ++k) {
+  for (std::size_t k = 0; k < pngs.size(); ++k) {
     written.push_back(job.golden_path(job.frames[k]));
     golden_file_exists(written.back());  // never write through a link
-    write_golden_png(written.back(), images[k]);
+    io::write_file_atomically(written.back(), std::as_bytes(std::span(pngs[k])));
   }
   GoldenRecord rec;
   rec.epviz_version = epviz_version;

@@ -1,6 +1,7 @@
 #pragma once
 // A job's goldens on disk: <golden_dir>/frame_NNNN.png and golden.json, and
 // how `epviz check --update` writes them.
+#include <cstdint>
 #include <filesystem>
 #include <span>
 #include <string>
@@ -39,15 +40,17 @@ struct RendererInfo {
   std::string renderer, version;
 };
 
-// Writes one golden PNG with the smallest (and slowest) settings: goldens
+// A golden PNG's bytes, with the smallest (and slowest) settings: goldens
 // live in version control.
+std::vector<std::uint8_t> encode_golden_png(const ImageView& image);
 void write_golden_png(const std::filesystem::path& path, const ImageView& image);
 
-// Writes images[k] as the golden of job.frames[k] (one image per frame) and
-// then golden.json. Frames recorded by an earlier update whose files are still
-// there stay in the record. Returns the paths written, in frame order.
+// Writes pngs[k] (encode_golden_png's bytes) as the golden of job.frames[k]
+// (one per frame) and then golden.json. Frames recorded by an earlier update
+// whose files are still there stay in the record. Returns the paths written,
+// in frame order.
 std::vector<std::filesystem::path> write_goldens(const GoldenJob& job,
-                                                 std::span<const ImageView> images,
+                                                 std::span<const std::vector<std::uint8_t>> pngs,
                                                  const RendererInfo& renderer,
                                                  const std::string& epviz_version);
 

@@ -1,6 +1,7 @@
 #include "check/job_check.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "check/golden_record.hpp"
 #include "io/frame_names.hpp"
@@ -26,36 +27,92 @@ std::string failure_text(const std::optional<std::string>& failure) {
 JobChecker::JobChecker(CheckSettings settings)
     : settings_(std::move(settings)), judge_(settings_.tolerance) {}
 
+JobFrames JobChecker::start(const GoldenJob& job, std::size_t index, bool update) {
+  return JobFrames(*this, job, index, update);
+}
+
+JobFrames::JobFrames(JobChecker& checker, const GoldenJob& job, std::size_t index, bool update)
+    : checker_(checker), job_(job), index_(index), update_(update) {
+  if (update_) return;
+  const auto& gl = checker_.settings_.renderer;
+  if (auto rec = read_golden_record(job.golden_dir / "golden.json");
+      rec && (rec->gl_renderer != gl.renderer || rec->gl_version != gl.version))
+    out_.warnings.push_back("epviz: warning: " + job.shown + ": goldens were made with " +
+                            io::printable(rec->gl_renderer, 120) + ", " +
+                            io::printable(rec->gl_version, 120) + "; this run uses " +
+                            io::printable(gl.renderer, 120) + ", " +
+                            io::printable(gl.version, 120) +
+                            " (see docs/ci.md: --metric ssim, or re-baseline with --update)");
+}
+
+void JobFrames::add(const ImageView& image) {
+  if (added_ >= job_.frames.size())
+    throw std::logic_error(job_.shown + ": more frames drawn than the job checks");
+  const int frame = job_.frames[added_++];
+  if (update_) {
+    pngs_.push_back(encode_golden_png(image));
+    return;
+  }
+  FrameResult r;
+  r.job = job_.shown;
+  r.frame = frame;
+  checker_.compare_frame(job_, index_, image, r, missing_);
+  out_.results.push_back(std::move(r));
+}
+
+JobOutcome JobFrames::finish(const std::optional<std::string>& failure) {
+  if (update_) {
+    if (failure || added_ != job_.frames.size()) {
+      FrameResult r;
+      r.job = job_.shown;
+      r.frame = job_.frames[std::min(added_, job_.frames.size() - 1)];
+      r.problem = "numerical failure, no goldens written: " + failure_text(failure);
+      out_.results.push_back(std::move(r));
+      return std::move(out_);
+    }
+    const auto& s = checker_.settings_;
+    const auto written = write_goldens(job_, pngs_, s.renderer, s.epviz_version);
+    for (std::size_t k = 0; k < written.size(); ++k)
+      out_.lines.push_back("UPDATED " + job_.shown + " frame " + std::to_string(job_.frames[k]) +
+                           ": " + written[k].string());
+    out_.goldens_written = int(written.size());
+    return std::move(out_);
+  }
+  for (std::size_t k = added_; k < job_.frames.size(); ++k) {
+    FrameResult r;
+    r.job = job_.shown;
+    r.frame = job_.frames[k];
+    r.problem = "numerical failure before this frame: " + failure_text(failure);
+    out_.results.push_back(std::move(r));
+  }
+  if (!missing_.empty()) {
+    const std::string cmd = checker_.settings_.update_command(job_, missing_);
+    for (auto& r : out_.results)
+      if (std::find(missing_.begin(), missing_.end(), r.frame) != missing_.end())
+        r.problem += "; create it with: " + cmd;
+  }
+  return std::move(out_);
+}
+
+namespace {
+
+JobOutcome all_at_once(JobFrames frames, std::span<const ImageView> images,
+                       const std::optional<std::string>& failure) {
+  for (const auto& image : images) frames.add(image);
+  return frames.finish(failure);
+}
+
+}  // namespace
+
 JobOutcome JobChecker::compare(const GoldenJob& job, std::size_t index,
                                std::span<const ImageView> images,
                                const std::optional<std::string>& failure) {
-  JobOutcome out;
-  const auto& gl = settings_.renderer;
-  if (auto rec = read_golden_record(job.golden_dir / "golden.json");
-      rec && (rec->gl_renderer != gl.renderer || rec->gl_version != gl.version))
-    out.warnings.push_back("epviz: warning: " + job.shown + ": goldens were made with " +
-                           io::printable(rec->gl_renderer, 120) + ", " +
-                           io::printable(rec->gl_version, 120) + "; this run uses " +
-                           io::printable(gl.renderer, 120) + ", " + io::printable(gl.version, 120) +
-                           " (see docs/ci.md: --metric ssim, or re-baseline with --update)");
-  std::vector<int> missing;
-  for (std::size_t k = 0; k < job.frames.size(); ++k) {
-    FrameResult r;
-    r.job = job.shown;
-    r.frame = job.frames[k];
-    if (k >= images.size())
-      r.problem = "numerical failure before this frame: " + failure_text(failure);
-    else
-      compare_frame(job, index, images[k], r, missing);
-    out.results.push_back(std::move(r));
-  }
-  if (!missing.empty()) {
-    const std::string cmd = settings_.update_command(job, missing);
-    for (auto& r : out.results)
-      if (std::find(missing.begin(), missing.end(), r.frame) != missing.end())
-        r.problem += "; create it with: " + cmd;
-  }
-  return out;
+  return all_at_once(start(job, index, false), images, failure);
+}
+
+JobOutcome JobChecker::update(const GoldenJob& job, std::span<const ImageView> images,
+                              const std::optional<std::string>& failure) {
+  return all_at_once(start(job, 0, true), images, failure);
 }
 
 std::string JobChecker::report_image(const GoldenJob& job, std::size_t index, int frame,
@@ -115,25 +172,6 @@ void JobChecker::compare_frame(const GoldenJob& job, std::size_t index, const Im
   io::write_png_rgba(report / r.diff_image, actual.width, actual.height,
                      diff_image(actual.width, actual.height, actual.rgba, golden->rgba,
                                 settings_.tolerance.max_channel_difference));
-}
-
-JobOutcome JobChecker::update(const GoldenJob& job, std::span<const ImageView> images,
-                              const std::optional<std::string>& failure) const {
-  JobOutcome out;
-  if (failure || images.size() != job.frames.size()) {
-    FrameResult r;
-    r.job = job.shown;
-    r.frame = images.size() < job.frames.size() ? job.frames[images.size()] : job.frames.back();
-    r.problem = "numerical failure, no goldens written: " + failure_text(failure);
-    out.results.push_back(std::move(r));
-    return out;
-  }
-  const auto written = write_goldens(job, images, settings_.renderer, settings_.epviz_version);
-  for (std::size_t k = 0; k < written.size(); ++k)
-    out.lines.push_back("UPDATED " + job.shown + " frame " + std::to_string(job.frames[k]) + ": " +
-                        written[k].string());
-  out.goldens_written = int(written.size());
-  return out;
 }
 
 }  // namespace epviz::check

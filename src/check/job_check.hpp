@@ -2,8 +2,9 @@
 // Checking one job's drawn frames against its goldens, or making them its
 // goldens (`epviz check --update`): the results per frame, the report images,
 // the warning when the goldens came from another renderer. Frames come in as
-// images; drawing them is the caller's business.
+// images, one at a time; drawing them is the caller's business.
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -34,21 +35,53 @@ struct JobOutcome {
   int goldens_written = 0;
 };
 
+class JobChecker;
+
+// One job's frames, taken one at a time as they are drawn and checked (or,
+// with --update, encoded) at once, so that memory does not grow with the
+// number of frames: a frame is compared and let go, and an update keeps only
+// compressed PNGs until it knows the simulation did not fail.
+class JobFrames {
+ public:
+  // The next frame, in the order of job.frames.
+  void add(const ImageView& image);
+  // The outcome, once every frame is added, or fewer when the simulation
+  // failed (`failure` says why).
+  JobOutcome finish(const std::optional<std::string>& failure);
+
+ private:
+  friend class JobChecker;
+  JobFrames(JobChecker& checker, const GoldenJob& job, std::size_t index, bool update);
+
+  JobChecker& checker_;
+  const GoldenJob& job_;
+  std::size_t index_;
+  bool update_;
+  std::size_t added_ = 0;
+  JobOutcome out_;
+  std::vector<int> missing_;                     // frames without a golden
+  std::vector<std::vector<std::uint8_t>> pngs_;  // --update: the goldens to write
+};
+
 // One per thread (it keeps SSIM buffers between frames).
 class JobChecker {
  public:
   explicit JobChecker(CheckSettings settings);
 
-  // `images` holds the frames drawn, in the order of job.frames; fewer than
-  // asked for when the simulation failed (`failure` says why). `index` is the
-  // job's place in the run, which keeps report image names apart.
+  // The frames of `job` to come; `index` is the job's place in the run, which
+  // keeps report image names apart. `update`: make them the goldens (none
+  // when the simulation failed) instead of comparing. `job` must outlive it.
+  JobFrames start(const GoldenJob& job, std::size_t index, bool update);
+
+  // All at once: `images` holds the frames drawn, in the order of
+  // job.frames; fewer than asked for when the simulation failed.
   JobOutcome compare(const GoldenJob& job, std::size_t index, std::span<const ImageView> images,
                      const std::optional<std::string>& failure);
-  // Writes the images as goldens; none when the simulation failed.
   JobOutcome update(const GoldenJob& job, std::span<const ImageView> images,
-                    const std::optional<std::string>& failure) const;
+                    const std::optional<std::string>& failure);
 
  private:
+  friend class JobFrames;
   void compare_frame(const GoldenJob& job, std::size_t index, const ImageView& actual,
                      FrameResult& r, std::vector<int>& missing);
   std::string report_image(const GoldenJob& job, std::size_t index, int frame,

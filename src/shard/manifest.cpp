@@ -129,11 +129,26 @@ void add_file(Manifest& m, const fs::path& dir, const fs::path& file) {
   m.files.push_back({file.lexically_relative(dir).generic_string(), d.bytes, d.checksum});
 }
 
+fs::path link_within(const fs::path& dir, const fs::path& relative) {
+  fs::path p = dir;
+  for (const auto& part : relative) {
+    p /= part;
+    std::error_code ec;
+    if (fs::is_symlink(fs::symlink_status(p, ec))) return p;
+  }
+  return {};
+}
+
 std::vector<std::string> file_problems(const Manifest& m, const fs::path& dir) {
   std::vector<std::string> out;
   for (const auto& f : m.files) {
     const fs::path p = dir / f.path;
     std::error_code ec;
+    if (const auto link = link_within(dir, f.path); !link.empty()) {
+      // A shard writes regular files; a link may lead out of the folder.
+      out.push_back(link.string() + ": a symbolic link, not a shard's file");
+      continue;
+    }
     if (!fs::is_regular_file(p, ec)) {
       out.push_back(p.string() + ": missing");
       continue;

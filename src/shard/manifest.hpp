@@ -62,8 +62,14 @@ inline constexpr std::string_view manifest_suffix = ".manifest.json";
 // Adds `file` (a path) to m.files, relative to `dir`, with its size and checksum.
 void add_file(Manifest& m, const std::filesystem::path& dir, const std::filesystem::path& file);
 
+// The first part of dir/relative (below `dir`) that is a symbolic link, or
+// an empty path when none is.
+std::filesystem::path link_within(const std::filesystem::path& dir,
+                                  const std::filesystem::path& relative);
+
 // What is wrong with the manifest's files as they are on disk now (missing,
-// other size, other checksum), one line each; empty when all are intact.
+// a symbolic link, other size, other checksum), one line each; empty when all
+// are intact.
 std::vector<std::string> file_problems(const Manifest& m, const std::filesystem::path& dir);
 
 // `word` as one word of a POSIX shell: as it is when it is plain, else in

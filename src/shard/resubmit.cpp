@@ -9,7 +9,10 @@ std::string index_ranges(const std::vector<long>& indices) {
     while (j + 1 < indices.size() && indices[j + 1] == indices[j] + 1) ++j;
     if (!out.empty()) out.push_back(',');
     out += std::to_string(indices[i]);
-    if (j > i) out += "-" + std::to_string(indices[j]);
+    if (j > i) {
+      out.push_back('-');
+      out += std::to_string(indices[j]);
+    }
     i = j + 1;
   }
   return out;
@@ -18,7 +21,10 @@ std::string index_ranges(const std::vector<long>& indices) {
 std::string slurm_resubmit_script(const std::vector<Batch>& batches,
                                   const std::vector<std::string>& merge_command) {
   std::string merge;
-  for (const auto& w : merge_command) merge += (merge.empty() ? "" : " ") + shell_quote(w);
+  for (const auto& w : merge_command) {
+    if (!merge.empty()) merge.push_back(' ');
+    merge += shell_quote(w);
+  }
   std::string s =
       "#!/bin/bash\n"
       "# Written by epviz merge --resubmit: submits again, as Slurm job arrays, only the\n"
@@ -37,7 +43,8 @@ std::string slurm_resubmit_script(const std::vector<Batch>& batches,
     s += "arrays+=(\"${id%%;*}\")\n";
   }
   s += "deps=$(IFS=:; echo \"${arrays[*]}\")\n";
-  s += "sbatch --parsable ${SBATCH_ARGS:-} --dependency=afterany:\"$deps\" --chdir=\"$PWD\" --wrap " +
+  s += "sbatch --parsable ${SBATCH_ARGS:-} --dependency=afterany:\"$deps\" --chdir=\"$PWD\" "
+       "--wrap " +
        shell_quote("exec " + merge) + "\n";
   return s;
 }

@@ -121,3 +121,23 @@ TEST(SimulateHelp, CaseListsThePresetsByName) {
 
 }  // namespace
 }  // namespace epviz
+
+namespace epviz {
+namespace {
+
+// A page's view is bounded by --max-view; the bound itself must be sane.
+TEST(ServeRejects, AMaxViewThatIsNotASizeInRange) {
+  test::TempDir dir;
+  for (const auto& [value, must_name] : std::vector<std::pair<std::string, std::string>>{
+           {"3840", "--max-view: expected WIDTHxHEIGHT"},
+           {"20000x100", "--max-view: expected an integer from 16 to 16384"},
+           {"640x8", "--max-view: expected an integer from 16 to 16384"},
+           {"axb", "--max-view"}}) {
+    SCOPED_TRACE(value);
+    test::expect_bad_input(test::run_epviz("serve --port 0 --max-view " + value, dir, "timeout 20"),
+                           must_name);
+  }
+}
+
+}  // namespace
+}  // namespace epviz

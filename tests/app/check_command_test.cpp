@@ -13,6 +13,7 @@
 
 #include "io/png_reader.hpp"
 #include "support/cli.hpp"
+#include "support/peak_rss.hpp"
 
 namespace epviz {
 namespace {
@@ -102,6 +103,29 @@ TEST_F(Check, PassesAgainstGoldensItJustWrote) {
   }
   // In memory: nothing but the goldens was written next to the job.
   EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "jobs"), {}), 2);
+}
+
+// Frames are checked as they are drawn and let go: a check of 100 frames
+// peaks at about the memory of a check of 5, for --update (which keeps PNGs
+// only) and for the comparison alike.
+TEST_F(Check, MemoryDoesNotGrowWithTheFramesChecked) {
+  auto j = small_job();
+  j["width"] = 320;
+  j["height"] = 240;
+  const std::string file = write_job(dir_ / "jobs" / "mem.json", j).string();
+  const auto peak = [&](const std::string& frames, bool update) {
+    std::vector<std::string> args{"check", file, "--frames", frames};
+    if (update) args.push_back("--update");
+    return test::peak_rss_kb(args, dir_.path().string());
+  };
+  const long few_update = peak("0:4", true), many_update = peak("0:99", true);
+  const long few = peak("0:4", false), many = peak("0:99", false);
+  for (long kb : {few_update, many_update, few, many}) ASSERT_GT(kb, 0);
+  // Kept in memory, 100 frames of 320x240 would take 30 MB more.
+  EXPECT_LT(many_update - few_update, 12 * 1024)
+      << "--update peak " << few_update << " kB for 5 frames, " << many_update << " for 100";
+  EXPECT_LT(many - few, 12 * 1024)
+      << "check peak " << few << " kB for 5 frames, " << many << " for 100";
 }
 
 TEST_F(Check, HelpStatesTheDefaultsOfDocsCiMd) {

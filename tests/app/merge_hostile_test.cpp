@@ -78,6 +78,26 @@ TEST_F(MergeHostile, AFileOutsideTheFolderIsNotRead) {
   }
 }
 
+// Symbolic links inside the folder may lead anywhere: the merged file is not
+// written through one, and a shard's file that is one is not read.
+TEST_F(MergeHostile, ALinkInTheFolderIsNeitherWrittenThroughNorRead) {
+  const fs::path victim = d_ / "victim";
+  std::ofstream(victim) << "precious";
+  fs::create_symlink(victim, merged_);
+  expect_bad_input(merge(), "rows.jsonl: is a symbolic link");
+  EXPECT_EQ(slurp(victim), "precious");
+  fs::remove(merged_);
+
+  // The shard's rows moved out and linked back: same bytes, read through a link.
+  const std::string rows_name = Json::parse(slurp(manifest_))["files"][0]["path"];
+  fs::rename(shards_ / rows_name, d_ / "outside.jsonl");
+  fs::create_symlink(d_ / "outside.jsonl", shards_ / rows_name);
+  const auto m = merge();
+  EXPECT_EQ(m.exit_code, 4) << m.err;
+  EXPECT_NE(m.err.find("a symbolic link, not a shard's file"), std::string::npos) << m.err;
+  EXPECT_FALSE(fs::exists(merged_));
+}
+
 TEST_F(MergeHostile, ARowsFileIsNotHandedToFfmpegAsARender) {
   edit([](Json& j) {
     j["kind"] = "render";

@@ -38,10 +38,9 @@ Scene short_scene() {
   s.settings.height = H;
   s.settings.fps = 10;
   s.settings.duration = 1;
-  s.plan = scene::plan_scene(
-      sim::preset_run(physics::Case::lagrange, sim::Method::dop853, sim::Formulation::direct, 4.0,
-                      100),
-      s.settings);
+  s.plan = scene::plan_scene(sim::preset_run(physics::Case::lagrange, sim::Method::dop853,
+                                             sim::Formulation::direct, 4.0, 100),
+                             s.settings);
   return s;
 }
 
