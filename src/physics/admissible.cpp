@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include "physics/level_set.hpp"
@@ -12,7 +13,8 @@ namespace epviz::physics {
 namespace {
 
 constexpr int kGridPoints = 2000;
-constexpr std::size_t kMaxStarts = 64;  // a ring of equal minima (a symmetric body) needs only a few
+// A ring of equal minima (a symmetric body) gives many starts; a few suffice.
+constexpr std::size_t kMaxStarts = 64;
 
 // The function minimised: the least energy of a state with this unit gamma.
 double floor_energy(const Body& body, double area, const Vector3d& gamma) {
@@ -58,6 +60,7 @@ Vector3d descend(const Body& body, double area, Vector3d gamma) {
 }  // namespace
 
 EnergyMinimum minimum_energy(const Body& body, double area) {
+  if (!std::isfinite(area)) throw std::invalid_argument("minimum_energy: C0 must be finite");
   const std::vector<Vector3d> grid = fibonacci_sphere(kGridPoints);
   std::vector<double> value(grid.size());
   for (std::size_t i = 0; i < grid.size(); ++i) value[i] = floor_energy(body, area, grid[i]);

@@ -14,7 +14,8 @@ struct EnergyMinimum {
 
 // Numerically: the function above on a dense Fibonacci grid, then a Newton
 // descent on the sphere from every grid point that is lowest among its
-// neighbours. The body must be valid (positive moments).
+// neighbours. Throws std::invalid_argument for a non-finite area. The body
+// must be valid (positive moments).
 EnergyMinimum minimum_energy(const Body& body, double area);
 
 }  // namespace epviz::physics

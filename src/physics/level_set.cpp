@@ -18,7 +18,7 @@ constexpr double kTolerance = 1e-12;
 // max(|target|, the natural magnitude of its terms) as in docs/math.md §1.4,
 // so that a level of zero still has a meaningful relative error.
 struct Misfit {
-  double area = 0.0, energy = 0.0;          // value - target
+  double area = 0.0, energy = 0.0;  // value - target
   double area_scale = 1.0, energy_scale = 1.0;
   bool within(double tol) const {
     return std::abs(area) <= tol * area_scale && std::abs(energy) <= tol * energy_scale;
@@ -32,8 +32,8 @@ Misfit misfit(const Body& body, const Level& level, const Vector3d& omega, const
   f.area = m.dot(gamma) - level.area;
   f.energy = t + potential(body, gamma) - level.energy;
   f.area_scale = std::max({std::abs(level.area), m.norm() * gamma.norm(), 1e-300});
-  f.energy_scale = std::max(
-      {std::abs(level.energy), t + body.weight * body.com.norm() * gamma.norm(), 1e-300});
+  f.energy_scale =
+      std::max({std::abs(level.energy), t + body.weight * body.com.norm() * gamma.norm(), 1e-300});
   return f;
 }
 

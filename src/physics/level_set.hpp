@@ -22,7 +22,7 @@ enum class Rejection {
 };
 
 struct RejectedGamma {
-  Vector3d gamma;
+  Vector3d gamma;  // as given, before normalisation
   Rejection why = Rejection::below_level;
   // For below_level: T_min(gamma) - (C1 - V(gamma)) > 0, the energy lacking.
   double shortfall = 0.0;

@@ -89,7 +89,9 @@ TEST(LevelSet, EveryStateLiesOnTheLevel) {
           EXPECT_LT(room, need);
           EXPECT_NEAR(r.shortfall, need - room, 1e-9 * std::max(1.0, need));
         }
-        if (level.energy > roomy) EXPECT_TRUE(got.rejected.empty());
+        if (level.energy > roomy) {
+          EXPECT_TRUE(got.rejected.empty());
+        }
       }
     }
   }
@@ -128,14 +130,30 @@ TEST(LevelSet, StatesAreSpreadOverTheLevel) {
   }
   EXPECT_LT(mean_gamma.norm(), 0.02);  // the gammas cover the sphere
   EXPECT_GT(least_gap, 0.05);          // no two states coincide
-  // Omega is not tied to gamma: its direction relative to gamma varies.
-  double lo = 1.0, hi = -1.0;
-  for (const auto& s : got.states) {
-    const double c = s.omega.normalized().dot(s.gamma);
-    lo = std::min(lo, c);
-    hi = std::max(hi, c);
+}
+
+TEST(LevelSet, RepeatedGammaGivesStatesAroundTheLevelsEllipse) {
+  // At one gamma the Omegas of the level form an ellipse in the plane
+  // I Omega . gamma = C0; repeats of that gamma must not all land on one point
+  // (or on two opposite ones): their spread is two-dimensional.
+  const Body body = preset(Case::generic).body;
+  const Level level{6.0, -0.9};
+  const std::vector<Vector3d> gammas(12, Vector3d(0.3, -0.5, 0.8).normalized());
+  const LevelStates got = level_states(body, level, gammas);
+  ASSERT_EQ(got.states.size(), 12u);
+  Eigen::Matrix<double, 3, 12> dev;
+  for (int i = 0; i < 12; ++i) {
+    const auto& s = got.states[std::size_t(i)];
+    EXPECT_TRUE(near(energy_of(body, s.omega, s.gamma), level.energy));
+    EXPECT_TRUE(near(area_of(body, s.omega, s.gamma), level.area));
+    dev.col(i) = s.omega;
+    for (int j = 0; j < i; ++j)
+      EXPECT_GT((s.omega - got.states[std::size_t(j)].omega).norm(), 0.05);
   }
-  EXPECT_GT(hi - lo, 1.0);
+  dev.colwise() -= dev.rowwise().mean();
+  const Eigen::Vector3d sv = Eigen::JacobiSVD<Eigen::Matrix<double, 3, 12>>(dev).singularValues();
+  EXPECT_GT(sv[1], 0.2 * sv[0]);
+  EXPECT_LT(sv[2], 1e-9 * sv[0]);  // and it stays in the plane
 }
 
 TEST(LevelSet, FibonacciPointsAreUnitAndEvenlySpread) {
@@ -164,6 +182,7 @@ TEST(LevelSet, GivenGammasAreNormalisedAndBadOnesReported) {
   EXPECT_EQ(got.rejected[0].why, Rejection::invalid_gamma);
   EXPECT_EQ(got.rejected[1].why, Rejection::invalid_gamma);
   EXPECT_THROW(level_states(body, Level{nan, 0.0}, 10), std::invalid_argument);
+  EXPECT_THROW(minimum_energy(body, nan), std::invalid_argument);
 }
 
 TEST(LevelSet, AtTheMinimumTheStateIsTheSteadyOne) {
