@@ -258,8 +258,7 @@ FigureDrawing draw_heat_map(const HeatMapSpec& spec, const ChartOptions& options
   }
   // Column labels under the grid, on two lines where they are wider than a
   // cell, every k-th one (with a tick) where even two lines would overlap.
-  for (std::size_t j = 0; l.column_ticks.empty() && j < spec.columns.size();
-       j += l.column_stride) {
+  for (std::size_t j = 0; l.column_ticks.empty() && j < spec.columns.size(); j += l.column_stride) {
     const Viewport& c = l.cells.empty() ? l.grid : l.cells[0][j];
     const float x = float(c.x) + c.width * 0.5f;
     const float y =

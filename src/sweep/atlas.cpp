@@ -169,9 +169,9 @@ std::vector<AtlasFigure> atlas_figures(const std::vector<Json>& rows, const Atla
     h.y_label = axis_title(q.y, members);
     h.value_label = metric_label(q.metric);
     const std::string over = axis_title(q.x, members) + " and " + axis_title(q.y, members);
-    h.title = reduced.empty() ? metric_label(q.metric) + " over " + over
-                              : "largest " + axis_symbol(reduced) + " without a failure, by " +
-                                    over;
+    h.title = reduced.empty()
+                  ? metric_label(q.metric) + " over " + over
+                  : "largest " + axis_symbol(reduced) + " without a failure, by " + over;
     std::string fixed;  // axes with one value: named in the title only
     for (const auto& n : names)
       if (n != q.x && n != q.y && n != reduced && values[n].size() == 1)

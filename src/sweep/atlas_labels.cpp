@@ -78,7 +78,8 @@ std::string metric_label(const std::string& metric) {
     return "largest relative drift of " + symbol;
   }
   const std::string stable = "largest_stable:";
-  if (metric.starts_with(stable)) return "largest stable " + axis_symbol(metric.substr(stable.size()));
+  if (metric.starts_with(stable))
+    return "largest stable " + axis_symbol(metric.substr(stable.size()));
   return metric;
 }
 

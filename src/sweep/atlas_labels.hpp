@@ -31,7 +31,7 @@ std::string metric_label(const std::string& metric);
 // (those the rows share: one that varies is an axis), and for the ftle
 // metric the window and separation of `ftle` (not in the rows; unnamed
 // without it). "T = 50, method gauss4, tol = 1e-10; FTLE window 0.5, separation 1e-08".
-std::string atlas_caption(const std::vector<const nlohmann::json*>& rows,
-                          const std::string& metric, const std::optional<FtleSettings>& ftle);
+std::string atlas_caption(const std::vector<const nlohmann::json*>& rows, const std::string& metric,
+                          const std::optional<FtleSettings>& ftle);
 
 }  // namespace epviz::sweep

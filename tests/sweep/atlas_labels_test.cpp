@@ -54,14 +54,15 @@ SmallSweep gamma_sweep(bool normalise) {
 
 TEST(AtlasLabels, GammaAxesBySymbolAndACaptionOfTheRuns) {
   const auto s = gamma_sweep(false);
-  const auto figs = atlas_figures(s.rows, parse_atlas_option("ftle:gamma[0]:gamma[1]"), s.spec.ftle);
+  const auto figs =
+      atlas_figures(s.rows, parse_atlas_option("ftle:gamma[0]:gamma[1]"), s.spec.ftle);
   ASSERT_EQ(figs.size(), 1u);
   const auto& h = figs[0].heat_map;
   EXPECT_EQ(h.x_label, "γ₁");
   EXPECT_EQ(h.y_label, "γ₂");
   EXPECT_EQ(h.value_label, "largest FTLE λ (1/time)");
-  for (const char* w : {"T = 2", "method dop853", "tol = 1e-07", "FTLE window 0.5",
-                        "separation 1e-07"})
+  for (const char* w :
+       {"T = 2", "method dop853", "tol = 1e-07", "FTLE window 0.5", "separation 1e-07"})
     EXPECT_NE(h.note.find(w), std::string::npos) << w << " not in: " << h.note;
   // Numeric axes carry their values, x ascending, y from the top (largest) down.
   EXPECT_EQ(h.column_values, (std::vector<double>{0.2, 0.35, 0.5}));
@@ -71,7 +72,8 @@ TEST(AtlasLabels, GammaAxesBySymbolAndACaptionOfTheRuns) {
 
 TEST(AtlasLabels, NormalisedGammaIsCalledTheComponentBeforeNormalisation) {
   const auto s = gamma_sweep(true);
-  const auto figs = atlas_figures(s.rows, parse_atlas_option("ftle:gamma[0]:gamma[1]"), s.spec.ftle);
+  const auto figs =
+      atlas_figures(s.rows, parse_atlas_option("ftle:gamma[0]:gamma[1]"), s.spec.ftle);
   ASSERT_EQ(figs.size(), 1u);
   EXPECT_EQ(figs[0].heat_map.x_label, "γ₁ before normalisation");
   EXPECT_EQ(figs[0].heat_map.y_label, "γ₂ before normalisation");
