@@ -33,10 +33,15 @@ double cell_value(const HeatMapSpec& spec, std::size_t row, std::size_t column) 
   return spec.values[row][column];
 }
 
-// The ticks of a numeric axis, if `values` makes it one (one per cell).
+// The ticks of a numeric axis, if `values` makes it one (one per cell) of
+// enough cells to be read as a continuous axis; a few cells are each named
+// by their own value, which is exact where round ticks between them would
+// suggest values no run had.
+constexpr std::size_t kFewestCellsForTicks = 8;
 std::vector<GridTick> numeric_ticks(const std::vector<double>& values, std::size_t cells,
                                     int max_labels) {
-  return values.size() == cells ? grid_ticks(values, max_labels) : std::vector<GridTick>{};
+  return values.size() == cells && cells >= kFewestCellsForTicks ? grid_ticks(values, max_labels)
+                                                                 : std::vector<GridTick>{};
 }
 
 // Drops the ticks whose label would reach into the one before it: `extent`

@@ -168,7 +168,7 @@ std::vector<AtlasFigure> atlas_figures(const std::vector<Json>& rows, const Atla
     h.x_label = axis_title(q.x, members);
     h.y_label = axis_title(q.y, members);
     h.value_label = metric_label(q.metric);
-    const std::string over = axis_title(q.x, members) + " and " + axis_title(q.y, members);
+    const std::string over = axis_symbol(q.x) + " and " + axis_symbol(q.y);
     h.title = reduced.empty()
                   ? metric_label(q.metric) + " over " + over
                   : "largest " + axis_symbol(reduced) + " without a failure, by " + over;
