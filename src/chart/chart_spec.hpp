@@ -63,6 +63,12 @@ struct HeatMapSpec {
   std::string y_label;      // the rows' axis title, above their labels
   std::string value_label;  // what the colour means, over the colour bar
   std::vector<std::string> rows, columns;
+  // Numeric axes: the value at each column's (row's) centre, in the order of
+  // `columns` (`rows`). Given (one per column, strictly monotone) on a grid
+  // of many cells, that axis is labelled at round values placed between the
+  // cells (paint/grid_ticks.hpp) instead of by the cells' own labels; empty:
+  // the labels are names.
+  std::vector<double> column_values, row_values;
   std::vector<std::vector<double>> values;  // [row][column], row 0 at the top
   bool log_scale = true;                    // colours by log10 of the value (values > 0)
   bool larger_is_better = true;             // the map's bright end at the better values

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 
 #include "paint/figure_drawing.hpp"
 #include "render/colour_map.hpp"
@@ -30,6 +31,32 @@ double plotted(const HeatMapSpec& spec, double v) {
 double cell_value(const HeatMapSpec& spec, std::size_t row, std::size_t column) {
   if (row >= spec.values.size() || column >= spec.values[row].size()) return kNaN;
   return spec.values[row][column];
+}
+
+// The ticks of a numeric axis, if `values` makes it one (one per cell) of
+// enough cells to be read as a continuous axis; a few cells are each named
+// by their own value, which is exact where round ticks between them would
+// suggest values no run had.
+constexpr std::size_t kFewestCellsForTicks = 8;
+std::vector<GridTick> numeric_ticks(const std::vector<double>& values, std::size_t cells,
+                                    int max_labels) {
+  return values.size() == cells && cells >= kFewestCellsForTicks ? grid_ticks(values, max_labels)
+                                                                 : std::vector<GridTick>{};
+}
+
+// Drops the ticks whose label would reach into the one before it: `extent`
+// is a label's size along the axis, `cell` a cell's.
+void keep_apart(std::vector<GridTick>& ticks, float cell,
+                const std::function<float(const GridTick&)>& extent) {
+  std::vector<GridTick> kept;
+  for (auto& t : ticks) {
+    if (!kept.empty()) {
+      const float gap = float(t.position - kept.back().position) * cell;
+      if (gap < 0.5f * (extent(t) + extent(kept.back()))) continue;
+    }
+    kept.push_back(std::move(t));
+  }
+  ticks = std::move(kept);
 }
 
 std::string heat_value_text(double v) {
@@ -68,10 +95,21 @@ HeatMapLayout heat_map_layout(const HeatMapSpec& spec, int width, int height,
   l.hi = span.hi;
 
   const float line = font_px * 1.35f;
+  // A numeric axis's labels are measured at the finest ticks it may get
+  // (the most decimals); an axis of names by its names.
+  constexpr int kMostTicks = 10;
+  const auto finest_rows = numeric_ticks(spec.row_values, spec.rows.size(), kMostTicks);
+  const auto finest_columns = numeric_ticks(spec.column_values, spec.columns.size(), kMostTicks);
   float widest_row = font.width(spec.y_label);
-  for (const auto& r : spec.rows) widest_row = std::max(widest_row, font.width(r));
+  if (finest_rows.empty())
+    for (const auto& r : spec.rows) widest_row = std::max(widest_row, font.width(r));
+  for (const auto& t : finest_rows) widest_row = std::max(widest_row, font.width(t.label));
   float widest_column = 0.0f;
-  for (const auto& c : spec.columns) widest_column = std::max(widest_column, font.width(c));
+  if (finest_columns.empty())
+    for (const auto& c : spec.columns) widest_column = std::max(widest_column, font.width(c));
+  float widest_column_tick = 0.0f;
+  for (const auto& t : finest_columns)
+    widest_column_tick = std::max(widest_column_tick, font.width(t.label));
   float widest_tick = 0.0f;
   for (const auto& t : axis_ticks(l.lo, l.hi, spec.log_scale, 8))
     widest_tick = std::max(widest_tick, font.width(t.label));
@@ -133,6 +171,18 @@ HeatMapLayout heat_map_layout(const HeatMapSpec& spec, int width, int height,
       l.cells[i].push_back({x0, y0, x1 - x0, y1 - y0});
     }
   l.colour_bar = {left + grid_w + int(font_px * 1.5f), top, int(bar_w), grid_h};
+  if (!finest_columns.empty()) {
+    const float per_label = widest_column_tick + font_px * 2.0f;
+    l.column_ticks = numeric_ticks(spec.column_values, spec.columns.size(),
+                                   std::clamp(int(float(grid_w) / per_label), 2, kMostTicks));
+    keep_apart(l.column_ticks, cell_w,
+               [&](const GridTick& t) { return font.width(t.label) + font_px; });
+  }
+  if (!finest_rows.empty()) {
+    l.row_ticks = numeric_ticks(spec.row_values, spec.rows.size(),
+                                std::clamp(int(float(grid_h) / (line * 2.0f)), 2, kMostTicks));
+    keep_apart(l.row_ticks, cell_h, [&](const GridTick&) { return line; });
+  }
   return l;
 }
 
@@ -168,7 +218,7 @@ FigureDrawing draw_heat_map(const HeatMapSpec& spec, const ChartOptions& options
   for (std::size_t i = 0; i < l.cells.size(); ++i) {
     const Viewport& first = l.cells[i].empty() ? l.grid : l.cells[i][0];
     const float row_y = float(first.y) + first.height * 0.5f;
-    if (i % l.row_stride == 0) {
+    if (l.row_ticks.empty() && i % l.row_stride == 0) {
       list.add_text(
           label({float(l.grid.x) - font_px * 0.5f, row_y}, spec.rows[i], TextAnchor::right));
       if (l.row_stride > 1)  // which row a thinned label names
@@ -198,9 +248,22 @@ FigureDrawing draw_heat_map(const HeatMapSpec& spec, const ChartOptions& options
                           colour ? ink : quiet_ink));
     }
   }
+  // A numeric axis: a tick and its round value where it falls between the cells.
+  const float cell_w = float(l.grid.width) / float(std::max<std::size_t>(1, spec.columns.size()));
+  const float cell_h = float(l.grid.height) / float(std::max<std::size_t>(1, spec.rows.size()));
+  for (const auto& t : l.row_ticks) {
+    const float y = float(l.grid.y) + float(t.position + 0.5) * cell_h;
+    list.add_line({float(l.grid.x) - tick, y, 0}, {float(l.grid.x), y, 0}, kFrame, 1.0f);
+    list.add_text(label({float(l.grid.x) - font_px * 0.5f, y}, t.label, TextAnchor::right));
+  }
+  for (const auto& t : l.column_ticks) {
+    const float x = float(l.grid.x) + float(t.position + 0.5) * cell_w;
+    list.add_line({x, grid_bottom, 0}, {x, grid_bottom + tick, 0}, kFrame, 1.0f);
+    list.add_text(label({x, grid_bottom + font_px * 0.5f}, t.label, TextAnchor::top));
+  }
   // Column labels under the grid, on two lines where they are wider than a
   // cell, every k-th one (with a tick) where even two lines would overlap.
-  for (std::size_t j = 0; j < spec.columns.size(); j += l.column_stride) {
+  for (std::size_t j = 0; l.column_ticks.empty() && j < spec.columns.size(); j += l.column_stride) {
     const Viewport& c = l.cells.empty() ? l.grid : l.cells[0][j];
     const float x = float(c.x) + c.width * 0.5f;
     const float y =

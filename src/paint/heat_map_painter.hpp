@@ -9,6 +9,7 @@
 #include <glm/vec4.hpp>
 
 #include "paint/figure_common.hpp"
+#include "paint/grid_ticks.hpp"
 #include "render/camera.hpp"
 #include "render/gl_context.hpp"
 #include "render/image.hpp"
@@ -32,6 +33,10 @@ struct HeatMapLayout {
   bool value_text = true;          // each cell shows its value (and `missing`) as text
   bool missing_key = false;        // a key under the grid says what a grey cell means
   int natural_height = 0;          // the picture's height that fits the grid with no spare room
+  // Numeric axes (the spec's column_values, row_values) of 8 cells or more:
+  // labels at round values, none overlapping the one before; empty for an
+  // axis of names or of fewer cells (labelled by the cells' own values).
+  std::vector<GridTick> column_ticks, row_ticks;
 };
 // The layout paint_heat_map uses for `spec` at width x height with the labels in `font`.
 HeatMapLayout heat_map_layout(const HeatMapSpec& spec, int width, int height,

@@ -7,6 +7,8 @@
 #include <map>
 #include <set>
 
+#include "sweep/atlas_labels.hpp"
+
 namespace epviz::sweep {
 namespace {
 
@@ -78,7 +80,8 @@ AtlasRequest parse_atlas_option(const std::string& text) {
   return {text.substr(0, a), text.substr(a + 1, b - a - 1), text.substr(b + 1)};
 }
 
-std::vector<AtlasFigure> atlas_figures(const std::vector<Json>& rows, const AtlasRequest& q) {
+std::vector<AtlasFigure> atlas_figures(const std::vector<Json>& rows, const AtlasRequest& q,
+                                       const std::optional<FtleSettings>& ftle) {
   if (rows.empty()) throw AtlasError("atlas " + q.metric + ": the sweep has no rows");
   std::vector<Json> sorted = rows;
   std::sort(sorted.begin(), sorted.end(), [](const Json& a, const Json& b) {
@@ -158,18 +161,27 @@ std::vector<AtlasFigure> atlas_figures(const std::vector<Json>& rows, const Atla
       h.rows.assign(values[q.y].rbegin(), values[q.y].rend());
     else
       h.rows = values[q.y];
-    h.x_label = q.x;
-    h.y_label = q.y;
-    h.value_label = reduced.empty() ? q.metric : "largest stable " + reduced;
+    if (numeric.count(q.x))
+      for (const auto& c : h.columns) h.column_values.push_back(number[q.x][c]);
+    if (upwards)
+      for (const auto& r : h.rows) h.row_values.push_back(number[q.y][r]);
+    h.x_label = axis_title(q.x, members);
+    h.y_label = axis_title(q.y, members);
+    h.value_label = metric_label(q.metric);
+    const std::string over = axis_symbol(q.x) + " and " + axis_symbol(q.y);
     h.title = reduced.empty()
-                  ? q.metric + " over " + q.x + " and " + q.y
-                  : "largest " + reduced + " without a failure, by " + q.x + " and " + q.y;
+                  ? metric_label(q.metric) + " over " + over
+                  : "largest " + axis_symbol(reduced) + " without a failure, by " + over;
     std::string fixed;  // axes with one value: named in the title only
     for (const auto& n : names)
       if (n != q.x && n != q.y && n != reduced && values[n].size() == 1)
-        fixed += ", " + n + "=" + values[n][0];
-    if (!key.empty() || !fixed.empty())
-      h.title += " (" + (key.empty() ? fixed.substr(2) : key.substr(1) + fixed) + ")";
+        fixed += ", " + axis_symbol(n) + " = " + values[n][0];
+    std::string varied;  // this figure's values of the left-over axes
+    for (const auto& n : names)
+      if (n != q.x && n != q.y && n != reduced && values[n].size() > 1)
+        varied += ", " + axis_symbol(n) + " = " + label_of((*members.front())["axes"][n]);
+    if (!varied.empty() || !fixed.empty()) h.title += " (" + (varied + fixed).substr(2) + ")";
+    h.note = atlas_caption(members, q.metric, ftle);
     h.missing = reduced.empty() ? (q.metric == "ftle" ? "no value (a run failed)" : "no value")
                                 : "every " + reduced + " failed";
     h.values.assign(h.rows.size(), std::vector<double>(h.columns.size(), kNaN));

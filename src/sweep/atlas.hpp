@@ -6,6 +6,7 @@
 // or "largest_stable:AXIS" (the largest value of AXIS among the cell's points
 // that did not fail: the largest stable step of a method at an energy). Axes
 // that are neither x, y nor reduced give one figure per combination of their values.
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -37,8 +38,12 @@ struct AtlasFigure {
 AtlasRequest parse_atlas_option(const std::string& text);
 
 // `rows`: the sweep's rows (any order). Throws AtlasError for an axis that
-// is not in the rows or a metric that no row has.
+// is not in the rows or a metric that no row has. Axes are titled by their
+// symbols and numeric ones carry their values (round ticks); the note under
+// the map is the caption of sweep/atlas_labels.hpp, whose FTLE window and
+// separation come from `ftle` (the sweep file's settings: the rows lack them).
 std::vector<AtlasFigure> atlas_figures(const std::vector<nlohmann::json>& rows,
-                                       const AtlasRequest& request);
+                                       const AtlasRequest& request,
+                                       const std::optional<FtleSettings>& ftle = std::nullopt);
 
 }  // namespace epviz::sweep

@@ -291,3 +291,70 @@ TEST(HeatMap, SmallGridCellsShowTheirValues) {
 
 }  // namespace
 }  // namespace epviz
+
+namespace epviz {
+namespace {
+
+// Numeric axes (a sweep's atlas): the same 64 x 64 grid labelled at round
+// values between the cells, a tick under (left of) the grid at each, with
+// labels that keep apart; the row values run downwards, as rows are listed.
+TEST(HeatMap, NumericAxesAreLabelledAtRoundValues) {
+  paint::HeatMapSpec s;
+  s.log_scale = false;
+  constexpr int n = 64;
+  for (int k = 0; k < n; ++k) {
+    const double v = -0.739 + 1.651 * k / (n - 1);
+    s.columns.push_back(std::to_string(v));
+    s.column_values.push_back(v);
+    s.rows.insert(s.rows.begin(), std::to_string(v));
+    s.row_values.insert(s.row_values.begin(), v);
+  }
+  s.values.assign(n, std::vector<double>(n, 0.5));
+  s.values[0][0] = 0.1;
+  const int w = 1280, h = 900;
+  const auto l = paint::heat_map_layout(s, w, h, et::builtin_chart_font());
+  ASSERT_GE(l.column_ticks.size(), 3u);
+  ASSERT_GE(l.row_ticks.size(), 3u);
+  const float cell_w = float(l.grid.width) / n, cell_h = float(l.grid.height) / n;
+  const auto& font = et::builtin_chart_font();
+  for (std::size_t k = 1; k < l.column_ticks.size(); ++k) {
+    const auto& a = l.column_ticks[k - 1];
+    const auto& b = l.column_ticks[k];
+    EXPECT_GT(float(b.position - a.position) * cell_w,
+              0.5f * (font.width(a.label) + font.width(b.label)));
+    EXPECT_GT(b.value, a.value);
+  }
+  for (std::size_t k = 1; k < l.row_ticks.size(); ++k) {
+    EXPECT_GT(float(l.row_ticks[k].position - l.row_ticks[k - 1].position) * cell_h, kFont);
+    EXPECT_LT(l.row_ticks[k].value, l.row_ticks[k - 1].value);  // downwards
+  }
+  const auto img = paint::paint_heat_map(et::shared_gl_context(), s, options(w, h));
+  // A tick (a hairline, antialiased: grey rather than black) on the paper
+  // next to the grid, where nothing else is drawn.
+  auto marked = [&](int x0, int y0, int x1, int y1) {
+    int grey = 0;
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x) grey += et::luminance(et::pixel_colour(img, x, y)) < 0.85f;
+    return grey;
+  };
+  const int grid_bottom = l.grid.y + l.grid.height;
+  for (const auto& t : l.column_ticks) {
+    const int x = l.grid.x + int(std::lround((t.position + 0.5) * cell_w));
+    EXPECT_GT(marked(x - 1, grid_bottom + 1, x + 2, grid_bottom + 3), 0) << t.label;
+    EXPECT_EQ(marked(x - 6, grid_bottom + 1, x - 3, grid_bottom + 3), 0) << t.label;
+  }
+  for (const auto& t : l.row_ticks) {
+    const int y = l.grid.y + int(std::lround((t.position + 0.5) * cell_h));
+    EXPECT_GT(marked(l.grid.x - 3, y - 1, l.grid.x - 1, y + 2), 0) << t.label;
+  }
+  // An axis of names keeps its labels (no ticks).
+  auto names = s;
+  names.column_values.clear();
+  names.row_values.clear();
+  const auto ln = paint::heat_map_layout(names, w, h, font);
+  EXPECT_TRUE(ln.column_ticks.empty());
+  EXPECT_TRUE(ln.row_ticks.empty());
+}
+
+}  // namespace
+}  // namespace epviz

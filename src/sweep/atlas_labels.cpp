@@ -1,0 +1,103 @@
+#include "sweep/atlas_labels.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace epviz::sweep {
+namespace {
+
+using Json = nlohmann::json;
+
+std::string number_text(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
+// The component index of "name[k]", or -1.
+int component(const std::string& field, const std::string& name) {
+  if (field.size() != name.size() + 3 || !field.starts_with(name + "[") || field.back() != ']')
+    return -1;
+  const char k = field[name.size() + 1];
+  return k >= '0' && k <= '2' ? k - '0' : -1;
+}
+
+const char* subscript(int k) {
+  static const char* const digits[] = {"₁", "₂", "₃"};
+  return digits[k];
+}
+
+// The value of `key` that every row has alike; nullopt when one lacks it or differs.
+std::optional<Json> shared(const std::vector<const Json*>& rows, const std::string& key) {
+  std::optional<Json> v;
+  for (const Json* r : rows) {
+    if (!r->contains(key) || (*r)[key].is_null()) return std::nullopt;
+    if (v && *v != (*r)[key]) return std::nullopt;
+    v = (*r)[key];
+  }
+  return v;
+}
+
+}  // namespace
+
+std::string axis_symbol(const std::string& field) {
+  if (const int k = component(field, "gamma"); k >= 0) return std::string("γ") + subscript(k);
+  if (const int k = component(field, "omega"); k >= 0) return std::string("Ω") + subscript(k);
+  if (field == "energy") return "E";
+  if (field == "t_end") return "T";
+  return field;
+}
+
+std::string axis_title(const std::string& field, const std::vector<const Json*>& rows) {
+  if (field == "energy") return "energy E";
+  if (field == "t_end") return "end time T";
+  const int k = component(field, "gamma");
+  if (k < 0) return axis_symbol(field);
+  for (const Json* r : rows) {
+    const Json& given = (*r)["axes"][field];
+    if (!given.is_number() || !r->contains("initial")) continue;
+    const double a = given.get<double>(), run = (*r)["initial"]["gamma"][k].get<double>();
+    if (std::abs(a - run) > 1e-12 * std::max(1.0, std::abs(a)))
+      return axis_symbol(field) + " before normalisation";
+  }
+  return axis_symbol(field);
+}
+
+std::string metric_label(const std::string& metric) {
+  if (metric == "ftle") return "largest FTLE λ (1/time)";
+  if (metric == "time_to_failure") return "time to failure (time)";
+  if (metric == "cpu_seconds") return "CPU time (s)";
+  if (metric == "reference_error") return "largest distance from the reference run";
+  const std::string drift = "max_relative_drift.";
+  if (metric.starts_with(drift)) {
+    const std::string of = metric.substr(drift.size());
+    const std::string symbol = of == "energy"        ? "E"
+                               : of == "area"        ? "C₀"
+                               : of == "gamma_norm2" ? "|γ|²"
+                                                     : of;
+    return "largest relative drift of " + symbol;
+  }
+  const std::string stable = "largest_stable:";
+  if (metric.starts_with(stable))
+    return "largest stable " + axis_symbol(metric.substr(stable.size()));
+  return metric;
+}
+
+std::string atlas_caption(const std::vector<const Json*>& rows, const std::string& metric,
+                          const std::optional<FtleSettings>& ftle) {
+  std::string run;
+  auto add = [&](const std::string& part) { run += (run.empty() ? "" : ", ") + part; };
+  if (const auto t = shared(rows, "t_end"); t && t->is_number())
+    add("T = " + number_text(t->get<double>()));
+  if (const auto m = shared(rows, "method"); m && m->is_string())
+    add("method " + m->get<std::string>());
+  for (const char* key : {"tol", "step"})
+    if (const auto v = shared(rows, key); v && v->is_number())
+      add(std::string(key) + " = " + number_text(v->get<double>()));
+  if (metric != "ftle" || !ftle) return run;
+  const std::string window = ftle->window > 0.0 ? number_text(ftle->window) : "the sample spacing";
+  return run + (run.empty() ? "" : "; ") + "FTLE window " + window + ", separation " +
+         number_text(ftle->separation);
+}
+
+}  // namespace epviz::sweep
