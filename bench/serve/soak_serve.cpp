@@ -108,8 +108,7 @@ PageResult page(unsigned short port, Clock::time_point until) {
       r.width = m.header["width"];
       r.height = m.header["height"];
       ws.text(true);
-      ws.write(net::buffer(
-          nlohmann::json{{"type", "ack"}, {"frame", m.header["frame"]}}.dump()));
+      ws.write(net::buffer(nlohmann::json{{"type", "ack"}, {"frame", m.header["frame"]}}.dump()));
     }
   } catch (const std::exception& e) {
     r.error = e.what();

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "app/gl_option.hpp"
 #include "io/atomic_file.hpp"
@@ -49,12 +50,14 @@ std::vector<std::string> merge_command_line(const MergeOptions& o) {
   return c;
 }
 
+// `ftle`: the sweep's FTLE settings, named in the captions; nullopt when unknown.
 void draw_atlases(const std::vector<Json>& rows, const std::vector<sweep::AtlasRequest>& requests,
-                  const fs::path& out_dir, const MergeOptions& o) {
+                  const std::optional<sweep::FtleSettings>& ftle, const fs::path& out_dir,
+                  const MergeOptions& o) {
   if (requests.empty()) return;
   std::vector<sweep::AtlasFigure> figures;
   for (const auto& q : requests)
-    for (auto& f : sweep::atlas_figures(rows, q)) figures.push_back(std::move(f));
+    for (auto& f : sweep::atlas_figures(rows, q, ftle)) figures.push_back(std::move(f));
 #ifdef EPVIZ_HAVE_RENDER
   const auto format = vector::parse_figure_format(o.format);
   std::unique_ptr<render::GlContext> context;  // PNG only: vector files need no GL
@@ -81,15 +84,16 @@ void draw_atlases(const std::vector<Json>& rows, const std::vector<sweep::AtlasR
 #endif
 }
 
-// The sweep file's own atlases, when it is still there and unchanged; else none.
-std::vector<sweep::AtlasRequest> saved_atlases(const shard::Manifest& m, const std::string& hash) {
+// The sweep file, when it is still there and unchanged (its atlases and FTLE
+// settings are then those of the rows); else nullopt.
+std::optional<sweep::SweepSpec> saved_sweep(const shard::Manifest& m, const std::string& hash) {
   try {
-    const auto spec = sweep::read_sweep_file(m.source);
-    if (spec.hash == hash) return spec.atlases;
+    auto spec = sweep::read_sweep_file(m.source);
+    if (spec.hash == hash) return spec;
   } catch (const std::exception&) {
-    // Gone or edited since: only --atlas figures.
+    // Gone or edited since: only --atlas figures, without the FTLE settings.
   }
-  return {};
+  return std::nullopt;
 }
 
 void merge_sweep(const shard::Batch& b, const std::vector<Json>& rows, const fs::path& out_dir,
@@ -101,10 +105,11 @@ void merge_sweep(const shard::Batch& b, const std::vector<Json>& rows, const fs:
   io::write_file_atomically(out, text);
   std::printf("%s: %zu rows -> %s\n", shard::batch_name(b).c_str(), rows.size(),
               out.string().c_str());
+  const auto saved = saved_sweep(any, b.hash);
   std::vector<sweep::AtlasRequest> requests;
   for (const auto& a : o.atlases) requests.push_back(sweep::parse_atlas_option(a));
-  if (o.atlases.empty()) requests = saved_atlases(any, b.hash);
-  draw_atlases(rows, requests, out_dir, o);
+  if (o.atlases.empty() && saved) requests = saved->atlases;
+  draw_atlases(rows, requests, saved ? saved->ftle : std::nullopt, out_dir, o);
 }
 
 void merge_render(const shard::Batch& b, const fs::path& dir, const fs::path& out_dir) {

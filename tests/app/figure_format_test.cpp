@@ -78,5 +78,35 @@ TEST(FigureFormatOption, MergeWritesTheAtlasAsPdf) {
     EXPECT_NE(words.find(w), std::string::npos) << w << " not in\n" << words;
 }
 
+// A merged FTLE atlas says at which T, with which window and separation its
+// exponents were measured, and names its axes by symbol.
+TEST(FigureFormatOption, AMergedFtleAtlasCaptionNamesTheWindow) {
+  if (std::system("command -v pdftotext >/dev/null") != 0) GTEST_SKIP() << "no pdftotext";
+  TempDir dir;
+  const auto sweep = dir.write("ftle.sweep.json", R"({
+    "simulation": {"case": "generic", "t_end": 2, "samples": 2, "normalize_gamma": true,
+                   "gamma": [0, 0, 1]},
+    "axes": [{"field": "gamma[1]", "from": -0.5, "to": 0.5, "count": 2},
+             {"field": "gamma[0]", "from": -0.5, "to": 0.5, "count": 2}],
+    "ftle": {"separation": 1e-8, "window": 0.5},
+    "atlas": [{"metric": "ftle", "x": "gamma[0]", "y": "gamma[1]"}]})");
+  std::filesystem::create_directories(dir / "rows");
+  const auto s = run_epviz("sweep " + sweep.string() + " --out " +
+                               (dir / "rows/rows.jsonl").string() + " --shard 0/1 --quiet",
+                           dir);
+  ASSERT_EQ(s.exit_code, 0) << s.err;
+  const auto m = run_epviz("merge " + (dir / "rows").string() + " --format pdf", dir);
+  ASSERT_EQ(m.exit_code, 0) << m.err;
+  std::string pdf;
+  for (const auto& e : std::filesystem::directory_iterator(dir / "rows"))
+    if (e.path().extension() == ".pdf") pdf = e.path().string();
+  ASSERT_FALSE(pdf.empty()) << m.out;
+  const auto text = dir / "atlas.txt";
+  ASSERT_EQ(std::system(("pdftotext " + pdf + " " + text.string()).c_str()), 0);
+  const std::string words = test::slurp(text);
+  for (const char* w : {"window", "T = 2", "γ"})
+    EXPECT_NE(words.find(w), std::string::npos) << w << " not in\n" << words;
+}
+
 }  // namespace
 }  // namespace epviz

@@ -28,7 +28,8 @@ TEST(Resubmit, TheScriptRedoesTheIncompleteShardsOfEachBatchThenTheMerge) {
   const std::string s = slurm_resubmit_script({done, broken}, {"epviz", "merge", "/abs/out"});
   EXPECT_NE(s.find("--array=2,5-6 "), std::string::npos) << s;
   EXPECT_EQ(s.find("--array=", s.find("--array=") + 1), std::string::npos)
-      << "a complete batch got an array:\n" << s;
+      << "a complete batch got an array:\n"
+      << s;
   EXPECT_NE(s.find("--shard \"$SLURM_ARRAY_TASK_ID/8\""), std::string::npos) << s;
   // Quoted twice: for the task's command line, then as --wrap's one word.
   EXPECT_NE(s.find(R"(it'\''\'\'''\''s.sweep.json)"), std::string::npos) << s;
