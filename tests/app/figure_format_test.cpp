@@ -6,6 +6,8 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "support/cli.hpp"
 
@@ -50,30 +52,44 @@ TEST(FigureFormatOption, BenchWritesEveryChartAsSvg) {
   EXPECT_NE(ok.out.find(std::to_string(svgs) + " charts written"), std::string::npos) << ok.out;
 }
 
+// Runs the sweep `sweep_json` as one shard into dir/rows and merges it with
+// --format pdf: the text pdftotext finds in the one atlas PDF, or "" (with a
+// test failure) when something did not run.
+std::string merged_atlas_text(const TempDir& dir, const std::string& sweep_json) {
+  const auto sweep = dir.write("atlas.sweep.json", sweep_json);
+  std::filesystem::create_directories(dir / "rows");
+  const auto s = run_epviz("sweep " + sweep.string() + " --out " +
+                               (dir / "rows/rows.jsonl").string() + " --shard 0/1 --quiet",
+                           dir);
+  EXPECT_EQ(s.exit_code, 0) << s.err;
+  const auto m = run_epviz("merge " + (dir / "rows").string() + " --format pdf", dir);
+  EXPECT_EQ(m.exit_code, 0) << m.err;
+  std::vector<std::filesystem::path> pdfs, pngs;
+  for (const auto& e : std::filesystem::directory_iterator(dir / "rows")) {
+    if (e.path().extension() == ".pdf") pdfs.push_back(e.path());
+    if (e.path().extension() == ".png") pngs.push_back(e.path());
+  }
+  EXPECT_TRUE(pngs.empty()) << "a PNG drawn besides the PDF";
+  if (pdfs.size() != 1) {
+    ADD_FAILURE() << pdfs.size() << " PDFs: " << m.out;
+    return "";
+  }
+  const auto text = dir / "atlas.txt";
+  EXPECT_EQ(std::system(("pdftotext " + pdfs[0].string() + " " + text.string()).c_str()), 0);
+  return test::slurp(text);
+}
+
 // `merge --format pdf` writes the sweep's atlas as a PDF whose title is text,
 // and draws no PNG.
 TEST(FigureFormatOption, MergeWritesTheAtlasAsPdf) {
   if (std::system("command -v pdftotext >/dev/null") != 0) GTEST_SKIP() << "no pdftotext";
   TempDir dir;
-  const auto sweep = dir.write("small.sweep.json", R"({
+  const std::string words = merged_atlas_text(dir, R"({
     "simulation": {"case": "generic", "t_end": 5, "samples": 5, "max_drift": 0.1},
     "axes": [{"field": "method", "values": ["rk4", "midpoint"]},
              {"field": "step", "values": [1.0, 0.25, 0.05]},
              {"field": "energy", "values": [1.5, 10]}],
     "atlas": [{"metric": "largest_stable:step", "x": "energy", "y": "method"}]})");
-  std::filesystem::create_directories(dir / "rows");
-  const auto s = run_epviz("sweep " + sweep.string() + " --out " +
-                               (dir / "rows/rows.jsonl").string() + " --shard 0/1 --quiet",
-                           dir);
-  ASSERT_EQ(s.exit_code, 0) << s.err;
-  const auto m = run_epviz("merge " + (dir / "rows").string() + " --format pdf", dir);
-  ASSERT_EQ(m.exit_code, 0) << m.err;
-  const auto pdf = dir / "rows/atlas_largest_stable_step_energy_method.pdf";
-  ASSERT_TRUE(std::filesystem::exists(pdf)) << m.out;
-  EXPECT_FALSE(std::filesystem::exists(dir / "rows/atlas_largest_stable_step_energy_method.png"));
-  const auto text = dir / "atlas.txt";
-  ASSERT_EQ(std::system(("pdftotext " + pdf.string() + " " + text.string()).c_str()), 0);
-  const std::string words = test::slurp(text);
   for (const char* w : {"largest stable step", "energy", "method", "rk4", "midpoint"})
     EXPECT_NE(words.find(w), std::string::npos) << w << " not in\n" << words;
 }
@@ -83,27 +99,13 @@ TEST(FigureFormatOption, MergeWritesTheAtlasAsPdf) {
 TEST(FigureFormatOption, AMergedFtleAtlasCaptionNamesTheWindow) {
   if (std::system("command -v pdftotext >/dev/null") != 0) GTEST_SKIP() << "no pdftotext";
   TempDir dir;
-  const auto sweep = dir.write("ftle.sweep.json", R"({
+  const std::string words = merged_atlas_text(dir, R"({
     "simulation": {"case": "generic", "t_end": 2, "samples": 2, "normalize_gamma": true,
                    "gamma": [0, 0, 1]},
     "axes": [{"field": "gamma[1]", "from": -0.5, "to": 0.5, "count": 2},
              {"field": "gamma[0]", "from": -0.5, "to": 0.5, "count": 2}],
     "ftle": {"separation": 1e-8, "window": 0.5},
     "atlas": [{"metric": "ftle", "x": "gamma[0]", "y": "gamma[1]"}]})");
-  std::filesystem::create_directories(dir / "rows");
-  const auto s = run_epviz("sweep " + sweep.string() + " --out " +
-                               (dir / "rows/rows.jsonl").string() + " --shard 0/1 --quiet",
-                           dir);
-  ASSERT_EQ(s.exit_code, 0) << s.err;
-  const auto m = run_epviz("merge " + (dir / "rows").string() + " --format pdf", dir);
-  ASSERT_EQ(m.exit_code, 0) << m.err;
-  std::string pdf;
-  for (const auto& e : std::filesystem::directory_iterator(dir / "rows"))
-    if (e.path().extension() == ".pdf") pdf = e.path().string();
-  ASSERT_FALSE(pdf.empty()) << m.out;
-  const auto text = dir / "atlas.txt";
-  ASSERT_EQ(std::system(("pdftotext " + pdf + " " + text.string()).c_str()), 0);
-  const std::string words = test::slurp(text);
   for (const char* w : {"window", "T = 2", "γ"})
     EXPECT_NE(words.find(w), std::string::npos) << w << " not in\n" << words;
 }
