@@ -70,19 +70,21 @@ int run_sweep(const SweepOptions& o) {
                          ", outside this shard's points " + std::to_string(range.first) + ".." +
                          std::to_string(range.end - 1) + "; give another --out");
 
-  // Every point is resolved before any runs: a bad value anywhere in the
-  // sweep stops every shard alike, before any work. Only this shard's points
-  // still to run are kept, so that a shard's memory is in proportion to its
-  // own range, however large the sweep.
+  // Every value of every axis is read and checked before any runs, through
+  // one point per value, so that a bad value anywhere stops every shard
+  // alike; then this shard's own points are resolved in full (where a value
+  // meets the others: an energy the state cannot reach, a step budget) and
+  // kept, so that a shard costs time and memory in proportion to its own
+  // range, however large the sweep.
+  sweep::PointReader read_point(spec);
+  for (long i : spec.value_probes()) (void)read_point(i);
   std::vector<sweep::PreparedPoint> pending;
   pending.reserve(std::size_t(range.size()));
-  sweep::PointReader read_point(spec);
-  for (long i = 0; i < total; ++i) {
+  for (long i = range.first; i < range.end; ++i) {
     try {
       auto p = read_point(i);
       auto run = sweep::resolve_point(p, [](const SimulationFields& f) { return job::resolve(f); });
-      if (i >= range.first && i < range.end && !existing.indices.count(i))
-        pending.push_back(sweep::prepared_point(p, std::move(run)));
+      if (!existing.indices.count(i)) pending.push_back(sweep::prepared_point(p, std::move(run)));
     } catch (const std::invalid_argument& e) {  // an energy no state of the body reaches
       throw io::BadInput(e.what());
     }

@@ -1,5 +1,7 @@
 #include "sweep/sweep_spec.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 
 #include "io/json_reader.hpp"
@@ -128,6 +130,18 @@ std::vector<std::size_t> SweepSpec::coordinates(long index) const {
     index /= n;
   }
   return c;
+}
+
+std::vector<long> SweepSpec::value_probes() const {
+  std::vector<long> probes;
+  long stride = 1;  // the last axis varies fastest (coordinates)
+  for (std::size_t k = axes.size(); k-- > 0;) {
+    for (long j = 0; j < long(axes[k].values.size()); ++j) probes.push_back(j * stride);
+    stride *= long(axes[k].values.size());
+  }
+  std::sort(probes.begin(), probes.end());
+  probes.erase(std::unique(probes.begin(), probes.end()), probes.end());
+  return probes;
 }
 
 SweepSpec read_sweep(const Json& root, const std::string& file) {

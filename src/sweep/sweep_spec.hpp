@@ -67,6 +67,9 @@ struct SweepSpec {
   long point_count() const;
   // The index into each axis's values of point `index` (first axis slowest).
   std::vector<std::size_t> coordinates(long index) const;
+  // One point per value of each axis, the other axes at their first value
+  // (sorted, distinct): reading these reads every value of the sweep once.
+  std::vector<long> value_probes() const;
 };
 
 inline constexpr long max_points = 10'000'000;

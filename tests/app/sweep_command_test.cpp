@@ -151,6 +151,31 @@ TEST(SweepCommand, ShardsMergeToTheUnshardedRows) {
   while (std::getline(in, line)) EXPECT_EQ(Json::parse(line)["index"], expect++);
 }
 
+// A value no point may take stops every shard before any work; a point
+// whose values meet badly (an energy its state cannot reach) stops the shard
+// that holds it, whose own points are resolved in full.
+TEST(SweepCommand, ABadValueStopsEveryShardABadPointItsOwn) {
+  TempDir d;
+  const auto sweep = d.write("s.sweep.json", R"({
+    "simulation": {"case": "generic", "t_end": 0.1, "samples": 1, "method": "rk4", "step": 0.1},
+    "axes": [{"field": "energy", "values": [3.0, -100.0]}]})");
+  const std::string out = (d / "rows.jsonl").string();
+  EXPECT_EQ(
+      run_epviz("sweep " + sweep.string() + " --out " + out + " --shard 0/2 --quiet", d).exit_code,
+      0);
+  expect_bad_input(
+      run_epviz("sweep " + sweep.string() + " --out " + out + " --shard 1/2 --quiet", d), "energy");
+
+  const auto bad_value = d.write("v.sweep.json", R"({
+    "simulation": {"case": "generic", "t_end": 0.1, "samples": 1, "method": "dop853"},
+    "axes": [{"field": "tol", "values": [1e-8, 0.5]}]})");
+  for (const char* s : {"0/2", "1/2"})
+    expect_bad_input(run_epviz("sweep " + bad_value.string() + " --out " +
+                                   (d / "v.jsonl").string() + " --shard " + s + " --quiet",
+                               d),
+                     "tol");
+}
+
 // Stands in for Slurm's sbatch in PATH: runs a job array's --wrap command
 // once per index of its --array list (with SLURM_ARRAY_TASK_ID set), and any
 // other job's at once; logs its options and prints a job id, as --parsable does.
