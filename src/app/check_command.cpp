@@ -31,7 +31,6 @@
 #include "job/job_file.hpp"
 #include "job/job_list.hpp"
 #include "job/job_plan.hpp"
-#include "numerics/failure.hpp"
 #include "paint/frame_drawer.hpp"
 #include "render/gl_choice.hpp"
 #include "scene/plan.hpp"
@@ -230,18 +229,14 @@ std::vector<std::future<check::JobOutcome>> check_jobs(const std::vector<CheckJo
           }
           // Each frame is checked as soon as it is drawn, and not kept.
           auto frames = checker.start(c.golden, i, o.update);
-          paint::FrameDrawer drawer(c.plan, c.job.scene);
-          std::optional<std::string> failure;
-          try {
-            for (const int f : c.golden.frames) {
-              const auto& image = drawer.draw(f, *painter, paint_lock.get());
-              frames.add({image.width, image.height, image.pixels});
-            }
-          } catch (const numerics::IntegrationError& e) {
-            failure = e.failure().message();
-          }
+          const auto failure =
+              paint::draw_frames(c.plan, c.job.scene, c.golden.frames, *painter, paint_lock.get(),
+                                 [&](const render::RgbaImage& image) {
+                                   frames.add({image.width, image.height, image.pixels});
+                                 });
           drop_painter();
-          (*promises)[i].set_value(frames.finish(failure));
+          (*promises)[i].set_value(
+              frames.finish(failure ? std::optional(failure->message()) : std::nullopt));
         } catch (...) {
           drop_painter();
           (*promises)[i].set_exception(std::current_exception());

@@ -1,33 +1,24 @@
 #include "check/golden_record.hpp"
 
-#include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 
 #include "io/bad_input.hpp"
+#include "io/fnv1a.hpp"
 #include "io/printable.hpp"
 
 namespace epviz::check {
-
-std::uint64_t fnv1a64(std::string_view bytes) {
-  std::uint64_t h = 0xcbf29ce484222325ull;  // offset basis
-  for (const char c : bytes) {
-    h ^= static_cast<unsigned char>(c);
-    h *= 0x100000001b3ull;  // FNV prime
-  }
-  return h;
-}
 
 std::string job_file_hash(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw std::runtime_error(file.string() + ": cannot read the job file to hash it");
   std::ostringstream s;
   s << in.rdbuf();
-  char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a64(s.str())));
-  return std::string("fnv1a64:") + hex;
+  io::Fnv1a64 h;
+  h.add(s.str());
+  return "fnv1a64:" + h.hex();
 }
 
 std::string to_json_text(const GoldenRecord& r) {

@@ -21,9 +21,6 @@ struct GoldenRecord {
   int width = 0, height = 0;
 };
 
-// 64-bit FNV-1a (Fowler, Noll, Vo): a fingerprint to notice an edited job
-// file, not a defence against forgery.
-std::uint64_t fnv1a64(std::string_view bytes);
 // "fnv1a64:0123456789abcdef" of the file's contents; throws std::runtime_error
 // when it cannot be read.
 std::string job_file_hash(const std::filesystem::path& file);

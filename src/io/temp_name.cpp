@@ -5,9 +5,9 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstdint>
-#include <cstdio>
 #include <fstream>
+
+#include "io/fnv1a.hpp"
 
 namespace epviz::io {
 namespace {
@@ -33,11 +33,9 @@ std::string make_machine_token() {
   const std::string pid_namespace = fs::read_symlink("/proc/self/ns/pid", ec).string();
   const std::string identity = std::string(host) + '\n' +
                                first_line("/proc/sys/kernel/random/boot_id") + '\n' + pid_namespace;
-  std::uint64_t hash = 14695981039346656037ull;  // FNV-1a, 64 bits
-  for (unsigned char c : identity) hash = (hash ^ c) * 1099511628211ull;
-  char text[17];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
-  return std::string(text, kTokenDigits);
+  Fnv1a64 hash;
+  hash.add(identity);
+  return hash.hex().substr(0, kTokenDigits);
 }
 
 bool is_hex_digits(std::string_view s) {

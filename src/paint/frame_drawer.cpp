@@ -14,19 +14,26 @@ const render::RgbaImage& FrameDrawer::draw(int index, FramePainter& painter,
   return painter.paint(frame);
 }
 
+std::optional<numerics::Failure> draw_frames(
+    const scene::ScenePlan& plan, const scene::SceneSettings& settings, std::span<const int> frames,
+    FramePainter& painter, std::mutex* paint_lock,
+    const std::function<void(const render::RgbaImage&)>& on_frame) {
+  FrameDrawer drawer(plan, settings);
+  try {
+    for (const int i : frames) on_frame(drawer.draw(i, painter, paint_lock));
+  } catch (const numerics::IntegrationError& e) {
+    return e.failure();
+  }
+  return std::nullopt;
+}
+
 DrawnFrames draw_frames(const scene::ScenePlan& plan, const scene::SceneSettings& settings,
                         std::span<const int> frames, FramePainter& painter,
                         std::mutex* paint_lock) {
   DrawnFrames out;
-  FrameDrawer drawer(plan, settings);
-  try {
-    for (const int i : frames) {
-      // Copied: the painter's next paint overwrites its image.
-      out.images.push_back(drawer.draw(i, painter, paint_lock));
-    }
-  } catch (const numerics::IntegrationError& e) {
-    out.failure = e.failure();
-  }
+  // Copied: the painter's next paint overwrites its image.
+  out.failure = draw_frames(plan, settings, frames, painter, paint_lock,
+                            [&](const render::RgbaImage& image) { out.images.push_back(image); });
   return out;
 }
 

@@ -2,7 +2,8 @@
 // The frames of a planned scene drawn through scene::FrameSource and the
 // frame painter, in increasing order: the simulation runs through the frames
 // in between without drawing them. Shared by `epviz render` (frames to files)
-// and `epviz check` (frames in memory, compared with goldens).
+// and `epviz check` (each frame compared with its golden as it is drawn).
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <span>
@@ -33,15 +34,23 @@ class FrameDrawer {
   std::string caption_;
 };
 
+// Frames `frames` (increasing) of a scene, each handed to `on_frame` as soon
+// as it is drawn (valid during the call only), so that no frame need be kept.
+// `paint_lock`, when given, is held while painting only, so that simulations
+// of scenes on other threads go on meanwhile (ImGui keeps its current context
+// in one global, so painters on several threads must take turns). Returns the
+// numerical failure that ended the frames early, or nullopt.
+std::optional<numerics::Failure> draw_frames(
+    const scene::ScenePlan& plan, const scene::SceneSettings& settings, std::span<const int> frames,
+    FramePainter& painter, std::mutex* paint_lock,
+    const std::function<void(const render::RgbaImage&)>& on_frame);
+
 struct DrawnFrames {
   std::vector<render::RgbaImage> images;  // one per frame asked for, until a failure
   std::optional<numerics::Failure> failure;
 };
 
-// Frames `frames` (increasing) of a scene into images. `paint_lock`, when
-// given, is held while painting only, so that simulations of scenes on other
-// threads go on meanwhile (ImGui keeps its current context in one global, so
-// painters on several threads must take turns).
+// The same, the frames kept (a few frames: tests, stills).
 DrawnFrames draw_frames(const scene::ScenePlan& plan, const scene::SceneSettings& settings,
                         std::span<const int> frames, FramePainter& painter,
                         std::mutex* paint_lock = nullptr);

@@ -8,21 +8,8 @@
 
 namespace epviz::shard {
 
-void Fnv1a64::add(std::string_view bytes) {
-  for (unsigned char c : bytes) {
-    h_ ^= c;
-    h_ *= 1099511628211ull;
-  }
-}
-
-std::string Fnv1a64::hex() const {
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h_));
-  return buf;
-}
-
 std::string checksum_of(std::string_view bytes) {
-  Fnv1a64 h;
+  io::Fnv1a64 h;
   h.add(bytes);
   return h.hex();
 }
@@ -30,7 +17,7 @@ std::string checksum_of(std::string_view bytes) {
 FileDigest digest_file(const std::filesystem::path& path) {
   std::FILE* f = std::fopen(path.c_str(), "rb");
   if (!f) throw std::runtime_error(path.string() + ": cannot read (" + std::strerror(errno) + ")");
-  Fnv1a64 h;
+  io::Fnv1a64 h;
   FileDigest d;
   std::vector<char> buf(1 << 16);
   std::size_t n;

@@ -1,24 +1,16 @@
 #pragma once
 // Checksums of the files a shard writes, so that a merge can tell a complete
-// file from one cut short or changed since: 64-bit FNV-1a, written as 16 hex
-// digits. It detects accidents (truncation, a rerun writing other bytes), not
+// file from one cut short or changed since: 64-bit FNV-1a (io/fnv1a.hpp),
+// written as 16 hex digits. It detects accidents (truncation, a rerun writing other bytes), not
 // tampering, which is all a merge needs.
 #include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
 
+#include "io/fnv1a.hpp"
+
 namespace epviz::shard {
-
-class Fnv1a64 {
- public:
-  void add(std::string_view bytes);
-  std::uint64_t value() const { return h_; }
-  std::string hex() const;
-
- private:
-  std::uint64_t h_ = 14695981039346656037ull;
-};
 
 std::string checksum_of(std::string_view bytes);
 // The file's size and checksum; throws std::runtime_error naming the file when it cannot be read.

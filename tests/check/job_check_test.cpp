@@ -7,6 +7,7 @@
 
 #include "check/golden_record.hpp"
 #include "check/job_check.hpp"
+#include "io/fnv1a.hpp"
 #include "io/png_reader.hpp"
 #include "support/cli.hpp"
 #include "test_images.hpp"
@@ -87,7 +88,7 @@ TEST_F(JobCheck, UpdateWritesEveryFrameAndGoldenJson) {
   EXPECT_EQ(rec["job_file"], "kov.json");
   char hash[40];
   std::snprintf(hash, sizeof hash, "fnv1a64:%016llx",
-                static_cast<unsigned long long>(fnv1a64("{\"a job\": 1}\n")));
+                static_cast<unsigned long long>(io::fnv1a64("{\"a job\": 1}\n")));
   EXPECT_EQ(rec["job_hash"], hash);
   EXPECT_EQ(rec["frames"], nlohmann::json({0, 134, 269}));
   EXPECT_EQ(rec["width"], 40);

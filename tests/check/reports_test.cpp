@@ -9,6 +9,7 @@
 #include "check/golden_record.hpp"
 #include "check/html_report.hpp"
 #include "check/junit_xml.hpp"
+#include "io/fnv1a.hpp"
 
 namespace epviz::check {
 namespace {
@@ -72,9 +73,9 @@ TEST(HtmlReport, ShowsTheThreeImagesOfFailingFramesOnly) {
 }
 
 TEST(Fnv1a64, PublishedTestVectors) {
-  EXPECT_EQ(fnv1a64(""), 0xcbf29ce484222325ull);
-  EXPECT_EQ(fnv1a64("a"), 0xaf63dc4c8601ec8cull);
-  EXPECT_EQ(fnv1a64("foobar"), 0x85944171f73967e8ull);
+  EXPECT_EQ(io::fnv1a64(""), 0xcbf29ce484222325ull);
+  EXPECT_EQ(io::fnv1a64("a"), 0xaf63dc4c8601ec8cull);
+  EXPECT_EQ(io::fnv1a64("foobar"), 0x85944171f73967e8ull);
 }
 
 TEST(GoldenRecord, RoundTripsThroughGoldenJson) {
