@@ -7,61 +7,103 @@
 namespace epviz::check {
 namespace {
 
-// Grey level x 1000 (0.299, 0.587, 0.114 as integers): every sum below is an
-// exact integer. A window's sums stay under 2^53 (64 pixels of 255000^2), so
-// they also convert to double exactly.
-void grey_row(int width, const std::uint8_t* rgba, std::int32_t* grey) {
-  for (int x = 0; x < width; ++x)
-    grey[x] = 299 * rgba[4 * x] + 587 * rgba[4 * x + 1] + 114 * rgba[4 * x + 2];
+// Grey level x 1000 (0.299, 0.587, 0.114 as integers), so that every sum
+// below is an integer. The largest, n * sum(x^2) for a window of n = 64
+// pixels, stays under 2^48, so doubles hold the sums, and the means and
+// (co)variances made of them, exactly. Doubles rather than 64-bit integers:
+// SSE2 has no 64-bit multiply, two doubles share a vector register, and
+// the division needs them as doubles anyway.
+double grey(const std::uint8_t* rgba) {
+  return double(299 * rgba[0] + 587 * rgba[1] + 114 * rgba[2]);
+}
+
+// out[i] = in[i] + ... + in[i + w - 1] for i + w <= width. A window of 8 in
+// three passes of pairs (1 + 1, 2 + 2, 4 + 4) rather than seven additions;
+// not running sums, which chain each window on the one before, so that
+// vector lanes cannot share them out.
+void window_sums(int width, int w, const double* __restrict in, double* __restrict out) {
+  if (w == kSsimWindow) {
+    for (int i = 0; i + 1 < width; ++i) out[i] = in[i] + in[i + 1];
+    for (int i = 0; i + 3 < width; ++i) out[i] = out[i] + out[i + 2];
+    for (int i = 0; i + 7 < width; ++i) out[i] = out[i] + out[i + 4];
+    return;
+  }
+  for (int i = 0; i + w <= width; ++i) {
+    double s = 0;
+    for (int k = 0; k < w; ++k) s += in[i + k];
+    out[i] = s;
+  }
+}
+
+// Per column, sums over the band's rows of x, y, x^2, y^2 and x y.
+struct ColumnSums {
+  double* __restrict x, * __restrict y, * __restrict xx, * __restrict yy, * __restrict xy;
+};
+
+// The column sums with the band's row (old_u, old_v) taken out and the
+// image row (a, b) put in, whose grey levels then replace it in the band.
+void update_columns(int width, const std::uint8_t* __restrict a, const std::uint8_t* __restrict b,
+                    double* __restrict old_u, double* __restrict old_v, ColumnSums c) {
+  for (int i = 0; i < width; ++i) {
+    const double ou = old_u[i], ov = old_v[i];
+    const double u = grey(a + 4 * i), v = grey(b + 4 * i);
+    c.x[i] += u - ou;
+    c.y[i] += v - ov;
+    c.xx[i] += u * u - ou * ou;
+    c.yy[i] += v * v - ov * ov;
+    c.xy[i] += u * v - ou * ov;
+    old_u[i] = u;
+    old_v[i] = v;
+  }
 }
 
 }  // namespace
 
-// Adds (sign +1) or removes (sign -1) the band row `row_in_band` to the column sums.
-void SsimWorkspace::add_row(int width, int row_in_band, const std::uint8_t* a,
-                            const std::uint8_t* b, std::int64_t sign) {
-  std::int32_t* ga = &grey_a_[std::size_t(row_in_band) * width];
-  std::int32_t* gb = &grey_b_[std::size_t(row_in_band) * width];
-  if (sign > 0) {
-    grey_row(width, a, ga);
-    grey_row(width, b, gb);
-  }
-  for (int x = 0; x < width; ++x) {
-    const std::int64_t u = ga[x], v = gb[x];
-    col_x_[x] += sign * u;
-    col_y_[x] += sign * v;
-    col_xx_[x] += sign * u * u;
-    col_yy_[x] += sign * v * v;
-    col_xy_[x] += sign * u * v;
-  }
+void SsimWorkspace::reset(int width, int band_rows) {
+  // assign() reuses the capacity of earlier calls: nothing is allocated once
+  // the widest frame has been seen.
+  band_a_.assign(std::size_t(band_rows) * width, 0.0);
+  band_b_.assign(std::size_t(band_rows) * width, 0.0);
+  for (auto* row : {&col_x_, &col_y_, &col_xx_, &col_yy_, &col_xy_, &window_x_, &window_y_,
+                    &window_xx_, &window_yy_, &window_xy_, &ssim_sum_})
+    row->assign(width, 0.0);
 }
 
-// The SSIM of every window in the band's rows, summed.
-double SsimWorkspace::row_of_windows(int width, int wx, int wy) {
-  for (int x = 0; x < width; ++x) {
-    run_x_[x + 1] = run_x_[x] + col_x_[x];
-    run_y_[x + 1] = run_y_[x] + col_y_[x];
-    run_xx_[x + 1] = run_xx_[x] + col_xx_[x];
-    run_yy_[x + 1] = run_yy_[x] + col_yy_[x];
-    run_xy_[x + 1] = run_xy_[x] + col_xy_[x];
-  }
+// The band's row `slot` leaves the column sums and the image row (a, b)
+// takes its place.
+void SsimWorkspace::replace_row(int width, int slot, const std::uint8_t* a, const std::uint8_t* b) {
+  const std::size_t band = std::size_t(slot) * width;
+  update_columns(width, a, b, &band_a_[band], &band_b_[band],
+                 {col_x_.data(), col_y_.data(), col_xx_.data(), col_yy_.data(), col_xy_.data()});
+}
+
+// Adds the SSIM of each window whose bottom row is the band's newest to the
+// per-column totals.
+void SsimWorkspace::add_row_of_windows(int width, int wx, int wy) {
+  window_sums(width, wx, col_x_.data(), window_x_.data());
+  window_sums(width, wx, col_y_.data(), window_y_.data());
+  window_sums(width, wx, col_xx_.data(), window_xx_.data());
+  window_sums(width, wx, col_yy_.data(), window_yy_.data());
+  window_sums(width, wx, col_xy_.data(), window_xy_.data());
   // The formula of ssim.hpp multiplied through by (1000 n)^2 (n pixels a
   // window), so that means and (co)variances are the integers below.
-  const std::int64_t n = std::int64_t(wx) * wy;
-  const double scale = 1000.0 * double(n) * 1000.0 * double(n);
+  const double n = double(wx) * double(wy);
+  const double scale = 1000.0 * n * 1000.0 * n;
   const double c1 = (0.01 * 255) * (0.01 * 255) * scale, c2 = (0.03 * 255) * (0.03 * 255) * scale;
-  double total = 0.0;
+  const double* __restrict sx = window_x_.data();
+  const double* __restrict sy = window_y_.data();
+  const double* __restrict sxx = window_xx_.data();
+  const double* __restrict syy = window_yy_.data();
+  const double* __restrict sxy = window_xy_.data();
+  double* __restrict total = ssim_sum_.data();
   for (int i = 0; i + wx <= width; ++i) {
-    const std::int64_t sx = run_x_[i + wx] - run_x_[i], sy = run_y_[i + wx] - run_y_[i];
-    const std::int64_t sxx = run_xx_[i + wx] - run_xx_[i], syy = run_yy_[i + wx] - run_yy_[i];
-    const std::int64_t sxy = run_xy_[i + wx] - run_xy_[i];
-    const std::int64_t means = 2 * sx * sy, squares = sx * sx + sy * sy;
-    const std::int64_t covariance = 2 * (n * sxy - sx * sy);
-    const std::int64_t variances = n * sxx - sx * sx + n * syy - sy * sy;
-    total += (double(means) + c1) * (double(covariance) + c2) /
-             ((double(squares) + c1) * (double(variances) + c2));
+    const double means = 2 * sx[i] * sy[i], squares = sx[i] * sx[i] + sy[i] * sy[i];
+    const double covariance = 2 * (n * sxy[i] - sx[i] * sy[i]);
+    const double variances = n * sxx[i] - sx[i] * sx[i] + n * syy[i] - sy[i] * sy[i];
+    // Summed per column, not along the row: one vector lane per column and
+    // no reordered floating-point sum for the compiler to refuse.
+    total[i] += (means + c1) * (covariance + c2) / ((squares + c1) * (variances + c2));
   }
-  return total;
 }
 
 double SsimWorkspace::ssim(int width, int height, std::span<const std::uint8_t> a,
@@ -72,22 +114,17 @@ double SsimWorkspace::ssim(int width, int height, std::span<const std::uint8_t> 
     throw std::invalid_argument("image buffers do not hold " + std::to_string(width) + "x" +
                                 std::to_string(height) + " RGBA pixels");
   const int wx = std::min(kSsimWindow, width), wy = std::min(kSsimWindow, height);
-  // assign() reuses the capacity of earlier calls.
-  grey_a_.assign(std::size_t(wy) * width, 0);
-  grey_b_.assign(std::size_t(wy) * width, 0);
-  for (auto* col : {&col_x_, &col_y_, &col_xx_, &col_yy_, &col_xy_}) col->assign(width, 0);
-  for (auto* run : {&run_x_, &run_y_, &run_xx_, &run_yy_, &run_xy_}) run->assign(width + 1, 0);
+  reset(width, wy);
 
-  // A band of wy rows slides down the image: the row entering is added to the
-  // column sums, the row leaving (kept in the band) taken out.
+  // A band of wy rows slides down the image: the row entering replaces the
+  // one leaving in the column sums (rows of zeros while the band fills).
   const std::size_t row_bytes = std::size_t(width) * 4;
-  double total = 0.0;
   for (int y = 0; y < height; ++y) {
-    const int slot = y % wy;
-    if (y >= wy) add_row(width, slot, nullptr, nullptr, -1);
-    add_row(width, slot, &a[y * row_bytes], &b[y * row_bytes], +1);
-    if (y + 1 >= wy) total += row_of_windows(width, wx, wy);
+    replace_row(width, y % wy, &a[y * row_bytes], &b[y * row_bytes]);
+    if (y + 1 >= wy) add_row_of_windows(width, wx, wy);
   }
+  double total = 0.0;
+  for (int i = 0; i + wx <= width; ++i) total += ssim_sum_[i];
   const double windows = double(width - wx + 1) * double(height - wy + 1);
   return total / windows;
 }

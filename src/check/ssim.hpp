@@ -26,8 +26,8 @@ constexpr int kSsimWindow = 8;
 
 // The buffers one SSIM needs, kept between calls so that checking frame
 // after frame allocates nothing once the widest frame has been seen. Its
-// memory grows with the image width only (a band of window-high rows). Not
-// for use by two threads at once.
+// memory grows with the image width only (a band of window-high rows, about
+// 280 kB at 1280 pixels). Not for use by two threads at once.
 class SsimWorkspace {
  public:
   // Throws std::invalid_argument when a buffer does not hold width x height
@@ -36,15 +36,18 @@ class SsimWorkspace {
               std::span<const std::uint8_t> b);
 
  private:
-  void add_row(int width, int row_in_band, const std::uint8_t* a, const std::uint8_t* b,
-               std::int64_t sign);
-  double row_of_windows(int width, int wx, int wy);
+  void reset(int width, int band_rows);
+  void replace_row(int width, int slot, const std::uint8_t* a, const std::uint8_t* b);
+  void add_row_of_windows(int width, int wx, int wy);
 
-  std::vector<std::int32_t> grey_a_, grey_b_;  // the band's rows of grey levels x 1000
+  // Grey levels x 1000 of the band's rows (image row y in slot y % band rows).
+  std::vector<double> band_a_, band_b_;
   // Per column, sums over the band's rows of x, y, x^2, y^2 and x y.
-  std::vector<std::int64_t> col_x_, col_y_, col_xx_, col_yy_, col_xy_;
-  // The same, summed along the row (a zero in front), for window sums.
-  std::vector<std::int64_t> run_x_, run_y_, run_xx_, run_yy_, run_xy_;
+  std::vector<double> col_x_, col_y_, col_xx_, col_yy_, col_xy_;
+  // The same summed over each window's columns (index: the window's left column).
+  std::vector<double> window_x_, window_y_, window_xx_, window_yy_, window_xy_;
+  // Per window column, the SSIM of its windows so far.
+  std::vector<double> ssim_sum_;
 };
 
 // One SSIM with a workspace of its own (allocates).

@@ -147,6 +147,33 @@ TEST(Ssim, SidesShorterThanAWindowUseTheWholeSide) {
   EXPECT_NEAR(ssim_of(a, b), direct_ssim(a, b), 1e-9);
 }
 
+TEST(Ssim, OfTwoFlatImagesIsTheRatioOfTheirMeans) {
+  // No variance and no covariance: only the means' term is left,
+  // (2 a b + C1) / (a^2 + b^2 + C1), with a and b the two grey levels.
+  const double c1 = 2.55 * 2.55;
+  for (const auto& [a, b] : {std::pair{40, 200}, std::pair{0, 255}, std::pair{128, 129}}) {
+    const auto x = flat_image(19, 11, std::uint8_t(a), std::uint8_t(a), std::uint8_t(a));
+    const auto y = flat_image(19, 11, std::uint8_t(b), std::uint8_t(b), std::uint8_t(b));
+    EXPECT_NEAR(ssim_of(x, y), (2.0 * a * b + c1) / (double(a) * a + double(b) * b + c1), 1e-12)
+        << a << " against " << b;
+  }
+}
+
+TEST(Ssim, MatchesTheDirectFormulaAtEveryWidthAroundTheWindow) {
+  // Widths from below one window to past two, so that rows end at every
+  // position in a vector register and every window position is reached.
+  for (int w = 1; w <= 19; ++w) {
+    const auto a = noise(w, 10, unsigned(20 + w)), b = blurred(noise(w, 10, unsigned(40 + w)));
+    EXPECT_EQ(ssim_of(a, a), 1.0) << "width " << w;
+    EXPECT_NEAR(ssim_of(a, b), direct_ssim(a, b), 1e-9) << "width " << w;
+  }
+}
+
+TEST(Ssim, MatchesTheDirectFormulaOnAFrameSizedPicture) {
+  const auto a = picture(333, 97), b = blurred(shifted(a, 1));
+  EXPECT_NEAR(ssim_of(a, b), direct_ssim(a, b), 1e-9);
+}
+
 TEST(Ssim, IgnoresAlpha) {
   auto a = picture(16, 16), b = a;
   for (std::size_t i = 3; i < b.rgba.size(); i += 4) b.rgba[i] = 0;
