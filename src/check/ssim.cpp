@@ -30,9 +30,9 @@ double grey(const std::uint8_t* rgba) {
 }
 
 // out[i] = in[i] + ... + in[i + w - 1] for i + w <= width. A window of 8 in
-// three passes of pairs (1 + 1, 2 + 2, 4 + 4) rather than seven additions;
-// not running sums, which chain each window on the one before, so that
-// vector lanes cannot share them out.
+// three passes of pairs (1 + 1, 2 + 2, 4 + 4) rather than seven additions,
+// and not as running sums, which chain each window on the one before and so
+// cannot be shared out among vector lanes.
 EPVIZ_SSIM_CLONES void window_sums(int width, int w, const double* __restrict in,
                                    double* __restrict out) {
   if (w == kSsimWindow) {
