@@ -42,10 +42,12 @@ class GlFrames : public check::FrameSource {
  public:
   GlFrames(const std::string& gl, const std::vector<PlannedJob>& jobs, std::mutex& paint_lock)
       : jobs_(jobs), paint_lock_(paint_lock) {
+    // The font first: when it is missing, no context is left to close.
+    environment_ = check::render_environment("", "", render::default_overlay_font());
     std::lock_guard lock(paint_lock_);
     context_ = render::GlChoice(gl).open();
-    environment_ = check::render_environment(context_->renderer(), context_->version(),
-                                             render::default_overlay_font());
+    environment_.gl_renderer = context_->renderer();
+    environment_.gl_version = context_->version();
   }
   ~GlFrames() override {
     std::lock_guard lock(paint_lock_);
@@ -57,28 +59,20 @@ class GlFrames : public check::FrameSource {
       std::size_t index, const check::GoldenJob& golden,
       const std::function<void(const check::ImageView&)>& on_frame) override {
     const auto& [job, plan] = jobs_[index];
-    std::unique_ptr<paint::FramePainter> painter;
-    const auto set_painter = [&](bool make) {
+    const auto destroy = [this](paint::FramePainter* p) {
       std::lock_guard lock(paint_lock_);
-      if (make)
-        painter = std::make_unique<paint::FramePainter>(*context_, job.scene.width,
-                                                        job.scene.height);
-      else
-        painter.reset();
+      delete p;
     };
-    set_painter(true);
-    try {
-      const auto failure = paint::draw_frames(
-          plan, job.scene, golden.frames, *painter, &paint_lock_,
-          [&](const render::RgbaImage& image) {
-            on_frame({image.width, image.height, image.pixels});
-          });
-      set_painter(false);
-      return failure ? std::optional(failure->message()) : std::nullopt;
-    } catch (...) {
-      set_painter(false);
-      throw;
+    std::unique_ptr<paint::FramePainter, decltype(destroy)> painter(nullptr, destroy);
+    {
+      std::lock_guard lock(paint_lock_);
+      painter.reset(new paint::FramePainter(*context_, job.scene.width, job.scene.height));
     }
+    const auto failure = paint::draw_frames(plan, job.scene, golden.frames, *painter, &paint_lock_,
+                                            [&](const render::RgbaImage& image) {
+                                              on_frame({image.width, image.height, image.pixels});
+                                            });
+    return failure ? std::optional(failure->message()) : std::nullopt;
   }
 
  private:

@@ -120,7 +120,9 @@ int run(std::span<const GoldenJob> jobs, const RunSettings& s,
   if (!s.update && !s.report_dir.empty()) {
     const auto index = s.report_dir / "index.html";
     io::write_file_atomically(
-        index, html_report(results, {s.tolerance.describe(), environment_text(queue.environment.value_or(RenderEnvironment{}))}));
+        index,
+        html_report(results, {s.tolerance.describe(),
+                              environment_text(queue.environment.value_or(RenderEnvironment{}))}));
     out << "report: " << index.string() << '\n';
   }
   if (!s.junit.empty())

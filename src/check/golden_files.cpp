@@ -73,8 +73,8 @@ void check_golden_inputs(const GoldenJob& job, bool update) {
       if (f < job.frame_count) golden_file_exists(job.golden_path(f));
 }
 
-GoldenJob golden_job(const std::string& shown, const fs::path& job_file, const fs::path& golden_root,
-                     int frame_count, int width, int height,
+GoldenJob golden_job(const std::string& shown, const fs::path& job_file,
+                     const fs::path& golden_root, int frame_count, int width, int height,
                      std::span<const io::FrameRangeSpec> ranges, bool update) {
   GoldenJob g;
   try {

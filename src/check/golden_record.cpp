@@ -21,8 +21,7 @@ std::string file_hash(const std::filesystem::path& file) {
   return "fnv1a64:" + h.hex();
 }
 
-RenderEnvironment render_environment(std::string renderer, std::string version,
-                                     std::string font) {
+RenderEnvironment render_environment(std::string renderer, std::string version, std::string font) {
   RenderEnvironment e{std::move(renderer), std::move(version), std::move(font), ""};
   if (e.font_file != "builtin") e.font_hash = file_hash(e.font_file);
   return e;

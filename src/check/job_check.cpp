@@ -45,8 +45,7 @@ JobFrames::JobFrames(JobChecker& checker, const GoldenJob& job, std::size_t inde
   const auto differences = environment_differences(*record_, checker_.settings_.environment);
   if (differences.empty()) return;
   std::string warning = "epviz: warning: " + job.shown + ": goldens were made elsewhere: ";
-  for (std::size_t k = 0; k < differences.size(); ++k)
-    warning += (k ? "; " : "") + differences[k];
+  for (std::size_t k = 0; k < differences.size(); ++k) warning += (k ? "; " : "") + differences[k];
   out_.warnings.push_back(warning +
                           " (see docs/ci.md: --metric ssim, or re-baseline with --update)");
 }

@@ -61,8 +61,8 @@ class JobFrames {
   bool update_;
   std::size_t added_ = 0;
   JobOutcome out_;
-  std::optional<GoldenRecord> record_;  // golden.json as the check began (comparing only)
-  std::chrono::steady_clock::time_point last_;  // when the previous frame was done
+  std::optional<GoldenRecord> record_;           // golden.json as the check began (comparing only)
+  std::chrono::steady_clock::time_point last_;   // when the previous frame was done
   std::vector<int> missing_;                     // frames without a golden
   std::vector<std::vector<std::uint8_t>> pngs_;  // --update: the goldens to write
 };

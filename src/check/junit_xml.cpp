@@ -69,8 +69,8 @@ std::string junit_xml(const std::vector<FrameResult>& results, double seconds,
       job_seconds += r->seconds;
     }
     x += "  <testsuite name=\"" + xml_escape(job) + "\" tests=\"" + std::to_string(frames.size()) +
-         "\" failures=\"" + std::to_string(job_failures) +
-         "\" errors=\"0\" skipped=\"0\" time=\"" + seconds_text(job_seconds) + "\">\n";
+         "\" failures=\"" + std::to_string(job_failures) + "\" errors=\"0\" skipped=\"0\" time=\"" +
+         seconds_text(job_seconds) + "\">\n";
     for (const auto* r : frames) {
       x += "    <testcase classname=\"" + xml_escape(job) + "\" name=\"frame " +
            std::to_string(r->frame) + "\" time=\"" + seconds_text(r->seconds) + "\">\n";

@@ -21,7 +21,8 @@ Tolerance tolerance_from(const std::string& metric, std::optional<double> thresh
   if (metric == "ssim")
     t.metric = Metric::ssim;
   else if (metric != "pixel")
-    throw io::BadInput("--metric: unknown metric '" + io::printable(metric) + "' (allowed: pixel, ssim)");
+    throw io::BadInput("--metric: unknown metric '" + io::printable(metric) +
+                       "' (allowed: pixel, ssim)");
   if (t.metric == Metric::pixel) {
     if (threshold) {
       if (!(*threshold >= 0 && *threshold <= 255 && std::floor(*threshold) == *threshold))

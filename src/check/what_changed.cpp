@@ -5,16 +5,31 @@
 namespace epviz::check {
 namespace {
 
-std::string quoted(const std::string& text) { return "'" + io::printable(text, 120) + "'"; }
+std::string quoted(const std::string& text) {
+  std::string s = "'";
+  s += io::printable(text, 120);
+  s += '\'';
+  return s;
+}
 
 std::string font_text(const std::string& file, const std::string& hash) {
   std::string s = quoted(file);
-  if (!hash.empty()) s += " (" + io::printable(hash, 40) + ")";
+  if (!hash.empty()) {
+    s += " (";
+    s += io::printable(hash, 40);
+    s += ')';
+  }
   return s;
 }
 
 std::string difference(const char* part, const std::string& then, const std::string& now) {
-  return std::string(part) + " " + then + " in golden.json, " + now + " now";
+  std::string s = part;
+  s += ' ';
+  s += then;
+  s += " in golden.json, ";
+  s += now;
+  s += " now";
+  return s;
 }
 
 std::string joined(const std::vector<std::string>& phrases) {
@@ -32,8 +47,7 @@ std::vector<std::string> environment_differences(const GoldenRecord& record,
                                                  const RenderEnvironment& now) {
   std::vector<std::string> out;
   if (record.gl_renderer != now.gl_renderer)
-    out.push_back(
-        difference("GL renderer", quoted(record.gl_renderer), quoted(now.gl_renderer)));
+    out.push_back(difference("GL renderer", quoted(record.gl_renderer), quoted(now.gl_renderer)));
   if (record.gl_version != now.gl_version)
     out.push_back(difference("GL version", quoted(record.gl_version), quoted(now.gl_version)));
   // The same font may sit at another path: its bytes decide.

@@ -46,7 +46,8 @@ std::filesystem::path default_font_file(bool& builtin) {
 }
 
 std::string cannot_load(const std::filesystem::path& font) {
-  return "cannot load the font '" + font.string() + "' for the text in pictures (a TTF or OTF file)";
+  return "cannot load the font '" + font.string() +
+         "' for the text in pictures (a TTF or OTF file)";
 }
 
 // The characters a label may use beyond ImGui's default (Latin-1): axis

@@ -246,8 +246,8 @@ TEST_F(Check, WarnsOnceWhenTheGoldensCameFromAnotherRenderer) {
 TEST_F(Check, WhatStopsTheCheckIsNotAFailedFrame) {
   ASSERT_EQ(epviz("check " + job() + " --frames 0 --update").exit_code, 0);
   const std::string font = (dir_ / "no-such-font.ttf").string();
-  const auto no_font = test::run_epviz("check " + job() + " --frames 0", dir_,
-                                       "env EPVIZ_FONT=" + font);
+  const auto no_font =
+      test::run_epviz("check " + job() + " --frames 0", dir_, "env EPVIZ_FONT=" + font);
   EXPECT_EQ(no_font.exit_code, 5) << no_font.out << no_font.err;
   EXPECT_EQ(no_font.err, "epviz: error: cannot load the font '" + font +
                              "' for the text in pictures (a TTF or OTF file)\n");

@@ -105,9 +105,10 @@ TEST_F(CheckRun, AFileThatCannotBeWrittenIsNotAFailedFrame) {
   auto s = settings_;
   s.junit = "/proc/epviz-no-such-dir/check.xml";
   EXPECT_EQ(run(100, s), kExitCannotCheck);
-  EXPECT_NE(err_.str().find("/proc/epviz-no-such-dir/check.xml"), std::string::npos) << err_.str();
-  EXPECT_EQ(std::count(err_.str().begin(), err_.str().end(), '\n'), 1) << err_.str();
-  EXPECT_EQ(err_.str().rfind("epviz: error: ", 0), 0u) << err_.str();
+  const std::string err = err_.str();
+  EXPECT_NE(err.find("/proc/epviz-no-such-dir/check.xml"), std::string::npos) << err;
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  EXPECT_EQ(err.rfind("epviz: error: ", 0), 0u) << err;
 }
 
 TEST_F(CheckRun, BadInputIsPassedOnForExitCodeTwo) {

@@ -67,9 +67,10 @@ TEST(CiRecipes, InstallThroughTheProjectsSetUp) {
   const std::regex set_up(R"(scripts/build\.sh --epviz-only|scripts/setup\.sh --(runtime|build))");
   for (const auto& recipe : recipes)
     EXPECT_TRUE(std::regex_search(recipe, set_up)) << "no call of the project's set-up in\n"
-                                                  << recipe;
-  EXPECT_NE(source_file("scripts/build.sh").find("--epviz-only)\n    bash scripts/setup.sh --build"),
-            std::string::npos)
+                                                   << recipe;
+  EXPECT_NE(
+      source_file("scripts/build.sh").find("--epviz-only)\n    bash scripts/setup.sh --build"),
+      std::string::npos)
       << "scripts/build.sh --epviz-only must install through scripts/setup.sh --build";
 }
 

@@ -22,8 +22,8 @@ std::size_t count(const std::string& text, const std::string& what) {
 
 std::vector<FrameResult> sample_results() {
   FrameResult a{"jobs/a.json", 0, true, "0 % pixels differ (limit 1 %)", "", "", "", "", 0.25};
-  FrameResult b{"jobs/a.json", 44,      false,  "3.50 % pixels differ (limit 1 %)", "",
-                "g.png",       "a.png", "d.png", 1.5};
+  FrameResult b{"jobs/a.json", 44,      false, "3.50 % pixels differ (limit 1 %)", "", "g.png",
+                "a.png",       "d.png", 1.5};
   FrameResult c{"jobs/<b>&\"c\".json",
                 0,
                 false,

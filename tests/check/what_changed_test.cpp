@@ -55,8 +55,8 @@ class WhatChanged : public ::testing::Test {
     const auto disc = disc_image(40, 30), flat = flat_image(40, 30, 9, 9, 9);
     JobChecker(settings(made_with))
         .update(job_, std::vector<ImageView>{disc.view(), disc.view()}, std::nullopt);
-    return JobChecker(settings(now)).compare(
-        job_, 0, std::vector<ImageView>{disc.view(), flat.view()}, std::nullopt);
+    return JobChecker(settings(now))
+        .compare(job_, 0, std::vector<ImageView>{disc.view(), flat.view()}, std::nullopt);
   }
 
   test::TempDir dir_;
@@ -85,9 +85,9 @@ TEST_F(WhatChanged, AChangedJobIsToldToUpdateOrRevert) {
       .update(job_, std::vector<ImageView>{disc.view(), disc.view()}, std::nullopt);
   std::ofstream(job_.job_file) << "{\"a job\": 2}\n";
   const auto flat = flat_image(40, 30, 9, 9, 9);
-  const auto out = JobChecker(settings(kDejaVu))
-                       .compare(job_, 0, std::vector<ImageView>{disc.view(), flat.view()},
-                                std::nullopt);
+  const auto out =
+      JobChecker(settings(kDejaVu))
+          .compare(job_, 0, std::vector<ImageView>{disc.view(), flat.view()}, std::nullopt);
   EXPECT_TRUE(out.results[0].passed);  // a passing frame is told nothing
   EXPECT_EQ(out.results[0].problem, "");
   EXPECT_NE(out.results[1].line().find(
