@@ -84,6 +84,8 @@ int run(std::span<const GoldenJob> jobs, const RunSettings& s,
         const FrameSourceFactory& make_source, std::ostream& out, std::ostream& err) {
   const auto start = std::chrono::steady_clock::now();
   WorkQueue queue(jobs.size());
+  std::vector<std::future<JobOutcome>> outcomes;
+  for (auto& promise : queue.outcomes) outcomes.push_back(promise.get_future());
   std::vector<std::thread> threads;
   const int workers = std::max(1, std::min(s.workers, int(jobs.size())));
   for (int w = 0; w < workers; ++w)
@@ -93,8 +95,7 @@ int run(std::span<const GoldenJob> jobs, const RunSettings& s,
   std::vector<FrameResult> results;
   int written = 0;
   std::exception_ptr error;
-  for (auto& promise : queue.outcomes) {
-    auto future = promise.get_future();
+  for (auto& future : outcomes) {
     if (error) {
       future.wait();
       continue;
