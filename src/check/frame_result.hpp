@@ -15,6 +15,8 @@ struct FrameResult {
   std::string problem;  // why it failed when no measure applies ("no golden ...")
   // Images for the report, relative to the report directory (empty: none).
   std::string golden_image, actual_image, diff_image;
+  // Drawing (with the simulation up to it) and checking the frame.
+  double seconds = 0.0;
 
   // "PASS job frame 0: ..." / "FAIL job frame 0: ...".
   std::string line() const;

@@ -1,8 +1,10 @@
 #include "check/golden_files.hpp"
 
+#include <map>
 #include <set>
 #include <stdexcept>
 
+#include "check/frame_choice.hpp"
 #include "check/golden_record.hpp"
 #include "io/atomic_file.hpp"
 #include "io/bad_input.hpp"
@@ -71,6 +73,33 @@ void check_golden_inputs(const GoldenJob& job, bool update) {
       if (f < job.frame_count) golden_file_exists(job.golden_path(f));
 }
 
+GoldenJob golden_job(const std::string& shown, const fs::path& job_file,
+                     const fs::path& golden_root, int frame_count, int width, int height,
+                     std::span<const io::FrameRangeSpec> ranges, bool update) {
+  GoldenJob g;
+  try {
+    g.frames = frames_to_check(ranges, frame_count);
+  } catch (const io::FrameRangeError& e) {
+    throw io::BadInput(shown + ": " + e.what());
+  }
+  g.golden_dir = golden_dir_of(job_file, golden_root);
+  g.shown = shown;
+  g.job_file = job_file;
+  g.frame_count = frame_count;
+  g.width = width;
+  g.height = height;
+  check_golden_inputs(g, update);
+  return g;
+}
+
+void refuse_shared_golden_dirs(std::span<const GoldenJob> jobs) {
+  std::map<fs::path, std::string> owner;
+  for (const auto& g : jobs)
+    if (auto [it, fresh] = owner.emplace(fs::weakly_canonical(g.golden_dir), g.shown); !fresh)
+      throw io::BadInput(g.shown + ": its goldens would share " + g.golden_dir.string() + " with " +
+                         it->second + " (jobs need distinct file names)");
+}
+
 std::vector<std::uint8_t> encode_golden_png(const ImageView& image) {
   return io::encode_png_rgba(image.width, image.height, image.rgba,
                              {.compression_level = 9, .filter = -1});
@@ -83,12 +112,14 @@ void write_golden_png(const fs::path& path, const ImageView& image) {
 
 std::vector<fs::path> write_goldens(const GoldenJob& job,
                                     std::span<const std::vector<std::uint8_t>> pngs,
-                                    const RendererInfo& renderer,
+                                    const RenderEnvironment& environment,
                                     const std::string& epviz_version) {
   if (pngs.size() != job.frames.size())
     throw std::invalid_argument(job.shown + ": " + std::to_string(pngs.size()) + " images for " +
                                 std::to_string(job.frames.size()) + " frames");
-  fs::create_directories(job.golden_dir);
+  if (std::error_code ec; (fs::create_directories(job.golden_dir, ec), ec))
+    throw io::FileWriteError("cannot create the golden folder '" +
+                             io::printable(job.golden_dir.string(), 200) + "': " + ec.message());
   std::vector<fs::path> written;
   for (std::size_t k = 0; k < pngs.size(); ++k) {
     written.push_back(job.golden_path(job.frames[k]));
@@ -97,10 +128,12 @@ std::vector<fs::path> write_goldens(const GoldenJob& job,
   }
   GoldenRecord rec;
   rec.epviz_version = epviz_version;
-  rec.gl_renderer = renderer.renderer;
-  rec.gl_version = renderer.version;
+  rec.gl_renderer = environment.gl_renderer;
+  rec.gl_version = environment.gl_version;
+  rec.font_file = environment.font_file;
+  rec.font_hash = environment.font_hash;
   rec.job_file = job.job_file.filename().string();
-  rec.job_hash = job_file_hash(job.job_file);
+  rec.job_hash = file_hash(job.job_file);
   const fs::path record = job.golden_dir / "golden.json";
   golden_file_exists(record);
   std::set<int> frames(job.frames.begin(), job.frames.end());

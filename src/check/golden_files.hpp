@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "check/frame_verdict.hpp"
+#include "check/golden_record.hpp"
+#include "io/frame_range.hpp"
 
 namespace epviz::check {
 
@@ -28,17 +30,25 @@ struct GoldenJob {
 std::filesystem::path golden_dir_of(const std::filesystem::path& job_file,
                                     const std::filesystem::path& golden_root);
 
+// The GoldenJob of a job file (`shown` as the user named it) of `frame_count`
+// frames of width x height: the frames of `ranges` (frames_to_check), the
+// golden folder under `golden_root` (golden_dir_of), its inputs looked at
+// (check_golden_inputs). Throws io::BadInput naming the job for a range
+// outside it, and as check_golden_inputs does.
+GoldenJob golden_job(const std::string& shown, const std::filesystem::path& job_file,
+                     const std::filesystem::path& golden_root, int frame_count, int width,
+                     int height, std::span<const io::FrameRangeSpec> ranges, bool update);
+
+// Throws io::BadInput when two jobs' goldens would share a folder (job files
+// of the same name in different directories, with one --golden root).
+void refuse_shared_golden_dirs(std::span<const GoldenJob> jobs);
+
 // Goldens and golden.json come from version control and are hostile input:
 // throws io::BadInput naming the file when the golden folder would be under a
 // file, when a golden of job.frames is a link or not a regular file (or, when
 // comparing, not a PNG), or when golden.json is not a golden record
 // (read_golden_record). Called before anything is drawn.
 void check_golden_inputs(const GoldenJob& job, bool update);
-
-// What drew the frames (GL_RENDERER, GL_VERSION), recorded in golden.json.
-struct RendererInfo {
-  std::string renderer, version;
-};
 
 // A golden PNG's bytes, with the smallest (and slowest) settings: goldens
 // live in version control.
@@ -51,7 +61,7 @@ void write_golden_png(const std::filesystem::path& path, const ImageView& image)
 // in frame order.
 std::vector<std::filesystem::path> write_goldens(const GoldenJob& job,
                                                  std::span<const std::vector<std::uint8_t>> pngs,
-                                                 const RendererInfo& renderer,
+                                                 const RenderEnvironment& environment,
                                                  const std::string& epviz_version);
 
 }  // namespace epviz::check

@@ -11,9 +11,9 @@
 
 namespace epviz::check {
 
-std::string job_file_hash(const std::filesystem::path& file) {
+std::string file_hash(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw std::runtime_error(file.string() + ": cannot read the job file to hash it");
+  if (!in) throw std::runtime_error(file.string() + ": cannot be read to hash it");
   std::ostringstream s;
   s << in.rdbuf();
   io::Fnv1a64 h;
@@ -21,11 +21,19 @@ std::string job_file_hash(const std::filesystem::path& file) {
   return "fnv1a64:" + h.hex();
 }
 
+RenderEnvironment render_environment(std::string renderer, std::string version, std::string font) {
+  RenderEnvironment e{std::move(renderer), std::move(version), std::move(font), ""};
+  if (e.font_file != "builtin") e.font_hash = file_hash(e.font_file);
+  return e;
+}
+
 std::string to_json_text(const GoldenRecord& r) {
   nlohmann::ordered_json j;
   j["epviz_version"] = r.epviz_version;
   j["gl_renderer"] = r.gl_renderer;
   j["gl_version"] = r.gl_version;
+  j["font_file"] = r.font_file;
+  j["font_hash"] = r.font_hash;
   j["job_file"] = r.job_file;
   j["job_hash"] = r.job_hash;
   j["frames"] = r.frames;
@@ -65,6 +73,10 @@ std::optional<GoldenRecord> read_golden_record(const std::filesystem::path& file
     r.gl_renderer = j.at(key).get<std::string>();
     key = "gl_version";
     r.gl_version = j.at(key).get<std::string>();
+    key = "font_file";
+    r.font_file = j.value(key, "");
+    key = "font_hash";
+    r.font_hash = j.value(key, "");
     key = "job_file";
     r.job_file = j.value(key, "");
     key = "job_hash";

@@ -4,6 +4,8 @@
 #include <stdexcept>
 
 #include "check/golden_record.hpp"
+#include "check/what_changed.hpp"
+#include "io/atomic_file.hpp"
 #include "io/frame_names.hpp"
 #include "io/png_reader.hpp"
 #include "io/png_writer.hpp"
@@ -32,17 +34,20 @@ JobFrames JobChecker::start(const GoldenJob& job, std::size_t index, bool update
 }
 
 JobFrames::JobFrames(JobChecker& checker, const GoldenJob& job, std::size_t index, bool update)
-    : checker_(checker), job_(job), index_(index), update_(update) {
+    : checker_(checker),
+      job_(job),
+      index_(index),
+      update_(update),
+      last_(std::chrono::steady_clock::now()) {
   if (update_) return;
-  const auto& gl = checker_.settings_.renderer;
-  if (auto rec = read_golden_record(job.golden_dir / "golden.json");
-      rec && (rec->gl_renderer != gl.renderer || rec->gl_version != gl.version))
-    out_.warnings.push_back("epviz: warning: " + job.shown + ": goldens were made with " +
-                            io::printable(rec->gl_renderer, 120) + ", " +
-                            io::printable(rec->gl_version, 120) + "; this run uses " +
-                            io::printable(gl.renderer, 120) + ", " +
-                            io::printable(gl.version, 120) +
-                            " (see docs/ci.md: --metric ssim, or re-baseline with --update)");
+  record_ = read_golden_record(job.golden_dir / "golden.json");
+  if (!record_) return;
+  const auto differences = environment_differences(*record_, checker_.settings_.environment);
+  if (differences.empty()) return;
+  std::string warning = "epviz: warning: " + job.shown + ": goldens were made elsewhere: ";
+  for (std::size_t k = 0; k < differences.size(); ++k) warning += (k ? "; " : "") + differences[k];
+  out_.warnings.push_back(warning +
+                          " (see docs/ci.md: --metric ssim, or re-baseline with --update)");
 }
 
 void JobFrames::add(const ImageView& image) {
@@ -57,6 +62,9 @@ void JobFrames::add(const ImageView& image) {
   r.job = job_.shown;
   r.frame = frame;
   checker_.compare_frame(job_, index_, image, r, missing_);
+  const auto now = std::chrono::steady_clock::now();
+  r.seconds = std::chrono::duration<double>(now - last_).count();
+  last_ = now;
   out_.results.push_back(std::move(r));
 }
 
@@ -71,7 +79,7 @@ JobOutcome JobFrames::finish(const std::optional<std::string>& failure) {
       return std::move(out_);
     }
     const auto& s = checker_.settings_;
-    const auto written = write_goldens(job_, pngs_, s.renderer, s.epviz_version);
+    const auto written = write_goldens(job_, pngs_, s.environment, s.epviz_version);
     for (std::size_t k = 0; k < written.size(); ++k)
       out_.lines.push_back("UPDATED " + job_.shown + " frame " + std::to_string(job_.frames[k]) +
                            ": " + written[k].string());
@@ -85,11 +93,20 @@ JobOutcome JobFrames::finish(const std::optional<std::string>& failure) {
     r.problem = "numerical failure before this frame: " + failure_text(failure);
     out_.results.push_back(std::move(r));
   }
+  const auto& s = checker_.settings_;
   if (!missing_.empty()) {
-    const std::string cmd = checker_.settings_.update_command(job_, missing_);
+    const std::string cmd = s.update_command(job_, missing_);
     for (auto& r : out_.results)
       if (std::find(missing_.begin(), missing_.end(), r.frame) != missing_.end())
         r.problem += "; create it with: " + cmd;
+  }
+  // Frames compared and found different: say whether the job or the rendering changed.
+  const auto differs = [](const FrameResult& r) { return !r.passed && !r.measure.empty(); };
+  if (std::any_of(out_.results.begin(), out_.results.end(), differs)) {
+    const std::string cause = failure_cause(record_, file_hash(job_.job_file), s.environment,
+                                            s.update_command(job_, job_.frames));
+    for (auto& r : out_.results)
+      if (differs(r)) r.problem = r.problem.empty() ? cause : r.problem + "; " + cause;
   }
   return std::move(out_);
 }
@@ -133,7 +150,11 @@ void JobChecker::compare_frame(const GoldenJob& job, std::size_t index, const Im
   auto keep_golden = [&] {
     if (report.empty()) return;
     r.golden_image = report_image(job, index, r.frame, "golden");
-    fs::copy_file(golden_path, report / r.golden_image, fs::copy_options::overwrite_existing);
+    const fs::path copy = report / r.golden_image;
+    if (std::error_code ec;
+        (fs::copy_file(golden_path, copy, fs::copy_options::overwrite_existing, ec), ec))
+      throw io::FileWriteError("--report: cannot write '" + io::printable(copy.string(), 200) +
+                               "': " + ec.message());
   };
   auto damaged = [&](const char* why) {
     r.problem = "the golden " + golden_path.string() + " is damaged (" + why +

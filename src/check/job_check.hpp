@@ -1,8 +1,10 @@
 #pragma once
 // Checking one job's drawn frames against its goldens, or making them its
-// goldens (`epviz check --update`): the results per frame, the report images,
-// the warning when the goldens came from another renderer. Frames come in as
-// images, one at a time; drawing them is the caller's business.
+// goldens (`epviz check --update`): the results per frame with the time each
+// took, the report images, why failing frames fail (what_changed.hpp), the
+// warning when the goldens came from another renderer or font. Frames come in
+// as images, one at a time; drawing them is the caller's business.
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -21,7 +23,7 @@ namespace epviz::check {
 struct CheckSettings {
   Tolerance tolerance;
   std::filesystem::path report_dir;  // empty: no report images
-  RendererInfo renderer;             // what draws this run's frames
+  RenderEnvironment environment;     // what draws this run's frames
   std::string epviz_version;         // recorded in golden.json
   // The command that (re)creates the goldens of `frames` of `job`, named in
   // the lines of missing or mis-sized goldens.
@@ -59,6 +61,8 @@ class JobFrames {
   bool update_;
   std::size_t added_ = 0;
   JobOutcome out_;
+  std::optional<GoldenRecord> record_;           // golden.json as the check began (comparing only)
+  std::chrono::steady_clock::time_point last_;   // when the previous frame was done
   std::vector<int> missing_;                     // frames without a golden
   std::vector<std::vector<std::uint8_t>> pngs_;  // --update: the goldens to write
 };

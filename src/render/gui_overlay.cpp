@@ -45,6 +45,11 @@ std::filesystem::path default_font_file(bool& builtin) {
       "TTF file (or to 'builtin' for ImGui's bitmap font, which renders differently)");
 }
 
+std::string cannot_load(const std::filesystem::path& font) {
+  return "cannot load the font '" + font.string() +
+         "' for the text in pictures (a TTF or OTF file)";
+}
+
 // The characters a label may use beyond ImGui's default (Latin-1): axis
 // titles and legends name physical quantities (γ, Ω, ω₃, 10⁻⁸, ≤, −, →).
 // Only the glyphs the font has are baked.
@@ -67,6 +72,15 @@ ImU32 to_imgui_colour(const glm::vec4& c) {
 }
 
 }  // namespace
+
+std::string default_overlay_font() {
+  bool builtin = false;
+  const auto file = default_font_file(builtin);
+  if (builtin) return "builtin";
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(file, error)) throw std::runtime_error(cannot_load(file));
+  return file.string();
+}
 
 glm::vec2 anchored_top_left(const glm::vec2& point, const glm::vec2& size, TextAnchor anchor) {
   const int index = static_cast<int>(anchor);
@@ -106,8 +120,7 @@ ImGuiOverlay::ImGuiOverlay(const OverlayOptions& options) : options_(options) {
                                            label_glyph_ranges());
     if (font_ == nullptr) {
       ImGui::DestroyContext(context_);
-      throw std::runtime_error("cannot load the font '" + file.string() +
-                               "' for the text in pictures (a TTF or OTF file)");
+      throw std::runtime_error(cannot_load(file));
     }
     font_source_ = file.string();
   } else {

@@ -33,6 +33,11 @@ struct OverlayOptions {
   float delta_time_s = 1.0f / 30.0f;
 };
 
+// The font an overlay with no font_file and no builtin_font uses, as its
+// font_source() names it ("builtin" or a path), found without GL; throws as
+// the constructor does when there is none.
+std::string default_overlay_font();
+
 // A label already placed in image pixels (top-left origin).
 struct PlacedLabel {
   glm::vec2 pixel;

@@ -92,6 +92,9 @@ TEST_F(Check, PassesAgainstGoldensItJustWrote) {
   EXPECT_FALSE(rec["gl_version"].get<std::string>().empty());
   EXPECT_EQ(rec["epviz_version"].get<std::string>().empty(), false);
   EXPECT_EQ(rec["job_hash"].get<std::string>().rfind("fnv1a64:", 0), 0u);
+  // The font the text was drawn with, and its bytes' hash.
+  EXPECT_TRUE(fs::is_regular_file(rec["font_file"].get<std::string>())) << rec.dump();
+  EXPECT_EQ(rec["font_hash"].get<std::string>().rfind("fnv1a64:", 0), 0u);
 
   // The largest SSIM threshold too: frames equal to their goldens have SSIM exactly 1.
   for (const char* metric : {"pixel", "ssim", "ssim --threshold 1"}) {
@@ -182,6 +185,15 @@ TEST_P(CheckNoticeable, ChangeFailsWithDiffReportAndJunit) {
     EXPECT_NE(html.find(std::string(stem) + ".diff.png"), std::string::npos);
   }
   EXPECT_EQ(seen, failed);
+  // Every change here is to the job file: its own verdict, not "rendering changed".
+  EXPECT_EQ(count_lines_starting(r.out, "FAIL "), failed);
+  std::istringstream lines(r.out);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("FAIL ", 0) != 0) continue;
+    EXPECT_NE(line.find("; job changed since goldens: update or revert (update: epviz check "),
+              std::string::npos)
+        << line;
+  }
 
   const std::string n = std::to_string(failed);
   EXPECT_EQ(junit_counts(xml), "testsuites 3 " + n + " 3 " + n + "\n") << test::slurp(xml);
@@ -227,6 +239,23 @@ TEST_F(Check, WarnsOnceWhenTheGoldensCameFromAnotherRenderer) {
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_NE(r.err.find("SomeGPU 9000"), std::string::npos) << r.err;
+}
+
+// Exit 1 is kept for frames that fail: a check that cannot be done here
+// (no font, a file it cannot write) exits 5 with one line naming the cause.
+TEST_F(Check, WhatStopsTheCheckIsNotAFailedFrame) {
+  ASSERT_EQ(epviz("check " + job() + " --frames 0 --update").exit_code, 0);
+  const std::string font = (dir_ / "no-such-font.ttf").string();
+  const auto no_font =
+      test::run_epviz("check " + job() + " --frames 0", dir_, "env EPVIZ_FONT=" + font);
+  EXPECT_EQ(no_font.exit_code, 5) << no_font.out << no_font.err;
+  EXPECT_EQ(no_font.err, "epviz: error: cannot load the font '" + font +
+                             "' for the text in pictures (a TTF or OTF file)\n");
+  const auto junit = epviz("check " + job() + " --frames 0 --junit /proc/epviz-check.xml");
+  EXPECT_EQ(junit.exit_code, 5) << junit.out << junit.err;
+  EXPECT_EQ(std::count(junit.err.begin(), junit.err.end(), '\n'), 1) << junit.err;
+  EXPECT_NE(junit.err.find("/proc/epviz-check.xml"), std::string::npos) << junit.err;
+  EXPECT_EQ(junit.err.find("filesystem error"), std::string::npos) << junit.err;
 }
 
 TEST_F(Check, ParallelJobsGiveTheSameOutputInTheSameOrder) {
@@ -352,6 +381,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadCheck{"report_parent_missing", "JOB --report DIR/no/such/rep", "--report: directory"},
         BadCheck{"report_takes_no_files", "JOB --report /proc/self",
                  "--report: cannot create files in '/proc/self'"},
+        BadCheck{"report_under_proc", "JOB --report /proc/epviz-report",
+                 "--report: cannot create files in '/proc/epviz-report'"},
         BadCheck{"golden_folder_under_a_file", "JOB --golden DIR/jobs/kov.json",
                  "kov.json: the golden folder"},
         BadCheck{"junit_fifo_nobody_reads", "JOB --junit DIR/fifo.xml",

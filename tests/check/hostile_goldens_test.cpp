@@ -82,7 +82,7 @@ class HostileGoldens : public ::testing::Test {
   }
   CheckSettings settings() const {
     CheckSettings s;
-    s.renderer = {"llvmpipe", "4.5"};
+    s.environment = {"llvmpipe", "4.5", "builtin", ""};
     s.update_command = [](const GoldenJob&, const std::vector<int>&) { return "update"; };
     return s;
   }

@@ -33,7 +33,7 @@ class JobCheck : public ::testing::Test {
   CheckSettings settings(fs::path report = {}) const {
     CheckSettings s;
     s.report_dir = std::move(report);
-    s.renderer = {"llvmpipe (LLVM 15)", "4.5 Mesa 22.3.6"};
+    s.environment = {"llvmpipe (LLVM 15)", "4.5 Mesa 22.3.6", "builtin", ""};
     s.epviz_version = "9.8.7";
     s.update_command = [](const GoldenJob& job, const std::vector<int>& frames) {
       std::string list;
@@ -140,7 +140,9 @@ TEST_F(JobCheck, AChangedFrameFailsWithGoldenActualAndDiffInTheReport) {
   const auto out = JobChecker(settings(report)).compare(job_, 4, views(images), std::nullopt);
   EXPECT_TRUE(out.results[0].passed);
   const auto& r = out.results[1];
-  EXPECT_EQ(r.line(), "FAIL jobs/kov.json frame 134: 3.33 % pixels differ (limit 0.5 %)");
+  EXPECT_EQ(r.line(),
+            "FAIL jobs/kov.json frame 134: 3.33 % pixels differ (limit 0.5 %); rendering changed, "
+            "the job did not (same GL renderer, GL version and font as the goldens)");
   EXPECT_EQ(r.golden_image, "5_kov_frame_0134.golden.png");
   EXPECT_EQ(r.actual_image, "5_kov_frame_0134.actual.png");
   EXPECT_EQ(r.diff_image, "5_kov_frame_0134.diff.png");
@@ -197,12 +199,12 @@ TEST_F(JobCheck, FramesAfterANumericalFailureFail) {
 TEST_F(JobCheck, WarnsOnceWhenTheGoldensCameFromAnotherRenderer) {
   const auto images = frames();
   auto other = settings();
-  other.renderer.version = "4.5 Mesa 24.0";
+  other.environment.gl_version = "4.5 Mesa 24.0";
   JobChecker(other).update(job_, views(images), std::nullopt);
   const auto out = JobChecker(settings()).compare(job_, 0, views(images), std::nullopt);
   ASSERT_EQ(out.warnings.size(), 1u);
-  EXPECT_NE(out.warnings[0].find("goldens were made with llvmpipe (LLVM 15), 4.5 Mesa 24.0; this "
-                                 "run uses llvmpipe (LLVM 15), 4.5 Mesa 22.3.6"),
+  EXPECT_NE(out.warnings[0].find("goldens were made elsewhere: GL version '4.5 Mesa 24.0' in "
+                                 "golden.json, '4.5 Mesa 22.3.6' now"),
             std::string::npos)
       << out.warnings[0];
   for (const auto& r : out.results) EXPECT_TRUE(r.passed);

@@ -21,9 +21,9 @@ std::size_t count(const std::string& text, const std::string& what) {
 }
 
 std::vector<FrameResult> sample_results() {
-  FrameResult a{"jobs/a.json", 0, true, "0 % pixels differ (limit 1 %)", "", "", "", ""};
-  FrameResult b{"jobs/a.json", 44,      false,  "3.50 % pixels differ (limit 1 %)", "",
-                "g.png",       "a.png", "d.png"};
+  FrameResult a{"jobs/a.json", 0, true, "0 % pixels differ (limit 1 %)", "", "", "", "", 0.25};
+  FrameResult b{"jobs/a.json", 44,      false, "3.50 % pixels differ (limit 1 %)", "", "g.png",
+                "a.png",       "d.png", 1.5};
   FrameResult c{"jobs/<b>&\"c\".json",
                 0,
                 false,
@@ -31,7 +31,8 @@ std::vector<FrameResult> sample_results() {
                 "no golden x; create it with: epviz check 'b' --update",
                 "",
                 "",
-                ""};
+                "",
+                0.125};
   return {a, b, c};
 }
 
@@ -47,6 +48,28 @@ TEST(Junit, OneTestcasePerFrameAndOneSuitePerJob) {
       << x;
   EXPECT_NE(x.find("jobs/&lt;b&gt;&amp;&quot;c&quot;.json"), std::string::npos) << x;
   EXPECT_EQ(x.find("<b>"), std::string::npos);
+}
+
+// Jenkins and GitLab show a testcase's time and the files its system-out
+// names as [[ATTACHMENT|path]], relative to the directory the check ran in.
+TEST(Junit, EachFrameHasItsTimeAndItsReportImagesAsAttachments) {
+  const auto x = junit_xml(sample_results(), 2.0, "render-report");
+  EXPECT_NE(x.find("<testcase classname=\"jobs/a.json\" name=\"frame 0\" time=\"0.250\">"),
+            std::string::npos)
+      << x;
+  EXPECT_NE(x.find("name=\"frame 44\" time=\"1.500\">"), std::string::npos) << x;
+  EXPECT_NE(x.find("<testsuite name=\"jobs/a.json\" tests=\"2\" failures=\"1\" errors=\"0\" "
+                   "skipped=\"0\" time=\"1.750\">"),
+            std::string::npos)
+      << x;
+  const auto frame44 = x.substr(x.find("name=\"frame 44\""));
+  const auto out = frame44.substr(0, frame44.find("</testcase>"));
+  for (const char* image : {"g.png", "a.png", "d.png"})
+    EXPECT_NE(out.find(std::string("\n[[ATTACHMENT|render-report/") + image + "]]"),
+              std::string::npos)
+        << out;
+  EXPECT_NE(out.find("</failure>\n      <system-out>"), std::string::npos) << out;
+  EXPECT_EQ(count(x, "[[ATTACHMENT|"), 3u);  // frames without images have none
 }
 
 TEST(Junit, EscapesEverythingXmlReserves) {
@@ -84,6 +107,8 @@ TEST(GoldenRecord, RoundTripsThroughGoldenJson) {
   GoldenRecord r{"0.1.0",
                  "llvmpipe (LLVM 15)",
                  "4.5 (Core Profile) Mesa 22.3.6",
+                 "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
+                 "fnv1a64:0123456789abcdef",
                  "a.json",
                  "fnv1a64:00",
                  {0, 5, 9},
@@ -95,6 +120,8 @@ TEST(GoldenRecord, RoundTripsThroughGoldenJson) {
   ASSERT_TRUE(back);
   EXPECT_EQ(back->gl_renderer, r.gl_renderer);
   EXPECT_EQ(back->gl_version, r.gl_version);
+  EXPECT_EQ(back->font_file, r.font_file);
+  EXPECT_EQ(back->font_hash, r.font_hash);
   EXPECT_EQ(back->frames, r.frames);
   EXPECT_EQ(back->width, 160);
   EXPECT_FALSE(read_golden_record(file));
