@@ -143,29 +143,43 @@ try:
     if os.path.join(source, "render_jobs") not in from_build:
         problems.append("a build tree's --list-jobs does not name the source tree's render_jobs")
 
-    # A render by each way Depends allows, by a listed name, loads only
-    # what the declared packages bring.
-    fonts = re.findall(r"/usr/share/fonts/\S+\.ttf", run(["strings", epviz]).stdout)
+    # A render by each way Depends allows, by a listed name, opens only files
+    # of what the declared packages bring (strace: every library, driver and
+    # font it opened); the font, without which it refuses to draw, is named
+    # by Depends itself.
+    if shutil.which("strace") is None:
+        sys.exit("FAIL: strace not installed here (scripts/setup.sh --test installs it)")
     choices = {"egl": [g[0] for g in depends],
                "osmesa": ["libosmesa6" if "libosmesa6" in g else g[0] for g in depends]}
     for gl, packages in choices.items():
         allowed = closure(packages)
         out = os.path.join(work, "out-" + gl)
         report = os.path.join(work, gl + ".json")
-        r = run([epviz, "render", "kovalevskaya", "--frames", "0", "--width", "160", "--height",
+        trace = os.path.join(work, gl + ".strace")
+        r = run(["strace", "-f", "-qq", "-e", "trace=open,openat", "-e", "status=successful",
+                 "-o", trace, epviz, "render", "kovalevskaya", "--frames", "0", "--width", "160", "--height",
                  "120", "--format", "png", "--out", out, "--quiet", "--report-json", report],
-                env={**env, "EPVIZ_GL": gl, "LD_DEBUG": "libs"}, cwd=work)
+                env={**env, "EPVIZ_GL": gl}, cwd=work)
         if r.returncode != 0 or not os.path.exists(os.path.join(out, "kovalevskaya_0000.png")):
             problems.append(f"{gl}: the listed job kovalevskaya did not render: {r.stderr[-500:]}")
             continue
         if f'"gl_backend": "{gl}"' not in open(report).read():
             problems.append(f"{gl}: the report names another GL backend")
-        loaded = set(re.findall(r"calling init: (\S+)", r.stderr))
-        used = [p for p in loaded | set(fonts) if not p.startswith(root)]
+        opened = set(re.findall(r'open(?:at)?\((?:AT_FDCWD, )?"([^"]+)"', open(trace).read()))
+        used = [p for p in opened
+                if p.startswith("/") and not p.startswith((root, work)) and not os.path.isdir(p)]
+        fonts = 0
         for path, package in sorted(owners(used).items()):
-            if package not in allowed and package != "epviz":
-                problems.append(f"{gl}: uses {path} of {package}, which the Depends chosen "
+            if package not in allowed:
+                problems.append(f"{gl}: opens {path} of {package}, which the Depends chosen "
                                 f"({', '.join(packages)}) do not bring")
+            if path.startswith("/usr/share/fonts/"):
+                fonts += 1
+                if package not in required:
+                    problems.append(f"{gl}: draws with {path} of {package}, which Depends "
+                                    "does not name alone")
+        if fonts == 0:
+            problems.append(f"{gl}: no font opened: is the test looking at the render?")
 finally:
     shutil.rmtree(work, ignore_errors=True)
 
