@@ -1,7 +1,6 @@
 #include "app/render_command.hpp"
 
 #include <CLI/CLI.hpp>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -238,22 +237,13 @@ int render_gallery(GalleryJob g, const RenderOptions& o, const render::GlChoice&
   RenderOptions job_opts = o;
   job_opts.out.clear();
   job_opts.format.clear();
-  for (auto job : g.jobs) {
-    job.scene.width = g.tile_width;
-    job.scene.height = g.tile_height;
-    job.output.dir = g.dir;
-    auto still = job;
-    still.output.video.reset();
-    auto ps = prepare(still, job_opts);
-    const int at = int(std::lround(g.at * (ps.plan.frames - 1)));
+  for (const auto& job : g.jobs) {
+    auto ps = prepare(job::gallery_member(g, job, /*video=*/false), job_opts);
+    const int at = job::gallery_still_frame(g, ps.plan.frames);
     ps.range = {at, at};
     ps.caption = job::tile_caption(ps.job, ps.plan);
     stills.push_back(std::move(ps));
-    if (g.videos) {
-      job.output.video = g.videos;
-      job.output.name = job.file.stem().string();
-      videos.push_back(prepare(job, job_opts));
-    }
+    if (g.videos) videos.push_back(prepare(job::gallery_member(g, job, /*video=*/true), job_opts));
   }
   if (g.grid_video) {
     job::grid_video_size(g, int(stills.size()));
