@@ -38,7 +38,7 @@ build_packages=(
 )
 test_packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
-  python3-scipy poppler-utils librsvg2-bin
+  python3-scipy poppler-utils librsvg2-bin strace
   chromium
   clang-format python3 clang libclang-rt-14-dev
   slurmctld slurmd slurm-client munge

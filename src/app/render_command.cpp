@@ -1,9 +1,6 @@
 #include "app/render_command.hpp"
 
 #include <CLI/CLI.hpp>
-#include <algorithm>
-#include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -16,17 +13,19 @@
 #include "io/bad_input.hpp"
 #include "io/frame_range.hpp"
 #include "io/output_paths.hpp"
-#include "io/png_writer.hpp"
 #include "io/progress.hpp"
 #include "io/temp_name.hpp"
 #include "io/temp_registry.hpp"
 #include "io/video_writer.hpp"
 #include "job/gallery_layout.hpp"
 #include "job/job_file.hpp"
+#include "job/job_help.hpp"
 #include "job/job_plan.hpp"
 #include "job/render_report.hpp"
+#include "job/shipped_jobs.hpp"
 #include "numerics/failure.hpp"
 #include "paint/frame_files.hpp"
+#include "paint/gallery_figure.hpp"
 #include "paint/grid_video.hpp"
 #include "render/gl_choice.hpp"
 #include "scene/plan.hpp"
@@ -43,7 +42,7 @@ using job::RenderJob;
 
 struct RenderOptions {
   std::string job, out, frames, width, height, format, gl, report_json, shard, shard_count;
-  bool resume = false, quiet = false, progress = false;
+  bool resume = false, quiet = false, progress = false, list_jobs = false, help_job = false;
 };
 
 // What one job needs before any pixel is drawn: everything checked.
@@ -56,14 +55,7 @@ struct PreparedJob {
 
 // --format, checked; when given, `video` becomes its video format (none for png).
 void format_option(const RenderOptions& o, std::optional<io::VideoFormat>& video) {
-  if (o.format.empty()) return;
-  const auto names = job::output_format_names();
-  if (std::find(names.begin(), names.end(), o.format) == names.end()) {
-    std::string allowed;
-    for (const auto& n : names) allowed += (allowed.empty() ? "" : ", ") + n;
-    throw io::BadInput("--format: unknown format '" + o.format + "' (allowed: " + allowed + ")");
-  }
-  video = io::parse_video_format(o.format);
+  if (!o.format.empty()) video = job::parse_output_format("--format", o.format);
 }
 
 PreparedJob prepare(RenderJob job, const RenderOptions& o) {
@@ -95,12 +87,6 @@ PreparedJob prepare(RenderJob job, const RenderOptions& o) {
   return p;
 }
 
-io::ProgressMode progress_mode(const RenderOptions& o) {
-  return o.quiet      ? io::ProgressMode::off
-         : o.progress ? io::ProgressMode::on
-                      : io::ProgressMode::automatic;
-}
-
 struct RenderStats {
   paint::FramesWritten written;
   nlohmann::json runs;  // job::runs_report after the last frame
@@ -108,22 +94,21 @@ struct RenderStats {
 
 io::ProgressOptions progress_options(const RenderOptions& o, std::string label) {
   io::ProgressOptions po;
-  po.mode = progress_mode(o);
+  po.mode = o.quiet      ? io::ProgressMode::off
+            : o.progress ? io::ProgressMode::on
+                         : io::ProgressMode::automatic;
   po.label = std::move(label);
   return po;
 }
 
-// Renders the prepared job's frame range to its output, or (write_output
-// false) keeps its last frame.
+// Renders the prepared job's frame range to its output.
 RenderStats render_frames(const PreparedJob& p, paint::FramePainter& painter,
-                          const RenderOptions& o, bool write_output = true) {
+                          const RenderOptions& o) {
   const auto& job = p.job;
   paint::FrameDrawer drawer(p.plan, job.scene);
   drawer.set_caption(p.caption);
-  std::optional<paint::FrameFiles> files;
-  if (write_output)
-    files = paint::FrameFiles{job.output.dir, job.output.name, job.output.video, job.scene.fps,
-                              o.resume};
+  const paint::FrameFiles files{job.output.dir, job.output.name, job.output.video, job.scene.fps,
+                                o.resume};
   RenderStats stats;
   stats.written = paint::write_frames(drawer, painter, p.range, files,
                                       progress_options(o, job.file.stem().string()));
@@ -131,9 +116,13 @@ RenderStats render_frames(const PreparedJob& p, paint::FramePainter& painter,
   return stats;
 }
 
-nlohmann::json job_report(const PreparedJob& p, const RenderStats& st) {
+job::RenderCounts counts(const RenderStats& st) {
   const auto& w = st.written;
-  return job::render_report(p.job, p.plan, {w.drawn, w.skipped, w.seconds, w.failure}, st.runs);
+  return {w.drawn, w.skipped, w.seconds, w.failure};
+}
+
+nlohmann::json job_report(const PreparedJob& p, const RenderStats& st) {
+  return job::render_report(p.job, p.plan, counts(st), st.runs);
 }
 
 // Which GL implementation drew the frames (goldens are compared per backend).
@@ -150,14 +139,8 @@ std::FILE* summary_stream(const RenderOptions& o) {
   return !o.report_json.empty() && io::writes_to_standard_output(o.report_json) ? stderr : stdout;
 }
 
-void print_job_line(std::FILE* out, const PreparedJob& p, const RenderStats& stats) {
-  const auto& st = stats.written;
-  std::fprintf(out, "%s: %d frames %dx%d in %.2f s (%.1f frames/s), %s %s, %s -> %s\n",
-               p.job.file.string().c_str(), st.drawn, p.job.scene.width, p.job.scene.height,
-               st.seconds, st.seconds > 0 ? st.drawn / st.seconds : 0.0,
-               std::string(sim::name(p.plan.run.method)).c_str(), p.plan.accuracy_note.c_str(),
-               std::string(sim::name(p.plan.run.formulation)).c_str(),
-               p.job.output.dir.string().c_str());
+void print_job_line(std::FILE* out, const PreparedJob& p, const RenderStats& st) {
+  std::fputs(job::render_summary(p.job, p.plan, counts(st)).c_str(), out);
 }
 
 int report_failure(const std::optional<numerics::Failure>& f) {
@@ -254,22 +237,13 @@ int render_gallery(GalleryJob g, const RenderOptions& o, const render::GlChoice&
   RenderOptions job_opts = o;
   job_opts.out.clear();
   job_opts.format.clear();
-  for (auto job : g.jobs) {
-    job.scene.width = g.tile_width;
-    job.scene.height = g.tile_height;
-    job.output.dir = g.dir;
-    auto still = job;
-    still.output.video.reset();
-    auto ps = prepare(still, job_opts);
-    const int at = int(std::lround(g.at * (ps.plan.frames - 1)));
+  for (const auto& job : g.jobs) {
+    auto ps = prepare(job::gallery_member(g, job, /*video=*/false), job_opts);
+    const int at = job::gallery_still_frame(g, ps.plan.frames);
     ps.range = {at, at};
     ps.caption = job::tile_caption(ps.job, ps.plan);
     stills.push_back(std::move(ps));
-    if (g.videos) {
-      job.output.video = g.videos;
-      job.output.name = job.file.stem().string();
-      videos.push_back(prepare(job, job_opts));
-    }
+    if (g.videos) videos.push_back(prepare(job::gallery_member(g, job, /*video=*/true), job_opts));
   }
   if (g.grid_video) {
     job::grid_video_size(g, int(stills.size()));
@@ -283,25 +257,20 @@ int render_gallery(GalleryJob g, const RenderOptions& o, const render::GlChoice&
   auto context = gl.open();
   paint::FramePainter painter(*context, g.tile_width, g.tile_height);
 
-  nlohmann::json reports = nlohmann::json::array();
-  int failures = 0;
-  std::vector<render::RgbaImage> tiles;
-  for (const auto& p : stills) {
-    auto st = render_frames(p, painter, o, /*write_output=*/false);
-    failures += report_failure(st.written.failure) != 0;
-    tiles.push_back(st.written.kept
-                        ? std::move(*st.written.kept)
-                        : render::RgbaImage{g.tile_width, g.tile_height,
-                                            std::vector<std::uint8_t>(
-                                                std::size_t(g.tile_width) * g.tile_height * 4, 0)});
-  }
-  std::vector<std::span<const std::uint8_t>> spans;
-  for (const auto& t : tiles) spans.emplace_back(t.pixels);
-  const auto figure = io::tile_images(spans, g.tile_width, g.tile_height, job::gallery_tiling(g));
-  const fs::path figure_path = g.dir / "gallery.png";
-  io::write_png_rgba(figure_path, figure.width, figure.height, figure.pixels);
+  std::vector<paint::GalleryStill> still_scenes;
+  for (const auto& p : stills)
+    still_scenes.push_back(
+        {{&p.plan, &p.job.scene, p.caption}, p.range.first, p.job.file.stem().string()});
+  const paint::GalleryFigure figure{g.dir / "gallery.png", g.tile_width, g.tile_height,
+                                    job::gallery_tiling(g)};
+  const auto drawn =
+      paint::write_gallery_figure(still_scenes, figure, painter, progress_options(o, ""),
+                                  [](const numerics::Failure& f) { report_failure(f); });
+  int failures = drawn.failures;
   std::fprintf(summary_stream(o), "%s: %zu cases tiled into %s (%dx%d)\n", g.file.string().c_str(),
-               tiles.size(), figure_path.string().c_str(), figure.width, figure.height);
+               stills.size(), figure.path.string().c_str(), drawn.width, drawn.height);
+
+  nlohmann::json reports = nlohmann::json::array();
 
   for (const auto& p : videos) {
     const auto st = render_frames(p, painter, o);
@@ -316,11 +285,20 @@ int render_gallery(GalleryJob g, const RenderOptions& o, const render::GlChoice&
 }
 
 int run_render(const RenderOptions& o) {
+  if (o.list_jobs || o.help_job) {
+    std::fputs(
+        (o.list_jobs ? job::shipped_jobs_text(job::shipped_jobs_dir()) : job::job_keys_help())
+            .c_str(),
+        stdout);
+    return 0;
+  }
+  if (o.job.empty())
+    throw io::BadInput("render: give a job file or a shipped job's name (--list-jobs lists them)");
   io::check_output_file("--report-json", o.report_json);
   // SIGINT/SIGTERM remove the temporaries of the frames and videos being written.
   io::install_temporary_cleanup();
   const render::GlChoice gl(o.gl);
-  auto loaded = job::load_job_file(o.job);
+  auto loaded = job::load_job_file(job::job_file_named(o.job, job::shipped_jobs_dir()));
   if (loaded.bench) {
     if (!o.frames.empty() || !o.format.empty() || o.resume || !o.shard.empty())
       throw io::BadInput(o.job + ": a bench-figures job takes only --out and --gl");
@@ -341,7 +319,11 @@ std::function<int()> add_render_command(CLI::App& app) {
   auto o = std::make_shared<RenderOptions>();
   auto* cmd = app.add_subcommand(
       "render", "Render a job (render_jobs/*.json) to PNG frames, a video, or a gallery");
-  cmd->add_option("job", o->job, "render job file (JSON)")->required();
+  cmd->add_option("job", o->job,
+                  "render job file (JSON), or the name of a shipped job (see --list-jobs)");
+  cmd->add_flag("--list-jobs", o->list_jobs, "list the shipped jobs and exit");
+  cmd->add_flag("--help-job", o->help_job,
+                "list every key of a job file with its type, default and allowed values, and exit");
   cmd->add_option("--out", o->out, "output directory (overrides the job's output.dir)");
   cmd->add_option("--frames", o->frames, "frame range A:B (inclusive), A:, :B or N");
   cmd->add_option("--width", o->width, "frame width in pixels");

@@ -48,6 +48,10 @@ struct SimulationFields {
 std::vector<std::string> output_format_names();
 // "png" without a video format, else the video format's name.
 std::string_view output_format_name(const std::optional<io::VideoFormat>& video);
+// A format named on the command line by `option`: none for "png". Throws
+// io::BadInput naming the option and the formats allowed.
+std::optional<io::VideoFormat> parse_output_format(const std::string& option,
+                                                   const std::string& name);
 
 struct OutputSettings {
   std::filesystem::path dir = "out";

@@ -1,10 +1,27 @@
 #include "job/gallery_layout.hpp"
 
+#include <cmath>
 #include <string>
 
 #include "io/bad_input.hpp"
 
 namespace epviz::job {
+
+RenderJob gallery_member(const GalleryJob& gallery, RenderJob job, bool video) {
+  job.scene.width = gallery.tile_width;
+  job.scene.height = gallery.tile_height;
+  job.output.dir = gallery.dir;
+  job.output.video.reset();
+  if (video) {
+    job.output.video = gallery.videos;
+    job.output.name = job.file.stem().string();
+  }
+  return job;
+}
+
+int gallery_still_frame(const GalleryJob& gallery, int frames) {
+  return int(std::lround(gallery.at * (frames - 1)));
+}
 
 io::TilingOptions gallery_tiling(const GalleryJob& gallery) {
   io::TilingOptions tiling;

@@ -7,6 +7,14 @@
 
 namespace epviz::job {
 
+// A job of the gallery as the gallery draws it: at the tile size, into the
+// gallery's directory; as a still (no video), or as the gallery's video of it
+// (in the gallery's video format, named after the job's file).
+RenderJob gallery_member(const GalleryJob& gallery, RenderJob job, bool video);
+
+// The frame of a job's still, of its `frames`: `at` of the way through.
+int gallery_still_frame(const GalleryJob& gallery, int frames);
+
 // The gallery's tiling of its figure and grid video.
 io::TilingOptions gallery_tiling(const GalleryJob& gallery);
 

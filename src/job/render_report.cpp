@@ -1,6 +1,7 @@
 #include "job/render_report.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include "physics/cases.hpp"
 #include "sim/failure_advice.hpp"
@@ -81,6 +82,21 @@ nlohmann::json render_report(const RenderJob& job, const scene::ScenePlan& plan,
     j["runs"] = runs;
   }
   return j;
+}
+
+std::string render_summary(const RenderJob& job, const scene::ScenePlan& plan,
+                           const RenderCounts& counts) {
+  const double seconds = counts.seconds;
+  char rate[64];
+  std::snprintf(rate, sizeof rate, " in %.2f s (%.1f frames/s), ", seconds,
+                seconds > 0 ? counts.frames_drawn / seconds : 0.0);
+  std::string line = job.file.string() + ": ";
+  line += std::to_string(counts.frames_drawn) + " frames " + std::to_string(job.scene.width) + "x" +
+          std::to_string(job.scene.height);
+  line += rate;
+  line += std::string(sim::name(plan.run.method)) + " " + plan.accuracy_note + ", " +
+          std::string(sim::name(plan.run.formulation)) + " -> " + job.output.dir.string() + "\n";
+  return line;
 }
 
 }  // namespace epviz::job

@@ -4,6 +4,7 @@
 // failure if any, and each run's work, drifts and pixel-true horizon.
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <string>
 
 #include "job/job_file.hpp"
 #include "numerics/failure.hpp"
@@ -28,5 +29,10 @@ nlohmann::json runs_report(const scene::FrameSource& source);
 // run's step and pixel-true horizon are repeated at the top level).
 nlohmann::json render_report(const RenderJob& job, const scene::ScenePlan& plan,
                              const RenderCounts& counts, const nlohmann::json& runs);
+
+// The line `epviz render` prints after a job: "job.json: 6 frames 320x240
+// in 0.41 s (14.6 frames/s), dop853 tol auto ..., spinor -> out".
+std::string render_summary(const RenderJob& job, const scene::ScenePlan& plan,
+                           const RenderCounts& counts);
 
 }  // namespace epviz::job

@@ -8,6 +8,7 @@
 #include <functional>
 #include <variant>
 
+#include "io/bad_input.hpp"
 #include "io/printable.hpp"
 #include "job/schema_entries.hpp"
 #include "scene/layers.hpp"
@@ -416,6 +417,15 @@ std::vector<std::string> output_format_names() {
 
 std::string_view output_format_name(const std::optional<io::VideoFormat>& video) {
   return video ? io::video_format_name(*video) : "png";
+}
+
+std::optional<io::VideoFormat> parse_output_format(const std::string& option,
+                                                   const std::string& name) {
+  const auto names = output_format_names();
+  if (std::find(names.begin(), names.end(), name) == names.end())
+    throw io::BadInput(option + ": unknown format '" + io::printable(name) +
+                       "' (allowed: " + joined(names) + ")");
+  return io::parse_video_format(name);
 }
 
 std::string hex_colour(const scene::Rgba& c) {

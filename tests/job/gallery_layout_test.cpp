@@ -16,6 +16,34 @@ GalleryJob gallery(int tile_width, int tile_height, int columns) {
   return g;
 }
 
+TEST(GalleryLayout, AMemberIsDrawnAtTheTileSizeIntoTheGallerysDirectory) {
+  auto g = gallery(320, 180, 3);
+  g.dir = "out/g";
+  g.videos = io::VideoFormat::webm;
+  RenderJob job;
+  job.file = "jobs/euler.json";
+  job.scene.width = 1280;
+  job.output = {"elsewhere", io::VideoFormat::mp4, "frame"};
+  const auto still = gallery_member(g, job, false);
+  EXPECT_EQ(still.scene.width, 320);
+  EXPECT_EQ(still.scene.height, 180);
+  EXPECT_EQ(still.output.dir, "out/g");
+  EXPECT_EQ(still.output.video, std::nullopt);
+  const auto video = gallery_member(g, job, true);
+  EXPECT_EQ(video.output.video, io::VideoFormat::webm);
+  EXPECT_EQ(video.output.name, "euler");
+  EXPECT_EQ(video.output.dir, "out/g");
+}
+
+TEST(GalleryLayout, AStillIsTheFrameAtItsFractionOfTheRun) {
+  auto g = gallery(320, 180, 3);
+  g.at = 0.6;
+  EXPECT_EQ(gallery_still_frame(g, 101), 60);
+  EXPECT_EQ(gallery_still_frame(g, 1), 0);
+  g.at = 1.0;
+  EXPECT_EQ(gallery_still_frame(g, 270), 269);
+}
+
 TEST(GalleryLayout, TheTilingHasTheGallerysColumns) {
   EXPECT_EQ(gallery_tiling(gallery(320, 180, 4)).cols, 4);
 }

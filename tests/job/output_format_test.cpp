@@ -43,5 +43,17 @@ TEST(OutputFormat, AnUnknownFormatIsRefusedListingTheAllowedOnes) {
   }
 }
 
+TEST(OutputFormat, AFormatOptionIsCheckedAndNamedInItsError) {
+  EXPECT_EQ(parse_output_format("--format", "png"), std::nullopt);
+  EXPECT_EQ(parse_output_format("--format", "gif"), io::VideoFormat::gif);
+  try {
+    parse_output_format("--format", "avi");
+    ADD_FAILURE() << "avi was accepted";
+  } catch (const io::BadInput& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "--format: unknown format 'avi' (allowed: png, mp4, webm, gif)");
+  }
+}
+
 }  // namespace
 }  // namespace epviz::job
