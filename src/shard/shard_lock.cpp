@@ -239,8 +239,11 @@ ShardLock::ShardLock(const fs::path& path, std::chrono::milliseconds watch)
   }
   const std::string text =
       holder_text({host_name(), io::machine_token(), long(::getpid()), utc_now()});
+  // Synced: NFS would otherwise keep the holder's name on this client for a
+  // while, and another node would read an empty lock.
   if (::ftruncate(held_->fd, 0) != 0 ||
-      ::pwrite(held_->fd, text.data(), text.size(), 0) != ssize_t(text.size()))
+      ::pwrite(held_->fd, text.data(), text.size(), 0) != ssize_t(text.size()) ||
+      ::fsync(held_->fd) != 0)
     throw ShardError(name + ": cannot write the shard's lock file (" + std::strerror(errno) + ")");
   held_->heartbeat = std::thread([h = held_.get()] { h->beat(); });
 }
