@@ -54,9 +54,8 @@ TEST(ShardOwnership, ASecondCopyOfARunningShardRefusesNamingTheFirstAndMergeWait
   const Shard0 shard{d.write("s.sweep.json", kSlowSweep).string(), (d / "rows.jsonl").string()};
   auto first = start(shard.argv());
   const std::string pid = std::to_string(first.pid());
-  const auto lock = d / "rows.shard-0-of-2.lock";
-  ASSERT_TRUE(
-      eventually([&] { return slurp(lock).find("\"pid\":" + pid) != std::string::npos; }, 60s));
+  // Its manifest is written once its points are ready, just before they run.
+  ASSERT_TRUE(eventually([&] { return fs::exists(d / "rows.shard-0-of-2.manifest.json"); }, 60s));
 
   expect_bad_input(run_epviz(shard.args(), d), ", pid " + pid + ", since ");
 
@@ -74,7 +73,7 @@ TEST(ShardOwnership, ASecondCopyOfARunningShardRefusesNamingTheFirstAndMergeWait
   const auto ended = first.wait();
   ASSERT_TRUE(ended.success()) << ended.describe();
   EXPECT_EQ(rows_by_index(d / "rows.shard-0-of-2.jsonl").size(), 12u);  // each point once
-  EXPECT_FALSE(fs::exists(lock)) << "the lock outlived its shard";
+  EXPECT_FALSE(fs::exists(d / "rows.shard-0-of-2.lock")) << "the lock outlived its shard";
 }
 
 TEST(ShardOwnership, AShardKilledMidwayIsTakenOverAndResumedToTheUnshardedRows) {
