@@ -147,20 +147,18 @@ int run_merge(const MergeOptions& o) {
     throw io::BadInput("DIR: no shard manifests (*" + std::string(shard::manifest_suffix) +
                        ") in " + o.dir +
                        "; run epviz sweep or render with --shard I/N there first");
-  int incomplete = 0;
+  int incomplete = 0, to_redo = 0;
   for (auto& b : batches) {
     shard::check_batch(b, dir);
-    for (const auto& p : b.problems)
-      std::fprintf(stderr, "epviz: %s: %s\n", shard::batch_name(b).c_str(), p.c_str());
-    if (b.unlisted)
-      std::fprintf(stderr, "epviz: %s: and %ld more shards like these\n",
-                   shard::batch_name(b).c_str(), b.unlisted);
-    incomplete += !b.problems.empty();
+    const auto report = shard::batch_report(b);
+    for (const auto& line : report) std::fprintf(stderr, "epviz: %s\n", line.c_str());
+    incomplete += !report.empty();
+    to_redo += !b.incomplete.empty();
   }
   if (incomplete) {
     std::fprintf(stderr, "epviz: error: %d of %zu batches in %s are incomplete; nothing merged\n",
                  incomplete, batches.size(), o.dir.c_str());
-    if (!o.resubmit.empty()) {
+    if (!o.resubmit.empty() && to_redo) {  // shards still running are not redone
       io::write_file_atomically(o.resubmit,
                                 shard::slurm_resubmit_script(batches, merge_command_line(o)));
       std::fprintf(stderr, "epviz: to redo only those shards on Slurm, then this merge: bash %s\n",

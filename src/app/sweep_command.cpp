@@ -16,6 +16,7 @@
 #include "io/progress.hpp"
 #include "job/resolve.hpp"
 #include "shard/rows_shard.hpp"
+#include "shard/shard_lock.hpp"
 #include "shard/shard_spec.hpp"
 #include "sweep/sweep_runner.hpp"
 #include "sweep/sweep_spec.hpp"
@@ -63,12 +64,10 @@ int run_sweep(const SweepOptions& o) {
   const fs::path out = rows_shard ? rows_shard->rows : out_given;
   const shard::ItemRange range = rows_shard ? rows_shard->points : shard::ItemRange{0, total};
 
-  const sweep::ExistingRows existing = sweep::resume_rows(out, spec.hash, total);
-  for (long i : existing.indices)
-    if (i < range.first || i >= range.end)
-      throw io::BadInput(out.string() + ": holds point " + std::to_string(i) +
-                         ", outside this shard's points " + std::to_string(range.first) + ".." +
-                         std::to_string(range.end - 1) + "; give another --out");
+  // Held to the end, so that a second copy of this run refuses (shard/shard_lock.hpp).
+  const shard::ShardLock lock(rows_shard ? rows_shard->lock_path
+                                         : fs::path(out.string() + ".lock"));
+  const sweep::ExistingRows existing = sweep::resume_rows(out, spec.hash, total, range);
 
   // Every value of every axis is read and checked before any runs, through
   // one point per value, so that a bad value anywhere stops every shard
@@ -120,9 +119,9 @@ int run_sweep(const SweepOptions& o) {
              ": points " + std::to_string(range.first) + ".." + std::to_string(range.end - 1) + ")")
                 .c_str()
           : "",
-      existing.indices.size(), out.string().c_str(),
-      existing.dropped_torn ? " (a torn last line dropped)" : "", totals.points, seconds,
-      seconds > 0 ? double(totals.points) / seconds : 0.0, threads, totals.failures);
+      existing.indices.size(), out.string().c_str(), sweep::repairs_note(existing).c_str(),
+      totals.points, seconds, seconds > 0 ? double(totals.points) / seconds : 0.0, threads,
+      totals.failures);
   return 0;
 }
 

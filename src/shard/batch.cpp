@@ -1,9 +1,11 @@
 #include "shard/batch.hpp"
 
 #include <algorithm>
+#include <set>
 
 #include "io/bad_input.hpp"
 #include "io/printable.hpp"
+#include "shard/shard_lock.hpp"
 
 namespace epviz::shard {
 
@@ -45,6 +47,7 @@ std::vector<Batch> read_batches(const fs::path& dir) {
                            io::printable(other.output) + "'");
     }
     b.count = m.shard.count;
+    if (b.stem.empty()) b.stem = manifest_stem(f.filename().string(), m.shard);
     b.shards[m.shard.index] = std::move(m);
   }
   std::vector<Batch> out;
@@ -52,28 +55,77 @@ std::vector<Batch> read_batches(const fs::path& dir) {
   return out;
 }
 
+namespace {
+
+// The names of the lock files in `dir`: read once, not looked for once per
+// shard (a batch may have a million).
+std::set<std::string> lock_files(const fs::path& dir) {
+  std::set<std::string> names;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec))
+    if (auto name = e.path().filename().string(); name.ends_with(".lock"))
+      names.insert(std::move(name));
+  return names;
+}
+
+std::string holder_of(const LockStatus& lock) {
+  return (lock.holder ? describe(*lock.holder) : std::string("another process")) + "; " + lock.why;
+}
+
+}  // namespace
+
 void check_batch(Batch& b, const fs::path& dir) {
   const auto& any = b.shards.begin()->second;
+  const auto locks = lock_files(dir);
   for (long i = 0; i < b.count; ++i) {
-    auto it = b.shards.find(i);
+    const auto it = b.shards.find(i);
+    const bool listed = it != b.shards.end();
     std::vector<std::string> found;
-    if (it != b.shards.end() && it->second.completed) {
+    if (listed && it->second.completed) {
       found = file_problems(it->second, dir);
-      if (found.empty()) continue;
+      if (found.empty()) {
+        ++b.complete;
+        continue;
+      }
     }
-    b.incomplete.push_back(i);
-    if (b.problems.size() >= max_listed_problems) {  // counted without building its lines
-      ++b.unlisted;
+    LockStatus lock;
+    if (const auto name = b.stem.empty() ? "" : lock_name(b.stem, {i, b.count}); locks.count(name))
+      lock = probe_lock(dir / name);
+    const std::string tag = "shard " + std::to_string(i) + "/" + std::to_string(b.count) + ": ";
+    const bool listing = b.problems.size() < max_listed_problems;
+    if (!listing) ++b.unlisted;  // counted without building its lines
+    if (lock.state == LockState::running) {
+      ++b.running;
+      if (listing)
+        b.problems.push_back(tag + "running (" + holder_of(lock) +
+                             "); merge again once it has ended");
       continue;
     }
-    if (it == b.shards.end())
+    b.incomplete.push_back(i);
+    ++(listed || lock.state == LockState::dead ? b.dead : b.missing);
+    if (!listing) continue;
+    if (lock.state == LockState::dead)
+      found.push_back("dead (its lock was left by " + holder_of(lock) + ")");
+    else if (!listed)
       found.push_back("missing (no manifest in " + io::printable(dir.string(), 300) + ")");
     else if (!it->second.completed)
-      found.push_back("not completed (killed, failed or still running)");
-    const std::string tag = "shard " + std::to_string(i) + "/" + std::to_string(b.count);
+      found.push_back("dead (not completed, and no process holds its lock: killed or failed)");
     const std::string redo = "; run: " + rerun_command(any, i);
-    for (const auto& p : found) b.problems.push_back(tag + ": " + p + redo);
+    for (const auto& p : found) b.problems.push_back(tag + p + redo);
   }
+}
+
+std::vector<std::string> batch_report(const Batch& b) {
+  if (b.complete == b.count) return {};
+  std::vector<std::string> lines;
+  const std::string name = batch_name(b);
+  for (const auto& p : b.problems) lines.push_back(name + ": " + p);
+  if (b.unlisted) lines.push_back(name + ": and " + std::to_string(b.unlisted) + " more shards");
+  std::string counts = name + ": " + std::to_string(b.complete) + " complete, ";
+  counts += std::to_string(b.running) + " running, " + std::to_string(b.dead) + " dead, ";
+  counts += std::to_string(b.missing) + " missing";
+  lines.push_back(std::move(counts));
+  return lines;
 }
 
 }  // namespace epviz::shard

@@ -20,13 +20,15 @@ FrameShard plan_frame_shard(const FrameBatch& batch, const ShardSpec& spec) {
 
   s.manifest = shard_manifest("render", batch.origin, spec, s.frames, batch.frames,
                               video ? batch.name + batch.video_extension : "");
-  const std::string stem = batch.name.empty() ? "frames" : batch.name;
-  s.manifest_path = batch.dir / manifest_name(stem + (video ? "" : "_png"), spec);
+  const std::string stem = (batch.name.empty() ? "frames" : batch.name) + (video ? "" : "_png");
+  s.manifest_path = batch.dir / manifest_name(stem, spec);
+  s.lock_path = batch.dir / lock_name(stem, spec);
   return s;
 }
 
-void start_frame_shard(const FrameShard& s) {
+void start_frame_shard(FrameShard& s) {
   fs::create_directories(s.manifest_path.parent_path());
+  s.lock.emplace(s.lock_path);
   write_manifest(s.manifest_path, s.manifest);
 }
 

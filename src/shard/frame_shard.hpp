@@ -7,10 +7,12 @@
 // that `epviz merge` joins. Each shard writes a manifest (manifest.hpp)
 // beside its output.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "shard/manifest.hpp"
+#include "shard/shard_lock.hpp"
 #include "shard/shard_spec.hpp"
 
 namespace epviz::shard {
@@ -30,13 +32,16 @@ struct FrameShard {
   std::string output_name;  // the name this shard writes under (a segment's for a video)
   Manifest manifest;
   std::filesystem::path manifest_path;
+  std::filesystem::path lock_path;
+  std::optional<ShardLock> lock;  // held from start_frame_shard on
 };
 
 // Throws ShardError naming --shard when the shard would have no frames.
 FrameShard plan_frame_shard(const FrameBatch& batch, const ShardSpec& spec);
 
-// Writes the manifest with "completed": false (call before drawing).
-void start_frame_shard(const FrameShard& s);
+// Takes the shard's lock (throws ShardBusy naming a live holder) and writes
+// the manifest with "completed": false (call before drawing).
+void start_frame_shard(FrameShard& s);
 // Adds the files drawn, with their checksums, and marks the manifest completed.
 void finish_frame_shard(FrameShard& s, const FrameBatch& batch);
 

@@ -124,6 +124,16 @@ std::string manifest_name(const std::string& stem, const ShardSpec& s) {
   return stem + "." + shard_tag(s) + std::string(manifest_suffix);
 }
 
+std::string lock_name(const std::string& stem, const ShardSpec& s) {
+  return stem + "." + shard_tag(s) + ".lock";
+}
+
+std::string manifest_stem(const std::string& file_name, const ShardSpec& s) {
+  const std::string tail = manifest_name("", s);
+  if (file_name.size() <= tail.size() || !file_name.ends_with(tail)) return "";
+  return file_name.substr(0, file_name.size() - tail.size());
+}
+
 void add_file(Manifest& m, const fs::path& dir, const fs::path& file) {
   const auto d = digest_file(file);
   m.files.push_back({file.lexically_relative(dir).generic_string(), d.bytes, d.checksum});

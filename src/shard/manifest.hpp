@@ -58,6 +58,11 @@ void write_manifest(const std::filesystem::path& path, const Manifest& m);
 // "<stem>.shard-2-of-8.manifest.json": where shard `s` of a batch named `stem` keeps it.
 std::string manifest_name(const std::string& stem, const ShardSpec& s);
 inline constexpr std::string_view manifest_suffix = ".manifest.json";
+// "<stem>.shard-2-of-8.lock": the lock its process holds while it runs (shard_lock.hpp).
+std::string lock_name(const std::string& stem, const ShardSpec& s);
+// The stem of a manifest's file name ("rows" of "rows.shard-2-of-8.manifest.json"),
+// or "" when the name is not that of shard `s`.
+std::string manifest_stem(const std::string& file_name, const ShardSpec& s);
 
 // Adds `file` (a path) to m.files, relative to `dir`, with its size and checksum.
 void add_file(Manifest& m, const std::filesystem::path& dir, const std::filesystem::path& file);

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <fstream>
-#include <set>
+#include <map>
 
 #include "io/bad_input.hpp"
 #include "io/json_reader.hpp"
@@ -45,19 +45,45 @@ std::vector<Json> read_rows(const fs::path& file) {
 
 }  // namespace
 
+bool same_row(const Json& a, const Json& b) {
+  if (!a.is_object() || !b.is_object()) return a == b;
+  Json a_result = a, b_result = b;
+  a_result.erase("cpu_seconds");
+  b_result.erase("cpu_seconds");
+  return a_result == b_result;
+}
+
 std::vector<Json> merged_rows(const Batch& b, const fs::path& dir) {
   std::vector<Json> rows;
-  std::set<long> seen;
+  std::vector<std::string> names;  // of the files read, for messages
+  struct Seen {
+    std::size_t row;   // in `rows`
+    std::size_t name;  // in `names`
+    std::size_t line;
+  };
+  std::map<long, Seen> seen;  // by index
+  const auto where = [&](const Seen& s) {
+    return names[s.name] + ": line " + std::to_string(s.line);
+  };
   for (const auto& [i, m] : b.shards) {
     for (const auto& f : m.files) {
-      const std::string name = io::printable((dir / f.path).string(), 300);
-      for (auto& r : read_rows(dir / f.path)) {
+      names.push_back(io::printable((dir / f.path).string(), 300));
+      auto file_rows = read_rows(dir / f.path);
+      for (std::size_t k = 0; k < file_rows.size(); ++k) {
+        auto& r = file_rows[k];
         const long index = r["index"].get<long>();
         if (index < m.items.first || index >= m.items.end || r["sweep"] != b.hash)
-          throw io::BadInput(name + ": a row (index " + std::to_string(index) +
+          throw io::BadInput(names.back() + ": a row (index " + std::to_string(index) +
                              ") that is not one of shard " + std::to_string(i) + "'s points");
-        if (!seen.insert(index).second)
-          throw io::BadInput(name + ": point " + std::to_string(index) + " twice");
+        const Seen here{rows.size(), names.size() - 1, k + 1};
+        const auto [it, first] = seen.try_emplace(index, here);
+        if (!first) {
+          if (!same_row(rows[it->second.row], r))
+            throw io::BadInput(where(it->second) + " and " + where(here) +
+                               ": two different rows of point " + std::to_string(index) +
+                               "; remove the wrong one, or the shard's files to run it again");
+          continue;  // the same row twice: once is enough
+        }
         rows.push_back(std::move(r));
       }
     }

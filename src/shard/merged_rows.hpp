@@ -1,7 +1,8 @@
 #pragma once
 // The rows of a sweep batch's shards joined into one list: every row is one
 // of its shard's points (its "index" within the shard's items and its
-// "sweep" the batch's hash), no point twice and none missing.
+// "sweep" the batch's hash), none missing, and a point twice only as the same
+// row (same_row; kept once).
 #include <filesystem>
 #include <vector>
 
@@ -10,6 +11,11 @@
 #include "shard/batch.hpp"
 
 namespace epviz::shard {
+
+// Whether two rows of one point are the same result: equal but for the CPU
+// time each run measured ("cpu_seconds", sweep/run_record.cpp), so that two
+// runs of a point (a shard run twice) give the same row.
+bool same_row(const nlohmann::json& a, const nlohmann::json& b);
 
 // Sorted by index. Throws io::BadInput naming the file and the row, or the
 // missing point with the command that redoes its shard.

@@ -23,6 +23,7 @@ RowsShard plan_rows_shard(const RowsBatch& batch, const ShardSpec& spec) {
   s.manifest = shard_manifest("sweep", batch.origin, spec, s.points, batch.points,
                               batch.rows.filename().string());
   s.manifest_path = dir / manifest_name(rows_stem(batch.rows), spec);
+  s.lock_path = dir / lock_name(rows_stem(batch.rows), spec);
   return s;
 }
 

@@ -24,6 +24,7 @@ struct RowsShard {
   std::filesystem::path rows;  // where this shard's rows go
   Manifest manifest;
   std::filesystem::path manifest_path;
+  std::filesystem::path lock_path;  // held while the shard runs (shard_lock.hpp)
 };
 
 RowsShard plan_rows_shard(const RowsBatch& batch, const ShardSpec& spec);

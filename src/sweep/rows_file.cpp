@@ -7,15 +7,22 @@
 #include <chrono>
 #include <cstring>
 #include <fstream>
+#include <map>
+#include <optional>
 #include <sstream>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
+
+#include "io/atomic_file.hpp"
+#include "shard/merged_rows.hpp"
 
 namespace epviz::sweep {
 
 namespace fs = std::filesystem;
 
-ExistingRows resume_rows(const fs::path& path, const std::string& sweep_hash, long points) {
+ExistingRows resume_rows(const fs::path& path, const std::string& sweep_hash, long points,
+                         shard::ItemRange mine) {
   ExistingRows out;
   std::error_code ec;
   if (!fs::exists(path, ec)) return out;
@@ -26,13 +33,16 @@ ExistingRows resume_rows(const fs::path& path, const std::string& sweep_hash, lo
   std::stringstream ss;
   ss << in.rdbuf();
   const std::string text = ss.str();
+  // By index: the line number and text of its first row (in `text`).
+  std::map<long, std::pair<long, std::string_view>> first_row;
+  std::optional<std::string> kept;  // the lines that stay, once one does not
   std::size_t pos = 0;
   long line_no = 0;
   while (pos < text.size()) {
     const auto nl = text.find('\n', pos);
     if (nl == std::string::npos) break;  // torn: no end of line
     ++line_no;
-    const std::string line = text.substr(pos, nl - pos);
+    const std::string_view line(text.data() + pos, nl - pos);
     pos = nl + 1;
     auto bad = [&](const std::string& why) {
       throw RowsFileError(path.string() + ": line " + std::to_string(line_no) + " " + why +
@@ -50,16 +60,45 @@ ExistingRows resume_rows(const fs::path& path, const std::string& sweep_hash, lo
     if (row["sweep"] != sweep_hash) bad("is a row of another sweep (or of an edited sweep file)");
     const long index = row["index"].get<long>();
     if (index < 0 || index >= points) bad("has an index outside this sweep");
+    if (index < mine.first || index >= mine.end)
+      bad("holds point " + std::to_string(index) + ", outside this shard's points " +
+          std::to_string(mine.first) + ".." + std::to_string(mine.end - 1));
+    const auto [it, first] = first_row.try_emplace(index, line_no, line);
+    if (!first) {
+      const auto& [earlier_no, earlier] = it->second;
+      if (earlier != line && !shard::same_row(nlohmann::json::parse(earlier), row))
+        bad("and line " + std::to_string(earlier_no) + " are different rows of point " +
+            std::to_string(index));
+      if (!kept) kept = text.substr(0, std::size_t(line.data() - text.data()));
+      ++out.dropped_duplicates;
+      continue;
+    }
+    if (kept) {
+      *kept += line;
+      *kept += '\n';
+    }
     out.indices.insert(index);
   }
-  if (pos < text.size()) {
+  out.dropped_torn = pos < text.size();
+  if (kept) {
+    io::write_file_atomically(path, *kept);
+  } else if (out.dropped_torn) {
     fs::resize_file(path, pos, ec);
     if (ec)
       throw RowsFileError(path.string() + ": cannot cut off the torn last line (" + ec.message() +
                           ")");
-    out.dropped_torn = true;
   }
   return out;
+}
+
+std::string repairs_note(const ExistingRows& rows) {
+  std::string note;
+  if (rows.dropped_torn) note = "a torn last line dropped";
+  if (rows.dropped_duplicates) {
+    if (!note.empty()) note += ", ";
+    note += std::to_string(rows.dropped_duplicates) + " duplicate rows dropped";
+  }
+  return note.empty() ? note : " (" + note + ")";
 }
 
 namespace {

@@ -4,7 +4,8 @@
 // of finishing, so that a sweep that is killed loses at most the rows being
 // computed and those of the last 0.2 s. Starting again on the
 // same file resumes: complete rows are kept and their points skipped; a last
-// line cut short by the kill is removed.
+// line cut short by the kill is removed, and so is a second row of a point
+// that is the same as its first (shard::same_row).
 #include <condition_variable>
 #include <cstdio>
 #include <exception>
@@ -16,6 +17,7 @@
 #include <thread>
 
 #include "io/bad_input.hpp"
+#include "shard/shard_spec.hpp"
 
 namespace epviz::sweep {
 
@@ -25,16 +27,28 @@ class RowsFileError : public io::BadInput {
 };
 
 struct ExistingRows {
-  std::set<long> indices;     // points already done
-  bool dropped_torn = false;  // a partial last line was removed
+  std::set<long> indices;       // points already done
+  bool dropped_torn = false;    // a partial last line was removed
+  long dropped_duplicates = 0;  // rows removed as copies of an earlier line
 };
 
-// Reads the rows already in `path` (none when it does not exist) and cuts
-// off a torn last line. Every complete line must be a row of the sweep with
-// hash `sweep_hash` and an index below `points`; otherwise RowsFileError
-// names the file and line (the file is left as it was).
+// Reads the rows already in `path` (none when it does not exist), cuts off a
+// torn last line and removes rows the same as an earlier one of their point. Every complete
+// line must be a row of the sweep with hash `sweep_hash` and an index in
+// `mine` (this shard's points, or all `points` of an unsharded sweep), and
+// two rows of one point must be the same; otherwise RowsFileError names the
+// file and the line (both lines for two differing rows of a point), and the
+// file is left as it was.
 ExistingRows resume_rows(const std::filesystem::path& path, const std::string& sweep_hash,
-                         long points);
+                         long points, shard::ItemRange mine);
+inline ExistingRows resume_rows(const std::filesystem::path& path, const std::string& sweep_hash,
+                                long points) {
+  return resume_rows(path, sweep_hash, points, {0, points});
+}
+
+// " (a torn last line dropped, 3 duplicate rows dropped)", or "" when
+// nothing was repaired: for the line that reports the run.
+std::string repairs_note(const ExistingRows& rows);
 
 // Appends lines to a regular file (created if missing). Lines are gathered
 // and written together, whole lines only, under a lock, so rows never

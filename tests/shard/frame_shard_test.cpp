@@ -81,5 +81,21 @@ TEST(FrameShard, TheFinishedManifestListsTheShardsFramesWithTheirChecksums) {
   EXPECT_TRUE(file_problems(m, d.path()).empty());
 }
 
+TEST(FrameShard, AStartedShardIsHeldUntilItEnds) {
+  epviz::test::TempDir d;
+  const auto b = batch_of(d.path(), ".mp4");
+  {
+    auto first = plan_frame_shard(b, {1, 2});
+    start_frame_shard(first);
+    EXPECT_EQ(first.lock_path, d.path() / "f.shard-1-of-2.lock");
+    auto second = plan_frame_shard(b, {1, 2});
+    EXPECT_THROW(start_frame_shard(second), ShardBusy);
+    auto other = plan_frame_shard(b, {0, 2});
+    EXPECT_NO_THROW(start_frame_shard(other));  // another shard: its own lock
+  }
+  auto again = plan_frame_shard(b, {1, 2});
+  EXPECT_NO_THROW(start_frame_shard(again));
+}
+
 }  // namespace
 }  // namespace epviz::shard

@@ -6,8 +6,11 @@
 #include <fstream>
 
 #include "io/bad_input.hpp"
+#include "io/temp_name.hpp"
 #include "shard/batch.hpp"
 #include "shard/merged_rows.hpp"
+#include "shard/shard_lock.hpp"
+#include "support/dead_pid.hpp"
 #include "support/temp_dir.hpp"
 
 namespace epviz::shard {
@@ -142,6 +145,75 @@ TEST_F(Merge, ShardsOfOneBatchThatNameTwoOutputsAreRefused) {
   write_shard("aa", 1, row(2, "aa") + row(3, "aa"));
   edit_manifest(1, "output", "other.jsonl");
   EXPECT_THROW(read_batches(dir_), io::BadInput);
+}
+
+TEST_F(Merge, RunningDeadAndMissingShardsAreToldApartAndOnlyDeadOrMissingOnesRedone) {
+  // Of five shards: 0 complete; 1 running (its lock held); 2 killed (its
+  // lock left by a pid that is gone); 3 failed (not completed, no lock); 4 missing.
+  for (long i = 0; i < 4; ++i) write_shard("aa", i, i == 0 ? row(0, "aa") : "", 5);
+  for (long i = 1; i < 4; ++i) {
+    const fs::path file = dir_ / manifest_name("aa-5", {i, 5});
+    auto j = nlohmann::json::parse(test::slurp(file));
+    j["completed"] = false;
+    std::ofstream(file, std::ios::trunc) << j.dump();
+  }
+  const ShardLock running(dir_ / lock_name("aa-5", {1, 5}));
+  std::ofstream(dir_ / lock_name("aa-5", {2, 5})) << nlohmann::json{
+      {"host", "here"},
+      {"machine", io::machine_token()},
+      {"pid", test::dead_pid()},
+      {"started", "2026-01-02T03:04:05Z"}}.dump();
+  auto batches = read_batches(dir_);
+  ASSERT_EQ(batches.size(), 1u);
+  auto& b = batches[0];
+  check_batch(b, dir_);
+  EXPECT_EQ(b.incomplete, (std::vector<long>{2, 3, 4}));
+  ASSERT_EQ(b.problems.size(), 4u);
+  const std::string pid = std::to_string(::getpid());
+  EXPECT_EQ(b.problems[0].rfind("shard 1/5: running (host ", 0), 0u) << b.problems[0];
+  EXPECT_NE(b.problems[0].find(", pid " + pid + ", since "), std::string::npos) << b.problems[0];
+  EXPECT_EQ(b.problems[0].find("run:"), std::string::npos) << b.problems[0];
+  EXPECT_EQ(b.problems[1].rfind("shard 2/5: dead (its lock was left by host here, pid ", 0), 0u)
+      << b.problems[1];
+  EXPECT_NE(b.problems[1].find("no such process on this host); run: epviz sweep"),
+            std::string::npos)
+      << b.problems[1];
+  EXPECT_EQ(b.problems[2].rfind("shard 3/5: dead (not completed, and no process holds", 0), 0u)
+      << b.problems[2];
+  EXPECT_EQ(b.problems[3].rfind("shard 4/5: missing", 0), 0u) << b.problems[3];
+  for (std::size_t i = 1; i < 4; ++i)
+    EXPECT_NE(b.problems[i].find("--shard " + std::to_string(i + 1) + "/5"), std::string::npos)
+        << b.problems[i];
+  EXPECT_EQ(batch_report(b).back(), batch_name(b) + ": 1 complete, 1 running, 2 dead, 1 missing");
+}
+
+TEST_F(Merge, ACompleteBatchHasNothingToReport) {
+  write_shard("aa", 0, row(0, "aa") + row(1, "aa"));
+  write_shard("aa", 1, row(2, "aa") + row(3, "aa"));
+  auto batches = read_batches(dir_);
+  check_batch(batches.at(0), dir_);
+  EXPECT_TRUE(batch_report(batches[0]).empty());
+  EXPECT_EQ(batches[0].complete, 2);
+}
+
+TEST_F(Merge, APointTwiceIsMergedOnceWhenItsRowsAreTheSameAndRefusedWhenTheyDiffer) {
+  // Two runs of point 0: the same but for the CPU time each measured.
+  write_shard("aa", 0,
+              R"({"index":0,"sweep":"aa","cpu_seconds":0.25})"
+              "\n" +
+                  row(1, "aa") + R"({"index":0,"sweep":"aa","cpu_seconds":0.5})" + "\n");
+  write_shard("aa", 1, row(2, "aa") + row(3, "aa") + row(3, "aa"));
+  const auto rows = merged_rows(read_batches(dir_).at(0), dir_);
+  ASSERT_EQ(rows.size(), 4u);
+  for (long i = 0; i < 4; ++i) EXPECT_EQ(rows[std::size_t(i)]["index"], i);
+  EXPECT_EQ(rows[0]["cpu_seconds"], 0.25);  // the first kept
+
+  write_shard("aa", 1, row(2, "aa") + row(3, "aa") + R"({"index":2,"sweep":"aa","x":1})" + "\n");
+  const auto why = merge_refusal();
+  EXPECT_NE(why.find("aa-2.shard-1-of-2.jsonl: line 1 and "), std::string::npos) << why;
+  EXPECT_NE(why.find("aa-2.shard-1-of-2.jsonl: line 3: two different rows of point 2"),
+            std::string::npos)
+      << why;
 }
 
 TEST_F(Merge, AMillionMissingShardsListOnlyAFew) {

@@ -85,6 +85,51 @@ TEST(RowsFile, ResumeKeepsCompleteRowsAndCutsATornLine) {
   EXPECT_THROW(resume_rows(p, "h", 2), RowsFileError);       // index outside the sweep
 }
 
+TEST(RowsFile, ResumeDropsARowTwiceAndRefusesTwoDifferentRowsOfAPoint) {
+  const test::TempDir dir;
+  const fs::path p = dir / "rows.jsonl";
+  const std::string r0 = R"({"index":0,"sweep":"h"})", r1 = R"({"index":1,"sweep":"h"})";
+  std::ofstream(p) << r0 << "\n"
+                   << r1 << "\n"
+                   << r0 << "\n"
+                   << R"({"index":0,"sw)";
+  const auto got = resume_rows(p, "h", 10);
+  EXPECT_EQ(got.indices, (std::set<long>{0, 1}));
+  EXPECT_EQ(got.dropped_duplicates, 1);
+  EXPECT_TRUE(got.dropped_torn);
+  EXPECT_EQ(test::slurp(p), r0 + "\n" + r1 + "\n");
+  EXPECT_EQ(repairs_note(got), " (a torn last line dropped, 1 duplicate rows dropped)");
+
+  const std::string other = R"({"index":1,"sweep":"h","x":2})";
+  std::ofstream(p, std::ios::app) << other << "\n";
+  try {
+    resume_rows(p, "h", 10);
+    ADD_FAILURE() << "two different rows of point 1 were accepted";
+  } catch (const RowsFileError& e) {
+    EXPECT_NE(
+        std::string(e.what()).find("rows.jsonl: line 3 and line 2 are different rows of point 1"),
+        std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(test::slurp(p), r0 + "\n" + r1 + "\n" + other + "\n") << "changed though refused";
+}
+
+TEST(RowsFile, ResumeOfAShardRefusesAnotherShardsRows) {
+  const test::TempDir dir;
+  const fs::path p = dir / "rows.jsonl";
+  std::ofstream(p) << R"({"index":3,"sweep":"h"})"
+                   << "\n";
+  EXPECT_EQ(resume_rows(p, "h", 10, {2, 5}).indices, (std::set<long>{3}));
+  try {
+    resume_rows(p, "h", 10, {5, 10});
+    ADD_FAILURE() << "a row of another shard was accepted";
+  } catch (const RowsFileError& e) {
+    EXPECT_NE(std::string(e.what()).find("line 1 holds point 3, outside this shard's points 5..9"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 // A finished row reaches the file soon, with no further row to push it out
 // (a killed sweep then loses only what it was computing), and rows arrive
 // whole and in order: whenever the file is looked at, it holds the first
