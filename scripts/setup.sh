@@ -24,9 +24,12 @@ case "${1:---test}" in
     ;;
 esac
 
-# libegl-mesa0 is the EGL driver libegl1 dispatches to; without it only OSMesa draws.
+# libegl-mesa0 is the EGL driver libegl1 dispatches to, and libgl1-mesa-dri holds
+# the rasteriser it loads (swrast_dri.so); without both only OSMesa draws. The
+# .deb's Depends (CMakeLists.txt, CPack) name the same packages, and
+# tests/install/deb_test.py checks what a render opens against them.
 runtime_packages=(
-  libegl1 libegl-mesa0 libosmesa6 ffmpeg fonts-dejavu-core
+  libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6 ffmpeg fonts-dejavu-core
   libturbojpeg0 libstb0 zlib1g libgsl27 libgslcblas0 libcairo2
 )
 build_packages=(
