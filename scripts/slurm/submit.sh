@@ -3,7 +3,8 @@
 # runs once every task has ended, whether it succeeded or not
 # (--dependency=afterany): the merge names what is missing and, with
 # --resubmit, writes OUTDIR/resubmit.sh, which submits again only the failed
-# shards and then the merge. Prints the two job ids, array first.
+# shards and then the merge. Prints the two job ids, array first (on stderr,
+# what to do when a task fails).
 #
 #   scripts/slurm/submit.sh sweep render_jobs/chaos_map.sweep.json results/ 8
 #   scripts/slurm/submit.sh render render_jobs/generic.json frames/ 4 --format mp4
@@ -32,3 +33,6 @@ merge=$(sbatch --parsable ${SBATCH_ARGS:-} --dependency=afterany:"$array" --chdi
   "$here/merge.sbatch" "$out" --resubmit "$out/resubmit.sh" ${MERGE_ARGS:-})
 merge=${merge%%;*}
 echo "$array $merge"
+echo "$0: if a task fails, merge job $merge names its shard (epviz-merge-$merge.log) and" \
+  "writes $out/resubmit.sh; bash $out/resubmit.sh then runs sbatch --array=<the failed indices>" \
+  "and the merge again" >&2

@@ -34,7 +34,9 @@ TEST(Resubmit, TheScriptRedoesTheIncompleteShardsOfEachBatchThenTheMerge) {
   // Quoted twice: for the task's command line, then as --wrap's one word.
   EXPECT_NE(s.find(R"(it'\''\'\'''\''s.sweep.json)"), std::string::npos) << s;
   EXPECT_NE(s.find("--dependency=afterany:\"$deps\""), std::string::npos) << s;
-  EXPECT_NE(s.find("'exec epviz merge /abs/out'"), std::string::npos) << s;
+  // The binary as the jobs find it: EPVIZ (which travels with sbatch's environment), else PATH.
+  EXPECT_NE(s.find(R"(--wrap 'exec "${EPVIZ:-epviz}" sweep '\'')"), std::string::npos) << s;
+  EXPECT_NE(s.find(R"('exec "${EPVIZ:-epviz}" merge /abs/out')"), std::string::npos) << s;
 }
 
 }  // namespace

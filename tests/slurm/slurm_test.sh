@@ -4,7 +4,10 @@
 # so nothing of the machine's is touched), submits a 4-shard sweep and a
 # 4-shard render each with its merge job (scripts/slurm/submit.sh), waits
 # (bounded), and compares the merged results with the same work done on this
-# machine in one process. Stops the daemons it started by their pid files.
+# machine in one process. Then a 3-shard sweep with one task cancelled: its
+# merge must still run, exit 4 naming that shard and show the resubmit line;
+# the resubmit script it wrote, run, must complete the same rows. Stops the
+# daemons it started by their pid files.
 #
 #   tests/slurm/slurm_test.sh path/to/epviz
 #
@@ -31,7 +34,7 @@ stop() {
 trap stop EXIT
 fail() {
   echo "FAILED: $*" >&2
-  for log in "$tmp"/*.log "$tmp"/work/*.log; do
+  for log in "$tmp"/*.log "$tmp"/work/*.log "$tmp"/work/*.out "$tmp"/work/cancel-out/resubmit.sh; do
     [ -f "$log" ] && { echo "--- $log"; tail -n 20 "$log"; } >&2
   done
   exit 1
@@ -100,6 +103,13 @@ cat >clip.json <<'JSON'
  "output": {"dir": "out", "format": "png", "name": "f"}}
 JSON
 export EPVIZ=$epviz
+# Submitted held, so that the task is cancelled before it can end by itself;
+# its merge (afterany) must run all the same.
+read -r cancel_array cancel_merge < <(SBATCH_ARGS=--hold "$src/scripts/slurm/submit.sh" \
+  sweep grid.sweep.json cancel-out 3)
+scancel "${cancel_array}_1" || fail "scancel ${cancel_array}_1 failed"
+scontrol release "$cancel_array" || fail "could not release array $cancel_array"
+scontrol release "$cancel_merge" || fail "could not release merge $cancel_merge"
 read -r sweep_array sweep_merge < <("$src/scripts/slurm/submit.sh" sweep grid.sweep.json sweep-out 4)
 read -r render_array render_merge < <("$src/scripts/slurm/submit.sh" render clip.json render-out 4)
 echo "submitted: sweep $sweep_array -> merge $sweep_merge, render $render_array -> merge $render_merge"
@@ -108,19 +118,25 @@ echo "submitted: sweep $sweep_array -> merge $sweep_merge, render $render_array 
 "$epviz" sweep grid.sweep.json --out local.jsonl --quiet >/dev/null
 "$epviz" render clip.json --out local-frames --quiet >/dev/null
 
-deadline=$((SECONDS + 240))
-while squeue -h 2>/dev/null | grep -q .; do
-  [ $SECONDS -lt $deadline ] || fail "jobs still queued or running after 240 s: $(squeue -h)"
-  sleep 1
-done
+wait_for_empty_queue() {
+  local deadline=$((SECONDS + $1))
+  while squeue -h 2>/dev/null | grep -q .; do
+    [ $SECONDS -lt $deadline ] || fail "jobs still queued or running after $1 s: $(squeue -h)"
+    sleep 1
+  done
+}
+# "4:0": a finished job's exit code and signal, as slurmctld keeps it for a while.
+exit_code() { scontrol show job -o "$1" | grep -o 'ExitCode=[0-9]*:[0-9]*' | cut -d= -f2; }
+wait_for_empty_queue 240
 for j in "$sweep_merge" "$render_merge"; do
   state=$(sacct -n -X -j "$j" -o State 2>/dev/null | tr -d ' ' | head -1 || true)
   log=epviz-merge-$j.log
   [ -f "$log" ] || fail "merge job $j left no log (state '$state')"
 done
 
-[ -f sweep-out/grid.jsonl ] || fail "the sweep merge wrote no sweep-out/grid.jsonl"
-/usr/bin/python3 - sweep-out/grid.jsonl local.jsonl <<'PY' || fail "merged sweep rows differ from the single-machine rows"
+# The rows of MERGED equal the single-machine rows (but for CPU time), in point order.
+same_rows() {
+  /usr/bin/python3 - "$1" local.jsonl <<'PY'
 import json, sys
 def rows(path):
     out = {}
@@ -135,6 +151,9 @@ assert merged == local, "rows differ"
 order = [json.loads(l)["index"] for l in open(sys.argv[1])]
 assert order == sorted(order), "merged rows not in point order"
 PY
+}
+[ -f sweep-out/grid.jsonl ] || fail "the sweep merge wrote no sweep-out/grid.jsonl"
+same_rows sweep-out/grid.jsonl || fail "merged sweep rows differ from the single-machine rows"
 [ -f sweep-out/atlas_largest_stable_step_energy_method.png ] || fail "no atlas figure"
 n=0
 for f in local-frames/*.png; do
@@ -144,3 +163,20 @@ done
 [ "$n" = 12 ] || fail "expected 12 frames, found $n"
 grep -q "12 PNG frames complete" "epviz-merge-$render_merge.log" || fail "the render merge did not check the frames"
 echo "PASSED: 4-shard sweep (24 points) and 4-shard render (12 frames) through Slurm equal the single-machine results"
+
+# The cancelled task: its merge ran, failed with 4, named shard 1 alone (no
+# manifest: missing; a task killed while running leaves a dead lock) and
+# showed the line that submits it again.
+log=epviz-merge-$cancel_merge.log
+[ -f "$log" ] || fail "the merge after the cancelled task did not run"
+[ "$(exit_code "$cancel_merge")" = 4:0 ] || fail "the merge after the cancelled task exited $(exit_code "$cancel_merge"), not 4"
+grep -Eq 'shard 1/3: (missing|dead)' "$log" || fail "$log does not name shard 1/3 as missing or dead"
+if grep -Eq 'shard [02]/3:' "$log"; then fail "$log names a shard that completed"; fi
+grep -Eq '^id=\$\(sbatch .*--array=1 ' "$log" || fail "$log does not show the line that submits shard 1 again"
+[ ! -e cancel-out/grid.jsonl ] || fail "the merge wrote rows although shard 1 is missing"
+redo_merge=$(bash cancel-out/resubmit.sh | tail -n 1) || fail "cancel-out/resubmit.sh failed"
+redo_merge=${redo_merge%%;*}
+wait_for_empty_queue 120
+[ "$(exit_code "$redo_merge")" = 0:0 ] || fail "the merge after the resubmitted shard exited $(exit_code "$redo_merge")"
+same_rows cancel-out/grid.jsonl || fail "rows after the resubmitted shard differ from the single-machine rows"
+echo "PASSED: a cancelled task's merge exited 4 naming shard 1/3; its resubmit script completed the same 24 rows"
