@@ -1,0 +1,124 @@
+#include "section/section_job.hpp"
+
+#include <cmath>
+
+#include "io/bad_input.hpp"
+#include "io/json_reader.hpp"
+#include "physics/admissible.hpp"
+
+namespace epviz::section {
+namespace {
+
+std::vector<std::string> names_of_cases() {
+  std::vector<std::string> v;
+  for (const auto& p : physics::case_presets()) v.push_back(p.name);
+  return v;
+}
+
+template <class T, class List, class Name>
+std::vector<std::string> names_of(const List& list, Name name_fn) {
+  std::vector<std::string> v;
+  for (const T& x : list) v.emplace_back(name_fn(x));
+  return v;
+}
+
+physics::Vector3d vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
+
+void read_surface(io::ObjectReader r, sim::SectionSurface& s) {
+  const auto functions = names_of<sim::StateComponent>(
+      sim::all_state_components(), [](sim::StateComponent c) { return sim::name(c); });
+  if (auto f = r.choice("function", functions)) s.function = *sim::state_component_from_name(*f);
+  if (auto v = r.number_in("value", -1e6, 1e6, "-1e6 to 1e6")) s.value = *v;
+  if (auto d = r.choice("direction", {"upward", "downward", "both"}))
+    s.direction = *sim::crossing_direction_from_name(*d);
+  r.finish();
+}
+
+std::vector<physics::InitialState> read_states(const io::ObjectReader& root,
+                                               const std::string& file,
+                                               const nlohmann::json& array) {
+  if (!array.is_array() || array.empty() || array.size() > 100000)
+    root.fail("states", "must be an array of 1 to 100000 objects {\"omega\", \"gamma\"}");
+  std::vector<physics::InitialState> states;
+  for (std::size_t i = 0; i < array.size(); ++i) {
+    std::string key = "states[";
+    key += std::to_string(i);
+    key += "]";
+    if (!array[i].is_object()) root.fail(key, "must be an object {\"omega\", \"gamma\"}");
+    io::ObjectReader r(array[i], file, key);
+    physics::InitialState s;
+    const auto omega = r.vec3("omega");
+    const auto gamma = r.vec3("gamma");
+    if (!omega || !gamma) root.fail(key, "needs both \"omega\" and \"gamma\" (3 numbers each)");
+    r.finish();
+    s.omega = vec(*omega);
+    s.gamma = vec(*gamma);
+    if (std::abs(s.gamma.norm() - 1.0) > 1e-9)
+      root.fail(key, "gamma must be a unit vector to 1e-9");
+    states.push_back(s);
+  }
+  return states;
+}
+
+}  // namespace
+
+SectionJob read_section_job(const std::filesystem::path& file) {
+  SectionJob job;
+  job.file = file.string();
+  const nlohmann::json doc = io::read_json_file(file);
+  io::ObjectReader r(doc, job.file);
+  const auto case_name = r.choice("case", names_of_cases());
+  if (!case_name) r.fail("case", "is required: one of the named cases");
+  job.case_id = *physics::case_from_name(*case_name);
+  job.body = physics::preset(job.case_id).body;
+
+  if (auto level = r.object("level")) {
+    const auto energy = level->number_in("energy", -1e6, 1e6, "-1e6 to 1e6");
+    const auto area = level->number_in("area", -1e6, 1e6, "-1e6 to 1e6");
+    if (!energy || !area) r.fail("level", "needs \"energy\" (C1) and \"area\" (C0)");
+    level->finish();
+    job.level = physics::Level{*energy, *area};
+  }
+  const auto orbits = r.integer("orbits", 1, 100000);
+  if (const auto* states = r.raw("states")) job.states = read_states(r, job.file, *states);
+  if (job.level.has_value() == !job.states.empty())
+    r.fail("level", "give either \"level\" with \"orbits\" or \"states\", not both or neither");
+  if (job.level && !orbits) r.fail("orbits", "is required with \"level\": 1 to 100000");
+  if (!job.level && orbits) r.fail("orbits", "goes with \"level\"; \"states\" count themselves");
+  job.orbits = orbits ? int(*orbits) : int(job.states.size());
+
+  if (auto k = r.integer("crossings", 1, 1000000)) job.crossings = int(*k);
+  if (auto t = r.number_in("t_end", 1e-6, 1e9, "1e-6 to 1e9")) job.t_end = *t;
+  if (auto s = r.object("section")) read_surface(*s, job.surface);
+  const auto methods = names_of<sim::Method>(sim::section_methods(),
+                                             [](sim::Method m) { return sim::name(m); });
+  if (auto m = r.choice("method", methods)) job.method = *sim::method_from_name(*m);
+  if (auto tol = r.number_in("tol", 1e-15, 1e-3, "1e-15 to 1e-3")) job.tol = *tol;
+  if (auto d = r.number_in("max_drift", 1e-14, 1.0, "1e-14 to 1")) job.max_drift = *d;
+  const auto csv = r.string("csv");
+  if (!csv || csv->empty()) r.fail("csv", "is required: the crossings' CSV file");
+  job.csv = *csv;
+  r.finish();
+  return job;
+}
+
+std::vector<physics::InitialState> section_starts(const SectionJob& job) {
+  std::vector<physics::InitialState> starts = job.states;
+  std::string key = "states";
+  if (job.level) {
+    key = "level";
+    starts = physics::level_states(job.body, *job.level, job.orbits).states;
+    if (starts.empty()) {
+      const double least = physics::minimum_energy(job.body, job.level->area).energy;
+      std::string what = "no state of this body lies on it; the least energy at this area is ";
+      what += std::to_string(least);
+      throw io::BadInput(job.file + ": key 'level': " + what);
+    }
+  }
+  for (const auto& s : starts)
+    if (auto broken = physics::broken_condition(job.case_id, job.body, s))
+      throw io::BadInput(job.file + ": key '" + key + "': " + *broken);
+  return starts;
+}
+
+}  // namespace epviz::section

@@ -1,0 +1,171 @@
+#include "sim/section.hpp"
+
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+#include "numerics/embedded_rk.hpp"
+#include "physics/direct.hpp"
+#include "sim/drift.hpp"
+
+namespace epviz::sim {
+namespace {
+
+constexpr std::array<std::pair<StateComponent, std::string_view>, 6> kComponents{{
+    {StateComponent::omega1, "omega1"},
+    {StateComponent::omega2, "omega2"},
+    {StateComponent::omega3, "omega3"},
+    {StateComponent::gamma1, "gamma1"},
+    {StateComponent::gamma2, "gamma2"},
+    {StateComponent::gamma3, "gamma3"},
+}};
+
+constexpr std::array<std::pair<CrossingDirection, std::string_view>, 3> kDirections{{
+    {CrossingDirection::upward, "upward"},
+    {CrossingDirection::downward, "downward"},
+    {CrossingDirection::both, "both"},
+}};
+
+using State = physics::DirectSystem::State;
+
+double level_of(const SectionSurface& s, const State& x) {
+  return x[int(s.function)] - s.value;
+}
+
+bool crosses(CrossingDirection d, double before, double after) {
+  const bool up = before < 0.0 && after >= 0.0;
+  const bool down = before > 0.0 && after <= 0.0;
+  switch (d) {
+    case CrossingDirection::upward: return up;
+    case CrossingDirection::downward: return down;
+    case CrossingDirection::both: return up || down;
+  }
+  return false;
+}
+
+// The root of the section function on [t0, t1] (g0 = g(t0) and g1 = g(t1) of
+// opposite signs, or g1 = 0) along the stepper's dense output: regula falsi
+// with the Illinois modification, which keeps the bracket and converges
+// superlinearly where plain regula falsi stalls on one end.
+template <class Stepper>
+std::pair<double, State> locate(const Stepper& stepper, const SectionSurface& s, double t0,
+                                double g0, double t1, double g1) {
+  State x = stepper.state();
+  double t = t1;
+  if (g1 == 0.0) return {t, x};
+  int kept_side = 0;  // +1: t1 kept twice in a row, -1: t0
+  for (int i = 0; i < 200; ++i) {
+    t = (t0 * g1 - t1 * g0) / (g1 - g0);
+    if (!(t > t0 && t < t1)) t = 0.5 * (t0 + t1);
+    x = stepper.dense(t);
+    const double g = level_of(s, x);
+    if (std::abs(g) <= 0.25 * kSectionResidual || std::nextafter(t0, t1) >= t1) break;
+    if ((g < 0.0) == (g0 < 0.0)) {
+      t0 = t;
+      g0 = g;
+      if (kept_side == 1) g1 *= 0.5;
+      kept_side = 1;
+    } else {
+      t1 = t;
+      g1 = g;
+      if (kept_side == -1) g0 *= 0.5;
+      kept_side = -1;
+    }
+  }
+  return {t, x};
+}
+
+template <class Stepper>
+std::vector<Crossing> run_section(Stepper stepper, const RunSpec& run,
+                                  const SectionSurface& surface, int max_crossings) {
+  const MotionCheck check(run.body, run.initial, run.max_drift);
+  const std::string method(name(run.method));
+  std::vector<Crossing> found;
+  stepper.init(0.0, physics::DirectSystem::pack(run.initial));
+  double g_prev = level_of(surface, stepper.state());
+  while (int(found.size()) < max_crossings && stepper.t() < run.t_end) {
+    const double t0 = stepper.t();
+    stepper.step();
+    const State& x1 = stepper.state();
+    Sample end;
+    end.t = stepper.t();
+    end.omega = x1.head<3>();
+    end.gamma = x1.tail<3>();
+    if (auto failure = check.failure(end, method)) throw numerics::IntegrationError(*failure);
+    const double g1 = level_of(surface, x1);
+    if (crosses(surface.direction, g_prev, g1)) {
+      const auto [t, x] = locate(stepper, surface, t0, g_prev, end.t, g1);
+      if (t <= run.t_end)
+        found.push_back({int(found.size()) + 1, t, x.template head<3>(), x.template tail<3>()});
+    }
+    g_prev = g1;
+  }
+  return found;
+}
+
+}  // namespace
+
+const std::vector<StateComponent>& all_state_components() {
+  static const std::vector<StateComponent> all = [] {
+    std::vector<StateComponent> v;
+    for (const auto& [c, n] : kComponents) v.push_back(c);
+    return v;
+  }();
+  return all;
+}
+
+std::string_view name(StateComponent c) { return kComponents[std::size_t(c)].second; }
+
+std::optional<StateComponent> state_component_from_name(std::string_view s) {
+  for (const auto& [c, n] : kComponents)
+    if (n == s) return c;
+  return std::nullopt;
+}
+
+double value_of(StateComponent c, const physics::Vector3d& omega, const physics::Vector3d& gamma) {
+  const int i = int(c);
+  return i < 3 ? omega[i] : gamma[i - 3];
+}
+
+std::string_view name(CrossingDirection d) { return kDirections[std::size_t(d)].second; }
+
+std::optional<CrossingDirection> crossing_direction_from_name(std::string_view s) {
+  for (const auto& [d, n] : kDirections)
+    if (n == s) return d;
+  return std::nullopt;
+}
+
+const std::vector<Method>& section_methods() {
+  static const std::vector<Method> methods{Method::dopri5, Method::dop853};
+  return methods;
+}
+
+std::vector<Crossing> section_crossings(const RunSpec& run, const SectionSurface& surface,
+                                        int max_crossings) {
+  numerics::AdaptiveOptions opts;
+  opts.rtol = run.tol;
+  opts.atol = run.tol;
+  opts.max_steps = run.max_steps;
+  const physics::DirectSystem sys(run.body);
+  switch (run.method) {
+    case Method::dopri5:
+      return run_section(numerics::Dopri5<physics::DirectSystem>(sys, opts), run, surface,
+                         max_crossings);
+    case Method::dop853:
+      return run_section(numerics::Dop853<physics::DirectSystem>(sys, opts), run, surface,
+                         max_crossings);
+    case Method::rk4:
+    case Method::midpoint:
+    case Method::gauss4:
+    case Method::gauss6:
+    case Method::splitting:
+    case Method::exact_split2:
+    case Method::exact_split4: break;
+  }
+  std::string why = "sections locate crossings on dense output: method must be ";
+  why += names_joined(section_methods());
+  throw std::invalid_argument(why);
+}
+
+}  // namespace epviz::sim
