@@ -4,6 +4,7 @@
 
 #include "io/bad_input.hpp"
 #include "io/json_reader.hpp"
+#include "io/output_paths.hpp"
 #include "physics/admissible.hpp"
 
 namespace epviz::section {
@@ -24,10 +25,36 @@ std::vector<std::string> names_of(const List& list, Name name_fn) {
 
 physics::Vector3d vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
 
+std::vector<std::string> function_names() {
+  return names_of<sim::StateComponent>(sim::all_state_components(),
+                                       [](sim::StateComponent c) { return sim::name(c); });
+}
+
+std::string join(const std::vector<std::string>& names) {
+  std::string s;
+  for (const auto& n : names) {
+    if (!s.empty()) s += ", ";
+    s += n;
+  }
+  return s;
+}
+
+// Where the surface is gamma3 = c the plot shows gamma1 against omega3 (the
+// angle of gamma about the third axis, and the spin about it); for another
+// surface, the first two components other than its own.
+std::array<sim::StateComponent, 2> default_coords(sim::StateComponent surface) {
+  if (surface == sim::StateComponent::gamma3)
+    return {sim::StateComponent::gamma1, sim::StateComponent::omega3};
+  std::array<sim::StateComponent, 2> c{};
+  std::size_t n = 0;
+  for (auto f : sim::all_state_components())
+    if (f != surface && n < 2) c[n++] = f;
+  return c;
+}
+
 void read_surface(io::ObjectReader r, sim::SectionSurface& s) {
-  const auto functions = names_of<sim::StateComponent>(
-      sim::all_state_components(), [](sim::StateComponent c) { return sim::name(c); });
-  if (auto f = r.choice("function", functions)) s.function = *sim::state_component_from_name(*f);
+  if (auto f = r.choice("function", function_names()))
+    s.function = *sim::state_component_from_name(*f);
   if (auto v = r.number_in("value", -1e6, 1e6, "-1e6 to 1e6")) s.value = *v;
   if (auto d = r.choice("direction", {"upward", "downward", "both"}))
     s.direction = *sim::crossing_direction_from_name(*d);
@@ -90,16 +117,40 @@ SectionJob read_section_job(const std::filesystem::path& file) {
   if (auto k = r.integer("crossings", 1, 1000000)) job.crossings = int(*k);
   if (auto t = r.number_in("t_end", 1e-6, 1e9, "1e-6 to 1e9")) job.t_end = *t;
   if (auto s = r.object("section")) read_surface(*s, job.surface);
-  const auto methods = names_of<sim::Method>(sim::section_methods(),
-                                             [](sim::Method m) { return sim::name(m); });
+  const auto methods =
+      names_of<sim::Method>(sim::section_methods(), [](sim::Method m) { return sim::name(m); });
   if (auto m = r.choice("method", methods)) job.method = *sim::method_from_name(*m);
   if (auto tol = r.number_in("tol", 1e-15, 1e-3, "1e-15 to 1e-3")) job.tol = *tol;
   if (auto d = r.number_in("max_drift", 1e-14, 1.0, "1e-14 to 1")) job.max_drift = *d;
+  job.coords = default_coords(job.surface.function);
+  if (const auto* coords = r.raw("coords")) {
+    const std::string allowed = "two of " + join(function_names());
+    if (!coords->is_array() || coords->size() != 2) r.fail("coords", "must be " + allowed);
+    for (std::size_t i = 0; i < 2; ++i) {
+      const auto c = (*coords)[i].is_string()
+                         ? sim::state_component_from_name((*coords)[i].get<std::string>())
+                         : std::nullopt;
+      if (!c) r.fail("coords", "must be " + allowed + ", got " + io::describe(*coords));
+      job.coords[i] = *c;
+    }
+  }
+  for (const char* key : {"png", "svg"})
+    if (auto path = r.string(key)) (key[0] == 'p' ? job.png : job.svg) = *path;
   const auto csv = r.string("csv");
   if (!csv || csv->empty()) r.fail("csv", "is required: the crossings' CSV file");
   job.csv = *csv;
   r.finish();
   return job;
+}
+
+void check_outputs(const SectionJob& job) {
+  for (const auto& [key, path] : {std::pair{"csv", job.csv}, {"png", job.png}, {"svg", job.svg}}) {
+    std::string where = job.file;
+    where += ": key '";
+    where += key;
+    where += "'";
+    io::check_output_file(where, path);
+  }
 }
 
 std::vector<physics::InitialState> section_starts(const SectionJob& job) {

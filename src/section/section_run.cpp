@@ -23,6 +23,10 @@ sim::RunSpec orbit_run(const SectionJob& job, const physics::InitialState& start
 
 }  // namespace
 
+int thread_count(long requested) {
+  return requested > 0 ? int(requested) : int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 std::vector<OrbitResult> run_section(const SectionJob& job,
                                      const std::vector<physics::InitialState>& starts,
                                      int threads) {
@@ -49,6 +53,16 @@ std::vector<OrbitResult> run_section(const SectionJob& job,
   work();
   for (auto& t : pool) t.join();
   return results;
+}
+
+std::string summary(const std::vector<OrbitResult>& results) {
+  long crossings = 0;
+  for (const auto& r : results) crossings += long(r.crossings.size());
+  std::string s = std::to_string(results.size());
+  s += " orbits, ";
+  s += std::to_string(crossings);
+  s += " crossings";
+  return s;
 }
 
 std::string lost_orbits_line(const std::vector<OrbitResult>& results) {

@@ -17,15 +17,20 @@ struct OrbitResult {
   std::optional<numerics::Failure> failure;  // a lost orbit: its crossings are not results
 };
 
+// `requested` threads, or all cores for 0.
+int thread_count(long requested);
+
 // One result per start, in their order, computed by `threads` threads (at
 // least 1); an orbit's numerical failure ends that orbit only.
 std::vector<OrbitResult> run_section(const SectionJob& job,
-                                     const std::vector<physics::InitialState>& starts,
-                                     int threads);
+                                     const std::vector<physics::InitialState>& starts, int threads);
 
 // The failed orbits, one line: how many, and the first one's orbit number,
 // start and failure ("orbit 3 (omega ..., gamma ...): dop853 failed at t = ...:
 // ...; tighten ..."). Empty when every orbit kept the motion.
 std::string lost_orbits_line(const std::vector<OrbitResult>& results);
+
+// "16 orbits, 6400 crossings".
+std::string summary(const std::vector<OrbitResult>& results);
 
 }  // namespace epviz::section

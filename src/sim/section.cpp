@@ -29,9 +29,7 @@ constexpr std::array<std::pair<CrossingDirection, std::string_view>, 3> kDirecti
 
 using State = physics::DirectSystem::State;
 
-double level_of(const SectionSurface& s, const State& x) {
-  return x[int(s.function)] - s.value;
-}
+double level_of(const SectionSurface& s, const State& x) { return x[int(s.function)] - s.value; }
 
 bool crosses(CrossingDirection d, double before, double after) {
   const bool up = before < 0.0 && after >= 0.0;

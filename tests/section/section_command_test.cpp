@@ -24,8 +24,10 @@ CliResult run_section_file(const TempDir& d, const std::string& text) {
 TEST(SectionCommand, WritesOneRowPerCrossingWithTheStateAndItsIntegrals) {
   TempDir d;
   const std::string csv = (d / "k.csv").string();
-  const auto r = run_section_file(d, R"({"case": "kovalevskaya", "level": {"energy": 2, "area": 0.5},
-      "orbits": 3, "crossings": 4, "csv": ")" + csv + "\"}");
+  const auto r =
+      run_section_file(d, R"({"case": "kovalevskaya", "level": {"energy": 2, "area": 0.5},
+      "orbits": 3, "crossings": 4, "csv": ")" +
+                              csv + "\"}");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::istringstream in(slurp(csv));
   std::string line;
@@ -35,8 +37,8 @@ TEST(SectionCommand, WritesOneRowPerCrossingWithTheStateAndItsIntegrals) {
             "gamma_norm_error,extra_integral");
   std::vector<std::string> keys;
   while (std::getline(in, line)) keys.push_back(line.substr(0, line.find(',', 2)));
-  EXPECT_EQ(keys, (std::vector<std::string>{"1,1", "1,2", "1,3", "1,4", "2,1", "2,2", "2,3",
-                                            "2,4", "3,1", "3,2", "3,3", "3,4"}));
+  EXPECT_EQ(keys, (std::vector<std::string>{"1,1", "1,2", "1,3", "1,4", "2,1", "2,2", "2,3", "2,4",
+                                            "3,1", "3,2", "3,3", "3,4"}));
 }
 
 struct BadFile {
@@ -50,22 +52,26 @@ TEST(SectionCommand, BadFilesAreRefusedBeforeAnyWork) {
        "colour"},
       {"no case", R"({"level": {"energy": 2, "area": 1}, "orbits": 2, "csv": "x.csv"})", "case"},
       {"unknown case", R"({"case": "top", "level": {"energy": 2, "area": 1}, "orbits": 2,
-         "csv": "x.csv"})", "kovalevskaya"},
+         "csv": "x.csv"})",
+       "kovalevskaya"},
       {"level and states", R"({"case": "generic", "level": {"energy": 2, "area": 1},
          "orbits": 2, "states": [{"omega": [1, 0, 0], "gamma": [0, 0, 1]}], "csv": "x.csv"})",
        "'level'"},
       {"no orbits", R"({"case": "generic", "level": {"energy": 2, "area": 1}, "csv": "x.csv"})",
        "'orbits'"},
       {"method without dense output", R"({"case": "generic", "level": {"energy": 2, "area": 1},
-         "orbits": 2, "method": "rk4", "csv": "x.csv"})", "dop853"},
+         "orbits": 2, "method": "rk4", "csv": "x.csv"})",
+       "dop853"},
       {"unknown surface", R"({"case": "generic", "level": {"energy": 2, "area": 1}, "orbits": 2,
-         "section": {"function": "a"}, "csv": "x.csv"})", "gamma3"},
+         "section": {"function": "a"}, "csv": "x.csv"})",
+       "gamma3"},
       {"gamma not unit", R"({"case": "generic", "states": [{"omega": [1, 0, 0],
-         "gamma": [0, 0, 2]}], "csv": "x.csv"})", "states[0]"},
+         "gamma": [0, 0, 2]}], "csv": "x.csv"})",
+       "states[0]"},
       {"below the level", R"({"case": "generic", "level": {"energy": -5, "area": 1},
-         "orbits": 2, "csv": "x.csv"})", "least energy"},
-      {"no csv", R"({"case": "generic", "level": {"energy": 2, "area": 1}, "orbits": 2})",
-       "'csv'"},
+         "orbits": 2, "csv": "x.csv"})",
+       "least energy"},
+      {"no csv", R"({"case": "generic", "level": {"energy": 2, "area": 1}, "orbits": 2})", "'csv'"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.name);
@@ -79,7 +85,8 @@ TEST(SectionCommand, ALostOrbitIsANumericalFailureAndNothingIsWritten) {
   const std::string csv = (d / "g.csv").string();
   // A loose tolerance cannot keep the energy to 1e-13 for 200 crossings.
   const auto r = run_section_file(d, R"({"case": "generic", "level": {"energy": 2, "area": 1},
-      "orbits": 2, "crossings": 200, "tol": 1e-5, "max_drift": 1e-13, "csv": ")" + csv + "\"}");
+      "orbits": 2, "crossings": 200, "tol": 1e-5, "max_drift": 1e-13, "csv": ")" +
+                                         csv + "\"}");
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_NE(r.err.find("orbits lost"), std::string::npos) << r.err;
   EXPECT_EQ(line_count(r.err), 1u) << r.err;
