@@ -41,6 +41,25 @@ TEST(SectionCommand, WritesOneRowPerCrossingWithTheStateAndItsIntegrals) {
                                             "3,1", "3,2", "3,3", "3,4"}));
 }
 
+// The shipped section files run as they are, and draw their crossings.
+TEST(SectionCommand, ShippedSectionFilesRunAndDrawTheirCrossings) {
+  for (const std::string name : {"kovalevskaya", "generic"}) {
+    SCOPED_TRACE(name);
+    TempDir d;
+    const fs::path shipped =
+        fs::path(EPVIZ_SOURCE_DIR) / "render_jobs" / (name + ".section.json");
+    auto job = nlohmann::json::parse(slurp(shipped));
+    for (const char* key : {"csv", "png", "svg"})
+      job[key] = (d / fs::path(job[key].get<std::string>()).filename()).string();
+    job["crossings"] = 20;  // the picture, not the full run
+    const auto r = run_section_file(d, job.dump());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(line_count(slurp(job["csv"].get<std::string>())), 1u + 16u * 20u);
+    EXPECT_EQ(slurp(job["png"].get<std::string>()).substr(1, 3), "PNG");
+    EXPECT_NE(slurp(job["svg"].get<std::string>()).find("<svg"), std::string::npos);
+  }
+}
+
 struct BadFile {
   std::string name, text, must_name;
 };
