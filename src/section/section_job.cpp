@@ -10,6 +10,8 @@
 namespace epviz::section {
 namespace {
 
+constexpr double kMaxCrossings = 1e7;
+
 std::vector<std::string> names_of_cases() {
   std::vector<std::string> v;
   for (const auto& p : physics::case_presets()) v.push_back(p.name);
@@ -115,6 +117,10 @@ SectionJob read_section_job(const std::filesystem::path& file) {
   job.orbits = orbits ? int(*orbits) : int(job.states.size());
 
   if (auto k = r.integer("crossings", 1, 1000000)) job.crossings = int(*k);
+  // The crossings are kept until the CSV is written: about 300 bytes each.
+  if (double(job.orbits) * job.crossings > kMaxCrossings)
+    r.fail("crossings", "orbits x crossings must be at most 1e7, got " +
+                            std::to_string(job.orbits) + " x " + std::to_string(job.crossings));
   if (auto t = r.number_in("t_end", 1e-6, 1e9, "1e-6 to 1e9")) job.t_end = *t;
   if (auto s = r.object("section")) read_surface(*s, job.surface);
   const auto methods =

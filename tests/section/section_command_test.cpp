@@ -46,8 +46,7 @@ TEST(SectionCommand, ShippedSectionFilesRunAndDrawTheirCrossings) {
   for (const std::string name : {"kovalevskaya", "generic"}) {
     SCOPED_TRACE(name);
     TempDir d;
-    const fs::path shipped =
-        fs::path(EPVIZ_SOURCE_DIR) / "render_jobs" / (name + ".section.json");
+    const fs::path shipped = fs::path(EPVIZ_SOURCE_DIR) / "render_jobs" / (name + ".section.json");
     auto job = nlohmann::json::parse(slurp(shipped));
     for (const char* key : {"csv", "png", "svg"})
       job[key] = (d / fs::path(job[key].get<std::string>()).filename()).string();
@@ -90,6 +89,9 @@ TEST(SectionCommand, BadFilesAreRefusedBeforeAnyWork) {
       {"below the level", R"({"case": "generic", "level": {"energy": -5, "area": 1},
          "orbits": 2, "csv": "x.csv"})",
        "least energy"},
+      {"too many crossings", R"({"case": "generic", "level": {"energy": 2, "area": 1},
+         "orbits": 100000, "crossings": 1000, "csv": "x.csv"})",
+       "'crossings'"},
       {"no csv", R"({"case": "generic", "level": {"energy": 2, "area": 1}, "orbits": 2})", "'csv'"},
   };
   for (const auto& c : cases) {
