@@ -82,6 +82,8 @@ std::vector<physics::InitialState> read_states(const io::ObjectReader& root,
     r.finish();
     s.omega = vec(*omega);
     s.gamma = vec(*gamma);
+    if (!(s.omega.cwiseAbs().maxCoeff() <= 1e6))
+      root.fail(key, "omega's components must be at most 1e6 in magnitude");
     if (std::abs(s.gamma.norm() - 1.0) > 1e-9)
       root.fail(key, "gamma must be a unit vector to 1e-9");
     states.push_back(s);
