@@ -49,10 +49,11 @@ const std::vector<Method>& section_methods();
 
 // Integrates run.initial with run.method (one of section_methods(), in the
 // direct formulation) at run.tol until `max_crossings` crossings of `surface`
-// are found or t reaches run.t_end, and returns them in order. Each step end
-// passes sim::MotionCheck with run.max_drift. Throws numerics::IntegrationError
-// for an orbit that is lost (a failed step, a non-finite state, drift past the
-// limit) and std::invalid_argument for a method sections do not use.
+// are found or t reaches run.t_end, and returns them in order. Every crossing
+// and the last step's end pass sim::MotionCheck with run.max_drift. Throws
+// numerics::IntegrationError for an orbit that is lost (a failed step, a
+// non-finite state, drift past the limit) and std::invalid_argument for a
+// method sections do not use.
 std::vector<Crossing> section_crossings(const RunSpec& run, const SectionSurface& surface,
                                         int max_crossings);
 
