@@ -11,6 +11,7 @@ namespace epviz::section {
 namespace {
 
 constexpr double kMaxCrossings = 1e7;
+constexpr double kMaxFixedSteps = 1e8;
 
 std::vector<std::string> names_of_cases() {
   std::vector<std::string> v;
@@ -126,9 +127,12 @@ SectionJob read_section_job(const std::filesystem::path& file) {
   if (auto t = r.number_in("t_end", 1e-6, 1e9, "1e-6 to 1e9")) job.t_end = *t;
   if (auto s = r.object("section")) read_surface(*s, job.surface);
   const auto methods =
-      names_of<sim::Method>(sim::section_methods(), [](sim::Method m) { return sim::name(m); });
+      names_of<sim::Method>(sim::all_methods(), [](sim::Method m) { return sim::name(m); });
   if (auto m = r.choice("method", methods)) job.method = *sim::method_from_name(*m);
   if (auto tol = r.number_in("tol", 1e-15, 1e-3, "1e-15 to 1e-3")) job.tol = *tol;
+  if (auto h = r.number_in("step", 1e-6, 1.0, "1e-6 to 1")) job.step = *h;
+  if (!sim::is_adaptive(job.method) && job.t_end / job.step > kMaxFixedSteps)
+    r.fail("step", "t_end / step must be at most 1e8 steps for a fixed-step method");
   if (auto d = r.number_in("max_drift", 1e-14, 1.0, "1e-14 to 1")) job.max_drift = *d;
   job.coords = default_coords(job.surface.function);
   if (const auto* coords = r.raw("coords")) {

@@ -28,7 +28,8 @@ struct SectionJob {
   double t_end = 1e4;                         // per orbit, at most
   sim::SectionSurface surface;
   sim::Method method = sim::Method::dop853;
-  double tol = 1e-10;
+  double tol = 1e-10;       // adaptive methods
+  double step = 0.01;       // fixed-step methods
   double max_drift = 1e-6;  // relative drift of C1 or |gamma|^2 that loses an orbit
   // The plot's axes: two state components (default gamma1, omega3 for a
   // gamma3 section, else the first two components the surface leaves free).

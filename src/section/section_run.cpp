@@ -16,6 +16,7 @@ sim::RunSpec orbit_run(const SectionJob& job, const physics::InitialState& start
   run.initial = start;
   run.method = job.method;
   run.tol = job.tol;
+  run.step = job.step;
   run.t_end = job.t_end;
   run.max_drift = job.max_drift;
   return run;

@@ -5,8 +5,13 @@
 #include <stdexcept>
 #include <utility>
 
+#include "numerics/composition.hpp"
 #include "numerics/embedded_rk.hpp"
+#include "numerics/gauss_legendre.hpp"
+#include "numerics/rk4.hpp"
+#include "numerics/splitting.hpp"
 #include "physics/direct.hpp"
+#include "physics/free_rigid_body_flow.hpp"
 #include "sim/drift.hpp"
 
 namespace epviz::sim {
@@ -41,6 +46,52 @@ bool crosses(CrossingDirection d, double before, double after) {
   }
   return false;
 }
+
+// A fixed-step method as section_crossings drives a stepper: steps of exactly
+// `h`, and between two step ends the cubic Hermite interpolant of the states
+// and their derivatives (error O(h^4) per step, as for the trajectories of
+// sim/trajectory_steppers.hpp). The derivatives are those of the direct
+// equations, evaluated only for steps that hold a crossing.
+template <class Stepper>
+class FixedSteps {
+ public:
+  FixedSteps(Stepper stepper, double h, const physics::Body& body)
+      : stepper_(std::move(stepper)), equations_(body), h_(h) {}
+  void init(double t0, const State& x) {
+    n_ = 0;
+    t0_ = t0;
+    x1_ = x;
+  }
+  void step() {
+    x0_ = x1_;
+    stepper_.step(x1_, t(), h_);
+    ++n_;
+    have_derivatives_ = false;
+  }
+  double t() const { return t0_ + double(n_) * h_; }
+  const State& state() const { return x1_; }
+  State dense(double t_at) const {
+    if (!have_derivatives_) {
+      equations_.rhs(t() - h_, x0_, d0_);
+      equations_.rhs(t(), x1_, d1_);
+      have_derivatives_ = true;
+    }
+    const double s = (t_at - (t() - h_)) / h_, r = 1.0 - s;
+    const double h00 = (1.0 + 2.0 * s) * r * r, h10 = s * r * r;
+    const double h01 = s * s * (3.0 - 2.0 * s), h11 = -s * s * r;
+    return State(h00 * x0_ + (h10 * h_) * d0_ + h01 * x1_ + (h11 * h_) * d1_);
+  }
+
+ private:
+  Stepper stepper_;
+  physics::DirectSystem equations_;
+  double h_;
+  double t0_ = 0.0;
+  long n_ = 0;
+  State x0_, x1_;
+  mutable State d0_, d1_;
+  mutable bool have_derivatives_ = false;
+};
 
 // The root of the section function on [t0, t1] (g0 = g(t0) and g1 = g(t1) of
 // opposite signs, or g1 = 0) along the stepper's dense output: regula falsi
@@ -140,36 +191,37 @@ std::optional<CrossingDirection> crossing_direction_from_name(std::string_view s
   return std::nullopt;
 }
 
-const std::vector<Method>& section_methods() {
-  static const std::vector<Method> methods{Method::dopri5, Method::dop853};
-  return methods;
-}
-
 std::vector<Crossing> section_crossings(const RunSpec& run, const SectionSurface& surface,
                                         int max_crossings) {
+  using physics::DirectSystem;
+  using physics::ExactSplitSystem;
   numerics::AdaptiveOptions opts;
   opts.rtol = run.tol;
   opts.atol = run.tol;
   opts.max_steps = run.max_steps;
-  const physics::DirectSystem sys(run.body);
+  const DirectSystem sys(run.body);
+  auto fixed = [&](auto stepper) {
+    return run_section(FixedSteps<decltype(stepper)>(std::move(stepper), run.step, run.body), run,
+                       surface, max_crossings);
+  };
   switch (run.method) {
     case Method::dopri5:
-      return run_section(numerics::Dopri5<physics::DirectSystem>(sys, opts), run, surface,
-                         max_crossings);
+      return run_section(numerics::Dopri5<DirectSystem>(sys, opts), run, surface, max_crossings);
     case Method::dop853:
-      return run_section(numerics::Dop853<physics::DirectSystem>(sys, opts), run, surface,
-                         max_crossings);
-    case Method::rk4:
-    case Method::midpoint:
-    case Method::gauss4:
-    case Method::gauss6:
-    case Method::splitting:
+      return run_section(numerics::Dop853<DirectSystem>(sys, opts), run, surface, max_crossings);
+    case Method::rk4: return fixed(numerics::Rk4<DirectSystem>(sys));
+    case Method::midpoint: return fixed(numerics::ImplicitMidpoint<DirectSystem>(sys));
+    case Method::gauss4: return fixed(numerics::Gauss4<DirectSystem>(sys));
+    case Method::gauss6: return fixed(numerics::Gauss6<DirectSystem>(sys));
+    case Method::splitting: return fixed(numerics::StrangSplitting<DirectSystem>(sys));
     case Method::exact_split2:
-    case Method::exact_split4: break;
+      return fixed(
+          numerics::Composition2<ExactSplitSystem>(ExactSplitSystem(run.body), "exact-split2"));
+    case Method::exact_split4:
+      return fixed(
+          numerics::Composition4<ExactSplitSystem>(ExactSplitSystem(run.body), "exact-split4"));
   }
-  std::string why = "sections locate crossings on dense output: method must be ";
-  why += names_joined(section_methods());
-  throw std::invalid_argument(why);
+  throw std::invalid_argument("unknown method");
 }
 
 }  // namespace epviz::sim

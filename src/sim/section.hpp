@@ -44,16 +44,14 @@ struct Crossing {
   physics::Vector3d gamma = physics::Vector3d::UnitZ();
 };
 
-// The methods whose dense output sections use (adaptive, direct formulation).
-const std::vector<Method>& section_methods();
-
-// Integrates run.initial with run.method (one of section_methods(), in the
-// direct formulation) at run.tol until `max_crossings` crossings of `surface`
-// are found or t reaches run.t_end, and returns them in order. Every crossing
-// and the last step's end pass sim::MotionCheck with run.max_drift. Throws
-// numerics::IntegrationError for an orbit that is lost (a failed step, a
-// non-finite state, drift past the limit) and std::invalid_argument for a
-// method sections do not use.
+// Integrates run.initial in the direct formulation with run.method until
+// `max_crossings` crossings of `surface` are found or t reaches run.t_end,
+// and returns them in order. Adaptive methods run at run.tol and locate each
+// crossing on their dense output; fixed-step methods take steps of run.step
+// and locate it on the cubic Hermite interpolant between two step ends.
+// Every crossing and the last step's end pass sim::MotionCheck with
+// run.max_drift. Throws numerics::IntegrationError for an orbit that is lost
+// (a failed step, a non-finite state, drift past the limit).
 std::vector<Crossing> section_crossings(const RunSpec& run, const SectionSurface& surface,
                                         int max_crossings);
 
