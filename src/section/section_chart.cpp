@@ -30,8 +30,8 @@ std::string title(const SectionJob& job) {
   }
   t += " (";
   t += sim::name(job.method);
-  t += ", tol ";
-  t += short_number(job.tol);
+  t += sim::is_adaptive(job.method) ? ", tol " : ", step ";
+  t += short_number(sim::is_adaptive(job.method) ? job.tol : job.step);
   t += ")";
   return t;
 }

@@ -32,5 +32,16 @@ TEST(SectionChart, EachCrossingIsOnePointColouredByItsOrbit) {
   }
 }
 
+TEST(SectionChart, TheTitleNamesTheSettingTheMethodUses) {
+  SectionJob job;
+  job.case_id = physics::Case::lagrange;
+  job.tol = 1e-11;
+  job.step = 0.125;
+  job.method = sim::Method::dopri5;
+  EXPECT_NE(section_chart(job, {}).title.find("dopri5, tol 1e-11"), std::string::npos);
+  job.method = sim::Method::gauss4;
+  EXPECT_NE(section_chart(job, {}).title.find("gauss4, step 0.125"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace epviz::section
