@@ -61,7 +61,7 @@ int run_section(const SectionOptions& o) {
   section::write_crossings_csv(job, results);
   draw(job, section::section_chart(job, results), o.gl);
   std::fprintf(job.csv == "-" ? stderr : stdout, "%s: %s in %.2f s (%d threads)\n", o.file.c_str(),
-               section::summary(results).c_str(), seconds, threads);
+               section::summary(job, results).c_str(), seconds, threads);
   return 0;
 }
 

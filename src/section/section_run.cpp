@@ -56,11 +56,19 @@ std::vector<OrbitResult> run_section(const SectionJob& job,
   return results;
 }
 
-std::string summary(const std::vector<OrbitResult>& results) {
+std::string summary(const SectionJob& job, const std::vector<OrbitResult>& results) {
   long crossings = 0;
   for (const auto& r : results) crossings += long(r.crossings.size());
   std::string s = std::to_string(results.size());
-  s += " orbits, ";
+  s += " orbits";
+  if (job.level && std::size_t(job.orbits) > results.size()) {
+    s += " (";
+    s += std::to_string(std::size_t(job.orbits) - results.size());
+    s += " of ";
+    s += std::to_string(job.orbits);
+    s += " directions of gamma lie below the level)";
+  }
+  s += ", ";
   s += std::to_string(crossings);
   s += " crossings";
   return s;

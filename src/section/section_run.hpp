@@ -30,7 +30,8 @@ std::vector<OrbitResult> run_section(const SectionJob& job,
 // ...; tighten ..."). Empty when every orbit kept the motion.
 std::string lost_orbits_line(const std::vector<OrbitResult>& results);
 
-// "16 orbits, 6400 crossings".
-std::string summary(const std::vector<OrbitResult>& results);
+// "16 orbits, 6400 crossings", and for a level with fewer states than asked
+// "13 orbits (3 of 16 directions of gamma lie below the level), ...".
+std::string summary(const SectionJob& job, const std::vector<OrbitResult>& results);
 
 }  // namespace epviz::section

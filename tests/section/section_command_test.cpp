@@ -59,6 +59,26 @@ TEST(SectionCommand, ShippedSectionFilesRunAndDrawTheirCrossings) {
   }
 }
 
+// Directions of gamma the level cannot reach carry no orbit, and the summary
+// says how many: at C1 = 0.5, C0 = 0.5 the Kovalevskaya body's potential
+// gamma1 leaves out the directions near gamma1 = 1 (C1 - V < T_min there).
+TEST(SectionCommand, SaysHowManyDirectionsLieBelowTheLevel) {
+  TempDir d;
+  const std::string csv = (d / "k.csv").string();
+  const auto r = run_section_file(d, R"({"case": "kovalevskaya", "level": {"energy": 0.5,
+      "area": 0.5}, "orbits": 40, "crossings": 2, "csv": ")" +
+                                         csv + "\"}");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto kept =
+      physics::level_states(physics::preset(physics::Case::kovalevskaya).body, {0.5, 0.5}, 40);
+  ASSERT_FALSE(kept.rejected.empty());
+  std::string expected = std::to_string(kept.states.size());
+  expected += " orbits (";
+  expected += std::to_string(kept.rejected.size());
+  expected += " of 40 directions of gamma lie below the level)";
+  EXPECT_NE(r.out.find(expected), std::string::npos) << r.out;
+}
+
 struct BadFile {
   std::string name, text, must_name;
 };
