@@ -103,7 +103,7 @@ std::pair<double, State> locate(const Stepper& stepper, const SectionSurface& s,
   State x = stepper.state();
   double t = t1;
   if (g1 == 0.0) return {t, x};
-  int kept_side = 0;  // +1: t1 kept twice in a row, -1: t0
+  int kept_side = 0;  // which end the last iteration kept: +1 t1, -1 t0
   for (int i = 0; i < 200; ++i) {
     t = (t0 * g1 - t1 * g0) / (g1 - g0);
     if (!(t > t0 && t < t1)) t = 0.5 * (t0 + t1);
