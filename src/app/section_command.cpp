@@ -73,7 +73,7 @@ std::function<int()> add_section_command(CLI::App& app) {
       "section", "Poincare section (SECTION.json): crossings of a surface by orbits on a level");
   cmd->add_option("section", o->file, "section file (JSON; docs/sections.md)")->required();
   cmd->add_option("-j,--jobs", o->jobs, "threads (default: all cores)");
-  add_gl_option(*cmd, o->gl, "offscreen GL backend for the PNG");
+  add_gl_option(*cmd, o->gl, "for the PNG");
   return [o] { return run_section(*o); };
 }
 
