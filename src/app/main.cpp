@@ -9,6 +9,7 @@
 #include "app/cases_command.hpp"
 #include "app/cli_values.hpp"
 #include "app/merge_command.hpp"
+#include "app/section_command.hpp"
 #include "app/simulate_command.hpp"
 #include "app/sweep_command.hpp"
 #ifdef EPVIZ_HAVE_RENDER
@@ -47,6 +48,7 @@ int main(int argc, char** argv) {
   commands["bench"] = epviz::app::add_bench_command(app);
   commands["sweep"] = epviz::app::add_sweep_command(app);
   commands["merge"] = epviz::app::add_merge_command(app);
+  commands["section"] = epviz::app::add_section_command(app);
 #ifdef EPVIZ_HAVE_RENDER
   commands["render"] = epviz::app::add_render_command(app);
   commands["check"] = epviz::app::add_check_command(app);

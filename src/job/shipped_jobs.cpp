@@ -1,6 +1,7 @@
 #include "job/shipped_jobs.hpp"
 
 #include <algorithm>
+#include <string_view>
 
 #include "io/bad_input.hpp"
 #include "io/data_dir.hpp"
@@ -12,12 +13,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string sweep_suffix = ".sweep.json";
-
-bool is_sweep(const fs::path& file) {
+// Files beside the render jobs that other commands read: sweeps (epviz sweep)
+// and Poincaré sections (epviz section).
+bool is_other_command_file(const fs::path& file) {
   const auto name = file.filename().string();
-  return name.size() > sweep_suffix.size() &&
-         name.compare(name.size() - sweep_suffix.size(), sweep_suffix.size(), sweep_suffix) == 0;
+  for (const std::string_view suffix : {".sweep.json", ".section.json"})
+    if (name.size() > suffix.size() && name.ends_with(suffix)) return true;
+  return false;
 }
 
 std::string about(const LoadedJob& loaded) {
@@ -42,7 +44,8 @@ std::vector<ShippedJob> shipped_jobs(const fs::path& dir) {
   std::error_code error;
   for (const auto& e : fs::directory_iterator(dir, error)) {
     const auto& file = e.path();
-    if (!e.is_regular_file() || file.extension() != ".json" || is_sweep(file)) continue;
+    if (!e.is_regular_file() || file.extension() != ".json" || is_other_command_file(file))
+      continue;
     jobs.push_back({file.stem().string(), file, about(load_job_file(file))});
   }
   std::sort(jobs.begin(), jobs.end(),
@@ -70,7 +73,7 @@ fs::path job_file_named(const std::string& arg, const fs::path& dir) {
       fs::path(arg).extension() == ".json" ? fs::path(arg).stem().string() : arg;
   if (!dir.empty()) {
     const auto file = dir / (name + ".json");
-    if (!is_sweep(file) && fs::is_regular_file(file, error)) return file;
+    if (!is_other_command_file(file) && fs::is_regular_file(file, error)) return file;
   }
   throw io::BadInput(arg +
                      ": no such job file, nor a shipped job of that name (epviz render "

@@ -129,9 +129,9 @@ try:
     env = {k: v for k, v in os.environ.items() if not k.startswith("EPVIZ_")}
     env["EPVIZ_IGNORE_SOURCE_TREE"] = "1"
 
-    # The shipped jobs, installed and listed; sweeps are `epviz sweep`'s.
+    # The shipped jobs, installed and listed; sweeps and sections are other commands'.
     shipped = sorted(os.path.basename(p)[:-5] for p in glob.glob(os.path.join(source, "render_jobs", "*.json"))
-                     if not p.endswith(".sweep.json"))
+                     if not p.endswith((".sweep.json", ".section.json")))
     listed_text = must([epviz, "render", "--list-jobs"], env=env, cwd=work)
     if os.path.join(data, "render_jobs") not in listed_text:
         problems.append("--list-jobs does not name the installed share/epviz/render_jobs")

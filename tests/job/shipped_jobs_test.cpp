@@ -23,6 +23,7 @@ class ShippedJobs : public ::testing::Test {
     write("tiles.json", R"({"jobs": ["single.json"]})");
     write("figures.json", R"({"bench": {"quick": true}})");
     write("atlas.sweep.json", "not read: a sweep is epviz sweep's");
+    write("top.section.json", "not read: a section is epviz section's");
     write("notes.txt", "not a job");
   }
   void write(const std::string& name, const std::string& text) {
@@ -59,7 +60,8 @@ TEST_F(ShippedJobs, EveryJobTheSourcesShipIsListed) {
   std::vector<std::string> expected;
   for (const auto& e : fs::directory_iterator(dir)) {
     const auto name = e.path().filename().string();
-    if (e.path().extension() == ".json" && name.find(".sweep.") == std::string::npos)
+    if (e.path().extension() == ".json" && name.find(".sweep.") == std::string::npos &&
+        name.find(".section.") == std::string::npos)
       expected.push_back(e.path().stem().string());
   }
   std::sort(expected.begin(), expected.end());
@@ -72,7 +74,7 @@ TEST_F(ShippedJobs, ABareNameIsTheShippedJobOfThatName) {
   EXPECT_EQ(job_file_named("tiles.json", dir_.path()), dir_ / "tiles.json");
   // A path stays a path, found or not (reading it names it when it is missing).
   EXPECT_EQ(job_file_named("jobs/none.json", dir_.path()), fs::path("jobs/none.json"));
-  for (const std::string name : {"atlas.sweep", "notes", "none"}) {
+  for (const std::string name : {"atlas.sweep", "top.section", "notes", "none"}) {
     try {
       job_file_named(name, dir_.path());
       ADD_FAILURE() << name << ": accepted";

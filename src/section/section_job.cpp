@@ -1,0 +1,187 @@
+#include "section/section_job.hpp"
+
+#include <cmath>
+
+#include "io/bad_input.hpp"
+#include "io/json_reader.hpp"
+#include "io/output_paths.hpp"
+#include "physics/admissible.hpp"
+
+namespace epviz::section {
+namespace {
+
+constexpr double kMaxCrossings = 1e7;
+constexpr double kMaxFixedSteps = 1e8;
+
+std::vector<std::string> names_of_cases() {
+  std::vector<std::string> v;
+  for (const auto& p : physics::case_presets()) v.push_back(p.name);
+  return v;
+}
+
+template <class T, class List, class Name>
+std::vector<std::string> names_of(const List& list, Name name_fn) {
+  std::vector<std::string> v;
+  for (const T& x : list) v.emplace_back(name_fn(x));
+  return v;
+}
+
+physics::Vector3d vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
+
+std::vector<std::string> function_names() {
+  return names_of<sim::StateComponent>(sim::all_state_components(),
+                                       [](sim::StateComponent c) { return sim::name(c); });
+}
+
+std::string join(const std::vector<std::string>& names) {
+  std::string s;
+  for (const auto& n : names) {
+    if (!s.empty()) s += ", ";
+    s += n;
+  }
+  return s;
+}
+
+// Where the surface is gamma3 = c the plot shows gamma1 against omega3 (the
+// angle of gamma about the third axis, and the spin about it); for another
+// surface, the first two components other than its own.
+std::array<sim::StateComponent, 2> default_coords(sim::StateComponent surface) {
+  if (surface == sim::StateComponent::gamma3)
+    return {sim::StateComponent::gamma1, sim::StateComponent::omega3};
+  std::array<sim::StateComponent, 2> c{};
+  std::size_t n = 0;
+  for (auto f : sim::all_state_components())
+    if (f != surface && n < 2) c[n++] = f;
+  return c;
+}
+
+void read_surface(io::ObjectReader r, sim::SectionSurface& s) {
+  if (auto f = r.choice("function", function_names()))
+    s.function = *sim::state_component_from_name(*f);
+  if (auto v = r.number_in("value", -1e6, 1e6, "-1e6 to 1e6")) s.value = *v;
+  if (auto d = r.choice("direction", {"upward", "downward", "both"}))
+    s.direction = *sim::crossing_direction_from_name(*d);
+  r.finish();
+}
+
+std::vector<physics::InitialState> read_states(const io::ObjectReader& root,
+                                               const std::string& file,
+                                               const nlohmann::json& array) {
+  if (!array.is_array() || array.empty() || array.size() > 100000)
+    root.fail("states", "must be an array of 1 to 100000 objects {\"omega\", \"gamma\"}");
+  std::vector<physics::InitialState> states;
+  for (std::size_t i = 0; i < array.size(); ++i) {
+    std::string key = "states[";
+    key += std::to_string(i);
+    key += "]";
+    if (!array[i].is_object()) root.fail(key, "must be an object {\"omega\", \"gamma\"}");
+    io::ObjectReader r(array[i], file, key);
+    physics::InitialState s;
+    const auto omega = r.vec3("omega");
+    const auto gamma = r.vec3("gamma");
+    if (!omega || !gamma) root.fail(key, "needs both \"omega\" and \"gamma\" (3 numbers each)");
+    r.finish();
+    s.omega = vec(*omega);
+    s.gamma = vec(*gamma);
+    if (!(s.omega.cwiseAbs().maxCoeff() <= 1e6))
+      root.fail(key, "omega's components must be at most 1e6 in magnitude");
+    if (std::abs(s.gamma.norm() - 1.0) > 1e-9)
+      root.fail(key, "gamma must be a unit vector to 1e-9");
+    states.push_back(s);
+  }
+  return states;
+}
+
+}  // namespace
+
+SectionJob read_section_job(const std::filesystem::path& file) {
+  SectionJob job;
+  job.file = file.string();
+  const nlohmann::json doc = io::read_json_file(file);
+  io::ObjectReader r(doc, job.file);
+  const auto case_name = r.choice("case", names_of_cases());
+  if (!case_name) r.fail("case", "is required: one of the named cases");
+  job.case_id = *physics::case_from_name(*case_name);
+  job.body = physics::preset(job.case_id).body;
+
+  if (auto level = r.object("level")) {
+    const auto energy = level->number_in("energy", -1e6, 1e6, "-1e6 to 1e6");
+    const auto area = level->number_in("area", -1e6, 1e6, "-1e6 to 1e6");
+    if (!energy || !area) r.fail("level", "needs \"energy\" (C1) and \"area\" (C0)");
+    level->finish();
+    job.level = physics::Level{*energy, *area};
+  }
+  const auto orbits = r.integer("orbits", 1, 100000);
+  if (const auto* states = r.raw("states")) job.states = read_states(r, job.file, *states);
+  if (job.level.has_value() == !job.states.empty())
+    r.fail("level", "give either \"level\" with \"orbits\" or \"states\", not both or neither");
+  if (job.level && !orbits) r.fail("orbits", "is required with \"level\": 1 to 100000");
+  if (!job.level && orbits) r.fail("orbits", "goes with \"level\"; \"states\" count themselves");
+  job.orbits = orbits ? int(*orbits) : int(job.states.size());
+
+  if (auto k = r.integer("crossings", 1, 1000000)) job.crossings = int(*k);
+  // The crossings are kept until the CSV is written: about 300 bytes each.
+  if (double(job.orbits) * job.crossings > kMaxCrossings)
+    r.fail("crossings", "orbits x crossings must be at most 1e7, got " +
+                            std::to_string(job.orbits) + " x " + std::to_string(job.crossings));
+  if (auto t = r.number_in("t_end", 1e-6, 1e9, "1e-6 to 1e9")) job.t_end = *t;
+  if (auto s = r.object("section")) read_surface(*s, job.surface);
+  const auto methods =
+      names_of<sim::Method>(sim::all_methods(), [](sim::Method m) { return sim::name(m); });
+  if (auto m = r.choice("method", methods)) job.method = *sim::method_from_name(*m);
+  if (auto tol = r.number_in("tol", 1e-15, 1e-3, "1e-15 to 1e-3")) job.tol = *tol;
+  if (auto h = r.number_in("step", 1e-6, 1.0, "1e-6 to 1")) job.step = *h;
+  if (!sim::is_adaptive(job.method) && job.t_end / job.step > kMaxFixedSteps)
+    r.fail("step", "t_end / step must be at most 1e8 steps for a fixed-step method");
+  if (auto d = r.number_in("max_drift", 1e-14, 1.0, "1e-14 to 1")) job.max_drift = *d;
+  job.coords = default_coords(job.surface.function);
+  if (const auto* coords = r.raw("coords")) {
+    const std::string allowed = "two of " + join(function_names());
+    if (!coords->is_array() || coords->size() != 2) r.fail("coords", "must be " + allowed);
+    for (std::size_t i = 0; i < 2; ++i) {
+      const auto c = (*coords)[i].is_string()
+                         ? sim::state_component_from_name((*coords)[i].get<std::string>())
+                         : std::nullopt;
+      if (!c) r.fail("coords", "must be " + allowed + ", got " + io::describe(*coords));
+      job.coords[i] = *c;
+    }
+  }
+  for (const char* key : {"png", "svg"})
+    if (auto path = r.string(key)) (key[0] == 'p' ? job.png : job.svg) = *path;
+  const auto csv = r.string("csv");
+  if (!csv || csv->empty()) r.fail("csv", "is required: the crossings' CSV file");
+  job.csv = *csv;
+  r.finish();
+  return job;
+}
+
+void check_outputs(const SectionJob& job) {
+  for (const auto& [key, path] : {std::pair{"csv", job.csv}, {"png", job.png}, {"svg", job.svg}}) {
+    std::string where = job.file;
+    where += ": key '";
+    where += key;
+    where += "'";
+    io::check_output_file(where, path);
+  }
+}
+
+std::vector<physics::InitialState> section_starts(const SectionJob& job) {
+  std::vector<physics::InitialState> starts = job.states;
+  std::string key = "states";
+  if (job.level) {
+    key = "level";
+    starts = physics::level_states(job.body, *job.level, job.orbits).states;
+    if (starts.empty()) {
+      const double least = physics::minimum_energy(job.body, job.level->area).energy;
+      std::string what = "no state of this body lies on it; the least energy at this area is ";
+      what += std::to_string(least);
+      throw io::BadInput(job.file + ": key 'level': " + what);
+    }
+  }
+  for (const auto& s : starts)
+    if (auto broken = physics::broken_condition(job.case_id, job.body, s))
+      throw io::BadInput(job.file + ": key '" + key + "': " + *broken);
+  return starts;
+}
+
+}  // namespace epviz::section

@@ -1,0 +1,55 @@
+#pragma once
+// The section file that `epviz section` reads (docs/sections.md): a case, the
+// orbits' starts (a level of C1, C0 and a count, or explicit states), when to
+// stop, the surface, the method and the CSV to write. Read strictly, as every
+// job file: an unknown key, a wrong type or a value out of range is one line
+// naming the file, the key and what is allowed (io::BadInput).
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "physics/body.hpp"
+#include "physics/cases.hpp"
+#include "physics/level_set.hpp"
+#include "sim/section.hpp"
+
+namespace epviz::section {
+
+struct SectionJob {
+  std::string file;  // for messages
+  physics::Case case_id = physics::Case::kovalevskaya;
+  physics::Body body;
+  std::optional<physics::Level> level;  // with `orbits`, or else...
+  int orbits = 0;
+  std::vector<physics::InitialState> states;  // ...explicit starts
+  int crossings = 200;                        // per orbit, at most
+  double t_end = 1e4;                         // per orbit, at most
+  sim::SectionSurface surface;
+  sim::Method method = sim::Method::dop853;
+  double tol = 1e-10;       // adaptive methods
+  double step = 0.01;       // fixed-step methods
+  double max_drift = 1e-6;  // relative drift of C1 or |gamma|^2 that loses an orbit
+  // The plot's axes: two state components (default gamma1, omega3 for a
+  // gamma3 section, else the first two components the surface leaves free).
+  std::array<sim::StateComponent, 2> coords{sim::StateComponent::gamma1,
+                                            sim::StateComponent::omega3};
+  std::string csv;
+  std::string png, svg;  // optional pictures of the crossings
+};
+
+// Throws io::BadInput.
+SectionJob read_section_job(const std::filesystem::path& file);
+
+// Every output path given can be written (io/output_paths.hpp); throws
+// io::BadInput naming the key.
+void check_outputs(const SectionJob& job);
+
+// The orbits' initial states: the explicit ones, or those level_states builds
+// on the level (gammas that carry none are skipped). Throws io::BadInput when
+// there is none, naming the least energy of the level's C0, or when a state
+// breaks the case's conditions (e.g. Goryachev–Chaplygin's C0 = 0).
+std::vector<physics::InitialState> section_starts(const SectionJob& job);
+
+}  // namespace epviz::section

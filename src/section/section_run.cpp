@@ -1,0 +1,101 @@
+#include "section/section_run.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <thread>
+
+#include "physics/format.hpp"
+
+namespace epviz::section {
+namespace {
+
+sim::RunSpec orbit_run(const SectionJob& job, const physics::InitialState& start) {
+  sim::RunSpec run;
+  run.case_id = job.case_id;
+  run.body = job.body;
+  run.initial = start;
+  run.method = job.method;
+  run.tol = job.tol;
+  run.step = job.step;
+  run.t_end = job.t_end;
+  run.max_drift = job.max_drift;
+  return run;
+}
+
+}  // namespace
+
+int thread_count(long requested) {
+  return requested > 0 ? int(requested) : int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+std::vector<OrbitResult> run_section(const SectionJob& job,
+                                     const std::vector<physics::InitialState>& starts,
+                                     int threads) {
+  std::vector<OrbitResult> results(starts.size());
+  // Orbits differ in cost (a slow crossing rate means a long run), so each
+  // thread takes the next orbit not yet taken rather than a fixed share.
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for (std::size_t i = next++; i < starts.size(); i = next++) {
+      OrbitResult& r = results[i];
+      r.orbit = int(i) + 1;
+      r.start = starts[i];
+      try {
+        r.crossings = sim::section_crossings(orbit_run(job, starts[i]), job.surface, job.crossings);
+      } catch (const numerics::IntegrationError& e) {
+        r.failure = e.failure();
+        r.crossings.clear();
+      }
+    }
+  };
+  const int n = std::max(1, std::min<int>(threads, int(starts.size())));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < n; ++t) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
+  return results;
+}
+
+std::string summary(const SectionJob& job, const std::vector<OrbitResult>& results) {
+  long crossings = 0;
+  for (const auto& r : results) crossings += long(r.crossings.size());
+  std::string s = std::to_string(results.size());
+  s += " orbits";
+  if (job.level && std::size_t(job.orbits) > results.size()) {
+    s += " (";
+    s += std::to_string(std::size_t(job.orbits) - results.size());
+    s += " of ";
+    s += std::to_string(job.orbits);
+    s += " directions of gamma lie below the level)";
+  }
+  s += ", ";
+  s += std::to_string(crossings);
+  s += " crossings";
+  return s;
+}
+
+std::string lost_orbits_line(const std::vector<OrbitResult>& results) {
+  const OrbitResult* first = nullptr;
+  long lost = 0;
+  for (const auto& r : results)
+    if (r.failure) {
+      if (!first) first = &r;
+      ++lost;
+    }
+  if (!first) return {};
+  std::string line = std::to_string(lost);
+  line += " of ";
+  line += std::to_string(results.size());
+  line += " orbits lost, the first: orbit ";
+  line += std::to_string(first->orbit);
+  line += " from omega ";
+  line += physics::detail::vec(first->start.omega);
+  line += ", gamma ";
+  line += physics::detail::vec(first->start.gamma);
+  line += ": ";
+  line += first->failure->message();
+  line += "; tighten \"tol\", or raise \"max_drift\" if the drift is expected";
+  return line;
+}
+
+}  // namespace epviz::section

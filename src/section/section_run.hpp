@@ -1,0 +1,37 @@
+#pragma once
+// A Poincaré section's orbits, run independently on a pool of threads.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "numerics/failure.hpp"
+#include "section/section_job.hpp"
+#include "sim/section.hpp"
+
+namespace epviz::section {
+
+struct OrbitResult {
+  int orbit = 0;  // 1, 2, ... in the order of the starts
+  physics::InitialState start;
+  std::vector<sim::Crossing> crossings;
+  std::optional<numerics::Failure> failure;  // a lost orbit: its crossings are not results
+};
+
+// `requested` threads, or all cores for 0.
+int thread_count(long requested);
+
+// One result per start, in their order, computed by `threads` threads (at
+// least 1); an orbit's numerical failure ends that orbit only.
+std::vector<OrbitResult> run_section(const SectionJob& job,
+                                     const std::vector<physics::InitialState>& starts, int threads);
+
+// The failed orbits, one line: how many, and the first one's orbit number,
+// start and failure ("orbit 3 (omega ..., gamma ...): dop853 failed at t = ...:
+// ...; tighten ..."). Empty when every orbit kept the motion.
+std::string lost_orbits_line(const std::vector<OrbitResult>& results);
+
+// "16 orbits, 6400 crossings", and for a level with fewer states than asked
+// "13 orbits (3 of 16 directions of gamma lie below the level), ...".
+std::string summary(const SectionJob& job, const std::vector<OrbitResult>& results);
+
+}  // namespace epviz::section

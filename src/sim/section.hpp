@@ -1,0 +1,58 @@
+#pragma once
+// Poincaré sections of one orbit: the instants where a state function crosses
+// a value in a chosen direction, each located on the dense output of the step
+// that brackets it (docs/sections.md).
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "physics/body.hpp"
+#include "sim/run_spec.hpp"
+
+namespace epviz::sim {
+
+// The state functions a section surface may be a level of: the six
+// components of the direct state (Omega, gamma), in that order.
+enum class StateComponent { omega1, omega2, omega3, gamma1, gamma2, gamma3 };
+const std::vector<StateComponent>& all_state_components();
+std::string_view name(StateComponent c);  // "omega1" ... "gamma3"
+std::optional<StateComponent> state_component_from_name(std::string_view s);
+double value_of(StateComponent c, const physics::Vector3d& omega, const physics::Vector3d& gamma);
+
+// Which sign change of (function - value) counts: from below to above
+// (upward), from above to below (downward), or either.
+enum class CrossingDirection { upward, downward, both };
+std::string_view name(CrossingDirection d);
+std::optional<CrossingDirection> crossing_direction_from_name(std::string_view s);
+
+struct SectionSurface {
+  StateComponent function = StateComponent::gamma3;
+  double value = 0.0;
+  CrossingDirection direction = CrossingDirection::upward;
+};
+
+// How close to the surface a crossing lies: |function - value| at the
+// recorded state is at most this (or the two bracketing times are adjacent
+// doubles, which never happens for a transversal crossing).
+inline constexpr double kSectionResidual = 1e-12;
+
+struct Crossing {
+  int number = 0;  // 1, 2, ... along the orbit
+  double t = 0.0;
+  physics::Vector3d omega = physics::Vector3d::Zero();
+  physics::Vector3d gamma = physics::Vector3d::UnitZ();
+};
+
+// Integrates run.initial in the direct formulation with run.method until
+// `max_crossings` crossings of `surface` are found or t reaches run.t_end,
+// and returns them in order. Adaptive methods run at run.tol and locate each
+// crossing on their dense output; fixed-step methods take steps of run.step
+// and locate it on the cubic Hermite interpolant between two step ends.
+// Every crossing and the last step's end pass sim::MotionCheck with
+// run.max_drift. Throws numerics::IntegrationError for an orbit that is lost
+// (a failed step, a non-finite state, drift past the limit).
+std::vector<Crossing> section_crossings(const RunSpec& run, const SectionSurface& surface,
+                                        int max_crossings);
+
+}  // namespace epviz::sim

@@ -1,0 +1,159 @@
+// `epviz section` as a user runs it: the CSV it writes, bad section files
+// refused before any work (exit 2, one line naming the key), and a lost orbit
+// reported as a numerical failure (exit 3) with nothing written.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "io/bad_input.hpp"
+#include "section/section_csv.hpp"
+#include "section/section_job.hpp"
+#include "support/cli.hpp"
+
+namespace epviz::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+CliResult run_section_file(const TempDir& d, const std::string& text) {
+  std::ofstream(d / "s.section.json") << text;
+  return run_epviz("section " + (d / "s.section.json").string() + " -j 2", d);
+}
+
+TEST(SectionCommand, WritesOneRowPerCrossingWithTheStateAndItsIntegrals) {
+  TempDir d;
+  const std::string csv = (d / "k.csv").string();
+  const auto r =
+      run_section_file(d, R"({"case": "kovalevskaya", "level": {"energy": 2, "area": 0.5},
+      "orbits": 3, "crossings": 4, "csv": ")" +
+                              csv + "\"}");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream in(slurp(csv));
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line,
+            "orbit,crossing,t,omega1,omega2,omega3,gamma1,gamma2,gamma3,energy,area,"
+            "gamma_norm_error,extra_integral");
+  std::vector<std::string> keys;
+  while (std::getline(in, line)) keys.push_back(line.substr(0, line.find(',', 2)));
+  EXPECT_EQ(keys, (std::vector<std::string>{"1,1", "1,2", "1,3", "1,4", "2,1", "2,2", "2,3", "2,4",
+                                            "3,1", "3,2", "3,3", "3,4"}));
+}
+
+// The shipped section files run as they are, and draw their crossings.
+TEST(SectionCommand, ShippedSectionFilesRunAndDrawTheirCrossings) {
+  for (const std::string name : {"kovalevskaya", "generic"}) {
+    SCOPED_TRACE(name);
+    TempDir d;
+    const fs::path shipped = fs::path(EPVIZ_SOURCE_DIR) / "render_jobs" / (name + ".section.json");
+    auto job = nlohmann::json::parse(slurp(shipped));
+    for (const char* key : {"csv", "png", "svg"})
+      job[key] = (d / fs::path(job[key].get<std::string>()).filename()).string();
+    job["crossings"] = 20;  // the picture, not the full run
+    const auto r = run_section_file(d, job.dump());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(line_count(slurp(job["csv"].get<std::string>())), 1u + 16u * 20u);
+    EXPECT_EQ(slurp(job["png"].get<std::string>()).substr(1, 3), "PNG");
+    EXPECT_NE(slurp(job["svg"].get<std::string>()).find("<svg"), std::string::npos);
+  }
+}
+
+// Directions of gamma the level cannot reach carry no orbit, and the summary
+// says how many: at C1 = 0.5, C0 = 0.5 the Kovalevskaya body's potential
+// gamma1 leaves out the directions near gamma1 = 1 (C1 - V < T_min there).
+TEST(SectionCommand, SaysHowManyDirectionsLieBelowTheLevel) {
+  TempDir d;
+  const std::string csv = (d / "k.csv").string();
+  const auto r = run_section_file(d, R"({"case": "kovalevskaya", "level": {"energy": 0.5,
+      "area": 0.5}, "orbits": 40, "crossings": 2, "csv": ")" +
+                                         csv + "\"}");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto kept =
+      physics::level_states(physics::preset(physics::Case::kovalevskaya).body, {0.5, 0.5}, 40);
+  ASSERT_FALSE(kept.rejected.empty());
+  std::string expected = std::to_string(kept.states.size());
+  expected += " orbits (";
+  expected += std::to_string(kept.rejected.size());
+  expected += " of 40 directions of gamma lie below the level)";
+  EXPECT_NE(r.out.find(expected), std::string::npos) << r.out;
+}
+
+struct BadFile {
+  std::string name, text, must_name;
+};
+
+TEST(SectionCommand, BadFilesAreRefusedBeforeAnyWork) {
+  const std::vector<BadFile> cases{
+      {"unknown key", R"({"case": "generic", "level": {"energy": 2, "area": 1}, "orbits": 2,
+         "colour": 1, "csv": "x.csv"})",
+       "colour"},
+      {"no case", R"({"level": {"energy": 2, "area": 1}, "orbits": 2, "csv": "x.csv"})", "case"},
+      {"unknown case", R"({"case": "top", "level": {"energy": 2, "area": 1}, "orbits": 2,
+         "csv": "x.csv"})",
+       "kovalevskaya"},
+      {"level and states", R"({"case": "generic", "level": {"energy": 2, "area": 1},
+         "orbits": 2, "states": [{"omega": [1, 0, 0], "gamma": [0, 0, 1]}], "csv": "x.csv"})",
+       "'level'"},
+      {"no orbits", R"({"case": "generic", "level": {"energy": 2, "area": 1}, "csv": "x.csv"})",
+       "'orbits'"},
+      {"unknown method", R"({"case": "generic", "level": {"energy": 2, "area": 1},
+         "orbits": 2, "method": "euler", "csv": "x.csv"})",
+       "dop853"},
+      {"too many fixed steps", R"({"case": "generic", "level": {"energy": 2, "area": 1},
+         "orbits": 2, "method": "rk4", "step": 1e-6, "t_end": 1e6, "csv": "x.csv"})",
+       "'step'"},
+      {"unknown surface", R"({"case": "generic", "level": {"energy": 2, "area": 1}, "orbits": 2,
+         "section": {"function": "a"}, "csv": "x.csv"})",
+       "gamma3"},
+      {"gamma not unit", R"({"case": "generic", "states": [{"omega": [1, 0, 0],
+         "gamma": [0, 0, 2]}], "csv": "x.csv"})",
+       "states[0]"},
+      {"omega too large", R"({"case": "generic", "states": [{"omega": [1, 0, 0],
+         "gamma": [0, 0, 1]}, {"omega": [0, 2e6, 0], "gamma": [0, 0, 1]}], "csv": "x.csv"})",
+       "states[1]"},
+      {"below the level", R"({"case": "generic", "level": {"energy": -5, "area": 1},
+         "orbits": 2, "csv": "x.csv"})",
+       "least energy"},
+      {"too many crossings", R"({"case": "generic", "level": {"energy": 2, "area": 1},
+         "orbits": 100000, "crossings": 1000, "csv": "x.csv"})",
+       "'crossings'"},
+      {"no csv", R"({"case": "generic", "level": {"energy": 2, "area": 1}, "orbits": 2})", "'csv'"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    TempDir d;
+    expect_bad_input(run_section_file(d, c.text), c.must_name);
+  }
+}
+
+TEST(SectionCommand, ALostOrbitIsANumericalFailureAndNothingIsWritten) {
+  TempDir d;
+  const std::string csv = (d / "g.csv").string();
+  // A loose tolerance cannot keep the energy to 1e-13 for 200 crossings.
+  const auto r = run_section_file(d, R"({"case": "generic", "level": {"energy": 2, "area": 1},
+      "orbits": 2, "crossings": 200, "tol": 1e-5, "max_drift": 1e-13, "csv": ")" +
+                                         csv + "\"}");
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("orbits lost"), std::string::npos) << r.err;
+  EXPECT_EQ(line_count(r.err), 1u) << r.err;
+  EXPECT_FALSE(fs::exists(csv));
+}
+
+TEST(SectionCsv, LeavesALostOrbitOut) {
+  section::SectionJob job;
+  job.case_id = physics::Case::generic;
+  job.body = physics::preset(job.case_id).body;
+  section::OrbitResult kept, lost;
+  kept.orbit = 1;
+  kept.crossings.push_back({1, 0.5, physics::Vector3d(1, 0, 0), physics::Vector3d(0, 0, 1)});
+  lost.orbit = 2;
+  lost.crossings = kept.crossings;
+  lost.failure = numerics::Failure{};
+  const std::string text = section::crossings_csv(job, {kept, lost});
+  EXPECT_EQ(line_count(text), 2u) << text;
+  EXPECT_EQ(text.find("\n2,"), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace epviz::test
