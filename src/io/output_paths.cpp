@@ -44,11 +44,19 @@ std::string errno_text(int error) { return std::system_category().message(error)
 
 bool writable_directory(const fs::path& dir) { return ::access(dir.c_str(), W_OK | X_OK) == 0; }
 
-// The file a path names, so that two spellings of it compare equal.
+// The file a path names, so that two spellings of it compare equal: symbolic
+// links followed as the writer follows them, a dangling one to the file it
+// would create.
 fs::path canonical_file(const std::string& path) {
+  fs::path target = path;
+  try {
+    target = resolve_output(path).path;
+  } catch (const FileWriteError&) {
+    // A link loop: compared as spelled; writing it fails later anyway.
+  }
   std::error_code ec;
-  auto p = fs::weakly_canonical(fs::absolute(path, ec), ec);
-  return ec ? fs::absolute(path).lexically_normal() : p;
+  auto p = fs::weakly_canonical(fs::absolute(target, ec), ec);
+  return ec ? fs::absolute(target).lexically_normal() : p;
 }
 
 }  // namespace

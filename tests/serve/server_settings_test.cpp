@@ -12,13 +12,12 @@ namespace epviz::serve {
 namespace {
 
 TEST(ServerSettings, TextToOptions) {
-  ServerSettings s;
-  s.port = "0";
-  s.quality = "60";
-  s.max_view = "1920x1080";
-  s.image = "png";
-  s.allow_origins = {"HTTP://Example.org:8000"};
-  const auto o = server_options(s);
+  const auto o = server_options({.port = "0",
+                                 .quality = "60",
+                                 .max_view = "1920x1080",
+                                 .image = "png",
+                                 .allow_origins = {"HTTP://Example.org:8000"},
+                                 .record = ""});
   EXPECT_EQ(o.port, 0);
   EXPECT_EQ(o.jpeg_quality, 60);
   EXPECT_EQ(o.max_width, 1920);

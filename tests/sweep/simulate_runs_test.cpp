@@ -51,6 +51,7 @@ TEST(SimulateRuns, FixedStepsBeyondTheBudgetAreRefused) {
   // An adaptive run is bounded while it runs, not refused beforehand.
   auto adaptive = f;
   adaptive.method.set("dop853", "--method");
+  adaptive.step = {};
   EXPECT_EQ(simulate_runs(adaptive, 10).size(), 1u);
 }
 
