@@ -7,18 +7,15 @@
 #include <vector>
 
 #include "study/bench_studies.hpp"
+#include "study/quick_options.hpp"
 
 namespace epviz {
 namespace {
 
 TEST(BenchStudies, EveryStageAnnouncedAndEveryStudyHasRows) {
-  study::StudyOptions o;
-  o.quick = true;
-  o.repeats = 1;
-  o.cases = {physics::Case::
-                 kovalevskaya};  // the drift study takes kovalevskaya and goryachev_chaplygin only
-  o.methods = {sim::Method::dop853, sim::Method::rk4};
-  o.formulations = {sim::Formulation::direct};
+  // The drift study takes kovalevskaya and goryachev_chaplygin only.
+  const auto o = testing::quick_options({sim::Method::dop853, sim::Method::rk4},
+                                        {physics::Case::kovalevskaya}, {sim::Formulation::direct});
   std::vector<std::string> stages;
   std::set<std::string> studies;
   const auto rows = study::bench_studies(o, [&](const std::string& line) {

@@ -7,6 +7,7 @@
 
 #include "io/bad_input.hpp"
 #include "physics/cases.hpp"
+#include "study/quick_options.hpp"
 #include "study/work_precision.hpp"
 #include "support/errors.hpp"
 
@@ -14,11 +15,8 @@ namespace epviz {
 namespace {
 
 study::StudyOptions custom_options() {
-  study::StudyOptions o;
-  o.quick = true;
-  o.repeats = 1;
-  o.methods = {sim::Method::dop853, sim::Method::rk4};
-  o.formulations = {sim::Formulation::direct};
+  auto o = testing::quick_options({sim::Method::dop853, sim::Method::rk4}, {},
+                                  {sim::Formulation::direct});
   study::Problem p;
   p.id = physics::Case::custom;
   p.name = "custom";
