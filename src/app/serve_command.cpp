@@ -7,24 +7,19 @@
 #include <string>
 #include <vector>
 
-#include "app/cli_values.hpp"
 #include "app/gl_option.hpp"
 #include "io/bad_input.hpp"
-#include "io/data_dir.hpp"
-#include "io/printable.hpp"
 #include "live/live_session.hpp"
 #include "render/gl_choice.hpp"
-#include "serve/origin_policy.hpp"
-#include "serve/protocol.hpp"
 #include "serve/server.hpp"
+#include "serve/server_settings.hpp"
 
 namespace epviz::app {
 namespace {
 
 struct ServeOptions {
-  std::string job, bind = "127.0.0.1", gl, image = "jpeg", save_dir, record;
-  std::string port = "8080", quality = "85", max_view = "3840x2160";
-  std::vector<std::string> allow_origins;
+  std::string job, gl, save_dir;
+  serve::ServerSettings server;
   bool play = false;
 };
 
@@ -34,49 +29,9 @@ extern "C" void on_stop_signal(int) {
   if (g_server) g_server->request_stop();
 }
 
-bool is_loopback(const std::string& host) {
-  return host == "127.0.0.1" || host == "::1" || host == "localhost" || host.rfind("127.", 0) == 0;
-}
-
 int run_serve(const ServeOptions& o) {
-  serve::ServerOptions so;
-  so.bind = o.bind;
-  so.port = static_cast<unsigned short>(parse_integer("--port", o.port, 0, 65535));
-  so.jpeg_quality = int(parse_integer("--quality", o.quality, 1, 100));
-  // A page asks for its view's size; it gets at most this (a 16384^2 view
-  // would be a 1 GiB framebuffer per page), and all pages together are drawn
-  // within two such views a round (ServerOptions::pixel_budget).
-  const auto x = o.max_view.find('x');
-  if (x == std::string::npos)
-    throw io::BadInput("--max-view: expected WIDTHxHEIGHT (e.g. 3840x2160), got '" +
-                       io::printable(o.max_view, 40) + "'");
-  so.max_width =
-      int(parse_integer("--max-view", o.max_view.substr(0, x), 16, serve::max_view_pixels));
-  so.max_height =
-      int(parse_integer("--max-view", o.max_view.substr(x + 1), 16, serve::max_view_pixels));
-  so.pixel_budget = 2L * so.max_width * so.max_height;
-  if (o.image == "jpeg")
-    so.image_format = serve::ImageFormat::jpeg;
-  else if (o.image == "png")
-    so.image_format = serve::ImageFormat::png;
-  else
-    throw io::BadInput("--image: unknown format '" + o.image + "' (allowed: jpeg, png)");
-  so.page = io::find_data_path("assets/serve.html");
-  if (so.page.empty()) {
-    std::string searched;
-    for (const auto& dir : io::data_search_path()) searched += " " + (dir / "assets").string();
-    throw io::BadInput("the page serve.html is missing; searched:" + searched +
-                       " (set EPVIZ_DATA_DIR)");
-  }
-  so.record_path = o.record;
-  for (const std::string& origin : o.allow_origins) {
-    const auto normalized = serve::OriginPolicy::normalize_origin(origin);
-    if (!normalized)
-      throw io::BadInput("--allow-origin: '" + origin +
-                         "' is not an origin (allowed: http://HOST[:PORT] or https://HOST[:PORT], "
-                         "no path)");
-    so.allowed_origins.push_back(*normalized);
-  }
+  serve::ServerOptions so = serve::server_options(o.server);
+  so.page = serve::find_page();
   so.log = [](const std::string& line) { std::fprintf(stderr, "epviz serve: %s\n", line.c_str()); };
 
   const render::GlChoice gl_choice(o.gl);
@@ -102,15 +57,14 @@ int run_serve(const ServeOptions& o) {
         return std::make_unique<live::LiveSession>(*gl, session);
       });
   server.start();
-  if (!is_loopback(o.bind))
+  if (!serve::is_loopback(o.server.bind))
     std::fprintf(
         stderr,
         "epviz serve: warning: listening on %s: anyone who can reach this address can use the "
         "server (and write files to --save-dir if given)\n",
-        o.bind.c_str());
-  const std::string host = o.bind.find(':') != std::string::npos ? "[" + o.bind + "]" : o.bind;
-  std::printf("epviz serve: http://%s:%u/  (Ctrl+C to stop)\n", host.c_str(),
-              unsigned(server.port()));
+        o.server.bind.c_str());
+  std::printf("epviz serve: %s  (Ctrl+C to stop)\n",
+              serve::server_url(o.server.bind, server.port()).c_str());
   std::fflush(stdout);
 
   g_server = &server;
@@ -131,25 +85,25 @@ std::function<int()> add_serve_command(CLI::App& app) {
   CLI::App* cmd =
       app.add_subcommand("serve", "Serve the renderer live to a web browser (one scene per tab)");
   cmd->add_option("job", o->job, "render job to start from (default: the Kovalevskaya top)");
-  cmd->add_option("--port", o->port, "TCP port (0: any free port)")->capture_default_str();
-  cmd->add_option("--bind", o->bind,
+  cmd->add_option("--port", o->server.port, "TCP port (0: any free port)")->capture_default_str();
+  cmd->add_option("--bind", o->server.bind,
                   "address to listen on; other than loopback is reachable from the network")
       ->capture_default_str();
   add_gl_option(*cmd, o->gl);
-  cmd->add_option("--image", o->image, "frame encoding: jpeg or png")->capture_default_str();
-  cmd->add_option("--quality", o->quality, "JPEG quality 1..100")->capture_default_str();
+  cmd->add_option("--image", o->server.image, "frame encoding: jpeg or png")->capture_default_str();
+  cmd->add_option("--quality", o->server.quality, "JPEG quality 1..100")->capture_default_str();
   cmd->add_option("--save-dir", o->save_dir,
                   "also write saved frames and jobs here (default: browser downloads only)");
-  cmd->add_option("--allow-origin", o->allow_origins,
+  cmd->add_option("--allow-origin", o->server.allow_origins,
                   "also accept WebSocket connections from pages of this origin "
                   "(http[s]://HOST[:PORT]; repeatable); by default only the server's own page")
       ->allow_extra_args(false);
-  cmd->add_option("--max-view", o->max_view,
+  cmd->add_option("--max-view", o->server.max_view,
                   "WIDTHxHEIGHT: the largest view a page gets (each 16..16384); larger requests "
                   "are drawn at this size")
       ->capture_default_str();
   cmd->add_flag("--play", o->play, "start playing");
-  cmd->add_option("--record", o->record,
+  cmd->add_option("--record", o->server.record,
                   "record the first connection's events (replayed by the tests)");
   return [o] { return run_serve(*o); };
 }

@@ -15,9 +15,9 @@
 #include "io/progress.hpp"
 #include "io/temp_name.hpp"
 #include "io/temp_registry.hpp"
-#include "job/resolve.hpp"
 #include "physics/cases.hpp"
 #include "sim/failure_advice.hpp"
+#include "sweep/simulate_runs.hpp"
 #include "sweep/simulation_output.hpp"
 
 namespace epviz::app {
@@ -36,49 +36,12 @@ SimulationFields fields_from_job(const std::string& path) {
   return f;
 }
 
-std::string fmt(double x, const char* f = "%.3g") {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, f, x);
-  return buf;
-}
-
-// The step budget (--max-steps, default 1e8) bounds adaptive runs while they
-// run (a step_budget failure, exit 3). A fixed-step run's number of steps is
-// known before it starts: beyond the budget it would take hours, which is
-// almost always a typo in --t-end or --step, so it is refused before any work.
-void check_step_budget(const sim::RunSpec& spec) {
-  if (sim::is_adaptive(spec.method)) return;
-  const double steps = spec.t_end / spec.step;
-  if (steps > double(spec.max_steps))
-    throw io::BadInput("--t-end: " + fmt(spec.t_end) + " with --step " + fmt(spec.step) +
-                       " needs " + fmt(steps) + " steps, more than the step budget of " +
-                       fmt(double(spec.max_steps)) +
-                       " (--max-steps); shorten --t-end or take a larger --step");
-}
-
 // Removes temporaries that killed runs left beside `path` (the process is gone).
 void remove_stale_beside(const std::string& path) {
   if (path.empty() || path == "-") return;
   const auto target = io::resolve_output(path);
   if (target.kind == io::OutputKind::replace)
     io::remove_stale_temporaries(target.path.parent_path());
-}
-
-void print_summary(std::FILE* out, const sim::RunSpec& spec, const sim::RunResult& r,
-                   const sim::Drifts& d) {
-  std::string accuracy =
-      sim::is_adaptive(spec.method) ? "tol " + fmt(spec.tol) : "step " + fmt(r.effective_step);
-  std::fprintf(out, "%-20s %-8s %-9s %-12s steps %8ld  rhs %9ld  rejected %5ld  cpu %8.4f s\n",
-               physics::case_name(spec.case_id).c_str(),
-               std::string(sim::name(spec.formulation)).c_str(),
-               std::string(sim::name(spec.method)).c_str(), accuracy.c_str(), r.stats.steps,
-               r.stats.rhs_evals, r.stats.rejected_steps, r.cpu_seconds);
-  std::fprintf(out, "%-20s max relative drift  |gamma|^2 %-9s  C0 %-9s  C1 %-9s  extra %s\n", "",
-               fmt(d.gamma_norm2).c_str(), fmt(d.area).c_str(), fmt(d.energy).c_str(),
-               d.extra ? fmt(*d.extra).c_str() : "-");
-  if (r.failure)
-    std::fprintf(out, "%-20s FAILED: %s\n", "",
-                 sim::failure_line(*r.failure, sim::SettingsIn::command_line).c_str());
 }
 
 int run_simulate(const RawOptions& raw) {
@@ -96,27 +59,13 @@ int run_simulate(const RawOptions& raw) {
         "--report-json: standard output already carries the samples (--csv); write one of them "
         "to a file");
 
-  std::vector<SimulationFields> runs;
-  if (fields.case_name && *fields.case_name == "all") {
-    if (!raw.csv.empty())
-      throw io::BadInput("--csv: writes one run's samples; it cannot be combined with --case all");
-    for (const auto& p : physics::case_presets()) {
-      SimulationFields one = fields;
-      one.case_name.set(p.name, fields.case_name.origin);
-      runs.push_back(one);
-    }
-  } else {
-    runs.push_back(fields);
-  }
-
-  // Resolve every run before integrating any: bad input leaves nothing behind.
-  std::vector<sim::RunSpec> specs;
-  for (const auto& f : runs) specs.push_back(job::resolve(f));
-  if (!raw.max_steps.empty()) {
-    const long budget = long(parse_integer("--max-steps", raw.max_steps, 1, 1'000'000'000'000));
-    for (auto& spec : specs) spec.max_steps = budget;
-  }
-  for (const auto& spec : specs) check_step_budget(spec);
+  if (sweep::runs_every_case(fields) && !raw.csv.empty())
+    throw io::BadInput("--csv: writes one run's samples; it cannot be combined with --case all");
+  std::optional<long> max_steps;
+  if (!raw.max_steps.empty())
+    max_steps = long(parse_integer("--max-steps", raw.max_steps, 1, 1'000'000'000'000));
+  // Every run is resolved before any is integrated: bad input leaves nothing behind.
+  const std::vector<sim::RunSpec> specs = sweep::simulate_runs(fields, max_steps);
 
   // When standard output carries data, the summary goes to stderr so that it
   // cannot corrupt the data.
@@ -147,7 +96,7 @@ int run_simulate(const RawOptions& raw) {
     });
     progress.finish();
     if (csv) csv->flush();
-    print_summary(summary, spec, result, drift);
+    std::fputs(sweep::run_summary(spec, result, drift).c_str(), summary);
     reports.push_back(sweep::run_report(spec, result, drift));
     if (result.failure) {
       ++failures;

@@ -9,12 +9,10 @@
 #include <thread>
 
 #include "app/cli_values.hpp"
-#include "app/simulation_fields.hpp"
 #include "io/bad_input.hpp"
 #include "io/json_reader.hpp"
 #include "io/output_paths.hpp"
 #include "io/progress.hpp"
-#include "job/resolve.hpp"
 #include "shard/rows_shard.hpp"
 #include "shard/shard_lock.hpp"
 #include "shard/shard_spec.hpp"
@@ -68,26 +66,7 @@ int run_sweep(const SweepOptions& o) {
   const shard::ShardLock lock(rows_shard ? rows_shard->lock_path
                                          : fs::path(out.string() + ".lock"));
   const sweep::ExistingRows existing = sweep::resume_rows(out, spec.hash, total, range);
-
-  // Every value of every axis is read and checked before any runs, through
-  // one point per value, so that a bad value anywhere stops every shard
-  // alike; then this shard's own points are resolved in full (where a value
-  // meets the others: an energy the state cannot reach, a step budget) and
-  // kept, so that a shard costs time and memory in proportion to its own
-  // range, however large the sweep.
-  sweep::PointReader read_point(spec);
-  for (long i : spec.value_probes()) (void)read_point(i);
-  std::vector<sweep::PreparedPoint> pending;
-  pending.reserve(std::size_t(range.size()));
-  for (long i = range.first; i < range.end; ++i) {
-    try {
-      auto p = read_point(i);
-      auto run = sweep::resolve_point(p, [](const SimulationFields& f) { return job::resolve(f); });
-      if (!existing.indices.count(i)) pending.push_back(sweep::prepared_point(p, std::move(run)));
-    } catch (const std::invalid_argument& e) {  // an energy no state of the body reaches
-      throw io::BadInput(e.what());
-    }
-  }
+  const auto pending = sweep::pending_points(spec, range, existing);
 
   if (rows_shard) shard::start_rows_shard(*rows_shard);  // "completed": false until the end
 

@@ -44,6 +44,21 @@ std::string errno_text(int error) { return std::system_category().message(error)
 
 bool writable_directory(const fs::path& dir) { return ::access(dir.c_str(), W_OK | X_OK) == 0; }
 
+// The file a path names, so that two spellings of it compare equal: symbolic
+// links followed as the writer follows them, a dangling one to the file it
+// would create.
+fs::path canonical_file(const std::string& path) {
+  fs::path target = path;
+  try {
+    target = resolve_output(path).path;
+  } catch (const FileWriteError&) {
+    // A link loop: compared as spelled; writing it fails later anyway.
+  }
+  std::error_code ec;
+  auto p = fs::weakly_canonical(fs::absolute(target, ec), ec);
+  return ec ? fs::absolute(target).lexically_normal() : p;
+}
+
 }  // namespace
 
 void check_output_file(const std::string& option, const std::string& path) {
@@ -72,6 +87,18 @@ void check_output_file(const std::string& option, const std::string& path) {
   if (!writable_directory(dir))
     throw BadInput(option + ": directory " + in_quotes(fs::absolute(dir)) +
                    " is not writable: " + errno_text(errno));
+}
+
+void require_distinct_files(const std::vector<std::pair<std::string, std::string>>& outputs) {
+  for (std::size_t i = 0; i < outputs.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j) {
+      const auto& [a_option, a] = outputs[j];
+      const auto& [b_option, b] = outputs[i];
+      if (a.empty() || b.empty() || a == "-" || b == "-") continue;
+      if (canonical_file(a) == canonical_file(b))
+        throw BadInput(b_option + ": the same file as " + a_option + " ('" + printable(b) +
+                       "'); give each its own file");
+    }
 }
 
 void check_output_dir(const std::string& what, const fs::path& dir) {

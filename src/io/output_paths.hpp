@@ -4,6 +4,8 @@
 // after the integration or the rendering.
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace epviz::io {
 
@@ -13,6 +15,11 @@ namespace epviz::io {
 // writing (/dev/null, a FIFO). A directory is refused. Empty: not given, fine.
 // Throws BadInput naming the option.
 void check_output_file(const std::string& option, const std::string& path);
+
+// Throws BadInput if two of the (option, path) pairs name the same file,
+// however spelled ("out.csv", "./out.csv", a symlink to it); empty paths and
+// "-" (standard output) are skipped.
+void require_distinct_files(const std::vector<std::pair<std::string, std::string>>& outputs);
 
 // `dir` is an output directory (named by `what`: "--out" or "job.json: output.dir"):
 // an existing writable directory, or one that can be created (its first

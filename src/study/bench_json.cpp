@@ -1,11 +1,24 @@
 #include "study/bench_json.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <thread>
 
 namespace epviz::study {
 namespace {
 
 using nlohmann::json;
+
+std::string compiler() {
+#if defined(__clang__)
+  return std::string("clang ") + __clang_version__;
+#elif defined(__GNUC__)
+  return std::string("gcc ") + __VERSION__;
+#else
+  return "unknown";
+#endif
+}
 
 const char* yes_no(bool b) { return b ? "yes" : "no"; }
 
@@ -162,6 +175,31 @@ json rows_json(const std::vector<StudyRow>& rows) {
   auto a = json::array();
   for (const auto& r : rows) a.push_back(row_json(r));
   return a;
+}
+
+json bench_document(const std::vector<StudyRow>& rows, bool quick, double wall_seconds) {
+  double worst_check = 0.0, smallest = INFINITY;
+  for (const auto* r : rows_of<ReferenceRow>(rows)) {
+    worst_check = std::max(worst_check, r->self_check);
+    if (std::isfinite(r->smallest_error)) smallest = std::min(smallest, r->smallest_error);
+  }
+  json doc;
+  doc["metadata"] = {
+      {"tool", "epviz bench"},
+      {"mode", quick ? "quick" : "full"},
+      {"wall_seconds", wall_seconds},
+      {"machine", {{"nproc", std::thread::hardware_concurrency()}, {"compiler", compiler()}}},
+      {"error_measure", "|Omega - Omega_ref|_2 + |gamma - gamma_ref|_2 at the final time"},
+      {"cost_measure", "rhs_evals (+ flow_evals: exact sub-flow evaluations of splitting methods)"},
+      {"cpu_time", "median of repeated runs (repeats field), integration only, no I/O"},
+      {"reference",
+       {{"method", "gauss6 at steps h and h/2, Richardson-extrapolated: (64 y(h/2) - y(h)) / 63"},
+        {"check", "dop853 at tol 1e-14"},
+        {"max_self_check", worst_check},
+        {"smallest_reported_error", number_or_null(smallest)}}},
+  };
+  doc["rows"] = rows_json(rows);
+  return doc;
 }
 
 }  // namespace epviz::study

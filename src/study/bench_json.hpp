@@ -12,6 +12,11 @@ namespace epviz::study {
 nlohmann::json row_json(const StudyRow& row);
 nlohmann::json rows_json(const std::vector<StudyRow>& rows);
 
+// The whole document `epviz bench --json` writes: "metadata" (the mode,
+// `wall_seconds`, the machine, the measures and the references' worst
+// self-check) and "rows".
+nlohmann::json bench_document(const std::vector<StudyRow>& rows, bool quick, double wall_seconds);
+
 // A number, or null when it is not finite.
 nlohmann::json number_or_null(double x);
 

@@ -1,5 +1,9 @@
 #include "study/options.hpp"
 
+#include <sstream>
+
+#include "io/bad_input.hpp"
+
 namespace epviz::study {
 
 const std::vector<sim::Method>& methods_of(const StudyOptions& o) {
@@ -20,6 +24,41 @@ std::vector<physics::Case> cases_of(const StudyOptions& o) {
 Problem preset_problem(physics::Case c) {
   const auto& p = physics::preset(c);
   return {c, p.name, p.body, p.initial};
+}
+
+Problem run_problem(const sim::RunSpec& spec) {
+  Problem p;
+  p.id = spec.case_id;
+  p.name = physics::case_name(spec.case_id);
+  p.body = spec.body;
+  p.initial = spec.initial;
+  return p;
+}
+
+std::vector<physics::Case> parse_case_list(const std::string& list, bool have_custom) {
+  std::vector<physics::Case> cases;
+  if (list.empty()) return cases;
+  std::stringstream s(list);
+  std::string item;
+  while (std::getline(s, item, ',')) {
+    const auto c = physics::case_from_name(item);
+    if (c == physics::Case::custom) {
+      if (!have_custom)
+        throw io::BadInput(
+            "--cases: 'custom' needs --job FILE (a render job whose \"simulation\" gives the "
+            "body)");
+      continue;
+    }
+    if (!c) {
+      std::string names;
+      for (const auto& p : physics::case_presets()) names += (names.empty() ? "" : ", ") + p.name;
+      throw io::BadInput("--cases: unknown case '" + item +
+                         "' (expected a comma-separated list of " + names +
+                         (have_custom ? ", custom" : "") + ")");
+    }
+    cases.push_back(*c);
+  }
+  return cases;
 }
 
 std::vector<Problem> problems_of(const StudyOptions& o) {

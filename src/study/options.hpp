@@ -35,6 +35,14 @@ std::vector<physics::Case> cases_of(const StudyOptions& o);
 // The work-precision study's problems: the presets of cases_of, then the custom body.
 std::vector<Problem> problems_of(const StudyOptions& o);
 Problem preset_problem(physics::Case c);
+// A body of one's own from a checked run (a render job's "simulation"),
+// named after its case: a preset's name, or "custom".
+Problem run_problem(const sim::RunSpec& spec);
+// The presets of a comma-separated list (`epviz bench --cases`; "" for none).
+// "custom" stands for the body of one's own and is left out of the list:
+// `have_custom` says whether there is one. Throws io::BadInput naming
+// --cases and what is allowed.
+std::vector<physics::Case> parse_case_list(const std::string& list, bool have_custom);
 // A run of `p` as sim::preset_run makes one of a preset.
 sim::RunSpec problem_run(const Problem& p, sim::Method m, sim::Formulation f, double t_end,
                          int samples);

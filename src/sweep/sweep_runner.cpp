@@ -3,9 +3,31 @@
 #include <atomic>
 #include <exception>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 
+#include "io/bad_input.hpp"
+#include "job/resolve.hpp"
+
 namespace epviz::sweep {
+
+std::vector<PreparedPoint> pending_points(const SweepSpec& spec, shard::ItemRange range,
+                                          const ExistingRows& done) {
+  PointReader read_point(spec);
+  for (long i : spec.value_probes()) (void)read_point(i);
+  std::vector<PreparedPoint> pending;
+  pending.reserve(std::size_t(range.size()));
+  for (long i = range.first; i < range.end; ++i) {
+    try {
+      auto p = read_point(i);
+      auto run = resolve_point(p, [](const job::SimulationFields& f) { return job::resolve(f); });
+      if (!done.indices.count(i)) pending.push_back(prepared_point(p, std::move(run)));
+    } catch (const std::invalid_argument& e) {  // an energy no state of the body reaches
+      throw io::BadInput(e.what());
+    }
+  }
+  return pending;
+}
 
 SweepTotals run_points(const SweepSpec& spec, const std::vector<PreparedPoint>& points, int threads,
                        RowAppender& rows, const std::function<void()>& on_row) {

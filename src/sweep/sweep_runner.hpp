@@ -5,6 +5,7 @@
 #include <functional>
 #include <vector>
 
+#include "shard/shard_spec.hpp"
 #include "sim/run_spec.hpp"
 #include "sweep/point_run.hpp"
 #include "sweep/rows_file.hpp"
@@ -15,6 +16,16 @@ struct SweepTotals {
   long points = 0;
   long failures = 0;  // points whose run failed (a result, not an error)
 };
+
+// The points of `range` that `done` (the rows already written, resume_rows)
+// lacks, each resolved. Every value of every axis is read and checked first,
+// through one point per value, so that a bad value anywhere stops every shard
+// alike; then only `range`'s points are resolved in full (where a value meets
+// the others: an energy the state cannot reach, a step budget) and kept, so
+// that a shard costs time and memory in proportion to its own range, however
+// large the sweep. Throws io::BadInput for a bad value.
+std::vector<PreparedPoint> pending_points(const SweepSpec& spec, shard::ItemRange range,
+                                          const ExistingRows& done);
 
 // Runs `points` with `threads` threads (at least 1), appending a row each to
 // `rows` and calling `on_row` (from the worker, under a lock) after each.

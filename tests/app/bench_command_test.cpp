@@ -25,16 +25,18 @@ TEST(BenchCommand, BadOptionsAreUsageErrors) {
   EXPECT_EQ(dir.file_count(), 1u);  // only "file": nothing written
 }
 
-// The charts' backend is refused before the studies run, not after them.
+// The charts' backend is refused before the studies run, not after them,
+// and before the --out folder is made.
 TEST(BenchCommand, UnknownGlBackendIsRefusedBeforeAnyStudy) {
   TempDir dir;
-  auto r = run_epviz("bench --quick --gl vulkan", dir);
+  auto r = run_epviz("bench --quick --gl vulkan --out " + (dir / "charts").string(), dir);
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("--gl: unknown GL backend 'vulkan' (allowed: auto, egl, osmesa)"),
             std::string::npos)
       << r.err;
   EXPECT_EQ(r.err.find("work-precision"), std::string::npos) << "a study ran: " << r.err;
   EXPECT_EQ(r.out, "");
+  EXPECT_EQ(dir.file_count(), 0u);
 }
 
 // --job: a body of one's own from a render job; its mistakes are usage

@@ -58,5 +58,28 @@ TEST(BenchJson, FailedPeerRowAndSeries) {
   EXPECT_EQ(a[1].at("series_drift_extra")[1].get<double>(), 1e-12);
 }
 
+// The metadata's reference summary: the worst self-check of the references
+// and the smallest finite error any of them resolved (null when none did).
+TEST(BenchJson, DocumentSummarisesTheReferences) {
+  study::ReferenceRow a, b;
+  a.self_check = 2e-13;
+  a.smallest_error = 4e-9;
+  b.self_check = 7e-13;
+  b.smallest_error = study::kNaN;
+  study::WorkPrecisionRow w;
+  w.error = 1e-15;  // a run's error is not a reference's
+  const auto doc = study::bench_document({a, w, b}, true, 12.5);
+  const auto& meta = doc.at("metadata");
+  EXPECT_EQ(meta.at("mode"), "quick");
+  EXPECT_EQ(meta.at("wall_seconds").get<double>(), 12.5);
+  EXPECT_EQ(meta.at("reference").at("max_self_check").get<double>(), 7e-13);
+  EXPECT_EQ(meta.at("reference").at("smallest_reported_error").get<double>(), 4e-9);
+  EXPECT_EQ(doc.at("rows"), study::rows_json({a, w, b}));
+
+  const auto none = study::bench_document({b}, false, 1.0);
+  EXPECT_EQ(none.at("metadata").at("mode"), "full");
+  EXPECT_TRUE(none.at("metadata").at("reference").at("smallest_reported_error").is_null());
+}
+
 }  // namespace
 }  // namespace epviz

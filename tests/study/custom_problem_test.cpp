@@ -5,18 +5,18 @@
 
 #include <cmath>
 
+#include "io/bad_input.hpp"
 #include "physics/cases.hpp"
+#include "study/quick_options.hpp"
 #include "study/work_precision.hpp"
+#include "support/errors.hpp"
 
 namespace epviz {
 namespace {
 
 study::StudyOptions custom_options() {
-  study::StudyOptions o;
-  o.quick = true;
-  o.repeats = 1;
-  o.methods = {sim::Method::dop853, sim::Method::rk4};
-  o.formulations = {sim::Formulation::direct};
+  auto o = testing::quick_options({sim::Method::dop853, sim::Method::rk4}, {},
+                                  {sim::Formulation::direct});
   study::Problem p;
   p.id = physics::Case::custom;
   p.name = "custom";
@@ -37,6 +37,49 @@ TEST(CustomProblem, OnlyTheCustomBodyUnlessPresetsAreNamed) {
   EXPECT_EQ(both[1].name, "custom");
   // Without a custom body, no cases means every preset.
   EXPECT_EQ(study::cases_of(study::StudyOptions{}).size(), physics::case_presets().size());
+}
+
+// A job's checked run becomes the problem it describes, named after its case.
+TEST(CustomProblem, FromARun) {
+  const auto mine = custom_options().custom.value();
+  const auto back = study::run_problem(
+      study::problem_run(mine, sim::Method::dop853, sim::Formulation::direct, 1.0, 2));
+  EXPECT_EQ(back.id, physics::Case::custom);
+  EXPECT_EQ(back.name, "custom");
+  EXPECT_EQ(back.body.inertia, mine.body.inertia);
+  EXPECT_EQ(back.body.com, mine.body.com);
+  EXPECT_EQ(back.initial.omega, mine.initial.omega);
+  EXPECT_EQ(back.initial.gamma, mine.initial.gamma);
+  const auto euler = study::preset_problem(physics::Case::euler);
+  EXPECT_EQ(study::run_problem(
+                study::problem_run(euler, sim::Method::rk4, sim::Formulation::direct, 1.0, 2))
+                .name,
+            "euler");
+}
+
+// --cases: presets by name; "custom" only when there is a body of one's own,
+// and then left out of the presets.
+TEST(CustomProblem, CaseList) {
+  EXPECT_TRUE(study::parse_case_list("", false).empty());
+  const auto two = study::parse_case_list("kovalevskaya,euler", false);
+  ASSERT_EQ(two.size(), 2u);
+  EXPECT_EQ(two[0], physics::Case::kovalevskaya);
+  EXPECT_EQ(two[1], physics::Case::euler);
+  const auto with_custom = study::parse_case_list("custom,lagrange", true);
+  ASSERT_EQ(with_custom.size(), 1u);
+  EXPECT_EQ(with_custom[0], physics::Case::lagrange);
+
+  const auto custom = test::error_of<io::BadInput>([] { study::parse_case_list("custom", false); });
+  EXPECT_EQ(custom.rfind("--cases: 'custom' needs --job", 0), 0u) << custom;
+  const auto unknown =
+      test::error_of<io::BadInput>([] { study::parse_case_list("euler,nope", false); });
+  EXPECT_EQ(unknown.rfind("--cases: unknown case 'nope'", 0), 0u) << unknown;
+  for (const auto& p : physics::case_presets())
+    EXPECT_NE(unknown.find(p.name), std::string::npos) << unknown;
+  EXPECT_EQ(unknown.find("custom"), std::string::npos) << unknown;
+  const auto unknown_with_job =
+      test::error_of<io::BadInput>([] { study::parse_case_list("nope", true); });
+  EXPECT_NE(unknown_with_job.find(", custom)"), std::string::npos) << unknown_with_job;
 }
 
 TEST(CustomProblem, WorkPrecisionRowsOfTheCustomBody) {

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "study/invariant_cost.hpp"
+#include "study/quick_options.hpp"
 #include "study/reference.hpp"
 #include "study/stability.hpp"
 
@@ -13,10 +14,7 @@ namespace epviz {
 namespace {
 
 TEST(StudyInvariantCost, ReachedRowsMeetTheTargetAndExactSplit4ReachesIt) {
-  study::StudyOptions o;
-  o.quick = true;
-  o.repeats = 1;
-  o.methods = {sim::Method::rk4, sim::Method::exact_split4};
+  const auto o = testing::quick_options({sim::Method::rk4, sim::Method::exact_split4});
   const double t_end = 100.0, target = 1e-8;
   const auto rows = study::invariant_cost_study(o, t_end, target);
   ASSERT_EQ(rows.size(), 2u);
@@ -70,9 +68,7 @@ TEST(StudyInvariantCost, ChaosStateSeparatesFastAndRanksTolerances) {
   EXPECT_LT(study::state_error(pa.samples.back(), pb.samples.back()), 1e-3);
 
   // dop853 separates later at tighter tolerance, and the loosest separates within the span.
-  study::StudyOptions o;
-  o.quick = true;
-  o.methods = {sim::Method::dop853};
+  const auto o = testing::quick_options({sim::Method::dop853});
   const auto chaos = study::stability_chaos(o);
   ASSERT_EQ(chaos.size(), 3u);
   const double loose = chaos[0].separation_time, mid = chaos[1].separation_time;

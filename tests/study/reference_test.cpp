@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "study/quick_options.hpp"
 #include "study/reference.hpp"
 #include "study/work_precision.hpp"
 
@@ -12,13 +13,9 @@ namespace epviz {
 namespace {
 
 std::vector<study::StudyRow> reduced_sweep() {
-  study::StudyOptions o;
-  o.quick = true;
-  o.repeats = 1;
-  o.cases = {physics::Case::kovalevskaya};
-  o.methods = {sim::Method::dop853, sim::Method::rk4};
-  o.formulations = {sim::Formulation::direct};
-  return study::work_precision_study(o);
+  return study::work_precision_study(testing::quick_options({sim::Method::dop853, sim::Method::rk4},
+                                                            {physics::Case::kovalevskaya},
+                                                            {sim::Formulation::direct}));
 }
 
 TEST(StudyReference, RichardsonGauss6AgreesWithDop853) {
@@ -59,12 +56,8 @@ TEST(StudyWorkPrecision, ErrorsDecreaseWithToleranceAndStep) {
 }
 
 TEST(StudyWorkPrecision, SkipsIncompatiblePairs) {
-  study::StudyOptions o;
-  o.quick = true;
-  o.repeats = 1;
-  o.cases = {physics::Case::euler};
-  o.methods = {sim::Method::splitting};
-  o.formulations = {sim::Formulation::riccati};
+  const auto o = testing::quick_options({sim::Method::splitting}, {physics::Case::euler},
+                                        {sim::Formulation::riccati});
   const auto rows = study::work_precision_study(o);
   EXPECT_TRUE(study::rows_of<study::WorkPrecisionRow>(rows).empty());
   EXPECT_EQ(study::rows_of<study::ReferenceRow>(rows).size(), 1u);

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "study/pole_passage.hpp"
+#include "study/quick_options.hpp"
 #include "study/reference.hpp"
 #include "study/stability.hpp"
 
@@ -20,10 +21,7 @@ const study::PolePassageRow& variant(const std::vector<study::PolePassageRow>& r
 }
 
 TEST(StudyStability, RiccatiWithoutChartSwitchFailsAtThePassage) {
-  study::StudyOptions o;
-  o.quick = true;
-  o.repeats = 1;
-  const auto rows = study::stability_pole(o);
+  const auto rows = study::stability_pole(testing::quick_options());
   const auto& bad = variant(rows, "riccati-no-switch");
   EXPECT_FALSE(bad.run.ok);
   EXPECT_EQ(bad.failure_method, "dop853");
@@ -63,10 +61,7 @@ TEST(StudyStability, Rk4WithTooLargeStepIsReportedAndRobustMethodSucceeds) {
 }
 
 TEST(StudyStability, LargestStepIsBracketed) {
-  study::StudyOptions o;
-  o.quick = true;
-  o.methods = {sim::Method::rk4};
-  const auto rows = study::stability_max_step(o);
+  const auto rows = study::stability_max_step(testing::quick_options({sim::Method::rk4}));
   ASSERT_EQ(rows.size(), 2u);  // kovalevskaya and lagrange
   for (const auto& r : rows) {
     const double h = r.max_step, bad = r.failing_step;
@@ -79,9 +74,7 @@ TEST(StudyStability, LargestStepIsBracketed) {
 }
 
 TEST(StudyStability, SeparatrixAndChaosRowsAreMeasured) {
-  study::StudyOptions o;
-  o.quick = true;
-  o.methods = {sim::Method::dop853};
+  const auto o = testing::quick_options({sim::Method::dop853});
   const auto flips = study::stability_separatrix(o);
   ASSERT_EQ(flips.size(), 3u);
   // Tighter tolerance, smaller flip-time error.

@@ -8,10 +8,13 @@
 #include <filesystem>
 #include <string>
 
+#include "io/bad_input.hpp"
 #include "physics/cases.hpp"
+#include "support/errors.hpp"
 #include "support/temp_dir.hpp"
 #include "sweep/rows_by_index.hpp"
 #include "sweep/sweep_runner.hpp"
+#include "sweep/sweep_spec.hpp"
 
 namespace epviz::sweep {
 namespace {
@@ -63,6 +66,31 @@ TEST(SweepRunner, FourThreadsWriteEveryRowOnceAsOneThreadDoes) {
   EXPECT_EQ(a, b);
   EXPECT_EQ(b.at(4)["failure_kind"], "step_budget");
   EXPECT_TRUE(b.at(3)["failure"].is_null());
+}
+
+SweepSpec sweep_of(const std::string& text) { return read_sweep(Json::parse(text), "s.json"); }
+
+// A shard's pending points: those of its range whose rows are not written
+// yet, each resolved with its axis values put in.
+TEST(PendingPoints, TheRangeLessWhatIsDone) {
+  const auto spec = sweep_of(R"({"simulation": {"method": "rk4"},
+      "axes": [{"field": "step", "values": [0.1, 0.2, 0.3, 0.4]}]})");
+  ExistingRows done;
+  done.indices = {2};
+  const auto pending = pending_points(spec, {1, 4}, done);
+  ASSERT_EQ(pending.size(), 2u);
+  EXPECT_EQ(pending[0].index, 1);
+  EXPECT_EQ(pending[0].run.step, 0.2);
+  EXPECT_EQ(pending[1].index, 3);
+  EXPECT_EQ(pending[1].run.step, 0.4);
+  EXPECT_EQ(pending_points(spec, {0, 4}, {}).size(), 4u);
+}
+
+TEST(PendingPoints, ABadValueAnywhereIsRefused) {
+  // A value outside this shard's range stops it as it stops the shard that has it.
+  const auto bad = sweep_of(R"({"axes": [{"field": "omega[2]", "values": [0.5, 1e300]}]})");
+  const auto message = test::error_of<io::BadInput>([&] { pending_points(bad, {0, 1}, {}); });
+  EXPECT_NE(message.find("axes[0]"), std::string::npos) << message;
 }
 
 }  // namespace
