@@ -14,18 +14,18 @@ std::string short_number(double x) {
 }
 
 std::string title(const SectionJob& job) {
-  std::string t = "Poincare section, ";
+  std::string t = "Poincaré section, ";
   t += physics::preset(job.case_id).title;
   t += ": ";
-  t += sim::name(job.surface.function);
+  t += sim::symbol(job.surface.function);
   t += " = ";
   t += short_number(job.surface.value);
   t += " ";
   t += sim::name(job.surface.direction);
   if (job.level) {
-    t += ", C1 = ";
+    t += ", C₁ = ";
     t += short_number(job.level->energy);
-    t += ", C0 = ";
+    t += ", C₀ = ";
     t += short_number(job.level->area);
   }
   t += " (";
@@ -41,8 +41,8 @@ std::string title(const SectionJob& job) {
 chart::ChartSpec section_chart(const SectionJob& job, const std::vector<OrbitResult>& orbits) {
   chart::ChartSpec spec;
   spec.title = title(job);
-  spec.x_label = sim::name(job.coords[0]);
-  spec.y_label = sim::name(job.coords[1]);
+  spec.x_label = sim::symbol(job.coords[0]);
+  spec.y_label = sim::symbol(job.coords[1]);
   // The chart painter joins a series' points by lines and marks only short
   // series at every point, so each crossing is a series of one point, its
   // colour keyed by its orbit; the legend is one row for all of them.

@@ -26,6 +26,8 @@ constexpr std::array<std::pair<StateComponent, std::string_view>, 6> kComponents
     {StateComponent::gamma3, "gamma3"},
 }};
 
+constexpr std::array<std::string_view, 6> kSymbols{"Ω₁", "Ω₂", "Ω₃", "γ₁", "γ₂", "γ₃"};
+
 constexpr std::array<std::pair<CrossingDirection, std::string_view>, 3> kDirections{{
     {CrossingDirection::upward, "upward"},
     {CrossingDirection::downward, "downward"},
@@ -171,6 +173,8 @@ const std::vector<StateComponent>& all_state_components() {
 }
 
 std::string_view name(StateComponent c) { return kComponents[std::size_t(c)].second; }
+
+std::string_view symbol(StateComponent c) { return kSymbols[std::size_t(c)]; }
 
 std::optional<StateComponent> state_component_from_name(std::string_view s) {
   for (const auto& [c, n] : kComponents)

@@ -17,6 +17,8 @@ namespace epviz::sim {
 enum class StateComponent { omega1, omega2, omega3, gamma1, gamma2, gamma3 };
 const std::vector<StateComponent>& all_state_components();
 std::string_view name(StateComponent c);  // "omega1" ... "gamma3"
+// As figures write it: "Ω₁" ... "γ₃".
+std::string_view symbol(StateComponent c);
 std::optional<StateComponent> state_component_from_name(std::string_view s);
 double value_of(StateComponent c, const physics::Vector3d& omega, const physics::Vector3d& gamma);
 

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "sim/section.hpp"
+
 namespace epviz::sweep {
 namespace {
 
@@ -22,11 +24,6 @@ int component(const std::string& field, const std::string& name) {
   return k >= '0' && k <= '2' ? k - '0' : -1;
 }
 
-const char* subscript(int k) {
-  static const char* const digits[] = {"₁", "₂", "₃"};
-  return digits[k];
-}
-
 // The value of `key` that every row has alike; nullopt when one lacks it or differs.
 std::optional<Json> shared(const std::vector<const Json*>& rows, const std::string& key) {
   std::optional<Json> v;
@@ -41,8 +38,10 @@ std::optional<Json> shared(const std::vector<const Json*>& rows, const std::stri
 }  // namespace
 
 std::string axis_symbol(const std::string& field) {
-  if (const int k = component(field, "gamma"); k >= 0) return std::string("γ") + subscript(k);
-  if (const int k = component(field, "omega"); k >= 0) return std::string("Ω") + subscript(k);
+  if (const int k = component(field, "omega"); k >= 0)
+    return std::string(sim::symbol(sim::StateComponent(int(sim::StateComponent::omega1) + k)));
+  if (const int k = component(field, "gamma"); k >= 0)
+    return std::string(sim::symbol(sim::StateComponent(int(sim::StateComponent::gamma1) + k)));
   if (field == "energy") return "E";
   if (field == "t_end") return "T";
   return field;

@@ -20,8 +20,8 @@ TEST(SectionChart, EachCrossingIsOnePointColouredByItsOrbit) {
   }
   orbits[1].failure = numerics::Failure{};  // lost: not drawn
   const auto spec = section_chart(job, orbits);
-  EXPECT_EQ(spec.x_label, "omega2");
-  EXPECT_EQ(spec.y_label, "gamma1");
+  EXPECT_EQ(spec.x_label, "Ω₂");  // symbols, as the atlases write them
+  EXPECT_EQ(spec.y_label, "γ₁");
   ASSERT_EQ(spec.series.size(), 4u);
   const std::vector<std::pair<double, double>> expected{{1, -1}, {2, -2}, {21, -3}, {22, -4}};
   for (std::size_t s = 0; s < 4; ++s) {
