@@ -30,9 +30,9 @@ const fs::path& job_file() {
   static const fs::path& file = *new fs::path(
       fs::temp_directory_path() / ("epviz-fuzz-section-" + std::to_string(::getpid()) + ".json"));
   static const bool removed_at_exit = std::atexit([] {
-    std::error_code ec;
-    fs::remove(job_file(), ec);
-  }) == 0;
+                                        std::error_code ec;
+                                        fs::remove(job_file(), ec);
+                                      }) == 0;
   (void)removed_at_exit;
   return file;
 }
@@ -49,12 +49,22 @@ void check_accepted(const section::SectionJob& job) {
 
 void read_section_bytes(const std::uint8_t* data, std::size_t size) {
   {
-    std::ofstream out(job_file(), std::ios::binary | std::ios::trunc);
+    // A new file each time, not the old one truncated: ext4 writes a file
+    // truncated and rewritten out to disk when it is closed (auto_da_alloc),
+    // which took most of each run's time.
+    std::error_code ec;
+    fs::remove(job_file(), ec);
+    std::ofstream out(job_file(), std::ios::binary);
     out.write(reinterpret_cast<const char*>(data), std::streamsize(size));
   }
   const section::SectionJob job = section::read_section_job(job_file());
   check_accepted(job);
   section::check_outputs(job);
+  // Outputs that pass the check are distinct files: one would overwrite another.
+  const std::string outputs[] = {job.csv, job.png, job.svg};
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (!outputs[i].empty() && outputs[i] != "-" && outputs[i] == outputs[j]) std::abort();
   const auto starts = section::section_starts(job);
   if (starts.empty() || starts.size() > std::size_t(job.orbits)) std::abort();
   for (const auto& s : starts)
