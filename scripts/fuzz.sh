@@ -18,11 +18,12 @@ seconds=${1:-60}
 shift $(($# > 0 ? 1 : 0))
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(fuzz_job_reader fuzz_simulate_options fuzz_protocol fuzz_sweep_reader
-  fuzz_manifest_reader fuzz_golden_reader)
+  fuzz_manifest_reader fuzz_golden_reader fuzz_section_reader)
 build=${EPVIZ_FUZZ_BUILD:-$root/build-fuzz}
 
 # The largest input each target is tried with: a job file can be long (and
-# deep nesting needs room), a page message is at most the server's 64 KiB.
+# deep nesting needs room; so can a section file's list of states), a page
+# message is at most the server's 64 KiB.
 max_len() {
   case "$1" in
     fuzz_job_reader) echo 65536 ;;
@@ -31,6 +32,7 @@ max_len() {
     fuzz_protocol) echo 65536 ;;
     fuzz_manifest_reader) echo 16384 ;;
     fuzz_golden_reader) echo 16384 ;;
+    fuzz_section_reader) echo 65536 ;;
     *) echo 4096 ;;
   esac
 }

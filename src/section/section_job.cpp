@@ -156,13 +156,17 @@ SectionJob read_section_job(const std::filesystem::path& file) {
 }
 
 void check_outputs(const SectionJob& job) {
+  std::vector<std::pair<std::string, std::string>> outputs;
   for (const auto& [key, path] : {std::pair{"csv", job.csv}, {"png", job.png}, {"svg", job.svg}}) {
     std::string where = job.file;
     where += ": key '";
     where += key;
     where += "'";
     io::check_output_file(where, path);
+    outputs.emplace_back(where, path);
   }
+  // The pictures are written after the CSV: one naming its file would replace it.
+  io::require_distinct_files(outputs);
 }
 
 std::vector<physics::InitialState> section_starts(const SectionJob& job) {

@@ -127,6 +127,33 @@ TEST(SectionCommand, BadFilesAreRefusedBeforeAnyWork) {
   }
 }
 
+// Two keys naming one file: the picture would replace the CSV written just
+// before it. Refused with the outputs' check, before any orbit runs.
+TEST(SectionJob, OutputsNamingOneFileAreRefused) {
+  TempDir d;
+  const fs::path file = d / "s.section.json";
+  const std::string csv = (d / "x.csv").string();
+  const std::string same_csv = (d / "." / "x.csv").string();  // another spelling
+  nlohmann::json png_on_csv = {{"csv", csv}, {"png", same_csv}};
+  nlohmann::json svg_on_csv = {{"csv", csv}, {"png", (d / "y.png").string()}, {"svg", csv}};
+  for (auto& [outputs, must_name] : {std::pair{png_on_csv, "'png'"}, {svg_on_csv, "'svg'"}}) {
+    SCOPED_TRACE(must_name);
+    nlohmann::json text = outputs;
+    text["case"] = "generic";
+    text["level"] = {{"energy", 2}, {"area", 1}};
+    text["orbits"] = 2;
+    std::ofstream(file) << text.dump();
+    const section::SectionJob job = section::read_section_job(file);
+    try {
+      section::check_outputs(job);
+      ADD_FAILURE() << "accepted";
+    } catch (const io::BadInput& e) {
+      EXPECT_NE(std::string(e.what()).find(must_name), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("same file"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(SectionCommand, ALostOrbitIsANumericalFailureAndNothingIsWritten) {
   TempDir d;
   const std::string csv = (d / "g.csv").string();
