@@ -11,6 +11,7 @@
 #include "io/bad_input.hpp"
 #include "io/output_paths.hpp"
 #include "io/png_writer.hpp"
+#include "io/shell_quote.hpp"
 #include "io/video_join.hpp"
 #include "shard/batch.hpp"
 #include "shard/merged_rows.hpp"
@@ -162,7 +163,7 @@ int run_merge(const MergeOptions& o) {
       io::write_file_atomically(o.resubmit,
                                 shard::slurm_resubmit_script(batches, merge_command_line(o)));
       std::fprintf(stderr, "epviz: to redo only those shards on Slurm, then this merge: bash %s\n",
-                   shard::shell_quote(o.resubmit).c_str());
+                   io::shell_quote(o.resubmit).c_str());
     }
     return 4;
   }
