@@ -20,8 +20,8 @@ std::string as_bash_reads_it(const std::string& line) {
 }
 
 TEST(ShellQuote, PlainWordsAreUnchanged) {
-  for (const std::string w : {"epviz", "/abs/a.sweep.json", "rows-1.jsonl", "--shard", "a=b,c:d",
-                              "x+y@50%"})
+  for (const std::string w :
+       {"epviz", "/abs/a.sweep.json", "rows-1.jsonl", "--shard", "a=b,c:d", "x+y@50%"})
     EXPECT_EQ(shell_quote(w), w);
 }
 
@@ -32,9 +32,9 @@ TEST(ShellQuote, OtherWordsAreQuoted) {
 }
 
 TEST(ShellQuote, BashReadsEachWordBackAsItWas) {
-  const std::vector<std::string> words = {"plain", "two words", "it's", "", "''", "\\'",
-                                          "$HOME *", "a\"b", "tab\there", "line\nbreak",
-                                          "`ls`; rm -rf x", "é ü"};
+  const std::vector<std::string> words = {"plain",     "two words",   "it's",           "",
+                                          "''",        "\\'",         "$HOME *",        "a\"b",
+                                          "tab\there", "line\nbreak", "`ls`; rm -rf x", "é ü"};
   std::string line, expected;
   for (const auto& w : words) {
     line += shell_quote(w) + " ";
