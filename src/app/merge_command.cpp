@@ -3,14 +3,13 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
-#include <memory>
 #include <optional>
 
 #include "app/gl_option.hpp"
 #include "io/atomic_file.hpp"
 #include "io/bad_input.hpp"
 #include "io/output_paths.hpp"
-#include "io/png_writer.hpp"
+#include "io/shell_quote.hpp"
 #include "io/video_join.hpp"
 #include "shard/batch.hpp"
 #include "shard/merged_rows.hpp"
@@ -18,10 +17,9 @@
 #include "sweep/atlas.hpp"
 #include "sweep/sweep_spec.hpp"
 #ifdef EPVIZ_HAVE_RENDER
-#include "paint/figure_painter.hpp"
 #include "render/gl_choice.hpp"
+#include "vector/figure_files.hpp"
 #include "vector/figure_format.hpp"
-#include "vector/vector_figure.hpp"
 #endif
 
 namespace epviz::app {
@@ -55,28 +53,18 @@ void draw_atlases(const std::vector<Json>& rows, const std::vector<sweep::AtlasR
                   const std::optional<sweep::FtleSettings>& ftle, const fs::path& out_dir,
                   const MergeOptions& o) {
   if (requests.empty()) return;
-  std::vector<sweep::AtlasFigure> figures;
+  // As figures: no taller than the grid needs (a few rows leave no blank band).
+  std::vector<chart::Figure> figures;
   for (const auto& q : requests)
-    for (auto& f : sweep::atlas_figures(rows, q, ftle)) figures.push_back(std::move(f));
+    for (auto& f : sweep::atlas_figures(rows, q, ftle))
+      figures.push_back({std::move(f.file_name), std::move(f.heat_map)});
 #ifdef EPVIZ_HAVE_RENDER
-  const auto format = vector::parse_figure_format(o.format);
-  std::unique_ptr<render::GlContext> context;  // PNG only: vector files need no GL
-  if (format == vector::FigureFormat::png) context = render::GlChoice(o.gl).open();
-  for (const auto& f : figures) {
-    paint::ChartOptions options;
-    options.width = 1280;
-    options.height = 900;
-    // As a figure: no taller than the grid needs (a few rows leave no blank band).
-    const chart::Figure figure{f.file_name, f.heat_map};
-    const fs::path path = out_dir / vector::figure_file_name(f.file_name, format);
-    if (context) {
-      const auto image = paint::paint_figure(*context, figure, options);
-      io::write_png_rgba(path, image.width, image.height, image.pixels);
-    } else {
-      vector::write_vector_figure(path, figure, format, options);
-    }
+  paint::ChartOptions options;
+  options.width = 1280;
+  options.height = 900;
+  for (const auto& path : vector::write_figures(
+           figures, out_dir, vector::parse_figure_format(o.format), o.gl, options))
     std::printf("  atlas %s\n", path.string().c_str());
-  }
 #else
   (void)out_dir;
   (void)o;
@@ -162,7 +150,7 @@ int run_merge(const MergeOptions& o) {
       io::write_file_atomically(o.resubmit,
                                 shard::slurm_resubmit_script(batches, merge_command_line(o)));
       std::fprintf(stderr, "epviz: to redo only those shards on Slurm, then this merge: bash %s\n",
-                   shard::shell_quote(o.resubmit).c_str());
+                   io::shell_quote(o.resubmit).c_str());
     }
     return 4;
   }

@@ -2,6 +2,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/json_reader.hpp"
+#include "io/shell_quote.hpp"
 #include "shard/checksum.hpp"
 #include "shard/manifest_checks.hpp"
 
@@ -178,26 +179,11 @@ std::vector<std::string> file_problems(const Manifest& m, const fs::path& dir) {
   return out;
 }
 
-std::string shell_quote(const std::string& word) {
-  if (!word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                              "0123456789_-./=:,+@%") == std::string::npos)
-    return word;
-  std::string q(1, '\'');
-  for (char c : word) {
-    if (c == '\'')
-      q.append("'\\''");
-    else
-      q.push_back(c);
-  }
-  q.push_back('\'');
-  return q;
-}
-
 std::string shell_command(const Manifest& m) {
   std::string line;
   for (const auto& a : m.command) {
     if (!line.empty()) line.push_back(' ');
-    line.append(shell_quote(a));
+    line.append(io::shell_quote(a));
   }
   return line;
 }

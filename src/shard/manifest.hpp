@@ -77,10 +77,6 @@ std::filesystem::path link_within(const std::filesystem::path& dir,
 // are intact.
 std::vector<std::string> file_problems(const Manifest& m, const std::filesystem::path& dir);
 
-// `word` as one word of a POSIX shell: as it is when it is plain, else in
-// single quotes (a quote inside written '\'').
-std::string shell_quote(const std::string& word);
-
 // The command that ran the shard, without its shard options, as one shell
 // line (arguments quoted where needed).
 std::string shell_command(const Manifest& m);

@@ -1,5 +1,7 @@
 #include "shard/resubmit.hpp"
 
+#include "io/shell_quote.hpp"
+
 namespace epviz::shard {
 namespace {
 
@@ -32,7 +34,7 @@ std::string slurm_resubmit_script(const std::vector<Batch>& batches,
   std::string merge;  // its words quoted, "epviz" first
   for (const auto& w : merge_command) {
     if (!merge.empty()) merge.push_back(' ');
-    merge += shell_quote(w);
+    merge += io::shell_quote(w);
   }
   std::string s =
       "#!/bin/bash\n"
@@ -49,13 +51,13 @@ std::string slurm_resubmit_script(const std::vector<Batch>& batches,
                              " --shard \"$SLURM_ARRAY_TASK_ID/" + std::to_string(b.count) + "\"";
     s += "# " + batch_name(b) + ": " + std::to_string(b.incomplete.size()) + " shards\n";
     s += "id=$(sbatch --parsable ${SBATCH_ARGS:-} --array=" + index_ranges(b.incomplete) +
-         " --chdir=\"$PWD\" --wrap " + shell_quote(task) + ")\n";
+         " --chdir=\"$PWD\" --wrap " + io::shell_quote(task) + ")\n";
     s += "arrays+=(\"${id%%;*}\")\n";
   }
   s += "deps=$(IFS=:; echo \"${arrays[*]}\")\n";
   s += "sbatch --parsable ${SBATCH_ARGS:-} --dependency=afterany:\"$deps\" --chdir=\"$PWD\" "
        "--wrap " +
-       shell_quote("exec " + with_binary(merge)) + "\n";
+       io::shell_quote("exec " + with_binary(merge)) + "\n";
   return s;
 }
 
