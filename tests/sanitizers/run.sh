@@ -48,9 +48,12 @@ if [ "$which" != tsan ]; then
     # (the server, the live session, the report) runs under ASan in test_serve,
     # test_live and test_app.
     '^e2e_'
-    # Installs the build tree and runs it elsewhere: it checks the install layout,
-    # not code paths the other tests do not already run.
+    # Install the build tree, or build the .deb, and run it elsewhere: they check
+    # the install layout and the package's declared dependencies, not code paths
+    # the other tests do not already run (and the package test traces its renders
+    # with strace, under which LeakSanitizer cannot work).
     '^install_tree$'
+    '^deb_package$'
     # Formatting and include edges: no code of ours runs.
     '^style_'
     # The whole quick bench through the command line, about two and a half
