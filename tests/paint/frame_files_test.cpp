@@ -9,9 +9,8 @@
 
 #include "io/png_reader.hpp"
 #include "paint/frame_files.hpp"
+#include "paint/small_scene.hpp"
 #include "physics/cases.hpp"
-#include "render/render_test_support.hpp"
-#include "sim/run_spec.hpp"
 #include "support/temp_dir.hpp"
 
 namespace epviz {
@@ -20,34 +19,12 @@ namespace {
 namespace et = epviz::testing;
 namespace fs = std::filesystem;
 
-constexpr int W = 160, H = 120;
-
-paint::FramePainter& painter() {
-  static paint::FramePainter p(et::shared_gl_context(), W, H, {.builtin_font = true});
-  return p;
-}
-
-struct Scene {
-  scene::SceneSettings settings;
-  scene::ScenePlan plan;
-};
-
-Scene short_scene() {
-  Scene s;
-  s.settings.width = W;
-  s.settings.height = H;
-  s.settings.fps = 10;
-  s.settings.duration = 1;
-  s.plan = scene::plan_scene(sim::preset_run(physics::Case::lagrange, sim::Method::dop853,
-                                             sim::Formulation::direct, 4.0, 100),
-                             s.settings);
-  return s;
-}
+using Scene = et::SmallScene;
 
 // Frame `index` drawn alone, through a drawer of its own.
 std::vector<std::uint8_t> drawn_alone(const Scene& s, int index) {
   const int frames[] = {index};
-  auto drawn = paint::draw_frames(s.plan, s.settings, frames, painter());
+  auto drawn = paint::draw_frames(s.plan, s.settings, frames, et::small_painter());
   EXPECT_FALSE(drawn.failure);
   return drawn.images.at(0).pixels;
 }
@@ -68,13 +45,13 @@ std::vector<fs::path> pngs_in(const fs::path& dir) {
 
 TEST(FrameFiles, APngPerFrameOfTheRangeAndResumeRedrawsOnlyWhatIsMissing) {
   test::TempDir dir;
-  const auto s = short_scene();
+  const auto s = et::small_scene(physics::Case::lagrange);
   ASSERT_GE(s.plan.frames, 6);
   const paint::FrameFiles files{dir / "out", "f", std::nullopt, s.settings.fps, true};
   const auto quiet = no_progress();
   {
     paint::FrameDrawer drawer(s.plan, s.settings);
-    const auto w = paint::write_frames(drawer, painter(), {2, 4}, files, quiet);
+    const auto w = paint::write_frames(drawer, et::small_painter(), {2, 4}, files, quiet);
     EXPECT_EQ(w.drawn, 3);
     EXPECT_EQ(w.skipped, 0);
     EXPECT_FALSE(w.kept) << "a frame was kept although files were written";
@@ -83,7 +60,7 @@ TEST(FrameFiles, APngPerFrameOfTheRangeAndResumeRedrawsOnlyWhatIsMissing) {
   ASSERT_EQ(written.size(), 3u);
   fs::remove(written[1]);  // frame 3
   paint::FrameDrawer drawer(s.plan, s.settings);
-  const auto again = paint::write_frames(drawer, painter(), {2, 4}, files, quiet);
+  const auto again = paint::write_frames(drawer, et::small_painter(), {2, 4}, files, quiet);
   EXPECT_EQ(again.drawn, 1);
   EXPECT_EQ(again.skipped, 2);
   ASSERT_EQ(pngs_in(dir / "out").size(), 3u);
@@ -93,9 +70,10 @@ TEST(FrameFiles, APngPerFrameOfTheRangeAndResumeRedrawsOnlyWhatIsMissing) {
 }
 
 TEST(FrameFiles, WithoutFilesTheLastFrameIsKept) {
-  const auto s = short_scene();
+  const auto s = et::small_scene(physics::Case::lagrange);
   paint::FrameDrawer drawer(s.plan, s.settings);
-  const auto w = paint::write_frames(drawer, painter(), {1, 3}, std::nullopt, no_progress());
+  const auto w =
+      paint::write_frames(drawer, et::small_painter(), {1, 3}, std::nullopt, no_progress());
   EXPECT_EQ(w.drawn, 3);
   ASSERT_TRUE(w.kept);
   EXPECT_EQ(w.kept->pixels, drawn_alone(s, 3));

@@ -8,9 +8,8 @@
 #include "io/png_reader.hpp"
 #include "paint/frame_drawer.hpp"
 #include "paint/gallery_figure.hpp"
+#include "paint/small_scene.hpp"
 #include "physics/cases.hpp"
-#include "render/render_test_support.hpp"
-#include "sim/run_spec.hpp"
 #include "support/temp_dir.hpp"
 
 namespace epviz {
@@ -18,33 +17,13 @@ namespace {
 
 namespace et = epviz::testing;
 
-constexpr int W = 160, H = 120;
-
-paint::FramePainter& painter() {
-  static paint::FramePainter p(et::shared_gl_context(), W, H, {.builtin_font = true});
-  return p;
-}
-
-struct Scene {
-  scene::SceneSettings settings;
-  scene::ScenePlan plan;
-};
-
-Scene short_scene(physics::Case c) {
-  Scene s;
-  s.settings.width = W;
-  s.settings.height = H;
-  s.settings.fps = 10;
-  s.settings.duration = 1;
-  s.plan = scene::plan_scene(
-      sim::preset_run(c, sim::Method::dop853, sim::Formulation::direct, 4.0, 100), s.settings);
-  return s;
-}
+constexpr int W = et::kSmallWidth, H = et::kSmallHeight;
+using Scene = et::SmallScene;
 
 TEST(GalleryFigure, EachStillIsItsFrameDrawnAloneInItsTile) {
   test::TempDir dir;
-  const Scene scenes[] = {short_scene(physics::Case::lagrange),
-                          short_scene(physics::Case::kovalevskaya)};
+  const Scene scenes[] = {et::small_scene(physics::Case::lagrange),
+                          et::small_scene(physics::Case::kovalevskaya)};
   const int frames[] = {2, 7};
   std::vector<paint::GalleryStill> stills;
   for (int i = 0; i < 2; ++i)
@@ -53,7 +32,7 @@ TEST(GalleryFigure, EachStillIsItsFrameDrawnAloneInItsTile) {
   io::ProgressOptions quiet;
   quiet.mode = io::ProgressMode::off;
   int failures = 0;
-  const auto written = paint::write_gallery_figure(stills, figure, painter(), quiet,
+  const auto written = paint::write_gallery_figure(stills, figure, et::small_painter(), quiet,
                                                    [&](const numerics::Failure&) { ++failures; });
   EXPECT_EQ(written.failures, 0);
   EXPECT_EQ(failures, 0);
@@ -61,8 +40,8 @@ TEST(GalleryFigure, EachStillIsItsFrameDrawnAloneInItsTile) {
   std::vector<render::RgbaImage> alone;
   for (int i = 0; i < 2; ++i) {
     const int one[] = {frames[i]};
-    alone.push_back(
-        paint::draw_frames(scenes[i].plan, scenes[i].settings, one, painter()).images.at(0));
+    alone.push_back(paint::draw_frames(scenes[i].plan, scenes[i].settings, one, et::small_painter())
+                        .images.at(0));
   }
   EXPECT_NE(alone[0].pixels, alone[1].pixels) << "the two stills look alike: the check is moot";
   const std::span<const std::uint8_t> tiles[] = {alone[0].pixels, alone[1].pixels};
