@@ -4,11 +4,14 @@
 #include "shard/shard_lock.hpp"
 
 #include <gtest/gtest.h>
+
 #include <unistd.h>
 
 #include <chrono>
+#include <condition_variable>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <stop_token>
 #include <thread>
 
@@ -109,11 +112,14 @@ TEST(ShardLock, AnotherHostsLockHoldsWhileItsHeartbeatGoesOn) {
   EXPECT_EQ(probe_lock(path).state, LockState::running);
   {
     // Its holder beats, as one on a node that does not share our flock would.
+    // Its beat every 20 ms is the holder's pace, not a wait on the test: the
+    // wait ends at once when the test stops it.
+    std::mutex m;
+    std::condition_variable_any paced;
     std::jthread beating([&](std::stop_token stop) {
-      while (!stop.stop_requested()) {
-        fs::last_write_time(path, fs::file_time_type::clock::now());
-        std::this_thread::sleep_for(20ms);
-      }
+      std::unique_lock lk(m);
+      do fs::last_write_time(path, fs::file_time_type::clock::now());
+      while (!paced.wait_for(lk, stop, 20ms, [] { return false; }) && !stop.stop_requested());
     });
     const auto why = refusal(path, 5s);
     EXPECT_NE(why.find("host node7, pid 4242, since 2026-01-02T03:04:05Z (its heartbeat goes on)"),
