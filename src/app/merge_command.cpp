@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <thread>
 
 #include "app/gl_option.hpp"
 #include "io/atomic_file.hpp"
@@ -15,6 +16,7 @@
 #include "shard/merged_rows.hpp"
 #include "shard/resubmit.hpp"
 #include "sweep/atlas.hpp"
+#include "sweep/self_check.hpp"
 #include "sweep/sweep_spec.hpp"
 #ifdef EPVIZ_HAVE_RENDER
 #include "render/gl_choice.hpp"
@@ -31,6 +33,7 @@ using Json = nlohmann::json;
 struct MergeOptions {
   std::string dir, out, gl, format, resubmit;
   std::vector<std::string> atlases;
+  bool allow_unconverged = false;
 };
 
 // This merge as a command line with absolute paths, run again by the
@@ -44,19 +47,20 @@ std::vector<std::string> merge_command_line(const MergeOptions& o) {
   for (const auto& a : o.atlases) c.insert(c.end(), {"--atlas", a});
   if (!o.format.empty()) c.insert(c.end(), {"--format", o.format});
   if (!o.gl.empty()) c.insert(c.end(), {"--gl", o.gl});
+  if (o.allow_unconverged) c.push_back("--allow-unconverged");
   c.insert(c.end(), {"--resubmit", absolute(o.resubmit)});
   return c;
 }
 
 // `ftle`: the sweep's FTLE settings, named in the captions; nullopt when unknown.
 void draw_atlases(const std::vector<Json>& rows, const std::vector<sweep::AtlasRequest>& requests,
-                  const std::optional<sweep::FtleSettings>& ftle, const fs::path& out_dir,
-                  const MergeOptions& o) {
+                  const std::optional<sweep::FtleSettings>& ftle, const sweep::SelfCheck* check,
+                  const fs::path& out_dir, const MergeOptions& o) {
   if (requests.empty()) return;
   // As figures: no taller than the grid needs (a few rows leave no blank band).
   std::vector<chart::Figure> figures;
   for (const auto& q : requests)
-    for (auto& f : sweep::atlas_figures(rows, q, ftle))
+    for (auto& f : sweep::atlas_figures(rows, q, ftle, check))
       figures.push_back({std::move(f.file_name), std::move(f.heat_map)});
 #ifdef EPVIZ_HAVE_RENDER
   paint::ChartOptions options;
@@ -84,7 +88,8 @@ std::optional<sweep::SweepSpec> saved_sweep(const shard::Manifest& m, const std:
   return std::nullopt;
 }
 
-void merge_sweep(const shard::Batch& b, const std::vector<Json>& rows, const fs::path& out_dir,
+// Returns false when the sweep's self-check found it not converged.
+bool merge_sweep(const shard::Batch& b, const std::vector<Json>& rows, const fs::path& out_dir,
                  const MergeOptions& o) {
   std::string text;
   for (const auto& r : rows) text += r.dump() + "\n";
@@ -97,7 +102,22 @@ void merge_sweep(const shard::Batch& b, const std::vector<Json>& rows, const fs:
   std::vector<sweep::AtlasRequest> requests;
   for (const auto& a : o.atlases) requests.push_back(sweep::parse_atlas_option(a));
   if (o.atlases.empty() && saved) requests = saved->atlases;
-  draw_atlases(rows, requests, saved ? saved->ftle : std::nullopt, out_dir, o);
+  // The sample is rerun here, where every row and the sweep file are at hand
+  // (docs/cluster.md, "Atlases check themselves").
+  std::optional<sweep::SelfCheck> check;
+  if (saved && !sweep::checked_metrics(*saved).empty()) {
+    check = sweep::run_self_check(*saved, rows, requests,
+                                  int(std::max(1u, std::thread::hardware_concurrency())));
+    const fs::path file = out_dir / sweep::self_check_file_name(any.output);
+    io::write_file_atomically(file, sweep::self_check_json(*check).dump(1) + "\n");
+    for (const auto& line : sweep::self_check_lines(*check)) std::printf("  %s\n", line.c_str());
+  } else if (!saved &&
+             (rows.front().contains("ftle") || rows.front().contains("reference_error"))) {
+    std::printf("  no self-check: the sweep file %s is gone or changed\n", any.source.c_str());
+  }
+  draw_atlases(rows, requests, saved ? saved->ftle : std::nullopt, check ? &*check : nullptr,
+               out_dir, o);
+  return !check || check->converged();
 }
 
 void merge_render(const shard::Batch& b, const fs::path& dir, const fs::path& out_dir) {
@@ -166,11 +186,20 @@ int run_merge(const MergeOptions& o) {
   for (std::size_t i = 0; i < batches.size(); ++i)
     if (batches[i].kind == "sweep") rows[i] = shard::merged_rows(batches[i], dir);
   fs::create_directories(out_dir);
+  int unconverged = 0;
   for (std::size_t i = 0; i < batches.size(); ++i) {
     if (batches[i].kind == "sweep")
-      merge_sweep(batches[i], rows[i], out_dir, o);
+      unconverged += !merge_sweep(batches[i], rows[i], out_dir, o);
     else
       merge_render(batches[i], dir, out_dir);
+  }
+  if (unconverged && !o.allow_unconverged) {
+    std::fprintf(stderr,
+                 "epviz: %d sweep(s) not converged: their metrics change at a 100x tighter "
+                 "tolerance (see the self-check lines); tighten tol, or pass "
+                 "--allow-unconverged\n",
+                 unconverged);
+    return 3;
   }
   return 0;
 }
@@ -196,6 +225,9 @@ std::function<int()> add_merge_command(CLI::App& app) {
   cmd->add_option("--resubmit", o->resubmit,
                   "FILE: when shards are missing or incomplete, write a script that submits only "
                   "those again as Slurm job arrays, then this merge (docs/cluster.md)");
+  cmd->add_flag("--allow-unconverged", o->allow_unconverged,
+                "exit 0 even when a sweep's self-check finds its FTLE or reference error "
+                "not converged (the figures still say so)");
   return [o] { return run_merge(*o); };
 }
 

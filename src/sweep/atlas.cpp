@@ -81,7 +81,8 @@ AtlasRequest parse_atlas_option(const std::string& text) {
 }
 
 std::vector<AtlasFigure> atlas_figures(const std::vector<Json>& rows, const AtlasRequest& q,
-                                       const std::optional<FtleSettings>& ftle) {
+                                       const std::optional<FtleSettings>& ftle,
+                                       const SelfCheck* check) {
   if (rows.empty()) throw AtlasError("atlas " + q.metric + ": the sweep has no rows");
   std::vector<Json> sorted = rows;
   std::sort(sorted.begin(), sorted.end(), [](const Json& a, const Json& b) {
@@ -182,6 +183,11 @@ std::vector<AtlasFigure> atlas_figures(const std::vector<Json>& rows, const Atla
         varied += ", " + axis_symbol(n) + " = " + label_of((*members.front())["axes"][n]);
     if (!varied.empty() || !fixed.empty()) h.title += " (" + (varied + fixed).substr(2) + ")";
     h.note = atlas_caption(members, q.metric, ftle);
+    // The verdict on the metric's accuracy heads the figure (the note under
+    // the map is one line, already full of how the runs were made).
+    if (check)
+      if (const auto verdict = self_check_caption(*check, q.metric); !verdict.empty())
+        h.title += " — " + verdict;
     h.missing = reduced.empty() ? (q.metric == "ftle" ? "no value (a run failed)" : "no value")
                                 : "every " + reduced + " failed";
     h.values.assign(h.rows.size(), std::vector<double>(h.columns.size(), kNaN));

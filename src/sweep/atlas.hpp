@@ -15,6 +15,7 @@
 
 #include "chart/chart_spec.hpp"
 #include "io/bad_input.hpp"
+#include "sweep/self_check.hpp"
 #include "sweep/sweep_spec.hpp"
 
 namespace epviz::sweep {
@@ -41,9 +42,11 @@ AtlasRequest parse_atlas_option(const std::string& text);
 // is not in the rows or a metric that no row has. Axes are titled by their
 // symbols and numeric ones carry their values (round ticks); the note under
 // the map is the caption of sweep/atlas_labels.hpp, whose FTLE window and
-// separation come from `ftle` (the sweep file's settings: the rows lack them).
+// separation come from `ftle` (the sweep file's settings: the rows lack them);
+// the title ends with `check`'s verdict on the metric (sweep/self_check.hpp).
 std::vector<AtlasFigure> atlas_figures(const std::vector<nlohmann::json>& rows,
                                        const AtlasRequest& request,
-                                       const std::optional<FtleSettings>& ftle = std::nullopt);
+                                       const std::optional<FtleSettings>& ftle = std::nullopt,
+                                       const SelfCheck* check = nullptr);
 
 }  // namespace epviz::sweep

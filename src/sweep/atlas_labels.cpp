@@ -1,5 +1,6 @@
 #include "sweep/atlas_labels.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -86,17 +87,31 @@ std::string atlas_caption(const std::vector<const Json*>& rows, const std::strin
                           const std::optional<FtleSettings>& ftle) {
   std::string run;
   auto add = [&](const std::string& part) { run += (run.empty() ? "" : ", ") + part; };
-  if (const auto t = shared(rows, "t_end"); t && t->is_number())
+  if (const auto t = shared(rows, "t_end"); t && t->is_number()) {
     add("T = " + number_text(t->get<double>()));
+  } else {  // an axis varies it: its range, so that T is never left unsaid
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (const Json* r : rows)
+      if (r->contains("t_end") && (*r)["t_end"].is_number()) {
+        lo = std::min(lo, (*r)["t_end"].get<double>());
+        hi = std::max(hi, (*r)["t_end"].get<double>());
+      }
+    if (hi >= lo) add("T = " + number_text(lo) + " to " + number_text(hi));
+  }
   if (const auto m = shared(rows, "method"); m && m->is_string())
     add("method " + m->get<std::string>());
   for (const char* key : {"tol", "step"})
     if (const auto v = shared(rows, key); v && v->is_number())
       add(std::string(key) + " = " + number_text(v->get<double>()));
-  if (metric != "ftle" || !ftle) return run;
-  const std::string window = ftle->window > 0.0 ? number_text(ftle->window) : "the sample spacing";
-  return run + (run.empty() ? "" : "; ") + "FTLE window " + window + ", separation " +
-         number_text(ftle->separation);
+  auto part = [&](const std::string& p) { run += (run.empty() ? "" : "; ") + p; };
+  if (metric == "ftle" && ftle) {
+    const std::string window =
+        ftle->window > 0.0 ? number_text(ftle->window) : "the sample spacing";
+    part("FTLE window " + window + ", separation " + number_text(ftle->separation));
+  } else if (metric == "ftle") {
+    part("FTLE window unknown (the sweep file is gone or changed)");
+  }
+  return run;
 }
 
 }  // namespace epviz::sweep

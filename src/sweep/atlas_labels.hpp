@@ -27,9 +27,10 @@ std::string axis_title(const std::string& field, const std::vector<const nlohman
 // "ftle" -> "largest FTLE λ (1/time)".
 std::string metric_label(const std::string& metric);
 
-// One line under the map: the end time T, the method and its tol or step
-// (those the rows share: one that varies is an axis), and for the ftle
-// metric the window and separation of `ftle` (not in the rows; unnamed
+// One line under the map: the end time T (always: "T = 50", or its range
+// when an axis varies it), the method and its tol or step (those the rows
+// share: one that varies is an axis), and for the ftle metric always the
+// window and separation of `ftle` (not in the rows; said to be unknown
 // without it). "T = 50, method gauss4, tol = 1e-10; FTLE window 0.5, separation 1e-08".
 std::string atlas_caption(const std::vector<const nlohmann::json*>& rows, const std::string& metric,
                           const std::optional<FtleSettings>& ftle);

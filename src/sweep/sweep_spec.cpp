@@ -116,6 +116,56 @@ std::string axis_fields_joined() {
   return s;
 }
 
+std::vector<std::string> row_metrics() {
+  return {"energy",
+          "t_end",
+          "tol",
+          "step",
+          "effective_step",
+          "max_relative_drift.gamma_norm2",
+          "max_relative_drift.area",
+          "max_relative_drift.energy",
+          "max_relative_drift.extra_integral",
+          "failure.t",
+          "final.t",
+          "samples_written",
+          "steps",
+          "rhs_evals",
+          "rejected_steps",
+          "cpu_seconds"};
+}
+
+std::string atlas_metrics_allowed(bool reference, bool ftle, const std::vector<std::string>& axes) {
+  std::string s;
+  auto add = [&](const std::string& m) { s += (s.empty() ? "" : ", ") + m; };
+  if (ftle) add("ftle");
+  if (reference) add("reference_error");
+  add("time_to_failure");
+  std::string names;
+  for (const auto& a : axes) names += (names.empty() ? "" : ", ") + a;
+  add("largest_stable:AXIS (AXIS: " + names + ")");
+  for (const auto& m : row_metrics()) add(m);
+  return s;
+}
+
+namespace {
+
+// Whether the rows of a sweep will hold `metric` (an atlas that draws one
+// they lack would only be refused by merge, after every point has run).
+bool metric_in_rows(const std::string& metric, bool reference, bool ftle,
+                    const std::vector<std::string>& axes) {
+  if (metric == "ftle") return ftle;
+  if (metric == "reference_error") return reference;
+  if (metric == "time_to_failure") return true;
+  const std::string stable = "largest_stable:";
+  if (metric.starts_with(stable))
+    return std::find(axes.begin(), axes.end(), metric.substr(stable.size())) != axes.end();
+  const auto known = row_metrics();
+  return std::find(known.begin(), known.end(), metric) != known.end();
+}
+
+}  // namespace
+
 long SweepSpec::point_count() const {
   long n = 1;
   for (const auto& a : axes) n *= long(a.values.size());
@@ -213,9 +263,20 @@ SweepSpec read_sweep(const Json& root, const std::string& file) {
           ar.fail(name == &q.x ? "x" : "y",
                   "'" + io::printable(*name) + "' is not one of the sweep's axes");
       }
+      std::vector<std::string> axis_names;
+      for (const auto& ax : s.axes) axis_names.push_back(ax.field);
+      if (!metric_in_rows(q.metric, s.reference, s.ftle.has_value(), axis_names))
+        ar.fail("metric",
+                "'" + io::printable(q.metric) + "' is not in this sweep's rows (allowed: " +
+                    atlas_metrics_allowed(s.reference, s.ftle.has_value(), axis_names) + ")");
       ar.finish();
       s.atlases.push_back(q);
     }
+  }
+  if (auto c = r.object("self_check")) {
+    if (auto v = c->number_in("threshold", 1e-6, 1.0, "1e-6 to 1 (a share of the colour bar)"))
+      s.self_check_threshold = *v;
+    c->finish();
   }
   r.finish();
   s.hash = shard::checksum_of(root.dump());  // nlohmann::json keeps keys sorted

@@ -53,6 +53,16 @@ struct AtlasRequest {
   double max = std::numeric_limits<double>::quiet_NaN();
 };
 
+// The numbers every row holds that an atlas can draw (sweep/run_record.cpp,
+// sweep/point_run.cpp write them), besides "ftle" and "reference_error"
+// (rows have them when the sweep asks), "time_to_failure" and
+// "largest_stable:AXIS" (sweep/atlas.hpp).
+std::vector<std::string> row_metrics();
+
+// The atlas metrics the rows of a sweep will have, for messages:
+// "ftle, time_to_failure, largest_stable:AXIS (AXIS: gamma[0], ...), cpu_seconds, ...".
+std::string atlas_metrics_allowed(bool reference, bool ftle, const std::vector<std::string>& axes);
+
 struct SweepSpec {
   std::string file;
   job::SimulationFields base;
@@ -60,6 +70,10 @@ struct SweepSpec {
   bool reference = false;
   std::optional<FtleSettings> ftle;
   std::vector<AtlasRequest> atlases;
+  // The self-check's limit (sweep/self_check.hpp): the largest change a
+  // sampled point's metric may show at a 100x tighter tolerance, as a share of
+  // the colour bar's range ("self_check": {"threshold": 0.05}).
+  double self_check_threshold = 0.05;
   // Of the canonical content (the parsed JSON written with sorted keys):
   // whitespace and key order do not change it, any value does.
   std::string hash;
