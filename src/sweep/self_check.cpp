@@ -69,8 +69,7 @@ std::vector<long> self_check_sample(long points) {
   out.reserve(std::size_t(n));
   // The middle of each of n equal stretches of the index range: a regular
   // sample, so that it crosses every axis rather than one corner of the grid.
-  for (long k = 0; k < n; ++k)
-    out.push_back(long((double(k) + 0.5) * double(points) / double(n)));
+  for (long k = 0; k < n; ++k) out.push_back(long((double(k) + 0.5) * double(points) / double(n)));
   return out;
 }
 
@@ -127,9 +126,8 @@ SelfCheck run_self_check(const SweepSpec& spec, const std::vector<Json>& rows,
       throw io::BadInput(spec.file + ": the self-check's point " + std::to_string(i) +
                          " has no row");
     try {
-      runs.push_back(resolve_point(read_point(i), [](const job::SimulationFields& f) {
-        return job::resolve(f);
-      }));
+      runs.push_back(resolve_point(read_point(i),
+                                   [](const job::SimulationFields& f) { return job::resolve(f); }));
     } catch (const std::invalid_argument& e) {
       throw io::BadInput(e.what());
     }

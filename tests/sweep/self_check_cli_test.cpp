@@ -1,7 +1,7 @@
 // `epviz sweep` and `epviz merge` checking a sweep's own accuracy: the
 // shipped chaos map, cut to an 8 x 8 grid with everything else as shipped,
-// passes; the same sweep at tol 1e-8 is flagged "not converged" and merge
-// exits 3 unless --allow-unconverged. And a sweep whose atlas asks for a
+// passes; the same sweep at tol 1e-8 (in shards) is flagged "not converged"
+// and merge exits 3 unless --allow-unconverged. And a sweep whose atlas asks for a
 // metric its rows will not have is refused before any point runs.
 #include <gtest/gtest.h>
 
@@ -32,14 +32,18 @@ struct Merged {
   Json check;  // the self-check JSON beside the merged rows; null when none
 };
 
-// Runs `sweep` as one shard into dir/rows and merges it (with `merge_args`).
-Merged sweep_and_merge(const TempDir& dir, const Json& sweep, const std::string& merge_args = "") {
+// Runs `sweep` as `shards` shards into dir/rows and merges them (with `merge_args`).
+Merged sweep_and_merge(const TempDir& dir, const Json& sweep, int shards = 1,
+                       const std::string& merge_args = "") {
   const auto file = dir.write("chaos.sweep.json", sweep.dump());
   fs::create_directories(dir / "rows");
-  const auto s = run_epviz("sweep " + file.string() + " --out " +
-                               (dir / "rows/chaos.jsonl").string() + " --shard 0/1 --quiet -j 2",
-                           dir);
-  EXPECT_EQ(s.exit_code, 0) << s.err;
+  for (int i = 0; i < shards; ++i) {
+    const auto s = run_epviz("sweep " + file.string() + " --out " +
+                                 (dir / "rows/chaos.jsonl").string() + " --shard " +
+                                 std::to_string(i) + "/" + std::to_string(shards) + " --quiet -j 2",
+                             dir);
+    EXPECT_EQ(s.exit_code, 0) << s.err;
+  }
   Merged m{run_epviz("merge " + (dir / "rows").string() + " --format svg " + merge_args, dir),
            nullptr};
   const auto json = dir / "rows/chaos.self_check.json";
@@ -61,8 +65,9 @@ TEST(SelfCheckCommand, TheShippedChaosMapPasses) {
 }
 
 TEST(SelfCheckCommand, TheChaosMapAtTol1e8IsNotConverged) {
+  // In 3 shards: the check is the merge's, whatever the shards.
   TempDir dir;
-  const auto m = sweep_and_merge(dir, cut_chaos_map(1e-8));
+  const auto m = sweep_and_merge(dir, cut_chaos_map(1e-8), 3);
   EXPECT_EQ(m.merge.exit_code, 3) << m.merge.out << m.merge.err;
   EXPECT_NE(m.merge.err.find("--allow-unconverged"), std::string::npos) << m.merge.err;
   ASSERT_TRUE(m.check.is_object()) << m.merge.out;
@@ -70,8 +75,8 @@ TEST(SelfCheckCommand, TheChaosMapAtTol1e8IsNotConverged) {
   EXPECT_GT(m.check["metrics"]["ftle"]["largest_change"].get<double>(), 0.05 * 0.3);
   // The figure is drawn all the same, saying so; and with the flag merge accepts it.
   EXPECT_TRUE(fs::exists(dir / "rows/atlas_ftle_gamma0_gamma1.svg"));
-  const auto allowed = run_epviz(
-      "merge " + (dir / "rows").string() + " --format svg --allow-unconverged", dir);
+  const auto allowed =
+      run_epviz("merge " + (dir / "rows").string() + " --format svg --allow-unconverged", dir);
   EXPECT_EQ(allowed.exit_code, 0) << allowed.err;
   EXPECT_NE(allowed.out.find("NOT CONVERGED"), std::string::npos) << allowed.out;
 }
@@ -84,6 +89,14 @@ TEST(SelfCheckCommand, AThresholdKeyLoosensTheCheck) {
   const auto m = sweep_and_merge(dir, s);
   EXPECT_EQ(m.merge.exit_code, 0) << m.merge.out << m.merge.err;
   EXPECT_EQ(m.check["threshold"], 0.5);
+  // A share outside 1e-6 to 1 is refused before any work.
+  s["self_check"]["threshold"] = 2;
+  const auto file = dir.write("bad.sweep.json", s.dump());
+  expect_bad_input(
+      run_epviz("sweep " + file.string() + " --out " + (dir / "bad.jsonl").string() + " --quiet",
+                dir),
+      "key 'self_check.threshold'");
+  EXPECT_FALSE(fs::exists(dir / "bad.jsonl"));
 }
 
 TEST(SelfCheckCommand, AnAtlasMetricNoRowWillHaveIsRefusedBeforeAnyWork) {

@@ -25,7 +25,8 @@ std::vector<Json> rows_of(const SweepSpec& spec) {
   ReferenceCache cache;
   for (long i = 0; i < spec.point_count(); ++i) {
     const PointFields f = point_fields(spec, i);
-    const auto run = resolve_point(f, [](const job::SimulationFields& x) { return job::resolve(x); });
+    const auto run =
+        resolve_point(f, [](const job::SimulationFields& x) { return job::resolve(x); });
     rows.push_back(Json::parse(
         run_point(prepared_point(f, run), spec.hash, spec.reference, spec.ftle, &cache).line));
   }
@@ -161,8 +162,7 @@ TEST(SelfCheck, AnAtlasOverTKeepsTInItsCaption) {
   const auto rows = rows_of(spec);
   const auto figs = atlas_figures(rows, parse_atlas_option("ftle:omega[0]:t_end"), spec.ftle);
   ASSERT_EQ(figs.size(), 1u);
-  EXPECT_NE(figs[0].heat_map.note.find("T = 2 to 4"), std::string::npos)
-      << figs[0].heat_map.note;
+  EXPECT_NE(figs[0].heat_map.note.find("T = 2 to 4"), std::string::npos) << figs[0].heat_map.note;
 }
 
 }  // namespace
