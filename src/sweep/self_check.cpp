@@ -45,6 +45,19 @@ sim::RunSpec tightened(sim::RunSpec run, double tighter) {
   return run;
 }
 
+// How the FTLE's runs were tightened, for the report: "tol / 100",
+// "step / 100^(1/order)" or both, as the sampled methods are adaptive or not.
+std::string ftle_tightening(const std::vector<sim::RunSpec>& runs, double tighter) {
+  char factor[32];
+  std::snprintf(factor, sizeof factor, "%g", tighter);
+  bool adaptive = false, fixed = false;
+  for (const auto& r : runs) (sim::is_adaptive(r.method) ? adaptive : fixed) = true;
+  std::string out;
+  if (adaptive) out = std::string("tol / ") + factor;
+  if (fixed) out += std::string(adaptive ? ", " : "") + "step / " + factor + "^(1/order)";
+  return out;
+}
+
 // The reference error of `run` against its reference made `tighter` times more accurate.
 std::optional<double> tighter_reference_error(const sim::RunSpec& run, double tighter) {
   sim::RunSpec reference = reference_run(run);
@@ -168,10 +181,7 @@ SelfCheck run_self_check(const SweepSpec& spec, const std::vector<Json>& rows,
   for (const auto& metric : metrics) {
     MetricCheck c;
     c.metric = metric;
-    char factor[32];
-    std::snprintf(factor, sizeof factor, "%g", tighter);
-    c.tightened = metric == "ftle" ? std::string("tol / ") + factor + " (a fixed step: step / " +
-                                         factor + "^(1/order))"
+    c.tightened = metric == "ftle" ? ftle_tightening(runs, tighter)
                                    : "reference tol " + short_number(1e-13 / tighter);
     c.range = colour_range(metric, rows, atlases);
     c.limit = check.threshold * c.range;

@@ -40,7 +40,7 @@ std::vector<std::string> checked_metrics(const SweepSpec& spec);
 
 struct MetricCheck {
   std::string metric;           // "ftle" or "reference_error"
-  std::string tightened;        // what was made tighter: "tol / 100", "reference tol 1e-15"
+  std::string tightened;        // "tol / 100", "step / 100^(1/order)", "reference tol 1e-15"
   long compared = 0;            // sampled points with a value both times
   long one_sided = 0;           // sampled points with a value only one of the two times
   double largest_change = 0.0;  // |tighter - row| over the compared points

@@ -82,6 +82,21 @@ TEST(SelfCheck, AtTheSameAccuracyNothingChanges) {
   }
 }
 
+TEST(SelfCheck, AFixedStepMethodsFtleIsRerunAtASmallerStep) {
+  Json j = Json::parse(R"({
+      "simulation": {"case": "generic", "t_end": 10, "samples": 20, "method": "rk4"},
+      "axes": [{"field": "step", "values": [0.1, 0.05]}, {"field": "omega[0]", "values": [0.5, 1]}],
+      "ftle": {"window": 0.5}})");
+  const auto spec = read_sweep(j, "rk4.sweep.json");
+  const auto rows = rows_of(spec);
+  const auto same = run_self_check(spec, rows, {}, 1, 1.0);
+  EXPECT_EQ(same.metrics[0].largest_change, 0.0);
+  const auto tighter = run_self_check(spec, rows, {}, 1);
+  EXPECT_EQ(tighter.metrics[0].tightened, "step / 100^(1/order)");
+  EXPECT_GT(tighter.metrics[0].largest_change, 0.0);  // another step: another run
+  EXPECT_EQ(tighter.metrics[0].compared, 4);
+}
+
 TEST(SelfCheck, TheReferenceErrorAtTheSameReferenceIsTheRows) {
   Json j = Json::parse(R"({
       "simulation": {"case": "generic", "t_end": 10, "samples": 10, "max_drift": 0.1},
