@@ -33,6 +33,17 @@ std::vector<Json> rows_of(const SweepSpec& spec) {
   return rows;
 }
 
+// A sweep read from `text`, with its rows.
+struct RanSweep {
+  SweepSpec spec;
+  std::vector<Json> rows;
+};
+RanSweep ran(const char* text) {
+  RanSweep r{read_sweep(Json::parse(text), "test.sweep.json"), {}};
+  r.rows = rows_of(r.spec);
+  return r;
+}
+
 SweepSpec ftle_sweep(double tol) {
   Json j = Json::parse(R"({
       "simulation": {"case": "generic", "t_end": 20, "samples": 40, "method": "dop853",
@@ -83,12 +94,10 @@ TEST(SelfCheck, AtTheSameAccuracyNothingChanges) {
 }
 
 TEST(SelfCheck, AFixedStepMethodsFtleIsRerunAtASmallerStep) {
-  Json j = Json::parse(R"({
+  const auto [spec, rows] = ran(R"({
       "simulation": {"case": "generic", "t_end": 10, "samples": 20, "method": "rk4"},
       "axes": [{"field": "step", "values": [0.1, 0.05]}, {"field": "omega[0]", "values": [0.5, 1]}],
       "ftle": {"window": 0.5}})");
-  const auto spec = read_sweep(j, "rk4.sweep.json");
-  const auto rows = rows_of(spec);
   const auto same = run_self_check(spec, rows, {}, 1, 1.0);
   EXPECT_EQ(same.metrics[0].largest_change, 0.0);
   const auto tighter = run_self_check(spec, rows, {}, 1);
@@ -98,14 +107,12 @@ TEST(SelfCheck, AFixedStepMethodsFtleIsRerunAtASmallerStep) {
 }
 
 TEST(SelfCheck, TheReferenceErrorAtTheSameReferenceIsTheRows) {
-  Json j = Json::parse(R"({
+  const auto [spec, rows] = ran(R"({
       "simulation": {"case": "generic", "t_end": 10, "samples": 10, "max_drift": 0.1},
       "axes": [{"field": "method", "values": ["rk4", "gauss4"]},
                {"field": "step", "values": [0.5, 0.1]},
                {"field": "energy", "values": [1.5, 3.0, 6.0, 12.0]}],
       "reference": true})");
-  const auto spec = read_sweep(j, "ref.sweep.json");
-  const auto rows = rows_of(spec);
   const auto same = run_self_check(spec, rows, {}, 2, 1.0);
   ASSERT_EQ(same.metrics.size(), 1u);
   EXPECT_EQ(same.metrics[0].metric, "reference_error");
@@ -169,12 +176,10 @@ TEST(SelfCheck, TheAtlasShowsTTheWindowAndTheVerdict) {
 }
 
 TEST(SelfCheck, AnAtlasOverTKeepsTInItsCaption) {
-  Json j = Json::parse(R"({
+  const auto [spec, rows] = ran(R"({
       "simulation": {"case": "generic", "t_end": 5, "samples": 10, "method": "dop853"},
       "axes": [{"field": "t_end", "values": [2, 4]}, {"field": "omega[0]", "values": [0.5, 1]}],
       "ftle": {"window": 0.5}})");
-  const auto spec = read_sweep(j, "t.sweep.json");
-  const auto rows = rows_of(spec);
   const auto figs = atlas_figures(rows, parse_atlas_option("ftle:omega[0]:t_end"), spec.ftle);
   ASSERT_EQ(figs.size(), 1u);
   EXPECT_NE(figs[0].heat_map.note.find("T = 2 to 4"), std::string::npos) << figs[0].heat_map.note;
