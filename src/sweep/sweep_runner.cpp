@@ -1,13 +1,16 @@
 #include "sweep/sweep_runner.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <exception>
+#include <map>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
 
 #include "io/bad_input.hpp"
 #include "job/resolve.hpp"
+#include "sweep/batch_points.hpp"
 
 namespace epviz::sweep {
 
@@ -29,8 +32,50 @@ std::vector<PreparedPoint> pending_points(const SweepSpec& spec, shard::ItemRang
   return pending;
 }
 
+namespace {
+
+// What one thread takes at a time: points run as one batch, or one point on
+// the scalar path.
+struct Work {
+  std::vector<const PreparedPoint*> points;
+  bool batched = false;
+};
+
+// Batches of one batch_key each, large enough that the lanes seldom idle at
+// a batch's end, small enough that the threads share the work evenly and
+// rows reach the file as the sweep goes; the scalar points after them.
+std::vector<Work> work_list(const std::vector<PreparedPoint>& points, int threads, PointPath path) {
+  std::vector<std::string> keys;
+  std::map<std::string, std::vector<const PreparedPoint*>> groups;
+  std::vector<Work> scalar;
+  for (const auto& p : points) {
+    if (path == PointPath::batch && runs_batched(p.run)) {
+      auto [it, fresh] = groups.try_emplace(batch_key(p.run));
+      if (fresh) keys.push_back(it->first);
+      it->second.push_back(&p);
+    } else {
+      scalar.push_back({{&p}, false});
+    }
+  }
+  std::vector<Work> list;
+  for (const auto& key : keys) {
+    const auto& group = groups[key];
+    const std::size_t chunk =
+        std::clamp<std::size_t>(group.size() / (4 * std::size_t(threads)), 16, 64);
+    for (std::size_t b = 0; b < group.size(); b += chunk)
+      list.push_back(
+          {{group.begin() + long(b), group.begin() + long(std::min(group.size(), b + chunk))},
+           true});
+  }
+  list.insert(list.end(), scalar.begin(), scalar.end());
+  return list;
+}
+
+}  // namespace
+
 SweepTotals run_points(const SweepSpec& spec, const std::vector<PreparedPoint>& points, int threads,
-                       RowAppender& rows, const std::function<void()>& on_row) {
+                       RowAppender& rows, const std::function<void()>& on_row, PointPath path) {
+  const std::vector<Work> work_items = work_list(points, std::max(1, threads), path);
   std::atomic<std::size_t> next{0};
   std::atomic<bool> stop{false};
   std::atomic<long> failures{0};
@@ -40,15 +85,20 @@ SweepTotals run_points(const SweepSpec& spec, const std::vector<PreparedPoint>& 
   auto work = [&] {
     for (;;) {
       const std::size_t i = next.fetch_add(1);
-      if (i >= points.size() || stop) return;
+      if (i >= work_items.size() || stop) return;
       try {
-        const auto& p = points[i];
-        const auto row = run_point(p, spec.hash, spec.reference, spec.ftle, &references);
-        if (row.failed) ++failures;
-        rows.append(row.line);
-        if (on_row) {
-          std::lock_guard g(lock);
-          on_row();
+        const Work& w = work_items[i];
+        const auto done =
+            w.batched ? run_batched(w.points, spec.hash, spec.reference, spec.ftle, &references)
+                      : std::vector{run_point(*w.points.front(), spec.hash, spec.reference,
+                                              spec.ftle, &references)};
+        for (const auto& row : done) {
+          if (row.failed) ++failures;
+          rows.append(row.line);
+          if (on_row) {
+            std::lock_guard g(lock);
+            on_row();
+          }
         }
       } catch (...) {
         std::lock_guard g(lock);
@@ -58,7 +108,7 @@ SweepTotals run_points(const SweepSpec& spec, const std::vector<PreparedPoint>& 
       }
     }
   };
-  const int n = std::max(1, std::min<int>(threads, int(points.size())));
+  const int n = std::max(1, std::min<int>(threads, int(work_items.size())));
   std::vector<std::thread> pool;
   for (int t = 1; t < n; ++t) pool.emplace_back(work);
   work();
