@@ -1,6 +1,5 @@
 #include "sweep/batch_points.hpp"
 
-#include <ctime>
 #include <cstdio>
 
 #include "physics/direct_batch.hpp"
@@ -8,14 +7,6 @@
 
 namespace epviz::sweep {
 namespace {
-
-// The calling thread's CPU time, as sim::simulate times a run: the other
-// threads of the sweep run other batches meanwhile.
-double thread_cpu_seconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
 
 // The batch settings of sim's dop853 trajectory (sim/trajectory_steppers.hpp,
 // start_with): the run's tolerance as rtol and atol, its step budget.
@@ -127,8 +118,7 @@ bool runs_batched(const sim::RunSpec& run) {
   // The checks sim::Trajectory::start makes are left to it: a run it would
   // refuse takes the scalar path and is refused there, as before.
   return run.formulation == sim::Formulation::direct && run.method == sim::Method::dop853 &&
-         run.t_end > 0.0 && run.samples >= 1 && run.samples <= kKeptSamples &&
-         run.max_drift > 0.0;
+         run.t_end > 0.0 && run.samples >= 1 && run.samples <= kKeptSamples && run.max_drift > 0.0;
 }
 
 std::string batch_key(const sim::RunSpec& run) {
@@ -160,9 +150,9 @@ std::vector<PointRow> run_batched(const std::vector<const PreparedPoint*>& point
     runs.push_back(p->run);
     tasks.push_back(task_of(p->run, long(tasks.size())));
   }
-  const double start = thread_cpu_seconds();
+  const double start = sim::thread_cpu_seconds();
   auto results = integrate(runs, tasks);
-  const double cpu = thread_cpu_seconds() - start;
+  const double cpu = sim::thread_cpu_seconds() - start;
   double attempts = 0.0;
   for (const auto& r : results) attempts += double(r.steps + r.rejected_steps);
 

@@ -16,6 +16,7 @@
 #include "helpers.hpp"
 #include "physics/direct_rhs_batch.hpp"
 #include "physics/invariants.hpp"
+#include "support/simd_env.hpp"
 
 namespace epviz::physics {
 namespace {
@@ -182,22 +183,7 @@ TEST(DirectBatch, UnreachableToleranceUnderflowsLikeAlone) {
   expect_each_lane_alone(generic_body(), tasks, settings);
 }
 
-class ScopedSimdEnv {
- public:
-  explicit ScopedSimdEnv(const char* value) {
-    if (const char* old = std::getenv("EPVIZ_SIMD")) old_ = old;
-    ::setenv("EPVIZ_SIMD", value, 1);
-  }
-  ~ScopedSimdEnv() {
-    if (old_.empty())
-      ::unsetenv("EPVIZ_SIMD");
-    else
-      ::setenv("EPVIZ_SIMD", old_.c_str(), 1);
-  }
-
- private:
-  std::string old_;
-};
+using epviz::test::ScopedSimdEnv;
 
 TEST(DirectBatch, ForcedPathsGiveTheScalarPathsResultsBitwise) {
   const auto tasks = mixed_tasks(10);

@@ -10,6 +10,7 @@
 
 #include "numerics/simd_path.hpp"
 #include "physics/cases.hpp"
+#include "support/simd_env.hpp"
 #include "support/temp_dir.hpp"
 #include "sweep/batch_points.hpp"
 #include "sweep/rows_by_index.hpp"
@@ -31,22 +32,7 @@ Rows rows_of(const SweepSpec& spec, const std::vector<PreparedPoint>& points, in
   return rows_by_index(file);
 }
 
-class ScopedSimdEnv {
- public:
-  explicit ScopedSimdEnv(const char* value) {
-    if (const char* old = std::getenv("EPVIZ_SIMD")) old_ = old;
-    ::setenv("EPVIZ_SIMD", value, 1);
-  }
-  ~ScopedSimdEnv() {
-    if (old_.empty())
-      ::unsetenv("EPVIZ_SIMD");
-    else
-      ::setenv("EPVIZ_SIMD", old_.c_str(), 1);
-  }
-
- private:
-  std::string old_;
-};
+using epviz::test::ScopedSimdEnv;
 
 // Generic-body runs with omega[0] varied, among them points that fail in
 // every way a lane can (the step budget, lost motion at an output time, a
@@ -114,7 +100,8 @@ TEST(BatchSweep, EveryInstructionSetWritesTheSameRows) {
     if (!numerics::cpu_supports(path)) continue;
     const std::string name(numerics::name(path));
     ScopedSimdEnv env(name.c_str());
-    const Rows batch = rows_of(spec, points, 1, PointPath::batch, dir / ("batch-" + name + ".jsonl"));
+    const Rows batch =
+        rows_of(spec, points, 1, PointPath::batch, dir / ("batch-" + name + ".jsonl"));
     ASSERT_EQ(batch.size(), scalar.size()) << name;
     for (const auto& [i, row] : scalar) EXPECT_EQ(batch.at(i), row) << name << " point " << i;
   }
