@@ -1,6 +1,8 @@
 #include "sweep/batch_points.hpp"
 
+#include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "physics/direct_batch.hpp"
 #include "sim/drift.hpp"
@@ -118,7 +120,8 @@ bool runs_batched(const sim::RunSpec& run) {
   // The checks sim::Trajectory::start makes are left to it: a run it would
   // refuse takes the scalar path and is refused there, as before.
   return run.formulation == sim::Formulation::direct && run.method == sim::Method::dop853 &&
-         run.t_end > 0.0 && run.samples >= 1 && run.samples <= kKeptSamples && run.max_drift > 0.0;
+         run.t_end > 0.0 && std::isfinite(run.t_end) && run.samples >= 1 &&
+         run.samples <= kKeptSamples && run.max_drift > 0.0;
 }
 
 std::string batch_key(const sim::RunSpec& run) {
@@ -142,6 +145,10 @@ std::vector<PointRow> run_batched(const std::vector<const PreparedPoint*>& point
                                   const std::string& sweep_hash, bool reference,
                                   const std::optional<FtleSettings>& ftle, ReferenceCache* cache) {
   if (points.empty()) return {};
+  const std::string key = batch_key(points.front()->run);
+  for (const auto* p : points)
+    if (!runs_batched(p->run) || batch_key(p->run) != key)
+      throw std::logic_error("run_batched: a point the batch cannot take, or of another batch");
   std::vector<sim::RunSpec> runs;
   std::vector<physics::DirectBatchTask> tasks;
   runs.reserve(points.size());

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 #include "numerics/simd_path.hpp"
@@ -135,6 +136,12 @@ TEST(BatchSweep, OnlyDirectDop853RunsTakeTheBatch) {
   run.formulation = sim::Formulation::direct;
   run.samples = kKeptSamples + 1;  // streamed, to keep memory flat
   EXPECT_FALSE(runs_batched(run));
+
+  // A batch has one body, tolerance and step budget.
+  const auto points = mixed_points(6);  // point 5 has another tolerance
+  EXPECT_NE(batch_key(points[0].run), batch_key(points[5].run));
+  EXPECT_EQ(batch_key(points[0].run), batch_key(points[1].run));
+  EXPECT_THROW(run_batched({&points[0], &points[5]}, "h", false, {}, nullptr), std::logic_error);
 }
 
 }  // namespace
