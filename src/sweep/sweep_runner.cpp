@@ -41,6 +41,10 @@ struct Work {
   bool batched = false;
 };
 
+// A batch keeps every sample of its points until it ends (the scalar path one
+// point's): at most this many, about 40 MB, unless one point has more.
+constexpr long kBatchSamples = 1L << 18;
+
 // Batches of one batch_key each, large enough that the lanes seldom idle at
 // a batch's end, small enough that the threads share the work evenly and
 // rows reach the file as the sweep goes; the scalar points after them.
@@ -62,10 +66,17 @@ std::vector<Work> work_list(const std::vector<PreparedPoint>& points, int thread
     const auto& group = groups[key];
     const std::size_t chunk =
         std::clamp<std::size_t>(group.size() / (4 * std::size_t(threads)), 16, 64);
-    for (std::size_t b = 0; b < group.size(); b += chunk)
-      list.push_back(
-          {{group.begin() + long(b), group.begin() + long(std::min(group.size(), b + chunk))},
-           true});
+    long samples = 0;
+    for (std::size_t i = 0; i < group.size(); ++i) {
+      const PreparedPoint* p = group[i];
+      const long mine = long(p->run.samples) + 1;
+      if (i == 0 || list.back().points.size() >= chunk || samples + mine > kBatchSamples) {
+        list.push_back({{}, true});
+        samples = 0;
+      }
+      list.back().points.push_back(p);
+      samples += mine;
+    }
   }
   list.insert(list.end(), scalar.begin(), scalar.end());
   return list;
