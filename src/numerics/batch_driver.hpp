@@ -238,6 +238,7 @@ class BatchEmbedded {
   int consecutive_rejects_[W], nonfinite_trials_[W];
   bool last_rejected_[W], accepted_[W], stepped_[W];
   bool dense_counted_[W];  // this step's dense output evaluations are counted
+  double err_pow_[W];      // err_power of the attempt's error
 };
 
 template <BatchSystem Sys, int W, class Tableau>
@@ -252,6 +253,9 @@ auto BatchEmbedded<Sys, W, Tableau>::run(const std::vector<BatchTask<D>>& tasks)
   const auto load_lane = [this](int l) { load(l); };
   while (batch::ready_lanes(task_, prepare_lane, load_lane)) {
     kernels_.attempt(*L_, sys_);
+    // The controller's power of every lane's error in one loop, where the
+    // lanes' chains of square roots overlap (decide uses it lane by lane).
+    for (int l = 0; l < W; ++l) err_pow_[l] = err_power(L_->err[l]);
     bool need_dense = false;
     for (int l = 0; l < W; ++l) {
       accepted_[l] = task_[l] >= 0 && decide(l);
@@ -385,7 +389,7 @@ bool BatchEmbedded<Sys, W, Tableau>::decide(int l) {
   if (finite && err <= 1.0) {
     double fac;
     if (beta_ == 0.0) {
-      fac = opts_.safety * err_power(err);
+      fac = opts_.safety * err_pow_[l];
     } else {
       const double log_err = std::log(err);
       fac = opts_.safety * std::exp(beta_ * log_err_old_[l] - expo_ * log_err);
@@ -411,7 +415,7 @@ bool BatchEmbedded<Sys, W, Tableau>::decide(int l) {
   last_rejected_[l] = true;
   double fac = fac_min_;
   if (finite) {
-    fac = std::max(fac_min_, opts_.safety * err_power(err));
+    fac = std::max(fac_min_, opts_.safety * err_pow_[l]);
   } else {
     ++nonfinite_trials_[l];
   }
