@@ -65,6 +65,15 @@ template <int D>
 using BatchOutputCheck =
     std::function<std::optional<Failure>(long id, double t, const std::array<double, D>& x)>;
 
+// Told, with the task's id, when a trajectory takes a lane and when it ends
+// (reached t_end or failed; its result complete), from the thread running the
+// batch: so that a caller can use each result as soon as it is there.
+template <int D>
+struct BatchEvents {
+  std::function<void(long id)> started;
+  std::function<void(long id, const BatchResult<D>& result)> ended;
+};
+
 // Throws std::invalid_argument naming the first task whose times are not
 // finite, whose t_end < t0 or whose output times leave [t0, t_end] or descend.
 template <int D>
@@ -173,8 +182,12 @@ class BatchEmbedded {
 
   // Throws std::invalid_argument for the options EmbeddedRk refuses.
   BatchEmbedded(Sys sys, const Kernels& kernels, AdaptiveOptions opts = {},
-                BatchOutputCheck<D> check = {})
-      : sys_(std::move(sys)), kernels_(kernels), opts_(opts), check_(std::move(check)) {
+                BatchOutputCheck<D> check = {}, BatchEvents<D> events = {})
+      : sys_(std::move(sys)),
+        kernels_(kernels),
+        opts_(opts),
+        check_(std::move(check)),
+        events_(std::move(events)) {
     EmbeddedRk<Probe, Tableau> validate(Probe{}, opts_);  // the very checks of the scalar stepper
     fac_min_ = opts_.fac_min < 0 ? Tableau::default_fac_min : opts_.fac_min;
     fac_max_ = opts_.fac_max < 0 ? Tableau::default_fac_max : opts_.fac_max;
@@ -226,6 +239,7 @@ class BatchEmbedded {
   Kernels kernels_;
   AdaptiveOptions opts_;
   BatchOutputCheck<D> check_;
+  BatchEvents<D> events_;
   double fac_min_, fac_max_, beta_, expo_;
 
   std::unique_ptr<Lanes> L_;
@@ -303,6 +317,7 @@ void BatchEmbedded<Sys, W, Tableau>::load(int l) {
 template <BatchSystem Sys, int W, class Tableau>
 bool BatchEmbedded<Sys, W, Tableau>::start(int l) {
   const auto& task = queue_->task(task_[l]);
+  if (events_.started) events_.started(task.id);
   L_->t[l] = L_->t_prev[l] = task.t0;
   for (int i = 0; i < D; ++i) L_->x[i][l] = L_->x_prev[i][l] = task.x0[std::size_t(i)];
   h_next_[l] = opts_.h_init > 0 ? std::min(opts_.h_init, opts_.h_max) : 0.0;
@@ -479,6 +494,7 @@ void BatchEmbedded<Sys, W, Tableau>::finish(int l, std::optional<Failure> failur
     for (int i = 0; i < D; ++i) result.x[std::size_t(i)] = dense_used(l, i, task.t_end);
   }
   result.failure = std::move(failure);
+  if (events_.ended) events_.ended(task.id, result);
 }
 
 }  // namespace epviz::numerics

@@ -1,7 +1,9 @@
 #include "sweep/batch_points.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <stdexcept>
 
 #include "physics/direct_batch.hpp"
@@ -46,7 +48,8 @@ sim::Sample sample_of(double t, const std::array<double, 6>& x) {
 // Runs `tasks` (ids 0, 1, ... into `runs`) with every output passing the
 // motion check of its run, as sim::Trajectory's outputs do.
 std::vector<physics::DirectBatchResult> integrate(
-    const std::vector<sim::RunSpec>& runs, const std::vector<physics::DirectBatchTask>& tasks) {
+    const std::vector<sim::RunSpec>& runs, const std::vector<physics::DirectBatchTask>& tasks,
+    numerics::BatchEvents<6> events = {}) {
   std::vector<sim::MotionCheck> checks;
   checks.reserve(runs.size());
   for (const auto& run : runs) checks.emplace_back(run.body, run.initial, run.max_drift);
@@ -55,6 +58,7 @@ std::vector<physics::DirectBatchResult> integrate(
   settings.check = [&](long id, double t, const std::array<double, 6>& x) {
     return checks[std::size_t(id)].failure(sample_of(t, x), method);
   };
+  settings.events = std::move(events);
   return physics::integrate_direct_batch(runs.front().body, tasks, settings);
 }
 
@@ -141,10 +145,10 @@ std::string batch_key(const sim::RunSpec& run) {
   return key;
 }
 
-std::vector<PointRow> run_batched(const std::vector<const PreparedPoint*>& points,
-                                  const std::string& sweep_hash, bool reference,
-                                  const std::optional<FtleSettings>& ftle, ReferenceCache* cache) {
-  if (points.empty()) return {};
+void run_batched(const std::vector<const PreparedPoint*>& points, const std::string& sweep_hash,
+                 bool reference, const std::optional<FtleSettings>& ftle, ReferenceCache* cache,
+                 const std::function<void(const PointRow&)>& emit) {
+  if (points.empty()) return;
   const std::string key = batch_key(points.front()->run);
   for (const auto* p : points)
     if (!runs_batched(p->run) || batch_key(p->run) != key)
@@ -157,29 +161,32 @@ std::vector<PointRow> run_batched(const std::vector<const PreparedPoint*>& point
     runs.push_back(p->run);
     tasks.push_back(task_of(p->run, long(tasks.size())));
   }
-  const double start = sim::thread_cpu_seconds();
-  auto results = integrate(runs, tasks);
-  const double cpu = sim::thread_cpu_seconds() - start;
-  double attempts = 0.0;
-  for (const auto& r : results) attempts += double(r.steps + r.rejected_steps);
-
-  std::vector<std::optional<double>> ftles;
-  if (ftle) ftles = exponents(points, *ftle);
-
-  std::vector<PointRow> rows;
-  rows.reserve(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const double share = attempts > 0.0
-                             ? double(results[i].steps + results[i].rejected_steps) / attempts
-                             : 1.0 / double(points.size());
-    sim::RunResult result = run_result(tasks[i], std::move(results[i]));
-    result.cpu_seconds = cpu * share;
+  const auto row = [&](std::size_t i, physics::DirectBatchResult r, double cpu,
+                       const std::optional<std::optional<double>>& exponent) {
+    sim::RunResult result = run_result(tasks[i], std::move(r));
+    result.cpu_seconds = cpu;
     const PointOutcome outcome = outcome_of(runs[i], std::move(result), reference);
-    std::optional<std::optional<double>> exponent;
-    if (ftle) exponent = ftles[i];
-    rows.push_back(point_row(*points[i], sweep_hash, outcome, reference, cache, exponent));
-  }
-  return rows;
+    return point_row(*points[i], sweep_hash, outcome, reference, cache, exponent);
+  };
+
+  // A run's CPU time: the thread's from its start to its end, shared with
+  // the lanes beside it.
+  const double lanes = double(std::min<std::size_t>(
+      points.size(), std::size_t(physics::default_batch_width(numerics::chosen_simd_path()))));
+  std::vector<double> started(points.size()), cpu(points.size());
+  std::vector<physics::DirectBatchResult> waiting;  // for their exponents
+  numerics::BatchEvents<6> events;
+  events.started = [&](long id) { started[std::size_t(id)] = sim::thread_cpu_seconds(); };
+  events.ended = [&](long id, const physics::DirectBatchResult& r) {
+    const auto i = std::size_t(id);
+    cpu[i] = (sim::thread_cpu_seconds() - started[i]) / lanes;
+    if (!ftle) emit(row(i, r, cpu[i], std::nullopt));  // its row now, as the scalar path's
+  };
+  auto results = integrate(runs, tasks, std::move(events));
+  if (!ftle) return;
+  const auto values = exponents(points, *ftle);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    emit(row(i, std::move(results[i]), cpu[i], values[i]));
 }
 
 }  // namespace epviz::sweep

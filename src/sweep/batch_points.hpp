@@ -4,6 +4,7 @@
 // registers of one core, with the very rows run_point gives them: the batch
 // lane is the scalar DOP853 of sim::simulate, bit for bit, and the row is
 // made by the same code (point_row) from the same numbers.
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,15 +23,16 @@ bool runs_batched(const sim::RunSpec& run);
 // drift limits are each trajectory's own.
 std::string batch_key(const sim::RunSpec& run);
 
-// The rows of `points` (each runs_batched, all of one batch_key), in their
-// order, integrated on this thread as one batch: the runs, then the FTLE
-// windows of every point side by side, each window's base and neighbour
-// state two lanes. A trajectory that fails (lost motion, not finite, the
-// step budget) fails alone; its row says so as run_point's would. The CPU
-// time of a row is its share of the runs' batch, in proportion to its step
-// attempts.
-std::vector<PointRow> run_batched(const std::vector<const PreparedPoint*>& points,
-                                  const std::string& sweep_hash, bool reference,
-                                  const std::optional<FtleSettings>& ftle, ReferenceCache* cache);
+// Hands `emit` the row of each of `points` (each runs_batched, all of one
+// batch_key; throws std::logic_error otherwise), integrated on this thread
+// as one batch: the runs, each row as soon as its run ends; with an FTLE,
+// then the windows of every point side by side (each window's base and
+// neighbour state two lanes), and the rows in order when the last window
+// ends. A trajectory that fails (lost motion, not finite, the step budget)
+// fails alone; its row says so as run_point's would. The CPU time of a row is
+// the thread's from its run's start to its end, divided among the lanes.
+void run_batched(const std::vector<const PreparedPoint*>& points, const std::string& sweep_hash,
+                 bool reference, const std::optional<FtleSettings>& ftle, ReferenceCache* cache,
+                 const std::function<void(const PointRow&)>& emit);
 
 }  // namespace epviz::sweep

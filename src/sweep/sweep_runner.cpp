@@ -99,18 +99,18 @@ SweepTotals run_points(const SweepSpec& spec, const std::vector<PreparedPoint>& 
       if (i >= work_items.size() || stop) return;
       try {
         const Work& w = work_items[i];
-        const auto done =
-            w.batched ? run_batched(w.points, spec.hash, spec.reference, spec.ftle, &references)
-                      : std::vector{run_point(*w.points.front(), spec.hash, spec.reference,
-                                              spec.ftle, &references)};
-        for (const auto& row : done) {
+        const auto put = [&](const PointRow& row) {
           if (row.failed) ++failures;
           rows.append(row.line);
           if (on_row) {
             std::lock_guard g(lock);
             on_row();
           }
-        }
+        };
+        if (w.batched)
+          run_batched(w.points, spec.hash, spec.reference, spec.ftle, &references, put);
+        else
+          put(run_point(*w.points.front(), spec.hash, spec.reference, spec.ftle, &references));
       } catch (...) {
         std::lock_guard g(lock);
         if (!error) error = std::current_exception();

@@ -125,6 +125,28 @@ TEST(BatchSweep, TheChaosMapsFirstPointsAsOnTheScalarPath) {
   }
 }
 
+// Without an FTLE a row is handed on as soon as its run ends, not when the
+// batch does, so that a killed sweep loses only the runs in flight.
+TEST(BatchSweep, RowsLeaveTheBatchAsTheirRunsEnd) {
+  ScopedSimdEnv two_lanes("sse2");
+  std::vector<PreparedPoint> points;
+  for (long i = 0; i < 4; ++i) {
+    PointFields f;
+    f.index = i;
+    // The first run is long, the others short: they end while it goes on.
+    points.push_back(
+        prepared_point(f, sim::preset_run(physics::Case::generic, sim::Method::dop853,
+                                          sim::Formulation::direct, i == 0 ? 40.0 : 1.0, 10)));
+  }
+  std::vector<const PreparedPoint*> batch;
+  for (const auto& p : points) batch.push_back(&p);
+  std::vector<long> order;
+  run_batched(batch, "h", false, {}, nullptr, [&](const PointRow& row) {
+    order.push_back(nlohmann::json::parse(row.line)["index"].get<long>());
+  });
+  EXPECT_EQ(order, (std::vector<long>{1, 2, 3, 0}));
+}
+
 TEST(BatchSweep, OnlyDirectDop853RunsTakeTheBatch) {
   sim::RunSpec run;
   EXPECT_TRUE(runs_batched(run));
@@ -141,7 +163,8 @@ TEST(BatchSweep, OnlyDirectDop853RunsTakeTheBatch) {
   const auto points = mixed_points(6);  // point 5 has another tolerance
   EXPECT_NE(batch_key(points[0].run), batch_key(points[5].run));
   EXPECT_EQ(batch_key(points[0].run), batch_key(points[1].run));
-  EXPECT_THROW(run_batched({&points[0], &points[5]}, "h", false, {}, nullptr), std::logic_error);
+  EXPECT_THROW(run_batched({&points[0], &points[5]}, "h", false, {}, nullptr, [](auto&) {}),
+               std::logic_error);
 }
 
 }  // namespace
