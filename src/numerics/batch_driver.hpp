@@ -22,6 +22,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -40,6 +41,7 @@ struct BatchTask {
   double t0 = 0, t_end = 0;
   std::array<double, D> x0{};
   std::vector<double> out_times;  // ascending, within [t0, t_end]
+  long id = 0;                    // the caller's, handed to the output check
 };
 
 template <int D>
@@ -48,7 +50,28 @@ struct BatchResult {
   std::array<double, D> x{};                   // at t_end, or the last accepted state when failed
   double t = 0;  // t_end, or the time of the last accepted state when failed
   long steps = 0, rejected_steps = 0;
+  // Right-hand side evaluations the scalar stepper makes for this trajectory
+  // (DOP853: its dense output's extra stages once per step that served an
+  // output or t_end); the batch evaluates more for lanes that need none.
+  long rhs_evals = 0;
   std::optional<Failure> failure;
+};
+
+// Looks at each output as it is produced (the task's id, t and state): a
+// failure ends that trajectory there, without the output, as a failure the
+// scalar run's consumer raises at that output time would (e.g. sim's
+// MotionCheck). Called from the thread running the batch.
+template <int D>
+using BatchOutputCheck =
+    std::function<std::optional<Failure>(long id, double t, const std::array<double, D>& x)>;
+
+// Told, with the task's id, when a trajectory takes a lane and when it ends
+// (reached t_end or failed; its result complete), from the thread running the
+// batch: so that a caller can use each result as soon as it is there.
+template <int D>
+struct BatchEvents {
+  std::function<void(long id)> started;
+  std::function<void(long id, const BatchResult<D>& result)> ended;
 };
 
 // Throws std::invalid_argument naming the first task whose times are not
@@ -158,8 +181,13 @@ class BatchEmbedded {
   using Kernels = EmbeddedKernels<Sys, W, Tableau>;
 
   // Throws std::invalid_argument for the options EmbeddedRk refuses.
-  BatchEmbedded(Sys sys, const Kernels& kernels, AdaptiveOptions opts = {})
-      : sys_(std::move(sys)), kernels_(kernels), opts_(opts) {
+  BatchEmbedded(Sys sys, const Kernels& kernels, AdaptiveOptions opts = {},
+                BatchOutputCheck<D> check = {}, BatchEvents<D> events = {})
+      : sys_(std::move(sys)),
+        kernels_(kernels),
+        opts_(opts),
+        check_(std::move(check)),
+        events_(std::move(events)) {
     EmbeddedRk<Probe, Tableau> validate(Probe{}, opts_);  // the very checks of the scalar stepper
     fac_min_ = opts_.fac_min < 0 ? Tableau::default_fac_min : opts_.fac_min;
     fac_max_ = opts_.fac_max < 0 ? Tableau::default_fac_max : opts_.fac_max;
@@ -173,6 +201,8 @@ class BatchEmbedded {
   using Lanes = EmbeddedLanes<D, W, Tableau>;
   static constexpr int S = Tableau::stages;
   static constexpr int M = Lanes::M;
+  static constexpr int N = Lanes::N;
+  static constexpr bool kErrorNeedsFsal = error_needs_fsal_v<Tableau>;
   static constexpr double kLogErrFloor = -9.210340371976182;  // as EmbeddedRk's
 
   // A one-dimensional system for the option checks of EmbeddedRk.
@@ -187,7 +217,8 @@ class BatchEmbedded {
   bool prepare(int l);
   bool decide(int l);  // true when accepted
   double initial_step(int l) const;
-  void emit_outputs(int l);
+  bool emit_outputs(int l);  // false when the output check failed the trajectory
+  double dense_used(int l, int i, double t);
   void finish(int l, std::optional<Failure> failure);
   void fail(int l, FailureKind kind, std::string detail) {
     finish(l, Failure{L_->t[l], name, kind, std::move(detail)});
@@ -207,6 +238,8 @@ class BatchEmbedded {
   Sys sys_;
   Kernels kernels_;
   AdaptiveOptions opts_;
+  BatchOutputCheck<D> check_;
+  BatchEvents<D> events_;
   double fac_min_, fac_max_, beta_, expo_;
 
   std::unique_ptr<Lanes> L_;
@@ -218,6 +251,8 @@ class BatchEmbedded {
   long attempts_[W];
   int consecutive_rejects_[W], nonfinite_trials_[W];
   bool last_rejected_[W], accepted_[W], stepped_[W];
+  bool dense_counted_[W];  // this step's dense output evaluations are counted
+  double err_pow_[W];      // err_power of the attempt's error
 };
 
 template <BatchSystem Sys, int W, class Tableau>
@@ -232,6 +267,9 @@ auto BatchEmbedded<Sys, W, Tableau>::run(const std::vector<BatchTask<D>>& tasks)
   const auto load_lane = [this](int l) { load(l); };
   while (batch::ready_lanes(task_, prepare_lane, load_lane)) {
     kernels_.attempt(*L_, sys_);
+    // The controller's power of every lane's error in one loop, where the
+    // lanes' chains of square roots overlap (decide uses it lane by lane).
+    for (int l = 0; l < W; ++l) err_pow_[l] = err_power(L_->err[l]);
     bool need_dense = false;
     for (int l = 0; l < W; ++l) {
       accepted_[l] = task_[l] >= 0 && decide(l);
@@ -244,7 +282,10 @@ auto BatchEmbedded<Sys, W, Tableau>::run(const std::vector<BatchTask<D>>& tasks)
     if (need_dense) kernels_.dense(*L_, sys_);
     for (int l = 0; l < W; ++l) {
       if (!accepted_[l]) continue;
-      emit_outputs(l);
+      if (!emit_outputs(l)) {
+        load(l);
+        continue;
+      }
       if (L_->t[l] >= queue_->task(task_[l]).t_end) {
         finish(l, std::nullopt);
         load(l);
@@ -276,6 +317,7 @@ void BatchEmbedded<Sys, W, Tableau>::load(int l) {
 template <BatchSystem Sys, int W, class Tableau>
 bool BatchEmbedded<Sys, W, Tableau>::start(int l) {
   const auto& task = queue_->task(task_[l]);
+  if (events_.started) events_.started(task.id);
   L_->t[l] = L_->t_prev[l] = task.t0;
   for (int i = 0; i < D; ++i) L_->x[i][l] = L_->x_prev[i][l] = task.x0[std::size_t(i)];
   h_next_[l] = opts_.h_init > 0 ? std::min(opts_.h_init, opts_.h_max) : 0.0;
@@ -285,7 +327,7 @@ bool BatchEmbedded<Sys, W, Tableau>::start(int l) {
   last_rejected_[l] = false;
   stepped_[l] = false;
   next_out_[l] = 0;
-  emit_outputs(l);  // those at t0: x0, as EmbeddedRk::dense before a step
+  if (!emit_outputs(l)) return false;  // those at t0: x0, as EmbeddedRk::dense before a step
   if (task.t_end <= task.t0) {
     finish(l, std::nullopt);
     return false;
@@ -293,12 +335,16 @@ bool BatchEmbedded<Sys, W, Tableau>::start(int l) {
   double x[D], k0[D];
   for (int i = 0; i < D; ++i) x[i] = L_->x[i][l];
   sys_.rhs(task.t0, x, k0);
+  ++queue_->result(task_[l]).rhs_evals;
   for (int i = 0; i < D; ++i) L_->k[0][i][l] = k0[i];
   if (!batch::lane_finite(L_->k[0], l) || !batch::lane_finite(L_->x, l)) {
     fail(l, FailureKind::non_finite, "state or derivative not finite (NaN or Inf)");
     return false;
   }
-  if (h_next_[l] <= 0.0) h_next_[l] = initial_step(l);
+  if (h_next_[l] <= 0.0) {
+    h_next_[l] = initial_step(l);
+    ++queue_->result(task_[l]).rhs_evals;
+  }
   return true;
 }
 
@@ -344,6 +390,7 @@ bool BatchEmbedded<Sys, W, Tableau>::prepare(int l) {
     return false;
   }
   ++attempts_[l];
+  queue_->result(task_[l]).rhs_evals += kErrorNeedsFsal ? Tableau::stages : Tableau::stages - 1;
   L_->h[l] = h;
   return true;
 }
@@ -357,7 +404,7 @@ bool BatchEmbedded<Sys, W, Tableau>::decide(int l) {
   if (finite && err <= 1.0) {
     double fac;
     if (beta_ == 0.0) {
-      fac = opts_.safety * err_power(err);
+      fac = opts_.safety * err_pow_[l];
     } else {
       const double log_err = std::log(err);
       fac = opts_.safety * std::exp(beta_ * log_err_old_[l] - expo_ * log_err);
@@ -374,14 +421,16 @@ bool BatchEmbedded<Sys, W, Tableau>::decide(int l) {
     last_rejected_[l] = false;
     consecutive_rejects_[l] = nonfinite_trials_[l] = 0;
     stepped_[l] = true;
+    dense_counted_[l] = false;
     ++result.steps;
+    if (!kErrorNeedsFsal) ++result.rhs_evals;
     return true;
   }
   ++result.rejected_steps;
   last_rejected_[l] = true;
   double fac = fac_min_;
   if (finite) {
-    fac = std::max(fac_min_, opts_.safety * err_power(err));
+    fac = std::max(fac_min_, opts_.safety * err_pow_[l]);
   } else {
     ++nonfinite_trials_[l];
   }
@@ -400,17 +449,37 @@ bool BatchEmbedded<Sys, W, Tableau>::decide(int l) {
   return false;
 }
 
+// Component i at t of lane l's last step (its dense output), counting the
+// evaluations of the continuous extension once per step, as EmbeddedRk's
+// lazy dense output does; x itself before the first step.
 template <BatchSystem Sys, int W, class Tableau>
-void BatchEmbedded<Sys, W, Tableau>::emit_outputs(int l) {
+double BatchEmbedded<Sys, W, Tableau>::dense_used(int l, int i, double t) {
+  if (!stepped_[l]) return L_->x[i][l];
+  if (!dense_counted_[l]) {
+    queue_->result(task_[l]).rhs_evals += N - Tableau::stages - 1;
+    dense_counted_[l] = true;
+  }
+  return dense(l, i, t);
+}
+
+template <BatchSystem Sys, int W, class Tableau>
+bool BatchEmbedded<Sys, W, Tableau>::emit_outputs(int l) {
   const auto& task = queue_->task(task_[l]);
   auto& result = queue_->result(task_[l]);
   for (; next_out_[l] < task.out_times.size(); ++next_out_[l]) {
     const double t = task.out_times[next_out_[l]];
     if (!(t <= L_->t[l])) break;
     std::array<double, D> x;
-    for (int i = 0; i < D; ++i) x[std::size_t(i)] = stepped_[l] ? dense(l, i, t) : L_->x[i][l];
+    for (int i = 0; i < D; ++i) x[std::size_t(i)] = dense_used(l, i, t);
+    if (check_) {
+      if (auto failure = check_(task.id, t, x)) {
+        finish(l, std::move(*failure));
+        return false;
+      }
+    }
     result.outputs.push_back(x);
   }
+  return true;
 }
 
 template <BatchSystem Sys, int W, class Tableau>
@@ -422,10 +491,10 @@ void BatchEmbedded<Sys, W, Tableau>::finish(int l, std::optional<Failure> failur
     result.x = batch::lane(L_->x, l);
   } else {
     result.t = task.t_end;
-    for (int i = 0; i < D; ++i)
-      result.x[std::size_t(i)] = stepped_[l] ? dense(l, i, task.t_end) : L_->x[i][l];
+    for (int i = 0; i < D; ++i) result.x[std::size_t(i)] = dense_used(l, i, task.t_end);
   }
   result.failure = std::move(failure);
+  if (events_.ended) events_.ended(task.id, result);
 }
 
 }  // namespace epviz::numerics

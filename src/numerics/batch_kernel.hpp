@@ -113,7 +113,7 @@ struct EmbeddedKernel : Lanewise<W, Tag> {
   using Lanes = EmbeddedLanes<D, W, Tableau>;
   using Stages = double[N][D][W];
 
-  static constexpr bool error_needs_fsal = Tableau::e[S] != 0.0 || Tableau::e2[S] != 0.0;
+  static constexpr bool error_needs_fsal = error_needs_fsal_v<Tableau>;
   static constexpr std::size_t error_terms = error_needs_fsal ? S + 1 : S;
 
   template <class Row, std::size_t Nterms>

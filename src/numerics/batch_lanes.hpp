@@ -30,6 +30,13 @@ concept BatchSystem = (Sys::dim > 0) && (Sys::dim % 2 == 0) && requires(const Sy
         std::declval<double(&)[Sys::dim]>());
 };
 
+// Whether the method's error estimate uses f(t + h, xnew), the first stage of
+// the next step: then every attempt evaluates it, else only accepted ones do
+// (as EmbeddedRk, whose evaluation counts the batch reports).
+template <class Tableau>
+inline constexpr bool error_needs_fsal_v =
+    Tableau::e[Tableau::stages] != 0.0 || Tableau::e2[Tableau::stages] != 0.0;
+
 // Lanes of an embedded Runge–Kutta method (Tableau as in rk_tableaus.hpp).
 template <int D, int W, class Tableau>
 struct EmbeddedLanes {

@@ -91,6 +91,7 @@ class BatchRk4 {
 
   // Accepts the lane's new state; false when its trajectory ended or failed.
   bool advance(int l) {
+    result(l).rhs_evals += 4;  // as Rk4::step, counted before its check
     if (!batch::lane_finite(L_->xnew, l)) {
       // As Rk4::step: the failure is dated at the end of the step, the state kept.
       finish(l, Failure{L_->t[l] + L_->h[l], name, FailureKind::non_finite,

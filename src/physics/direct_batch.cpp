@@ -60,10 +60,13 @@ std::vector<DirectBatchResult> run(const DirectBatchSystem& sys,
                                    const batch_isa::DirectKernelsOf<W>& kernels,
                                    const std::vector<DirectBatchTask>& tasks,
                                    const DirectBatchSettings& settings) {
-  if (settings.method == BatchMethod::rk4)
+  if (settings.method == BatchMethod::rk4) {
+    if (settings.check || settings.events.started || settings.events.ended)
+      throw std::invalid_argument("batch rk4: no output check or events (dop853 only)");
     return numerics::BatchRk4<DirectBatchSystem, W>(sys, kernels.rk4, settings.rk4).run(tasks);
-  return numerics::BatchEmbedded<DirectBatchSystem, W, numerics::Dop853Tableau>(sys, kernels.dop853,
-                                                                                settings.adaptive)
+  }
+  return numerics::BatchEmbedded<DirectBatchSystem, W, numerics::Dop853Tableau>(
+             sys, kernels.dop853, settings.adaptive, settings.check, settings.events)
       .run(tasks);
 }
 

@@ -23,6 +23,11 @@ struct DirectBatchSettings {
   // Empty: numerics::chosen_simd_path() (EPVIZ_SIMD, else the widest).
   std::optional<numerics::SimdPath> path;
   int width = 0;  // lanes: 1, 2, 4 or 8; 0: default_batch_width(path)
+  // dop853 only: each output's check, and the trajectories' starts and ends
+  // (numerics/batch_driver.hpp), called with the task's id from the thread
+  // integrating it.
+  numerics::BatchOutputCheck<6> check;
+  numerics::BatchEvents<6> events;
 };
 
 using DirectBatchTask = numerics::BatchTask<6>;

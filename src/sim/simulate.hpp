@@ -47,4 +47,10 @@ RunResult simulate(const RunSpec& spec);
 using SampleSink = std::function<void(const Sample&)>;
 RunResult simulate(const RunSpec& spec, const SampleSink& sink);
 
+// The calling thread's CPU time in seconds, the clock of cpu_seconds: a run
+// integrates on one thread, and in a sweep other threads run other points
+// meanwhile (the process's CPU time would count theirs too, and costs a walk
+// over all threads to read).
+double thread_cpu_seconds();
+
 }  // namespace epviz::sim

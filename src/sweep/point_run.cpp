@@ -30,25 +30,16 @@ std::string key_of(const sim::RunSpec& r) {
   return k;
 }
 
-using State = Eigen::Matrix<double, 6, 1>;
-
-constexpr int kKeptSamples = 100'000;
-
-State state_of(const sim::Sample& s) {
-  State x;
+FtleState state_of(const sim::Sample& s) {
+  FtleState x;
   x << s.omega, s.gamma;
   return x;
 }
 
 // The state after `window` from `x`, by the run's own method and accuracy.
-std::optional<State> advance(const sim::RunSpec& run, const State& x, double window) {
-  sim::RunSpec one = run;
-  one.initial.omega = x.head<3>();
-  one.initial.gamma = x.tail<3>();
-  one.t_end = window;
-  one.samples = 1;
+std::optional<FtleState> advance(const sim::RunSpec& run, const FtleState& x, double window) {
   try {
-    auto t = sim::Trajectory::start(one);
+    auto t = sim::Trajectory::start(window_run(run, x, window));
     return state_of(t->next());
   } catch (const numerics::IntegrationError&) {
     return std::nullopt;
@@ -56,6 +47,15 @@ std::optional<State> advance(const sim::RunSpec& run, const State& x, double win
 }
 
 }  // namespace
+
+sim::RunSpec window_run(const sim::RunSpec& run, const FtleState& x, double window) {
+  sim::RunSpec one = run;
+  one.initial.omega = x.head<3>();
+  one.initial.gamma = x.tail<3>();
+  one.t_end = window;
+  one.samples = 1;
+  return one;
+}
 
 sim::RunSpec reference_run(const sim::RunSpec& run) {
   sim::RunSpec r = run;
@@ -105,66 +105,119 @@ double max_separation(const std::vector<sim::Sample>& a, const std::vector<sim::
   return worst;
 }
 
-std::optional<double> finite_time_lyapunov(const sim::RunSpec& run, const FtleSettings& settings) {
-  const double window = settings.window > 0.0 ? settings.window : run.t_end / run.samples;
-  const long windows = std::max(1L, std::lround(run.t_end / window));
-  State a;
-  a << run.initial.omega, run.initial.gamma;
+FtleWindows::FtleWindows(const sim::RunSpec& run, const FtleSettings& settings)
+    : separation_(settings.separation),
+      window_(settings.window > 0.0 ? settings.window : run.t_end / run.samples),
+      windows_(std::max(1L, std::lround(run.t_end / window_))) {
+  a_ << run.initial.omega, run.initial.gamma;
   // The first offset: along (1,1,1) in omega and in the plane tangent to the
   // sphere |gamma| = 1 in gamma, so that the neighbour is a physical state.
-  State u = State::Ones();
+  FtleState u = FtleState::Ones();
   const Eigen::Vector3d g = run.initial.gamma.normalized();
   u.tail<3>() -= g * g.dot(u.tail<3>());
   u.normalize();
-  State b = a + settings.separation * u;
-  double sum = 0.0;
-  for (long k = 0; k < windows; ++k) {
-    const auto na = advance(run, a, window);
-    const auto nb = advance(run, b, window);
-    if (!na || !nb) return std::nullopt;
-    a = *na;
-    const State d = *nb - a;
-    const double dist = d.norm();
-    if (!(dist > 0.0) || !std::isfinite(dist)) return std::nullopt;
-    sum += std::log(dist / settings.separation);
-    b = a + d * (settings.separation / dist);
+  b_ = a_ + separation_ * u;
+}
+
+void FtleWindows::absorb(const std::optional<FtleState>& a, const std::optional<FtleState>& b) {
+  if (done()) return;
+  if (!a || !b) {
+    failed_ = true;
+    return;
   }
-  return sum / (double(windows) * window);
+  a_ = *a;
+  const FtleState d = *b - a_;
+  const double dist = d.norm();
+  if (!(dist > 0.0) || !std::isfinite(dist)) {
+    failed_ = true;
+    return;
+  }
+  sum_ += std::log(dist / separation_);
+  b_ = a_ + d * (separation_ / dist);
+  ++k_;
+}
+
+std::optional<double> FtleWindows::value() const {
+  if (failed_ || k_ < windows_) return std::nullopt;
+  return sum_ / (double(windows_) * window_);
+}
+
+std::optional<double> finite_time_lyapunov(const sim::RunSpec& run, const FtleSettings& settings) {
+  FtleWindows w(run, settings);
+  while (!w.done()) {
+    const auto a = advance(run, w.base(), w.window());
+    const auto b = advance(run, w.neighbour(), w.window());
+    w.absorb(a, b);
+  }
+  return w.value();
 }
 
 PreparedPoint prepared_point(const PointFields& fields, sim::RunSpec run) {
   return {fields.index, fields.axis_values.dump(), fields.ignored, std::move(run)};
 }
 
+namespace {
+
+// Folds samples into an outcome's drift and last sample.
+class Folder {
+ public:
+  explicit Folder(const sim::RunSpec& run) : monitor_(run.body, run.case_id, run.initial) {
+    out_.drift = monitor_.no_drift();
+  }
+  void operator()(const sim::Sample& s) {
+    monitor_.worsen(out_.drift, s);
+    out_.last = s;
+  }
+  PointOutcome& outcome() { return out_; }
+
+ private:
+  sim::InvariantMonitor monitor_;
+  PointOutcome out_;
+};
+
+}  // namespace
+
+PointOutcome outcome_of(const sim::RunSpec& run, sim::RunResult result, bool keep_samples) {
+  Folder fold(run);
+  for (const auto& s : result.samples) fold(s);
+  PointOutcome& out = fold.outcome();
+  if (keep_samples) out.kept = std::move(result.samples);
+  result.samples.clear();
+  out.result = std::move(result);
+  return std::move(out);
+}
+
 PointRow run_point(const PreparedPoint& point, const std::string& sweep_hash, bool reference,
                    const std::optional<FtleSettings>& ftle, ReferenceCache* cache) {
   const sim::RunSpec& run = point.run;
-  const sim::InvariantMonitor monitor(run.body, run.case_id, run.initial);
-  sim::Drifts drift = monitor.no_drift();
-  std::vector<sim::Sample> kept;
-  sim::Sample last;
-  bool any = false;
-  auto fold = [&](const sim::Sample& s) {
-    monitor.worsen(drift, s);
-    last = s;
-    any = true;
-  };
   // The streamed run reads the CPU clock around every sample (a system call
   // each, several times a short run's integration), so runs of a modest
   // number of samples keep them and fold them in afterwards; only very long
   // sample lists are streamed, to keep memory flat.
-  sim::RunResult result;
+  PointOutcome outcome;
   if (run.samples <= kKeptSamples) {
-    result = sim::simulate(run);
-    for (const auto& s : result.samples) fold(s);
-    if (reference) kept = std::move(result.samples);
+    outcome = outcome_of(run, sim::simulate(run), reference);
   } else {
-    result = sim::simulate(run, [&](const sim::Sample& s) {
+    Folder fold(run);
+    std::vector<sim::Sample> kept;
+    auto result = sim::simulate(run, [&](const sim::Sample& s) {
       fold(s);
       if (reference) kept.push_back(s);
     });
+    outcome = std::move(fold.outcome());
+    outcome.result = std::move(result);
+    outcome.kept = std::move(kept);
   }
+  std::optional<std::optional<double>> exponent;
+  if (ftle) exponent = finite_time_lyapunov(run, *ftle);
+  return point_row(point, sweep_hash, outcome, reference, cache, exponent);
+}
 
+PointRow point_row(const PreparedPoint& point, const std::string& sweep_hash,
+                   const PointOutcome& outcome, bool reference, ReferenceCache* cache,
+                   const std::optional<std::optional<double>>& ftle) {
+  const sim::RunSpec& run = point.run;
+  const sim::RunResult& result = outcome.result;
   io::JsonLine row;
   row.begin_object();
   row.key("index").value(point.index);
@@ -178,7 +231,7 @@ PointRow run_point(const PreparedPoint& point, const std::string& sweep_hash, bo
   row.key("energy").value(
       physics::invariants(run.body, physics::Case::custom, run.initial.omega, run.initial.gamma)
           .energy);
-  write_run_record(row, run, result, drift);
+  write_run_record(row, run, result, outcome.drift);
   row.key("failure");
   if (result.failure) {
     row.begin_object();
@@ -189,11 +242,11 @@ PointRow run_point(const PreparedPoint& point, const std::string& sweep_hash, bo
     row.null();
   }
   row.key("final");
-  if (any) {
+  if (const auto& last = outcome.last) {
     row.begin_object();
-    row.key("t").value(last.t);
-    row.key("omega").triple(last.omega[0], last.omega[1], last.omega[2]);
-    row.key("gamma").triple(last.gamma[0], last.gamma[1], last.gamma[2]);
+    row.key("t").value(last->t);
+    row.key("omega").triple(last->omega[0], last->omega[1], last->omega[2]);
+    row.key("gamma").triple(last->gamma[0], last->gamma[1], last->gamma[2]);
     row.end_object();
   } else {
     row.null();
@@ -202,11 +255,9 @@ PointRow run_point(const PreparedPoint& point, const std::string& sweep_hash, bo
     ReferenceCache local;
     const auto ref = (cache ? *cache : local).get(run);
     row.key("reference_error")
-        .value(ref->empty() ? std::nullopt : std::optional(max_separation(kept, *ref)));
+        .value(ref->empty() ? std::nullopt : std::optional(max_separation(outcome.kept, *ref)));
   }
-  if (ftle) {
-    row.key("ftle").value(finite_time_lyapunov(run, *ftle));
-  }
+  if (ftle) row.key("ftle").value(*ftle);
   row.end_object();
   return {row.take(), result.failure.has_value()};
 }

@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sim/drift.hpp"
 #include "sim/run_spec.hpp"
 #include "sim/simulate.hpp"
 #include "sweep/sweep_point.hpp"
@@ -44,6 +45,42 @@ double max_separation(const std::vector<sim::Sample>& a, const std::vector<sim::
 // nullopt when either state's integration fails.
 std::optional<double> finite_time_lyapunov(const sim::RunSpec& run, const FtleSettings& settings);
 
+// The exponent's bookkeeping, window after window: the base state and its
+// neighbour, each advanced over one window by the run's own method and
+// accuracy (window_run), and the sum of the logarithmic growths.
+// finite_time_lyapunov drives it for one point; the batch path
+// (batch_points.hpp) for many side by side.
+using FtleState = Eigen::Matrix<double, 6, 1>;
+class FtleWindows {
+ public:
+  FtleWindows(const sim::RunSpec& run, const FtleSettings& settings);
+
+  bool done() const { return failed_ || k_ >= windows_; }
+  double window() const { return window_; }
+  const FtleState& base() const { return a_; }
+  const FtleState& neighbour() const { return b_; }
+  // The two states one window later; nullopt where that integration failed,
+  // which leaves the exponent undefined.
+  void absorb(const std::optional<FtleState>& a, const std::optional<FtleState>& b);
+  // Once done(): the exponent, or nullopt.
+  std::optional<double> value() const;
+
+ private:
+  double separation_, window_;
+  long windows_, k_ = 0;
+  FtleState a_, b_;
+  double sum_ = 0.0;
+  bool failed_ = false;
+};
+
+// The run that advances `x` over one FTLE window: `run` from x, to
+// t_end = window with its one sample there.
+sim::RunSpec window_run(const sim::RunSpec& run, const FtleState& x, double window);
+
+// Runs that keep at most this many samples keep them all and fold them in
+// afterwards; longer ones stream theirs (run_point).
+inline constexpr int kKeptSamples = 100'000;
+
 // A point ready to run: what its row says of it besides the run's results,
 // and its resolved run. Kept for every point of a sweep before any runs, so
 // it holds no more than that (not the point's job fields).
@@ -62,5 +99,23 @@ struct PointRow {
 
 PointRow run_point(const PreparedPoint& point, const std::string& sweep_hash, bool reference,
                    const std::optional<FtleSettings>& ftle, ReferenceCache* cache);
+
+// A run as its row tells it: the result, the largest drift of every
+// invariant over its samples, its last sample and, when the reference
+// separation needs them, the samples.
+struct PointOutcome {
+  sim::RunResult result;  // its samples moved to `kept` or dropped
+  sim::Drifts drift;
+  std::optional<sim::Sample> last;
+  std::vector<sim::Sample> kept;
+};
+// The outcome of a result that holds its samples.
+PointOutcome outcome_of(const sim::RunSpec& run, sim::RunResult result, bool keep_samples);
+
+// The row of a point whose run ended as `outcome`. ftle: absent when the
+// sweep asks for no exponent, else the exponent or nullopt (undefined).
+PointRow point_row(const PreparedPoint& point, const std::string& sweep_hash,
+                   const PointOutcome& outcome, bool reference, ReferenceCache* cache,
+                   const std::optional<std::optional<double>>& ftle);
 
 }  // namespace epviz::sweep

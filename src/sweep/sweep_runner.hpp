@@ -3,6 +3,7 @@
 // per point: a short run costs microseconds, a process start milliseconds),
 // appending each row as it finishes.
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "shard/shard_spec.hpp"
@@ -27,10 +28,19 @@ struct SweepTotals {
 std::vector<PreparedPoint> pending_points(const SweepSpec& spec, shard::ItemRange range,
                                           const ExistingRows& done);
 
+// How the points the batch integrator can take (batch_points.hpp,
+// runs_batched) are run: side by side in batches, or one by one as the
+// others. The rows are the same; `scalar` is for comparisons.
+enum class PointPath { batch, scalar };
+
 // Runs `points` with `threads` threads (at least 1), appending a row each to
 // `rows` and calling `on_row` (from the worker, under a lock) after each.
-// The first exception a worker meets stops the others and is rethrown.
+// The threads take work in turn: a batch of points that share a body,
+// tolerance and step budget (its rows appended when the batch ends), or one
+// point that the batch cannot take. The first exception a worker meets stops
+// the others and is rethrown.
 SweepTotals run_points(const SweepSpec& spec, const std::vector<PreparedPoint>& points, int threads,
-                       RowAppender& rows, const std::function<void()>& on_row = {});
+                       RowAppender& rows, const std::function<void()>& on_row = {},
+                       PointPath path = PointPath::batch);
 
 }  // namespace epviz::sweep

@@ -49,6 +49,7 @@ inline DirectBatchResult dop853_alone(const Body& body, const DirectBatchTask& t
   }
   r.steps = s.stats().steps;
   r.rejected_steps = s.stats().rejected_steps;
+  r.rhs_evals = s.stats().rhs_evals;
   return r;
 }
 
@@ -77,6 +78,7 @@ inline DirectBatchResult rk4_alone(const Body& body, const DirectBatchTask& task
   }
   r.x = to_array(x);
   r.steps = s.stats().steps;
+  r.rhs_evals = s.stats().rhs_evals;
   return r;
 }
 
@@ -97,6 +99,8 @@ inline ::testing::AssertionResult identical(const DirectBatchResult& a,
   if (a.steps != b.steps || a.rejected_steps != b.rejected_steps)
     return ::testing::AssertionFailure() << "steps " << a.steps << "/" << a.rejected_steps << " vs "
                                          << b.steps << "/" << b.rejected_steps;
+  if (a.rhs_evals != b.rhs_evals)
+    return ::testing::AssertionFailure() << "rhs_evals " << a.rhs_evals << " vs " << b.rhs_evals;
   if (bits(a.t) != bits(b.t)) return ::testing::AssertionFailure() << "t " << a.t << " vs " << b.t;
   if (a.failure.has_value() != b.failure.has_value())
     return ::testing::AssertionFailure() << "one failed, the other did not";

@@ -16,6 +16,7 @@
 #include "helpers.hpp"
 #include "physics/direct_rhs_batch.hpp"
 #include "physics/invariants.hpp"
+#include "support/simd_env.hpp"
 
 namespace epviz::physics {
 namespace {
@@ -143,6 +144,61 @@ TEST(DirectBatch, AFailingLaneFailsAloneAndTheOthersFinishAsAlone) {
   }
 }
 
+// An output check ends its trajectory at the output it refuses, without that
+// output, with the work done to make it (as a consumer of the scalar run that
+// refuses the sample there); the other lanes go on as alone.
+TEST(DirectBatch, AnOutputCheckFailsItsLaneAlone) {
+  auto tasks = mixed_tasks(13);
+  for (std::size_t i = 0; i < tasks.size(); ++i) tasks[i].id = long(i);
+  const double refused = tasks[5].out_times[2];
+  const auto refusal = [](double t) {
+    return numerics::Failure{t, "dop853", numerics::FailureKind::lost_motion, "refused"};
+  };
+  DirectBatchSettings settings;
+  settings.adaptive = tolerance(1e-9);
+  settings.check = [&](long id, double t,
+                       const std::array<double, 6>&) -> std::optional<numerics::Failure> {
+    if ((id == 5 && t == refused) || (id == 9 && t == tasks[9].t0)) return refusal(t);
+    return std::nullopt;
+  };
+  std::vector<DirectBatchResult> expected;
+  for (const auto& task : tasks)
+    expected.push_back(test::dop853_alone(generic_body(), task, settings.adaptive));
+  {  // Task 5 alone up to its third output, refused.
+    numerics::Dop853<DirectSystem> s(DirectSystem(generic_body()), settings.adaptive);
+    s.init(tasks[5].t0, test::to_state(tasks[5].x0));
+    DirectBatchResult& r = expected[5];
+    r.outputs.clear();
+    for (std::size_t k = 0; k < 3; ++k) {
+      while (s.t() < tasks[5].out_times[k]) s.step();
+      const auto x = test::to_array(s.dense(tasks[5].out_times[k]));
+      if (k < 2) r.outputs.push_back(x);
+    }
+    r.t = s.t();
+    r.x = test::to_array(s.state());
+    r.steps = s.stats().steps;
+    r.rejected_steps = s.stats().rejected_steps;
+    r.rhs_evals = s.stats().rhs_evals;
+    r.failure = refusal(refused);
+  }
+  expected[9] = DirectBatchResult{};  // refused at its first output, t0, before any work
+  expected[9].t = tasks[9].t0;
+  expected[9].x = tasks[9].x0;
+  expected[9].failure = refusal(tasks[9].t0);
+  for (SimdPath path : paths_of_this_cpu()) {
+    for (int width : {1, 2, 4, 8}) {
+      settings.path = path;
+      settings.width = width;
+      const auto batch = integrate_direct_batch(generic_body(), tasks, settings);
+      for (std::size_t i = 0; i < tasks.size(); ++i)
+        EXPECT_TRUE(identical(batch[i], expected[i]))
+            << "trajectory " << i << ", path " << numerics::name(path) << ", " << width << " lanes";
+    }
+  }
+  settings.method = BatchMethod::rk4;  // which has no output check
+  EXPECT_THROW(integrate_direct_batch(generic_body(), tasks, settings), std::invalid_argument);
+}
+
 // The step budget is per trajectory: the long ones fail in the middle of the
 // batch (step_budget), the short ones finish, each as alone.
 TEST(DirectBatch, StepBudgetStopsTheLongTrajectoriesOnly) {
@@ -182,22 +238,7 @@ TEST(DirectBatch, UnreachableToleranceUnderflowsLikeAlone) {
   expect_each_lane_alone(generic_body(), tasks, settings);
 }
 
-class ScopedSimdEnv {
- public:
-  explicit ScopedSimdEnv(const char* value) {
-    if (const char* old = std::getenv("EPVIZ_SIMD")) old_ = old;
-    ::setenv("EPVIZ_SIMD", value, 1);
-  }
-  ~ScopedSimdEnv() {
-    if (old_.empty())
-      ::unsetenv("EPVIZ_SIMD");
-    else
-      ::setenv("EPVIZ_SIMD", old_.c_str(), 1);
-  }
-
- private:
-  std::string old_;
-};
+using epviz::test::ScopedSimdEnv;
 
 TEST(DirectBatch, ForcedPathsGiveTheScalarPathsResultsBitwise) {
   const auto tasks = mixed_tasks(10);
