@@ -47,8 +47,6 @@ void check_accepted(const section::SectionJob& job) {
   if (!(job.t_end > 0) || !(job.max_drift > 0)) std::abort();
   for (const auto& m : job.methods)
     if (!(m.tol > 0) || !(m.step > 0)) std::abort();
-  // A figure of several methods is a PNG only (docs/sections.md).
-  if (job.methods.size() > 1 && !job.svg.empty()) std::abort();
   if (job.csv.empty()) std::abort();
 }
 

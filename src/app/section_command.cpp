@@ -5,13 +5,11 @@
 #include <cstdio>
 #include <memory>
 #include <optional>
-#include <span>
 
 #include "app/cli_values.hpp"
 #include "app/gl_option.hpp"
 #include "io/atomic_file.hpp"
 #include "io/bad_input.hpp"
-#include "io/image_tiling.hpp"
 #include "io/png_writer.hpp"
 #include "section/section_chart.hpp"
 #include "section/section_csv.hpp"
@@ -21,6 +19,7 @@
 #include "shard/shard_spec.hpp"
 #ifdef EPVIZ_HAVE_RENDER
 #include "paint/figure_painter.hpp"
+#include "paint/figure_panels.hpp"
 #include "render/gl_choice.hpp"
 #include "vector/vector_figure.hpp"
 #endif
@@ -32,35 +31,27 @@ struct SectionOptions {
   std::string file, out, jobs, gl, shard, shard_count;  // the section file, --out, -j, --gl, ...
 };
 
-// One chart per method, side by side in the PNG (each panel as wide as a
-// single chart's height allows).
+// One chart per method, side by side on the same axes when there are several.
 void draw(const section::SectionJob& job, const std::vector<chart::ChartSpec>& charts,
           const std::string& gl) {
 #ifdef EPVIZ_HAVE_RENDER
   const bool one = charts.size() == 1;
   const paint::ChartOptions size{
       .width = one ? 1100 : 760, .height = one ? 1000 : 720, .font_px = one ? 15.0f : 13.0f};
+  constexpr int kGap = 16;
+  std::vector<chart::Figure> panels;
+  for (const auto& c : charts) panels.push_back({job.png, c});
   if (!job.png.empty()) {
-    auto context = render::GlChoice(gl).open();
-    std::vector<render::RgbaImage> panels;
-    for (const auto& c : charts)
-      panels.push_back(paint::paint_figure(*context, {job.png, c}, size));
-    if (one) {
-      io::write_png_rgba(job.png, panels[0].width, panels[0].height, panels[0].pixels);
-    } else {
-      std::vector<std::span<const std::uint8_t>> tiles;
-      for (const auto& p : panels) {
-        if (p.width != panels[0].width || p.height != panels[0].height)
-          throw std::runtime_error("section panels of unequal size");
-        tiles.emplace_back(p.pixels);
-      }
-      const auto image = io::tile_images(tiles, panels[0].width, panels[0].height,
-                                         {.cols = int(charts.size()), .gap = 8, .margin = 8});
-      io::write_png_rgba(job.png, image.width, image.height, image.pixels);
-    }
+    const auto image =
+        paint::paint_drawing(*render::GlChoice(gl).open(), size, [&](const paint::ChartFont& font) {
+          std::vector<paint::FigureDrawing> drawings;
+          for (const auto& p : panels) drawings.push_back(paint::draw_figure(p, size, font));
+          return paint::side_by_side(drawings, kGap);
+        });
+    io::write_png_rgba(job.png, image.width, image.height, image.pixels);
   }
   if (!job.svg.empty())
-    vector::write_vector_figure(job.svg, {job.svg, charts.at(0)}, vector::FigureFormat::svg, size);
+    vector::write_vector_panels(job.svg, panels, vector::FigureFormat::svg, size, kGap);
 #else
   if (!job.png.empty() || !job.svg.empty())
     throw io::BadInput(job.file + ": keys 'png', 'svg': this epviz was built without the renderer");

@@ -214,8 +214,6 @@ SectionJob read_section_job(const std::filesystem::path& file) {
   }
   for (const char* key : {"png", "svg"})
     if (auto path = r.string(key)) (key[0] == 'p' ? job.png : job.svg) = *path;
-  if (job.methods.size() > 1 && !job.svg.empty())
-    r.fail("svg", "a figure of several methods is drawn as PNG only; leave \"svg\" out");
   const auto csv = r.string("csv");
   if (!csv || csv->empty()) r.fail("csv", "is required: the crossings' CSV file");
   job.csv = *csv;
