@@ -94,15 +94,17 @@ int run_section(const SectionOptions& o) {
     job.csv = part->rows.string();
     section::write_crossings_csv(job, results);
     shard::finish_rows_shard(*part);
-    done += " (shard ";
-    done += std::to_string(shard->index);
-    done += "/";
-    done += std::to_string(shard->count);
-    done += ": runs ";
-    done += std::to_string(part->points.first);
-    done += "..";
-    done += std::to_string(part->points.end - 1);
-    done += ")";
+    // The crossings are the shard's, the orbits the whole section's.
+    std::string which = "shard ";
+    which += std::to_string(shard->index);
+    which += "/";
+    which += std::to_string(shard->count);
+    which += ", runs ";
+    which += std::to_string(part->points.first);
+    which += "..";
+    which += std::to_string(part->points.end - 1);
+    which += " of ";
+    done = which + done;
   } else {
     section::write_crossings_csv(job, results);
     draw(job, section::section_charts(job, results), o.gl);

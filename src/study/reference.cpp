@@ -35,15 +35,18 @@ sim::RunSpec direct_run(const physics::Body& body, const physics::InitialState& 
   return spec;
 }
 
+// The largest step at most h_target that divides `spacing` (fixed steps must).
+double dividing_step(double spacing, double h_target) {
+  return spacing / std::ceil(spacing / h_target * (1.0 - 1e-12));
+}
+
 }  // namespace
 
 Reference compute_reference(const physics::Body& body, const physics::InitialState& initial,
                             double t_end, int samples, double h_target) {
   const auto t0 = std::chrono::steady_clock::now();
   sim::RunSpec spec = direct_run(body, initial, t_end, samples);
-  const double spacing = t_end / samples;
-  const double k = std::ceil(spacing / h_target * (1.0 - 1e-12));
-  const double h = spacing / k;
+  const double h = dividing_step(t_end / samples, h_target);
 
   spec.method = sim::Method::gauss6;
   spec.step = h;
@@ -69,6 +72,8 @@ Reference compute_reference(const physics::Body& body, const physics::InitialSta
   return ref;
 }
 
+double check_step(const physics::InitialState& initial) { return reference_step(initial) / 8.0; }
+
 double CheckedReference::self_check() const {
   double worst = 0.0;
   for (double d : disagreement) worst = std::max(worst, d);
@@ -83,7 +88,7 @@ double CheckedReference::trusted_until(double margin) const {
 
 CheckedReference compute_checked_reference(const physics::Body& body,
                                            const physics::InitialState& initial, double t_end,
-                                           int samples, double check_step) {
+                                           int samples, double h_target) {
   const auto t0 = std::chrono::steady_clock::now();
   sim::RunSpec spec = direct_run(body, initial, t_end, samples);
   CheckedReference ref;
@@ -91,13 +96,13 @@ CheckedReference compute_checked_reference(const physics::Body& body,
   spec.tol = ref.tol;
   const auto primary = sim::simulate(spec);
   spec.method = sim::Method::gauss6;
-  spec.step = check_step;
+  spec.step = dividing_step(t_end / samples, h_target);
   const auto check = sim::simulate(spec);
   for (const auto* r : {&primary, &check})
     if (r->failure) throw std::runtime_error("reference run failed: " + r->failure->message());
   if (primary.samples.size() != check.samples.size())
     throw std::runtime_error("reference runs disagree on the output times");
-  ref.check_step = check_step;
+  ref.check_step = spec.step;
   ref.samples = primary.samples;
   for (std::size_t i = 0; i < ref.samples.size(); ++i)
     ref.disagreement.push_back(state_error(ref.samples[i], check.samples[i]));

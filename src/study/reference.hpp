@@ -46,7 +46,7 @@ struct CheckedReference {
   std::vector<sim::Sample> samples;  // DOP853 at tol, at output_times(t_end, samples)
   std::vector<double> disagreement;  // state_error(DOP853, Gauss6) at each sample
   double tol = 1e-14;                // DOP853's
-  double check_step = 0.0;           // Gauss6's
+  double check_step = 0.0;           // Gauss6's (h_target shortened to divide the spacing)
   double cpu_seconds = 0.0;
   // The largest disagreement over all samples: the two references' agreement.
   double self_check() const;
@@ -56,10 +56,14 @@ struct CheckedReference {
   double trusted_until(double margin) const;
 };
 
-// `check_step` must divide the output spacing t_end / samples. Throws
-// std::runtime_error if either run fails.
+// `h_target` is the largest Gauss6 step; it is shortened to divide the
+// output spacing t_end / samples. Throws std::runtime_error if either run fails.
 CheckedReference compute_checked_reference(const physics::Body& body,
                                            const physics::InitialState& initial, double t_end,
-                                           int samples, double check_step);
+                                           int samples, double h_target);
+
+// The Gauss6 step of the stability studies' checked references: an eighth
+// of reference_step(initial), below every step those studies take.
+double check_step(const physics::InitialState& initial);
 
 }  // namespace epviz::study

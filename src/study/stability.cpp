@@ -54,7 +54,7 @@ std::vector<MaxStepRow> stability_max_step(const StudyOptions& o) {
   const double t_end = 20.0;
   for (const auto c : {physics::Case::kovalevskaya, physics::Case::lagrange}) {
     const auto& p = physics::preset(c);
-    const auto ref = compute_reference(p.body, p.initial, t_end, 1, reference_step(p.initial));
+    const auto ref = compute_checked_reference(p.body, p.initial, t_end, 1, check_step(p.initial));
     const double period = fastest_period(p.initial);
     for (const auto m : methods_of(o)) {
       if (sim::is_adaptive(m) || sim::incompatibility(m, sim::Formulation::direct)) continue;
@@ -131,7 +131,8 @@ std::vector<SeparatrixRow> stability_separatrix(const StudyOptions& o) {
   const auto& e = physics::preset(physics::Case::euler);
   const double t_end = 30.0, spacing = 0.05;
   const int samples = int(std::lround(t_end / spacing));
-  const auto ref = compute_reference(e.body, e.initial, t_end, samples, reference_step(e.initial));
+  const auto ref =
+      compute_checked_reference(e.body, e.initial, t_end, samples, check_step(e.initial));
   const auto ref_flips = flip_times(ref.samples);
   for (const auto m : methods_of(o)) {
     if (sim::incompatibility(m, sim::Formulation::direct)) continue;
@@ -170,7 +171,7 @@ std::vector<SleepingTopRow> stability_sleeping(const StudyOptions& o) {
   const double tilt = 5.0 * std::numbers::pi / 180.0;
   init.gamma = {std::sin(tilt), 0.0, std::cos(tilt)};
   const double t_end = 5.0, target = 1e-3;
-  const auto ref = compute_reference(l.body, init, t_end, 1, reference_step(init));
+  const auto ref = compute_checked_reference(l.body, init, t_end, 1, check_step(init));
   const double period = fastest_period(init);
   for (const auto f : formulations_of(o)) {
     for (const auto m : methods_of(o)) {
