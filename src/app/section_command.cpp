@@ -69,6 +69,10 @@ int run_section(const SectionOptions& o) {
   const auto starts = section::section_starts(job);
   const long runs = section::run_count(job, starts.size());
   std::optional<shard::RowsShard> part;
+  if (shard && job.csv == "-")
+    throw io::BadInput(
+        "--shard: a shard writes its crossings beside the CSV; give \"csv\" (or --out) a file, not "
+        "standard output");
   if (shard) part = section::plan_section_shard(job, runs, *shard, o.jobs);
 #ifndef EPVIZ_HAVE_RENDER
   if (!part) draw(job, {}, o.gl);  // refuses pictures before any work

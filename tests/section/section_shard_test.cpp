@@ -91,5 +91,15 @@ TEST(SectionShard, TheMergeRefusesASectionFileChangedSince) {
   expect_bad_input(f.run(f.d.path(), "merge " + f.shards.string()), "changed since");
 }
 
+// A shard that cannot be one is refused before any orbit runs.
+TEST(SectionShard, BadShardOptionsAreRefused) {
+  Folders f;
+  const std::string section = "section " + f.file.string();
+  expect_bad_input(f.run(f.shards, section + " --shard 3/3"), "--shard");
+  expect_bad_input(f.run(f.shards, section + " --out - --shard 0/2"), "--shard");
+  expect_bad_input(f.run(f.shards, section, "JOB_COMPLETION_INDEX=1"), "--shard-count");
+  EXPECT_TRUE(fs::is_empty(f.shards));
+}
+
 }  // namespace
 }  // namespace epviz::test
