@@ -40,10 +40,13 @@ const fs::path& job_file() {
 // What the run relies on without checking again (docs/sections.md's ranges).
 void check_accepted(const section::SectionJob& job) {
   if (job.orbits < 1 || job.crossings < 1) std::abort();
-  if (double(job.orbits) * job.crossings > 1e7) std::abort();
+  if (job.methods.empty() || job.methods.size() > section::kMaxSectionMethods) std::abort();
+  if (double(job.orbits) * job.crossings * double(job.methods.size()) > 1e7) std::abort();
   if (job.level.has_value() == !job.states.empty()) std::abort();
   if (!job.level && std::size_t(job.orbits) != job.states.size()) std::abort();
-  if (!(job.t_end > 0) || !(job.tol > 0) || !(job.step > 0) || !(job.max_drift > 0)) std::abort();
+  if (!(job.t_end > 0) || !(job.max_drift > 0)) std::abort();
+  for (const auto& m : job.methods)
+    if (!(m.tol > 0) || !(m.step > 0)) std::abort();
   if (job.csv.empty()) std::abort();
 }
 

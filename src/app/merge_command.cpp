@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "app/gl_option.hpp"
+#include "app/section_command.hpp"
 #include "io/atomic_file.hpp"
 #include "io/bad_input.hpp"
 #include "io/output_paths.hpp"
@@ -183,13 +184,19 @@ int run_merge(const MergeOptions& o) {
                            " only as a regular file in " + out_dir.string());
   // Every sweep's rows are read and checked before anything is written.
   std::vector<std::vector<Json>> rows(batches.size());
+  std::vector<std::optional<section::MergedSection>> sections(batches.size());
   for (std::size_t i = 0; i < batches.size(); ++i)
-    if (batches[i].kind == "sweep") rows[i] = shard::merged_rows(batches[i], dir);
+    if (batches[i].kind == "sweep")
+      rows[i] = shard::merged_rows(batches[i], dir);
+    else if (batches[i].kind == "section")
+      sections[i] = section::read_section_shards(batches[i], dir, out_dir);
   fs::create_directories(out_dir);
   int unconverged = 0;
   for (std::size_t i = 0; i < batches.size(); ++i) {
     if (batches[i].kind == "sweep")
       unconverged += !merge_sweep(batches[i], rows[i], out_dir, o);
+    else if (sections[i])
+      write_merged_section(*sections[i], o.gl);
     else
       merge_render(batches[i], dir, out_dir);
   }

@@ -4,16 +4,22 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "app/cli_values.hpp"
 #include "app/gl_option.hpp"
+#include "io/atomic_file.hpp"
 #include "io/bad_input.hpp"
 #include "io/png_writer.hpp"
 #include "section/section_chart.hpp"
 #include "section/section_csv.hpp"
 #include "section/section_run.hpp"
+#include "section/section_shard.hpp"
+#include "shard/shard_lock.hpp"
+#include "shard/shard_spec.hpp"
 #ifdef EPVIZ_HAVE_RENDER
 #include "paint/figure_painter.hpp"
+#include "paint/figure_panels.hpp"
 #include "render/gl_choice.hpp"
 #include "vector/vector_figure.hpp"
 #endif
@@ -22,58 +28,119 @@ namespace epviz::app {
 namespace {
 
 struct SectionOptions {
-  std::string file, jobs, gl;  // the section file, -j, --gl
+  std::string file, out, jobs, gl, shard, shard_count;  // the section file, --out, -j, --gl, ...
 };
 
-void draw(const section::SectionJob& job, const chart::ChartSpec& spec, const std::string& gl) {
+// One chart per method, side by side on the same axes when there are several.
+void draw(const section::SectionJob& job, const std::vector<chart::ChartSpec>& charts,
+          const std::string& gl) {
 #ifdef EPVIZ_HAVE_RENDER
-  const paint::ChartOptions size{.width = 1100, .height = 1000, .font_px = 15.0f};
+  const bool one = charts.size() == 1;
+  const paint::ChartOptions size{
+      .width = one ? 1100 : 760, .height = one ? 1000 : 720, .font_px = one ? 15.0f : 13.0f};
+  constexpr int kGap = 16;
+  std::vector<chart::Figure> panels;
+  for (const auto& c : charts) panels.push_back({job.png, c});
   if (!job.png.empty()) {
-    const auto image = paint::paint_figure(*render::GlChoice(gl).open(), {job.png, spec}, size);
+    const auto image =
+        paint::paint_drawing(*render::GlChoice(gl).open(), size, [&](const paint::ChartFont& font) {
+          std::vector<paint::FigureDrawing> drawings;
+          for (const auto& p : panels) drawings.push_back(paint::draw_figure(p, size, font));
+          return paint::side_by_side(drawings, kGap);
+        });
     io::write_png_rgba(job.png, image.width, image.height, image.pixels);
   }
   if (!job.svg.empty())
-    vector::write_vector_figure(job.svg, {job.svg, spec}, vector::FigureFormat::svg, size);
+    vector::write_vector_panels(job.svg, panels, vector::FigureFormat::svg, size, kGap);
 #else
   if (!job.png.empty() || !job.svg.empty())
     throw io::BadInput(job.file + ": keys 'png', 'svg': this epviz was built without the renderer");
-  (void)spec, (void)gl;
+  (void)charts, (void)gl;
 #endif
 }
 
 int run_section(const SectionOptions& o) {
-  const section::SectionJob job = section::read_section_job(o.file);
+  section::SectionJob job = section::read_section_job(o.file);
   const int threads =
       section::thread_count(o.jobs.empty() ? 0 : parse_integer("-j", o.jobs, 1, 4096));
+  const auto shard = shard::shard_from_options(o.shard, o.shard_count);
+  if (!o.out.empty()) job.csv = o.out;
   section::check_outputs(job);
   const auto starts = section::section_starts(job);
+  const long runs = section::run_count(job, starts.size());
+  std::optional<shard::RowsShard> part;
+  if (shard && job.csv == "-")
+    throw io::BadInput(
+        "--shard: a shard writes its crossings beside the CSV; give \"csv\" (or --out) a file, not "
+        "standard output");
+  if (shard) part = section::plan_section_shard(job, runs, *shard, o.jobs);
 #ifndef EPVIZ_HAVE_RENDER
-  draw(job, {}, o.gl);  // refuses pictures before any work
+  if (!part) draw(job, {}, o.gl);  // refuses pictures before any work
 #endif
+  // Held to the end, so that a second copy of this shard refuses (shard/shard_lock.hpp).
+  std::optional<shard::ShardLock> lock;
+  if (part) {
+    lock.emplace(part->lock_path);
+    shard::start_rows_shard(*part);  // "completed": false until the end
+  }
   const auto start = std::chrono::steady_clock::now();
-  const auto results = section::run_section(job, starts, threads);
+  const auto results =
+      section::run_section(job, starts, threads, part ? std::optional(part->points) : std::nullopt);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (const std::string lost = section::lost_orbits_line(results); !lost.empty()) {
+  if (const std::string lost = section::lost_orbits_line(job, results); !lost.empty()) {
     std::fprintf(stderr, "epviz: error: %s: %s (nothing written)\n", o.file.c_str(), lost.c_str());
     return 3;
   }
-  section::write_crossings_csv(job, results);
-  draw(job, section::section_chart(job, results), o.gl);
+  std::string done = section::summary(job, starts.size(), results);
+  if (part) {
+    // The shard's crossings only; `epviz merge` joins them and draws the pictures.
+    job.csv = part->rows.string();
+    section::write_crossings_csv(job, results);
+    shard::finish_rows_shard(*part);
+    // The crossings are the shard's, the orbits the whole section's.
+    std::string which = "shard ";
+    which += std::to_string(shard->index);
+    which += "/";
+    which += std::to_string(shard->count);
+    which += ", runs ";
+    which += std::to_string(part->points.first);
+    which += "..";
+    which += std::to_string(part->points.end - 1);
+    which += " of ";
+    done = which + done;
+  } else {
+    section::write_crossings_csv(job, results);
+    draw(job, section::section_charts(job, results), o.gl);
+  }
   std::fprintf(job.csv == "-" ? stderr : stdout, "%s: %s in %.2f s (%d threads)\n", o.file.c_str(),
-               section::summary(job, results).c_str(), seconds, threads);
+               done.c_str(), seconds, threads);
   return 0;
 }
 
 }  // namespace
+
+void write_merged_section(const section::MergedSection& merged, const std::string& gl) {
+  io::write_file_atomically(merged.job.csv, merged.csv_text);
+  draw(merged.job, section::section_charts(merged.job, merged.results), gl);
+  std::printf("section %s: %zu runs -> %s\n", merged.job.file.c_str(), merged.results.size(),
+              merged.job.csv.c_str());
+}
 
 std::function<int()> add_section_command(CLI::App& app) {
   auto o = std::make_shared<SectionOptions>();
   auto* cmd = app.add_subcommand(
       "section", "Poincare section (SECTION.json): crossings of a surface by orbits on a level");
   cmd->add_option("section", o->file, "section file (JSON; docs/sections.md)")->required();
+  cmd->add_option("--out", o->out, "the crossings' CSV (default: the file's \"csv\")");
   cmd->add_option("-j,--jobs", o->jobs, "threads (default: all cores)");
   add_gl_option(*cmd, o->gl, "for the PNG");
+  cmd->add_option("--shard", o->shard,
+                  "I/N: run only shard I (from 0) of N, a contiguous range of the orbits; default "
+                  "from SLURM_ARRAY_TASK_ID, JOB_COMPLETION_INDEX or AWS_BATCH_JOB_ARRAY_INDEX; "
+                  "`epviz merge` joins the shards and draws the pictures");
+  cmd->add_option("--shard-count", o->shard_count,
+                  "N: the number of shards when the environment gives only the index");
   return [o] { return run_section(*o); };
 }
 

@@ -1,7 +1,11 @@
 #pragma once
 // `epviz section SECTION.json`: a Poincaré section, its crossings as CSV
-// (docs/sections.md).
+// (docs/sections.md), whole or one shard of it.
 #include <functional>
+#include <string>
+#include <vector>
+
+#include "section/section_merge.hpp"
 
 namespace CLI {
 class App;
@@ -10,5 +14,9 @@ class App;
 namespace epviz::app {
 
 std::function<int()> add_section_command(CLI::App& app);
+
+// A section's shards joined by `epviz merge`: writes its CSV and draws its
+// PNG and SVG, as an unsharded run does.
+void write_merged_section(const section::MergedSection& merged, const std::string& gl);
 
 }  // namespace epviz::app

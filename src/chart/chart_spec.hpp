@@ -45,6 +45,9 @@ struct ChartSpec {
   // marker shape. Empty: a row per series.
   std::vector<LegendKey> colour_legend;
   std::vector<LegendKey> marker_legend;
+  // Points the axes take in besides the series' (not drawn): charts side by
+  // side share their axes by taking in each other's points.
+  std::vector<ChartPoint> axis_extent;
 };
 
 // A grid of values, rows by columns, each cell coloured by its value on a
@@ -78,6 +81,12 @@ struct HeatMapSpec {
   double range_max = std::numeric_limits<double>::quiet_NaN();
   std::string missing = "n/a";  // in a cell without a value, or in a key under a text-less grid
   std::string note;             // one line under the grid: how the values were measured
+  // Cells whose value could not be decided ([row][column], true; empty:
+  // none), e.g. where the reference a value is measured against is not
+  // converged: hatched and labelled `undecided`, in the cell where text fits
+  // and in a key under the grid, unlike the grey of a cell without a value.
+  std::vector<std::vector<bool>> undecided;
+  std::string undecided_label = "undecided";
 };
 
 struct TableSpec {

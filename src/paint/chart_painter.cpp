@@ -211,13 +211,15 @@ ChartLayout chart_layout(const ChartSpec& spec, int width, int height, const Cha
   l.log_x = spec.log_x;
   l.log_y = spec.log_y;
   Span sx, sy;
+  const auto take_in = [&](const ChartPoint& p) {
+    const double ax = axis_value(p.x, spec.log_x), ay = axis_value(p.y, spec.log_y);
+    if (std::isnan(ax) || std::isnan(ay)) return;
+    sx.add(ax);
+    sy.add(ay);
+  };
   for (const auto& s : spec.series)
-    for (const auto& p : s.points) {
-      const double ax = axis_value(p.x, spec.log_x), ay = axis_value(p.y, spec.log_y);
-      if (std::isnan(ax) || std::isnan(ay)) continue;
-      sx.add(ax);
-      sy.add(ay);
-    }
+    for (const auto& p : s.points) take_in(p);
+  for (const auto& p : spec.axis_extent) take_in(p);
   finish_span(sx, spec.log_x);
   finish_span(sy, spec.log_y);
   l.range = {sx.lo, sx.hi, sy.lo, sy.hi};

@@ -33,6 +33,19 @@ double cell_value(const HeatMapSpec& spec, std::size_t row, std::size_t column) 
   return spec.values[row][column];
 }
 
+bool undecided(const HeatMapSpec& spec, std::size_t row, std::size_t column) {
+  return row < spec.undecided.size() && column < spec.undecided[row].size() &&
+         spec.undecided[row][column];
+}
+
+// Diagonal stripes (lower left to upper right) over the rectangle a..b.
+void add_hatch(DrawList& list, glm::vec2 a, glm::vec2 b, const glm::vec4& colour, float spacing) {
+  for (float s = a.x + a.y + spacing * 0.5f; s < b.x + b.y; s += spacing) {
+    const float x0 = std::max(a.x, s - b.y), x1 = std::min(b.x, s - a.y);
+    if (x1 > x0) list.add_line({x0, s - x0, 0}, {x1, s - x1, 0}, colour, 1.0f);
+  }
+}
+
 // The ticks of a numeric axis, if `values` makes it one (one per cell) of
 // enough cells to be read as a continuous axis; a few cells are each named
 // by their own value, which is exact where round ticks between them would
@@ -72,9 +85,13 @@ HeatMapLayout heat_map_layout(const HeatMapSpec& spec, int width, int height,
   const float font_px = font.px;
   HeatMapLayout l;
   Span span;
-  bool any_missing = false;
+  bool any_missing = false, any_undecided = false;
   for (std::size_t i = 0; i < spec.rows.size(); ++i)
     for (std::size_t j = 0; j < spec.columns.size(); ++j) {
+      if (undecided(spec, i, j)) {
+        any_undecided = true;
+        continue;
+      }
       const double v = plotted(spec, cell_value(spec, i, j));
       span.add(v);
       any_missing |= std::isnan(v);
@@ -119,6 +136,7 @@ HeatMapLayout heat_map_layout(const HeatMapSpec& spec, int width, int height,
       if (!std::isnan(plotted(spec, v)))
         widest_value = std::max(widest_value, font.width(heat_value_text(v)));
   if (any_missing) widest_value = std::max(widest_value, font.width(spec.missing));
+  if (any_undecided) widest_value = std::max(widest_value, font.width(spec.undecided_label));
   const float bar_w = font_px * 1.1f;
   const float right =
       std::max(font.width(spec.value_label), bar_w + font_px * 0.5f + widest_tick) + font_px * 2.5f;
@@ -141,10 +159,13 @@ HeatMapLayout heat_map_layout(const HeatMapSpec& spec, int width, int height,
   // key to grey cells when they carry no text (known only once the rows'
   // height is: hence a second pass with that line when the first finds it needed).
   const float cell_h_max = font_px * 2.6f;
+  // The key to hatched cells is always there: a cell's text may not say it all.
+  l.undecided_key = any_undecided;
   auto place = [&](bool key) {
+    const int keys = int(key) + int(l.undecided_key);
     const float under = font_px * 0.6f + line * (l.staggered_columns ? 2.0f : 1.0f) +
                         (spec.x_label.empty() ? 0.0f : line * 1.2f) +
-                        (spec.note.empty() ? 0.0f : line * 1.4f) + (key ? line * 1.4f : 0.0f) +
+                        (spec.note.empty() ? 0.0f : line * 1.4f) + line * 1.4f * float(keys) +
                         font_px * 0.6f;
     const int bottom = int(std::ceil(under));
     const float cell_h =
@@ -213,6 +234,10 @@ FigureDrawing draw_heat_map(const HeatMapSpec& spec, const ChartOptions& options
   const glm::vec4 missing{0.88f, 0.88f, 0.89f, 1.0f};
   const glm::vec4 hatch{0.62f, 0.62f, 0.64f, 1.0f};
   const glm::vec4 quiet_ink{0.35f, 0.35f, 0.38f, 1.0f};
+  // Undecided cells: paper white under darker stripes than a missing cell's
+  // diagonal, so that neither reads as the other nor as a colour of the map.
+  const glm::vec4 undecided_fill{0.97f, 0.97f, 0.96f, 1.0f};
+  const float hatch_spacing = std::max(5.0f, font_px * 0.5f);
   const float tick = font_px * 0.3f;
   const float grid_bottom = float(l.grid.y + l.grid.height);
   for (std::size_t i = 0; i < l.cells.size(); ++i) {
@@ -227,6 +252,20 @@ FigureDrawing draw_heat_map(const HeatMapSpec& spec, const ChartOptions& options
     }
     for (std::size_t j = 0; j < l.cells[i].size(); ++j) {
       const Viewport& c = l.cells[i][j];
+      if (undecided(spec, i, j)) {
+        const float gap = l.value_text ? 1.0f : 0.0f;
+        const glm::vec2 a{float(c.x) + gap, float(c.y) + gap};
+        const glm::vec2 b{float(c.x + c.width) - gap, float(c.y + c.height) - gap};
+        list.add_rect(a, b, undecided_fill);
+        add_hatch(list, a, b, hatch, hatch_spacing);
+        if (l.value_text) {  // on a box of paper, so that the stripes do not cross it
+          auto text = label({float(c.x) + c.width * 0.5f, float(c.y) + c.height * 0.5f},
+                            spec.undecided_label, TextAnchor::centre);
+          text.background = undecided_fill;
+          list.add_text(std::move(text));
+        }
+        continue;
+      }
       const double v = cell_value(spec, i, j);
       const auto colour = heat_map_colour(spec, l, v);
       const glm::vec4 fill = colour.value_or(missing);
@@ -293,6 +332,15 @@ FigureDrawing draw_heat_map(const HeatMapSpec& spec, const ChartOptions& options
     list.add_line({a.x, b.y, 0}, {b.x, a.y, 0}, hatch, 1.0f);
     list.add_text(label({b.x + font_px * 0.5f, (a.y + b.y) * 0.5f}, spec.missing, TextAnchor::left,
                         quiet_ink));
+    under += line * 1.4f;
+  }
+  if (l.undecided_key) {
+    const glm::vec2 a{float(l.grid.x), under + line * 0.4f};
+    const glm::vec2 b{a.x + font_px * 1.2f, a.y + font_px * 0.9f};
+    list.add_rect(a, b, undecided_fill);
+    add_hatch(list, a, b, hatch, hatch_spacing * 0.6f);
+    list.add_text(label({b.x + font_px * 0.5f, (a.y + b.y) * 0.5f}, spec.undecided_label,
+                        TextAnchor::left, quiet_ink));
   }
   // The colour bar: 64 bands, low values at the bottom. Each band reaches
   // down to the bar's bottom and the higher ones are drawn first, so that no

@@ -1,7 +1,8 @@
 #pragma once
 // Heat maps for papers: a grid of cells coloured by value (linear or log10
 // scale, optionally a fixed range), row and column labels, a colour bar, and
-// each cell's value as text where every value fits its cell.
+// each cell's value as text where every value fits its cell. Cells the spec
+// marks undecided are hatched and labelled, unlike the grey of a missing value.
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -32,6 +33,7 @@ struct HeatMapLayout {
   std::size_t row_stride = 1;      // every k-th row labelled (rows lower than a line of text)
   bool value_text = true;          // each cell shows its value (and `missing`) as text
   bool missing_key = false;        // a key under the grid says what a grey cell means
+  bool undecided_key = false;      // ... and what a hatched one means (HeatMapSpec::undecided)
   int natural_height = 0;          // the picture's height that fits the grid with no spare room
   // Numeric axes (the spec's column_values, row_values) of 8 cells or more:
   // labels at round values, none overlapping the one before; empty for an

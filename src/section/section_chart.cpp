@@ -13,7 +13,7 @@ std::string short_number(double x) {
   return std::string(buf, r.ptr);
 }
 
-std::string title(const SectionJob& job) {
+std::string title(const SectionJob& job, const SectionMethod& m) {
   std::string t = "Poincaré section, ";
   t += physics::preset(job.case_id).title;
   t += ": ";
@@ -29,24 +29,31 @@ std::string title(const SectionJob& job) {
     t += short_number(job.level->area);
   }
   t += " (";
-  t += sim::name(job.method);
-  t += sim::is_adaptive(job.method) ? ", tol " : ", step ";
-  t += short_number(sim::is_adaptive(job.method) ? job.tol : job.step);
+  t += sim::name(m.method);
+  t += sim::is_adaptive(m.method) ? ", tol " : ", step ";
+  t += short_number(sim::is_adaptive(m.method) ? m.tol : m.step);
   t += ")";
   return t;
 }
 
 }  // namespace
 
-chart::ChartSpec section_chart(const SectionJob& job, const std::vector<OrbitResult>& orbits) {
-  chart::ChartSpec spec;
-  spec.title = title(job);
-  spec.x_label = sim::symbol(job.coords[0]);
-  spec.y_label = sim::symbol(job.coords[1]);
+std::vector<chart::ChartSpec> section_charts(const SectionJob& job,
+                                             const std::vector<OrbitResult>& orbits) {
+  std::vector<chart::ChartSpec> charts(job.methods.size());
+  std::vector<long> runs(job.methods.size(), 0);
+  for (std::size_t m = 0; m < charts.size(); ++m) {
+    charts[m].title = title(job, job.methods[m]);
+    charts[m].x_label = sim::symbol(job.coords[0]);
+    charts[m].y_label = sim::symbol(job.coords[1]);
+  }
+  // Every chart's axes take in every crossing of every method.
+  std::vector<chart::ChartPoint> extent;
   // The chart painter joins a series' points by lines and marks only short
   // series at every point, so each crossing is a series of one point, its
   // colour keyed by its orbit; the legend is one row for all of them.
   for (const auto& o : orbits) {
+    ++runs[o.method];
     if (o.failure) continue;
     for (const auto& c : o.crossings) {
       chart::ChartSeries s;
@@ -54,14 +61,18 @@ chart::ChartSpec section_chart(const SectionJob& job, const std::vector<OrbitRes
                           sim::value_of(job.coords[1], c.omega, c.gamma)});
       s.colour_key = o.orbit - 1;
       s.marker_key = 0;
-      spec.series.push_back(std::move(s));
+      extent.push_back(s.points.back());
+      charts[o.method].series.push_back(std::move(s));
     }
   }
-  std::string legend = "crossings, one colour per orbit (";
-  legend += std::to_string(orbits.size());
-  legend += " orbits)";
-  spec.marker_legend.push_back({legend, 0});
-  return spec;
+  for (std::size_t m = 0; m < charts.size(); ++m) {
+    std::string legend = "crossings, one colour per orbit (";
+    legend += std::to_string(runs[m]);
+    legend += " orbits)";
+    charts[m].marker_legend.push_back({legend, 0});
+    if (charts.size() > 1) charts[m].axis_extent = extent;
+  }
+  return charts;
 }
 
 }  // namespace epviz::section

@@ -1,7 +1,9 @@
 #pragma once
-// A section's crossings as a chart for the figure painters: one point per
-// crossing at the job's two coordinates, one colour per orbit (the palette
-// cycles), no lines: a scatter.
+// A section's crossings as charts for the figure painters, one per method
+// (drawn side by side when there are several): one point per crossing at the
+// job's two coordinates, one colour per orbit (the palette cycles), no lines:
+// a scatter. The charts of one section share their axes, so that a method's
+// drift off the invariant curves shows against the others.
 #include <vector>
 
 #include "chart/chart_spec.hpp"
@@ -10,7 +12,9 @@
 
 namespace epviz::section {
 
-// Lost orbits are left out, as in the CSV.
-chart::ChartSpec section_chart(const SectionJob& job, const std::vector<OrbitResult>& orbits);
+// One chart per method of job.methods, in order. Lost orbits are left out,
+// as in the CSV.
+std::vector<chart::ChartSpec> section_charts(const SectionJob& job,
+                                             const std::vector<OrbitResult>& orbits);
 
 }  // namespace epviz::section

@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "io/atomic_file.hpp"
+#include "io/bad_input.hpp"
+#include "io/printable.hpp"
 #include "physics/invariants.hpp"
 
 namespace epviz::section {
@@ -15,16 +17,42 @@ void put(std::string& out, double x) {
   out.append(buf, r.ptr);
 }
 
+bool several_methods(const SectionJob& job) { return job.methods.size() > 1; }
+
+// The comma-separated fields of one line.
+std::vector<std::string_view> fields_of(std::string_view line) {
+  std::vector<std::string_view> f;
+  for (std::size_t at = 0;;) {
+    const std::size_t comma = line.find(',', at);
+    f.push_back(line.substr(at, comma == std::string_view::npos ? line.npos : comma - at));
+    if (comma == std::string_view::npos) return f;
+    at = comma + 1;
+  }
+}
+
+template <class T>
+bool parse(std::string_view text, T& value) {
+  const auto r = std::from_chars(text.data(), text.data() + text.size(), value);
+  return r.ec == std::errc{} && r.ptr == text.data() + text.size();
+}
+
 }  // namespace
 
+std::string crossings_csv_header(const SectionJob& job) {
+  std::string h = several_methods(job) ? "method," : "";
+  h += "orbit,crossing,t,omega1,omega2,omega3,gamma1,gamma2,gamma3,energy,area,gamma_norm_error,"
+       "extra_integral\n";
+  return h;
+}
+
 std::string crossings_csv(const SectionJob& job, const std::vector<OrbitResult>& orbits) {
-  std::string out =
-      "orbit,crossing,t,omega1,omega2,omega3,gamma1,gamma2,gamma3,energy,area,gamma_norm_error,"
-      "extra_integral\n";
+  std::string out = crossings_csv_header(job);
   for (const auto& o : orbits) {
     if (o.failure) continue;
+    const std::string label = several_methods(job) ? method_label(job.methods[o.method]) + "," : "";
     for (const auto& c : o.crossings) {
       const auto inv = physics::invariants(job.body, job.case_id, c.omega, c.gamma);
+      out += label;
       out += std::to_string(o.orbit);
       out += ',';
       out += std::to_string(c.number);
@@ -43,6 +71,55 @@ std::string crossings_csv(const SectionJob& job, const std::vector<OrbitResult>&
 
 void write_crossings_csv(const SectionJob& job, const std::vector<OrbitResult>& orbits) {
   io::write_file_atomically(job.csv, crossings_csv(job, orbits));
+}
+
+std::vector<OrbitResult> crossings_from_csv(const SectionJob& job, std::string_view text,
+                                            const std::string& file) {
+  const std::string header = crossings_csv_header(job);
+  if (!text.starts_with(header))
+    throw io::BadInput(file + ": line 1: expected the header " +
+                       header.substr(0, header.size() - 1));
+  std::vector<OrbitResult> results;
+  std::size_t at = header.size();
+  const std::size_t first_field = several_methods(job) ? 1 : 0;
+  for (long line_number = 2; at < text.size(); ++line_number) {
+    const std::size_t end = text.find('\n', at);
+    const auto fail = [&](const std::string& what) {
+      throw io::BadInput(file + ": line " + std::to_string(line_number) + ": " + what);
+    };
+    if (end == std::string_view::npos) fail("cut short (no newline)");
+    const auto f = fields_of(text.substr(at, end - at));
+    at = end + 1;
+    if (f.size() != first_field + 13) fail("expected as many fields as the header");
+    std::size_t method = 0;
+    if (several_methods(job)) {
+      while (method < job.methods.size() && method_label(job.methods[method]) != f[0]) ++method;
+      if (method == job.methods.size())
+        fail(std::string("method '") + io::printable(f[0]) + "' is not one of the section's");
+    }
+    sim::Crossing c;
+    int orbit = 0;
+    double v[7];
+    bool ok = parse(f[first_field], orbit) && parse(f[first_field + 1], c.number) && orbit >= 1 &&
+              c.number >= 1;
+    for (int k = 0; k < 7; ++k) ok = ok && parse(f[first_field + 2 + std::size_t(k)], v[k]);
+    if (!ok) fail("expected an orbit and crossing number (from 1) and numbers t, omega, gamma");
+    c.t = v[0];
+    c.omega = {v[1], v[2], v[3]};
+    c.gamma = {v[4], v[5], v[6]};
+    const bool same_run =
+        !results.empty() && results.back().orbit == orbit && results.back().method == method;
+    if (!same_run) {
+      const bool later = results.empty() || method > results.back().method ||
+                         (method == results.back().method && orbit > results.back().orbit);
+      if (!later || c.number != 1) fail("runs out of order or a crossing missing");
+      results.push_back({orbit, method, {}, {}, {}});
+    } else if (c.number != results.back().crossings.back().number + 1) {
+      fail("crossings of an orbit out of order");
+    }
+    results.back().crossings.push_back(c);
+  }
+  return results;
 }
 
 }  // namespace epviz::section

@@ -1,11 +1,14 @@
 #include "section/section_job.hpp"
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
 
 #include "io/bad_input.hpp"
 #include "io/json_reader.hpp"
 #include "io/output_paths.hpp"
 #include "physics/admissible.hpp"
+#include "shard/checksum.hpp"
 
 namespace epviz::section {
 namespace {
@@ -92,12 +95,73 @@ std::vector<physics::InitialState> read_states(const io::ObjectReader& root,
   return states;
 }
 
+// One method and its setting from `r` ("method", "tol", "step"), the
+// missing ones as in `m`.
+SectionMethod read_method(io::ObjectReader& r, SectionMethod m, double t_end,
+                          bool method_required) {
+  const auto methods =
+      names_of<sim::Method>(sim::all_methods(), [](sim::Method x) { return sim::name(x); });
+  const auto name = r.choice("method", methods);
+  if (name) m.method = *sim::method_from_name(*name);
+  if (!name && method_required) r.fail("method", "is required: one of " + join(methods));
+  if (auto tol = r.number_in("tol", 1e-15, 1e-3, "1e-15 to 1e-3")) m.tol = *tol;
+  if (auto h = r.number_in("step", 1e-6, 1.0, "1e-6 to 1")) m.step = *h;
+  if (!sim::is_adaptive(m.method) && t_end / m.step > kMaxFixedSteps)
+    r.fail("step", "t_end / step must be at most 1e8 steps for a fixed-step method");
+  return m;
+}
+
+// "method", "tol", "step" at the top, or a list "methods" of such objects
+// (the top's "tol" and "step" their defaults): the figure's panels.
+void read_methods(io::ObjectReader& r, SectionJob& job) {
+  const SectionMethod top = read_method(r, SectionMethod{}, job.t_end, false);
+  job.methods = {top};
+  const auto* list = r.raw("methods");
+  if (!list) return;
+  if (r.raw("method")) r.fail("methods", "give either \"method\" or \"methods\", not both");
+  if (!list->is_array() || list->empty() || list->size() > kMaxSectionMethods)
+    r.fail("methods", "must be an array of 1 to 8 objects {\"method\", \"tol\" or \"step\"}");
+  job.methods.clear();
+  std::vector<std::string> labels;
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    std::string key = "methods[";
+    key += std::to_string(i);
+    key += "]";
+    if (!(*list)[i].is_object()) r.fail(key, "must be an object {\"method\", \"tol\" or \"step\"}");
+    io::ObjectReader one((*list)[i], job.file, key);
+    job.methods.push_back(read_method(one, top, job.t_end, true));
+    one.finish();
+    const std::string label = method_label(job.methods.back());
+    if (std::find(labels.begin(), labels.end(), label) != labels.end())
+      r.fail(key, label + " is listed twice");
+    labels.push_back(label);
+  }
+}
+
+std::string short_number(double x) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, x, std::chars_format::general, 6);
+  return std::string(buf, r.ptr);
+}
+
 }  // namespace
+
+std::string method_label(const SectionMethod& m) {
+  std::string s(sim::name(m.method));
+  s += sim::is_adaptive(m.method) ? " tol " : " step ";
+  s += short_number(sim::is_adaptive(m.method) ? m.tol : m.step);
+  return s;
+}
+
+SectionRun section_run_of(long run, std::size_t starts) {
+  return {std::size_t(run) / starts, std::size_t(run) % starts};
+}
 
 SectionJob read_section_job(const std::filesystem::path& file) {
   SectionJob job;
   job.file = file.string();
   const nlohmann::json doc = io::read_json_file(file);
+  job.hash = shard::checksum_of(doc.dump());  // nlohmann::json keeps keys sorted
   io::ObjectReader r(doc, job.file);
   const auto case_name = r.choice("case", names_of_cases());
   if (!case_name) r.fail("case", "is required: one of the named cases");
@@ -120,19 +184,21 @@ SectionJob read_section_job(const std::filesystem::path& file) {
   job.orbits = orbits ? int(*orbits) : int(job.states.size());
 
   if (auto k = r.integer("crossings", 1, 1000000)) job.crossings = int(*k);
-  // The crossings are kept until the CSV is written: about 300 bytes each.
-  if (double(job.orbits) * job.crossings > kMaxCrossings)
-    r.fail("crossings", "orbits x crossings must be at most 1e7, got " +
-                            std::to_string(job.orbits) + " x " + std::to_string(job.crossings));
   if (auto t = r.number_in("t_end", 1e-6, 1e9, "1e-6 to 1e9")) job.t_end = *t;
   if (auto s = r.object("section")) read_surface(*s, job.surface);
-  const auto methods =
-      names_of<sim::Method>(sim::all_methods(), [](sim::Method m) { return sim::name(m); });
-  if (auto m = r.choice("method", methods)) job.method = *sim::method_from_name(*m);
-  if (auto tol = r.number_in("tol", 1e-15, 1e-3, "1e-15 to 1e-3")) job.tol = *tol;
-  if (auto h = r.number_in("step", 1e-6, 1.0, "1e-6 to 1")) job.step = *h;
-  if (!sim::is_adaptive(job.method) && job.t_end / job.step > kMaxFixedSteps)
-    r.fail("step", "t_end / step must be at most 1e8 steps for a fixed-step method");
+  read_methods(r, job);
+  // The crossings are kept until the CSV is written: about 300 bytes each.
+  if (double(job.orbits) * job.crossings * double(job.methods.size()) > kMaxCrossings) {
+    std::string got = "orbits x crossings (x methods) must be at most 1e7, got ";
+    got += std::to_string(job.orbits);
+    got += " x ";
+    got += std::to_string(job.crossings);
+    if (job.methods.size() > 1) {
+      got += " x ";
+      got += std::to_string(job.methods.size());
+    }
+    r.fail("crossings", got);
+  }
   if (auto d = r.number_in("max_drift", 1e-14, 1.0, "1e-14 to 1")) job.max_drift = *d;
   job.coords = default_coords(job.surface.function);
   if (const auto* coords = r.raw("coords")) {

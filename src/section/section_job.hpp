@@ -17,6 +17,20 @@
 
 namespace epviz::section {
 
+// One method the orbits run with, at its setting: adaptive methods take
+// `tol`, fixed-step ones `step`.
+struct SectionMethod {
+  sim::Method method = sim::Method::dop853;
+  double tol = 1e-10;
+  double step = 0.01;
+};
+
+// "dop853 tol 1e-10", "rk4 step 0.05": the method and the setting it uses,
+// as the CSV's method column and the panels' titles name it.
+std::string method_label(const SectionMethod& m);
+
+inline constexpr std::size_t kMaxSectionMethods = 8;
+
 struct SectionJob {
   std::string file;  // for messages
   physics::Case case_id = physics::Case::kovalevskaya;
@@ -27,9 +41,9 @@ struct SectionJob {
   int crossings = 200;                        // per orbit, at most
   double t_end = 1e4;                         // per orbit, at most
   sim::SectionSurface surface;
-  sim::Method method = sim::Method::dop853;
-  double tol = 1e-10;       // adaptive methods
-  double step = 0.01;       // fixed-step methods
+  // One method ("method", "tol", "step"), or several ("methods"), each
+  // running every orbit: a panel each in the figure, side by side.
+  std::vector<SectionMethod> methods{SectionMethod{}};
   double max_drift = 1e-6;  // relative drift of C1 or |gamma|^2 that loses an orbit
   // The plot's axes: two state components (default gamma1, omega3 for a
   // gamma3 section, else the first two components the surface leaves free).
@@ -37,6 +51,7 @@ struct SectionJob {
                                             sim::StateComponent::omega3};
   std::string csv;
   std::string png, svg;  // optional pictures of the crossings
+  std::string hash;      // of the file's parsed content: the shards of one section share it
 };
 
 // Throws io::BadInput.
@@ -51,5 +66,15 @@ void check_outputs(const SectionJob& job);
 // there is none, naming the least energy of the level's C0, or when a state
 // breaks the case's conditions (e.g. Goryachev–Chaplygin's C0 = 0).
 std::vector<physics::InitialState> section_starts(const SectionJob& job);
+
+// The section's runs are every method with every start, method by method:
+// run r is method r / starts of start r % starts. A shard (`--shard I/N`)
+// runs a contiguous range of them, so that its crossings are a contiguous
+// slice of the CSV.
+struct SectionRun {
+  std::size_t method = 0;  // index into job.methods
+  std::size_t start = 0;   // index into the starts; the orbit is start + 1
+};
+SectionRun section_run_of(long run, std::size_t starts);
 
 }  // namespace epviz::section

@@ -9,14 +9,15 @@
 namespace epviz::section {
 namespace {
 
-sim::RunSpec orbit_run(const SectionJob& job, const physics::InitialState& start) {
+sim::RunSpec orbit_run(const SectionJob& job, const SectionMethod& m,
+                       const physics::InitialState& start) {
   sim::RunSpec run;
   run.case_id = job.case_id;
   run.body = job.body;
   run.initial = start;
-  run.method = job.method;
-  run.tol = job.tol;
-  run.step = job.step;
+  run.method = m.method;
+  run.tol = m.tol;
+  run.step = m.step;
   run.t_end = job.t_end;
   run.max_drift = job.max_drift;
   return run;
@@ -28,27 +29,35 @@ int thread_count(long requested) {
   return requested > 0 ? int(requested) : int(std::max(1u, std::thread::hardware_concurrency()));
 }
 
+long run_count(const SectionJob& job, std::size_t starts) {
+  return long(job.methods.size() * starts);
+}
+
 std::vector<OrbitResult> run_section(const SectionJob& job,
-                                     const std::vector<physics::InitialState>& starts,
-                                     int threads) {
-  std::vector<OrbitResult> results(starts.size());
+                                     const std::vector<physics::InitialState>& starts, int threads,
+                                     std::optional<shard::ItemRange> runs) {
+  const shard::ItemRange range = runs.value_or(shard::ItemRange{0, run_count(job, starts.size())});
+  std::vector<OrbitResult> results(std::size_t(range.size()));
   // Orbits differ in cost (a slow crossing rate means a long run), so each
   // thread takes the next orbit not yet taken rather than a fixed share.
   std::atomic<std::size_t> next{0};
   auto work = [&] {
-    for (std::size_t i = next++; i < starts.size(); i = next++) {
+    for (std::size_t i = next++; i < results.size(); i = next++) {
+      const SectionRun run = section_run_of(range.first + long(i), starts.size());
       OrbitResult& r = results[i];
-      r.orbit = int(i) + 1;
-      r.start = starts[i];
+      r.orbit = int(run.start) + 1;
+      r.method = run.method;
+      r.start = starts[run.start];
       try {
-        r.crossings = sim::section_crossings(orbit_run(job, starts[i]), job.surface, job.crossings);
+        r.crossings = sim::section_crossings(orbit_run(job, job.methods[run.method], r.start),
+                                             job.surface, job.crossings);
       } catch (const numerics::IntegrationError& e) {
         r.failure = e.failure();
         r.crossings.clear();
       }
     }
   };
-  const int n = std::max(1, std::min<int>(threads, int(starts.size())));
+  const int n = std::max(1, std::min<int>(threads, int(results.size())));
   std::vector<std::thread> pool;
   for (int t = 1; t < n; ++t) pool.emplace_back(work);
   work();
@@ -56,17 +65,23 @@ std::vector<OrbitResult> run_section(const SectionJob& job,
   return results;
 }
 
-std::string summary(const SectionJob& job, const std::vector<OrbitResult>& results) {
+std::string summary(const SectionJob& job, std::size_t starts,
+                    const std::vector<OrbitResult>& results) {
   long crossings = 0;
   for (const auto& r : results) crossings += long(r.crossings.size());
-  std::string s = std::to_string(results.size());
+  std::string s = std::to_string(starts);
   s += " orbits";
-  if (job.level && std::size_t(job.orbits) > results.size()) {
+  if (job.level && std::size_t(job.orbits) > starts) {
     s += " (";
-    s += std::to_string(std::size_t(job.orbits) - results.size());
+    s += std::to_string(std::size_t(job.orbits) - starts);
     s += " of ";
     s += std::to_string(job.orbits);
     s += " directions of gamma lie below the level)";
+  }
+  if (job.methods.size() > 1) {
+    s += " x ";
+    s += std::to_string(job.methods.size());
+    s += " methods";
   }
   s += ", ";
   s += std::to_string(crossings);
@@ -74,7 +89,7 @@ std::string summary(const SectionJob& job, const std::vector<OrbitResult>& resul
   return s;
 }
 
-std::string lost_orbits_line(const std::vector<OrbitResult>& results) {
+std::string lost_orbits_line(const SectionJob& job, const std::vector<OrbitResult>& results) {
   const OrbitResult* first = nullptr;
   long lost = 0;
   for (const auto& r : results)
@@ -88,6 +103,11 @@ std::string lost_orbits_line(const std::vector<OrbitResult>& results) {
   line += std::to_string(results.size());
   line += " orbits lost, the first: orbit ";
   line += std::to_string(first->orbit);
+  if (job.methods.size() > 1) {
+    line += " (";
+    line += method_label(job.methods[first->method]);
+    line += ")";
+  }
   line += " from omega ";
   line += physics::detail::vec(first->start.omega);
   line += ", gamma ";

@@ -6,12 +6,14 @@
 
 #include "numerics/failure.hpp"
 #include "section/section_job.hpp"
+#include "shard/shard_spec.hpp"
 #include "sim/section.hpp"
 
 namespace epviz::section {
 
 struct OrbitResult {
-  int orbit = 0;  // 1, 2, ... in the order of the starts
+  int orbit = 0;           // 1, 2, ... in the order of the starts
+  std::size_t method = 0;  // index into job.methods
   physics::InitialState start;
   std::vector<sim::Crossing> crossings;
   std::optional<numerics::Failure> failure;  // a lost orbit: its crossings are not results
@@ -20,18 +22,26 @@ struct OrbitResult {
 // `requested` threads, or all cores for 0.
 int thread_count(long requested);
 
-// One result per start, in their order, computed by `threads` threads (at
-// least 1); an orbit's numerical failure ends that orbit only.
+// Every method with every start: job.methods.size() x starts.size().
+long run_count(const SectionJob& job, std::size_t starts);
+
+// One result per run (section_run_of) of `runs` (default: all), in their
+// order, computed by `threads` threads (at least 1); an orbit's numerical
+// failure ends that orbit only.
 std::vector<OrbitResult> run_section(const SectionJob& job,
-                                     const std::vector<physics::InitialState>& starts, int threads);
+                                     const std::vector<physics::InitialState>& starts, int threads,
+                                     std::optional<shard::ItemRange> runs = std::nullopt);
 
 // The failed orbits, one line: how many, and the first one's orbit number,
-// start and failure ("orbit 3 (omega ..., gamma ...): dop853 failed at t = ...:
+// start (and method, when there are several) and failure ("orbit 3 from omega
+// ..., gamma ...: dop853 failed at t = ...:
 // ...; tighten ..."). Empty when every orbit kept the motion.
-std::string lost_orbits_line(const std::vector<OrbitResult>& results);
+std::string lost_orbits_line(const SectionJob& job, const std::vector<OrbitResult>& results);
 
-// "16 orbits, 6400 crossings", and for a level with fewer states than asked
-// "13 orbits (3 of 16 directions of gamma lie below the level), ...".
-std::string summary(const SectionJob& job, const std::vector<OrbitResult>& results);
+// "16 orbits, 6400 crossings" (`starts` orbits, the crossings of `results`),
+// for a level with fewer states than asked "13 orbits (3 of 16 directions of
+// gamma lie below the level), ...", with several methods "16 orbits x 3 methods, ...".
+std::string summary(const SectionJob& job, std::size_t starts,
+                    const std::vector<OrbitResult>& results);
 
 }  // namespace epviz::section

@@ -63,7 +63,7 @@ Manifest read_manifest(const fs::path& path) {
     if (!v) r.fail(key, "missing");
     return *v;
   };
-  const auto kind = r.choice("kind", {"sweep", "render"});
+  const auto kind = r.choice("kind", {"sweep", "render", "section"});
   if (!kind) r.fail("kind", "missing");
   m.kind = *kind;
   m.source = text("source");

@@ -22,7 +22,7 @@ struct ManifestFile {
 };
 
 struct Manifest {
-  std::string kind;    // "sweep" or "render"
+  std::string kind;    // "sweep", "render" or "section"
   std::string source;  // the sweep or job file as given
   std::string hash;    // of the batch's canonical content: shards of one batch share it
   ShardSpec shard;

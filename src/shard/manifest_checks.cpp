@@ -18,12 +18,13 @@ bool has_control(std::string_view s) {
                      [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; });
 }
 
-// The options `epviz sweep` and `epviz render` write into a shard's command
-// (app/sweep_command, app/render_command), each followed by its value.
+// The options `epviz sweep`, `epviz render` and `epviz section` write into a
+// shard's command (app/sweep_command, app/render_command,
+// section/section_shard), each followed by its value.
 bool known_option(const std::string& kind, const std::string& option) {
-  static const std::vector<std::string> sweep{"--out", "-j"};
+  static const std::vector<std::string> rows{"--out", "-j"};
   static const std::vector<std::string> render{"--out", "--width", "--height", "--format"};
-  const auto& allowed = kind == "sweep" ? sweep : render;
+  const auto& allowed = kind == "render" ? render : rows;
   return std::find(allowed.begin(), allowed.end(), option) != allowed.end();
 }
 

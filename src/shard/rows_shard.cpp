@@ -7,9 +7,11 @@ namespace fs = std::filesystem;
 namespace {
 
 // "rows.jsonl" -> "rows".
-std::string rows_stem(const fs::path& rows) {
+std::string rows_stem(const fs::path& rows, const std::string& extension) {
   std::string s = rows.filename().string();
-  return s.ends_with(".jsonl") && s.size() > 6 ? s.substr(0, s.size() - 6) : s;
+  return s.ends_with(extension) && s.size() > extension.size()
+             ? s.substr(0, s.size() - extension.size())
+             : s;
 }
 
 }  // namespace
@@ -19,11 +21,12 @@ RowsShard plan_rows_shard(const RowsBatch& batch, const ShardSpec& spec) {
   s.shard = spec;
   s.points = shard_range(batch.points, spec);
   const fs::path dir = batch.rows.parent_path().empty() ? fs::path(".") : batch.rows.parent_path();
-  s.rows = dir / (rows_stem(batch.rows) + "." + shard_tag(spec) + ".jsonl");
-  s.manifest = shard_manifest("sweep", batch.origin, spec, s.points, batch.points,
+  const std::string stem = rows_stem(batch.rows, batch.extension);
+  s.rows = dir / (stem + "." + shard_tag(spec) + batch.extension);
+  s.manifest = shard_manifest(batch.kind, batch.origin, spec, s.points, batch.points,
                               batch.rows.filename().string());
-  s.manifest_path = dir / manifest_name(rows_stem(batch.rows), spec);
-  s.lock_path = dir / lock_name(rows_stem(batch.rows), spec);
+  s.manifest_path = dir / manifest_name(stem, spec);
+  s.lock_path = dir / lock_name(stem, spec);
   return s;
 }
 

@@ -158,6 +158,8 @@ json to_json(const ChaosRow& r) {
   j["separated"] = yes_no(r.separated);
   j["separation_time"] = number_or_null(r.separation_time);
   j["reference_self_check"] = number_or_null(r.reference_self_check);
+  j["reference_horizon"] = number_or_null(r.reference_horizon);
+  j["reference_decides"] = yes_no(r.reference_decides);
   return j;
 }
 

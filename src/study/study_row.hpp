@@ -135,7 +135,12 @@ struct ChaosRow {
   double threshold = kNaN;
   bool separated = false;
   double separation_time = kNaN;
-  double reference_self_check = kNaN;
+  double reference_self_check = kNaN;  // the largest disagreement of the reference's two runs
+  // The time up to which the reference's two runs agree to a tenth of the
+  // threshold; a run not separated by then, when it is short of t_end, is
+  // undecided (reference_decides false): "reference not converged".
+  double reference_horizon = kNaN;
+  bool reference_decides = true;
 };
 
 using StudyRow =

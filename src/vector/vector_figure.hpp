@@ -9,6 +9,7 @@
 //   vector::write_vector_figure("drift.pdf", figure, vector::FigureFormat::pdf);
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "chart/chart_spec.hpp"
 #include "paint/figure_common.hpp"
@@ -22,5 +23,11 @@ std::string vector_figure_bytes(const chart::Figure& figure, FigureFormat format
 // Writes them to `path` atomically.
 void write_vector_figure(const std::filesystem::path& path, const chart::Figure& figure,
                          FigureFormat format, const paint::ChartOptions& options = {});
+
+// Several figures side by side in one file (paint/figure_panels.hpp), each
+// laid out at the options' size, `gap` pixels apart; written atomically.
+void write_vector_panels(const std::filesystem::path& path,
+                         const std::vector<chart::Figure>& panels, FigureFormat format,
+                         const paint::ChartOptions& options, int gap);
 
 }  // namespace epviz::vector

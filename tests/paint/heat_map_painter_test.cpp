@@ -358,3 +358,50 @@ TEST(HeatMap, NumericAxesAreLabelledAtRoundValues) {
 
 }  // namespace
 }  // namespace epviz
+
+namespace epviz {
+namespace {
+
+// A cell whose value could not be decided is hatched, not grey like a cell
+// without a value, and says so in the cell and in a key under the grid.
+TEST(HeatMap, UndecidedCellsAreHatchedAndLabelled) {
+  paint::HeatMapSpec s;
+  s.title = "test";
+  s.columns = {"a", "b", "c"};
+  s.rows = {"only"};
+  s.log_scale = false;
+  s.values = {{1.0, NAN, NAN}};  // b: no value; c: undecided
+  s.undecided = {{false, false, true}};
+  s.undecided_label = "not decided";
+  const auto l = paint::heat_map_layout(s, W, H, et::builtin_chart_font());
+  ASSERT_TRUE(l.value_text);
+  EXPECT_TRUE(l.undecided_key);
+  const auto drawing = paint::draw_heat_map(s, options(), et::builtin_chart_font(), false);
+  int labels = 0;
+  for (const auto& layer : drawing.layers)
+    for (const auto& t : layer.list.labels()) labels += t.text == "not decided";
+  EXPECT_EQ(labels, 2) << "in the cell and in the key";
+
+  const auto img = paint::paint_heat_map(et::shared_gl_context(), s, options());
+  const glm::vec4 stripe{0.62f, 0.62f, 0.64f, 1.0f};
+  // A row of pixels near the top edge of the cells, away from their text.
+  const auto& missing = l.cells[0][1];
+  const auto& hatched = l.cells[0][2];
+  const int y = missing.y + 3;
+  int stripes_missing = 0, greys_missing = 0, stripes_hatched = 0, greys_hatched = 0;
+  for (int x = missing.x + 2; x < missing.x + missing.width - 2; ++x) {
+    stripes_missing += near(img, x, y, stripe);
+    greys_missing += near(img, x, y, kMissingGrey);
+  }
+  for (int x = hatched.x + 2; x < hatched.x + hatched.width - 2; ++x) {
+    stripes_hatched += et::max_channel_difference(et::pixel_colour(img, x, y), stripe) < 0.15f;
+    greys_hatched += near(img, x, y, kMissingGrey);
+  }
+  EXPECT_EQ(stripes_missing, 0);
+  EXPECT_GT(greys_missing, missing.width / 2);
+  EXPECT_GE(stripes_hatched, hatched.width / 20) << "no stripes across the undecided cell";
+  EXPECT_LT(greys_hatched, hatched.width / 4) << "the undecided cell is grey like a missing one";
+}
+
+}  // namespace
+}  // namespace epviz

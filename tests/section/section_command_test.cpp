@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "io/bad_input.hpp"
@@ -180,6 +181,81 @@ TEST(SectionCsv, LeavesALostOrbitOut) {
   const std::string text = section::crossings_csv(job, {kept, lost});
   EXPECT_EQ(line_count(text), 2u) << text;
   EXPECT_EQ(text.find("\n2,"), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace epviz::test
+
+namespace epviz::test {
+namespace {
+
+// The extra_integral column's spread over each orbit of each method, from the CSV.
+std::map<std::string, double> k_spread_by_method(const std::string& csv) {
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line.rfind("method,orbit,crossing,", 0), 0u) << line;
+  std::map<std::string, std::pair<double, double>> range;  // by "method,orbit"
+  std::map<std::string, double> spread;
+  while (std::getline(in, line)) {
+    const std::string method = line.substr(0, line.find(','));
+    const std::string run = line.substr(0, line.find(',', method.size() + 1));
+    const double k = std::stod(line.substr(line.rfind(',') + 1));
+    auto [it, fresh] = range.try_emplace(run, k, k);
+    it->second = {std::min(it->second.first, k), std::max(it->second.second, k)};
+    spread[method] = std::max(spread[method], it->second.second - it->second.first);
+  }
+  return spread;
+}
+
+// Each method of a section runs every orbit with its own setting: rk4 at a
+// coarse step lets Kovalevskaya's K wander (its crossings leave the invariant
+// curves), dop853 keeps it to the oracle's 1e-9.
+TEST(SectionCommand, EachMethodOfASectionRunsWithItsOwnSetting) {
+  TempDir d;
+  const std::string csv = (d / "m.csv").string();
+  const auto r = run_section_file(d, R"({"case": "kovalevskaya", "level": {"energy": 2,
+      "area": 0.5}, "orbits": 3, "crossings": 40, "max_drift": 0.1,
+      "methods": [{"method": "rk4", "step": 0.1}, {"method": "dop853", "tol": 1e-11}],
+      "png": ")" + (d / "m.png").string() +
+                                         R"(", "svg": ")" + (d / "m.svg").string() +
+                                         R"(", "csv": ")" + csv + "\"}");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("3 orbits x 2 methods, 240 crossings"), std::string::npos) << r.out;
+  const auto spread = k_spread_by_method(slurp(csv));
+  ASSERT_EQ(spread.size(), 2u);
+  const double rk4 = spread.at("rk4 step 0.1"), dop853 = spread.at("dop853 tol 1e-11");
+  EXPECT_LT(dop853, 1e-8);
+  EXPECT_GT(rk4, 1e3 * dop853);
+  // Both pictures hold the two panels side by side (760 wide each, 16 apart).
+  const std::string png = slurp(d / "m.png");
+  ASSERT_EQ(png.substr(1, 3), "PNG");
+  const auto byte = [&](std::size_t i) { return unsigned(static_cast<unsigned char>(png[i])); };
+  EXPECT_EQ((byte(18) << 8) | byte(19), 1536u);  // the header's width
+  EXPECT_NE(slurp(d / "m.svg").find("width=\"1536px\""), std::string::npos);
+}
+
+TEST(SectionCommand, BadMethodListsAreRefusedBeforeAnyWork) {
+  const std::vector<BadFile> cases{
+      {"method and methods", R"({"case": "generic", "level": {"energy": 2, "area": 1},
+         "orbits": 2, "method": "rk4", "methods": [{"method": "dop853"}], "csv": "x.csv"})",
+       "'methods'"},
+      {"twice", R"({"case": "generic", "level": {"energy": 2, "area": 1}, "orbits": 2,
+         "methods": [{"method": "rk4", "step": 0.1}, {"method": "rk4", "step": 0.1}],
+         "csv": "x.csv"})",
+       "methods[1]"},
+      {"no method", R"({"case": "generic", "level": {"energy": 2, "area": 1}, "orbits": 2,
+         "methods": [{"tol": 1e-8}], "csv": "x.csv"})",
+       "methods[0]"},
+      {"unknown key", R"({"case": "generic", "level": {"energy": 2, "area": 1}, "orbits": 2,
+         "methods": [{"method": "rk4", "colour": 1}], "csv": "x.csv"})",
+       "colour"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    TempDir d;
+    expect_bad_input(run_section_file(d, c.text), c.must_name);
+  }
 }
 
 }  // namespace

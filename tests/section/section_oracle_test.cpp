@@ -24,13 +24,13 @@ SectionJob level_job(physics::Case c, double energy, double area, int orbits, in
   job.orbits = orbits;
   job.crossings = crossings;
   job.t_end = 1e4;
-  job.tol = 1e-12;
+  job.methods[0].tol = 1e-12;
   return job;
 }
 
 std::vector<OrbitResult> run(const SectionJob& job) {
   auto results = run_section(job, section_starts(job), 2);
-  for (const auto& r : results) EXPECT_FALSE(r.failure) << lost_orbits_line(results);
+  for (const auto& r : results) EXPECT_FALSE(r.failure) << lost_orbits_line(job, results);
   return results;
 }
 
@@ -86,9 +86,9 @@ TEST(SectionOracle, CrossingsLieOnTheSurfaceAndCrossItTheWayAsked) {
                                    {sim::CrossingDirection::downward, exact_split4}}) {
     SCOPED_TRACE(std::string(sim::name(method)));
     auto job = level_job(physics::Case::generic, 2.0, 1.0, 4, 50);
-    job.tol = 1e-10;
+    job.methods[0].tol = 1e-10;
     job.t_end = 500.0;  // an orbit that never crosses runs to t_end
-    job.method = method;
+    job.methods[0].method = method;
     job.surface = {sim::StateComponent::omega3, 0.3, direction};
     const auto results = run(job);
     std::size_t seen = 0;  // an orbit whose Omega3 stays below 0.3 has none
@@ -112,14 +112,14 @@ TEST(SectionOracle, CrossingsLieOnTheSurfaceAndCrossItTheWayAsked) {
 // lies elsewhere.
 TEST(SectionOracle, AFinelySampledRunSeesTheSameCrossings) {
   auto job = level_job(physics::Case::generic, 2.0, 1.0, 1, 1000000);
-  job.tol = 1e-10;
+  job.methods[0].tol = 1e-10;
   job.t_end = 60.0;
   const auto starts = section_starts(job);
   const auto crossings = run_section(job, starts, 1).at(0).crossings;
   const auto spec = sim::body_run(physics::Case::generic, job.body, starts[0], sim::Method::dop853,
                                   sim::Formulation::direct, job.t_end, 60000);
   auto sampled_spec = spec;
-  sampled_spec.tol = job.tol;
+  sampled_spec.tol = job.methods[0].tol;
   const auto samples = sim::simulate(sampled_spec).samples;
   std::vector<std::pair<double, double>> brackets;
   for (std::size_t k = 1; k < samples.size(); ++k)
@@ -137,9 +137,9 @@ TEST(SectionOracle, AFinelySampledRunSeesTheSameCrossings) {
 // half a pixel is 1e-3. The two tolerances must agree far within it.
 TEST(SectionOracle, ATighterToleranceMovesNoCrossingByHalfAPixel) {
   auto loose = level_job(physics::Case::kovalevskaya, 2.0, 0.5, 1, 60);
-  loose.tol = 1e-10;
+  loose.methods[0].tol = 1e-10;
   auto tight = loose;
-  tight.tol = 1e-13;
+  tight.methods[0].tol = 1e-13;
   const auto a = run(loose).at(0).crossings;
   const auto b = run(tight).at(0).crossings;
   ASSERT_EQ(a.size(), b.size());
@@ -156,10 +156,10 @@ TEST(SectionOracle, ATighterToleranceMovesNoCrossingByHalfAPixel) {
 // and the interpolant between its steps (about 1e-11).
 TEST(SectionOracle, AFixedStepMethodFindsTheSameCrossings) {
   auto reference = level_job(physics::Case::kovalevskaya, 2.0, 0.5, 1, 30);
-  reference.tol = 1e-13;
+  reference.methods[0].tol = 1e-13;
   auto fixed = reference;
-  fixed.method = sim::Method::rk4;
-  fixed.step = 0.002;
+  fixed.methods[0].method = sim::Method::rk4;
+  fixed.methods[0].step = 0.002;
   const auto a = run(reference).at(0).crossings;
   const auto b = run(fixed).at(0).crossings;
   ASSERT_EQ(a.size(), b.size());
