@@ -106,10 +106,10 @@ scene::LineStyle run_line_style(const scene::Frame& f, std::size_t run) {
   return f.comparison->lines[run];
 }
 
-float run_line_width(std::size_t run, float base) {
-  // Each run a little thinner than the one before, so that where runs
-  // coincide a later run's dashes lie inside an earlier run's line.
-  return base * std::max(0.7f, 1.0f - 0.06f * float(run));
+float run_line_width(std::size_t /*run*/, float base) {
+  // All runs as wide: where runs coincide, a later run's dashes cover the
+  // earlier runs' line and its gaps show them, every colour in turn.
+  return base;
 }
 
 glm::vec4 run_line_colour(const scene::Frame& f, std::size_t run, float age, float map_top) {

@@ -188,7 +188,8 @@ void FramePainter::draw_view_annotations(const scene::Frame& f, const render::Ca
     obstacles.push_back({{float(view.x), *annotations_.legend_bottom - height},
                          {float(view.x) + 0.6f * float(view.width), *annotations_.legend_bottom}});
   }
-  if (auto key = draw_marks_key(flat, f, camera, view, px)) obstacles.push_back(*key);
+  annotations_.marks_key = draw_marks_key(flat, f, camera, view, px);
+  if (annotations_.marks_key) obstacles.push_back(*annotations_.marks_key);
   if (floating_overlay_) obstacles.push_back(*floating_overlay_);
 
   // Marks the labels must not cover: the current point, the other runs'

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -262,12 +263,16 @@ namespace {
 // The drift readouts' traffic light explained: the level each colour stands
 // for (scene::drift_level's thresholds) and what it means for the picture.
 std::string decade(double v) { return "1e" + std::to_string(int(std::lround(std::log10(v)))); }
-std::array<std::string, 3> drift_key_parts() {
-  return {"round-off <" + decade(scene::kDriftWarnFrom), "  small <" + decade(scene::kDriftBadFrom),
-          "  visible >=" + decade(scene::kDriftBadFrom)};
+using DriftKey = std::array<std::string, 3>;
+// The key in words where the window is wide enough, else shorter: the
+// longest of these no wider than the window's other rows (the last one always).
+std::vector<DriftKey> drift_keys() {
+  const std::string warn = decade(scene::kDriftWarnFrom), bad = decade(scene::kDriftBadFrom);
+  return {{"round-off <" + warn, "  small <" + bad, "  visible >=" + bad},
+          {"ok <" + warn, "  fair <" + bad, "  bad >=" + bad},
+          {"<" + warn, "  <" + bad, "  >=" + bad}};
 }
-void draw_drift_key(const scene::Theme& ink) {
-  const auto parts = drift_key_parts();
+void draw_drift_key(const scene::Theme& ink, const DriftKey& parts) {
   const scene::Rgba* colours[] = {&ink.drift_ok, &ink.drift_warn, &ink.drift_bad};
   for (std::size_t i = 0; i < parts.size(); ++i) {
     if (i) ImGui::SameLine(0.0f, 0.0f);
@@ -279,6 +284,17 @@ const char* drift_heading(const scene::Frame& f) {
   return f.comparison ? "largest rel. drift per run" : "max rel. drift";
 }
 }  // namespace
+
+std::string FramePainter::drift_key_text(const std::array<std::string, 3>& parts) {
+  return parts[0] + parts[1] + parts[2];
+}
+
+std::array<std::string, 3> FramePainter::drift_key(float room) {
+  const auto keys = drift_keys();
+  for (const auto& k : keys)
+    if (gui().text_size(drift_key_text(k)).x <= room + 0.5f) return k;
+  return keys.back();
+}
 
 Box FramePainter::info_window_box(const scene::Frame& f, const scene::FrameLayout& layout,
                                   float px) {
@@ -295,10 +311,9 @@ Box FramePainter::info_window_box(const scene::Frame& f, const scene::FrameLayou
   for (int i = 0; i < shown; ++i)
     text_w = std::max(text_w, gui().text_size(f.overlay.lines[std::size_t(i)]).x);
   if (!f.overlay.drifts.empty()) {  // "%-12s" name, then "%9.1e" value; the heading; the key
-    const auto key = drift_key_parts();
     text_w = std::max({text_w, gui().text_size("xxxxxxxxxxxx  -0.0e+00 ").x,
-                       gui().text_size(drift_heading(f)).x,
-                       gui().text_size(key[0] + key[1] + key[2]).x});
+                       gui().text_size(drift_heading(f)).x});
+    text_w = std::max(text_w, gui().text_size(drift_key_text(drift_key(text_w))).x);
   }
   // Title, lines, then the drifts' heading, their rows and the key of their colours.
   const int rows = 1 + shown + (f.overlay.drifts.empty() ? 0 : 2 + int(f.overlay.drifts.size()));
@@ -355,7 +370,7 @@ void FramePainter::draw_info_window(const scene::Frame& f, const scene::FrameLay
         ImGui::SameLine();
         ImGui::TextColored(c, "%9.1e", value);
       }
-      draw_drift_key(ink);
+      draw_drift_key(ink, drift_key(ImGui::GetContentRegionAvail().x));
     }
     ImGui::End();
     ImGui::PopStyleColor(pushed);

@@ -2,6 +2,7 @@
 // Draws a scene::Frame with the render toolkit: the body, the sphere with its
 // trail, the Riccati (a, b) plane and the ImGui overlay, each a layer the frame
 // switches on or off. The painter reads plain values; it knows no physics.
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -71,6 +72,8 @@ struct PaintedAnnotations {
   std::optional<Disc> sphere;
   // The other runs' current points (diamonds) over the 3D view.
   std::vector<Box> ghosts;
+  // The key of the marks (gravity, fixed point, centre of mass) at the 3D view's top right.
+  std::optional<Box> marks_key;
 };
 
 class FramePainter {
@@ -126,6 +129,10 @@ class FramePainter {
                          const std::vector<glm::vec4>& colours, const std::vector<Box>& obstacles,
                          const Box& bounds);
   void draw_info_window(const scene::Frame& f, const scene::FrameLayout& layout, float px);
+  // The key of the drift colours that fits `room` pixels (in words where it
+  // does), and its text.
+  std::array<std::string, 3> drift_key(float room);
+  std::string drift_key_text(const std::array<std::string, 3>& parts);
   // Where the overlay window goes and how large it is (from this frame's text).
   Box info_window_box(const scene::Frame& f, const scene::FrameLayout& layout, float px);
 
