@@ -10,9 +10,10 @@ namespace {
 // this height shows, the drift table's heading, its rows and its key. Fixed
 // (kOverlayReserved), not this frame's: the plot must stay put from job to
 // job so that the tiles of a gallery line up.
-int overlay_height(int height, const OverlayShape& asked) {
-  // A comparison of more runs than kOverlayReserved has drift rows gets room for each.
-  const OverlayShape o{kOverlayReserved.lines, std::max(kOverlayReserved.drifts, asked.drifts)};
+int overlay_height(int height, int runs) {
+  // A comparison of more runs than kOverlayReserved has drift rows gets room
+  // for each run's row.
+  const OverlayShape o{kOverlayReserved.lines, std::max(kOverlayReserved.drifts, runs)};
   const int rows = 1 + overlay_lines_shown(o.lines, height) + 2 + o.drifts;
   return int(std::ceil(overlay_font_px(height) * 1.36f * float(rows) + 18.0f * ui_scale(height)));
 }
@@ -59,7 +60,10 @@ FrameLayout layout_in_width(const LayoutRequest& q, int width) {
     // The overlay takes the top of the panel's column when the plot keeps at
     // least 35 % of the height there, so that it does not cover the sphere;
     // otherwise (small pictures) it floats over the 3D view's corner.
-    const int overlay_px = l.view_3d && q.layers.overlay ? overlay_height(height, q.overlay) : 0;
+    const int overlay_px =
+        l.view_3d && q.layers.overlay
+            ? overlay_height(height, q.legend_rows > 0 ? comparison_runs(q.legend_rows) : 0)
+            : 0;
     l.overlay_in_column =
         overlay_px > 0 && side_for(margin_top_base + overlay_px) >= height * 35 / 100;
     const int margin_top = margin_top_base + (l.overlay_in_column ? overlay_px : 0);
@@ -108,6 +112,8 @@ float camera_distance_for(double distance_setting, float aspect) {
 int comparison_chart_height(int height) { return std::max(60, height / 5); }
 
 int comparison_legend_rows(int runs) { return runs + 2; }
+
+int comparison_runs(int legend_rows) { return legend_rows - 2; }
 
 int legend_row_height(int height) { return int(std::ceil(overlay_font_px(height) * 1.45f)); }
 

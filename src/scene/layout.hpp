@@ -62,6 +62,7 @@ int comparison_chart_height(int height);
 // The legend's rows in a comparison scene of `runs` runs: one per run, the
 // key of the line drawn after a run's pixel-true time, and the trail's caption.
 int comparison_legend_rows(int runs);
+int comparison_runs(int legend_rows);  // the inverse
 // The height of one legend row, and of the caption's line, at this picture height.
 int legend_row_height(int height);
 // What a frame asks of a picture of this size.

@@ -10,19 +10,21 @@ std::size_t slot(int index) { return std::size_t(index < 0 ? 0 : index) % kDisti
 }  // namespace
 
 Rgba run_colour(int index, bool light_background) {
-  // Sky blue, orange, bluish green, reddish purple, yellow, vermillion. On a
+  // Sky blue, orange, reddish purple, bluish green, yellow, vermillion (the
+  // green after the purple: thin, the blue and the green are told apart less
+  // easily than their CIELAB distance says). On a
   // light background the same hues darkened until each reads at 4.5:1 on
   // white (the orange and the yellow become a burnt orange and an ochre).
   static constexpr std::array<Rgba, kDistinctRuns> dark{{{0.34f, 0.71f, 0.91f, 1.0f},
                                                          {0.90f, 0.62f, 0.00f, 1.0f},
-                                                         {0.00f, 0.62f, 0.45f, 1.0f},
                                                          {0.80f, 0.47f, 0.65f, 1.0f},
+                                                         {0.00f, 0.62f, 0.45f, 1.0f},
                                                          {0.94f, 0.89f, 0.26f, 1.0f},
                                                          {0.84f, 0.37f, 0.00f, 1.0f}}};
   static constexpr std::array<Rgba, kDistinctRuns> light{{{0.00f, 0.40f, 0.75f, 1.0f},
                                                           {0.80f, 0.30f, 0.00f, 1.0f},
-                                                          {0.00f, 0.50f, 0.30f, 1.0f},
                                                           {0.60f, 0.20f, 0.60f, 1.0f},
+                                                          {0.00f, 0.50f, 0.30f, 1.0f},
                                                           {0.55f, 0.45f, 0.00f, 1.0f},
                                                           {0.25f, 0.25f, 0.25f, 1.0f}}};
   return (light_background ? light : dark)[slot(index)];

@@ -40,8 +40,8 @@ scene::RunRequest fixed_step(sim::RunSpec r, sim::Method m, double step, std::st
 }
 
 Figure custom_body() {
-  auto base = sim::preset_run(physics::Case::generic, sim::Method::dop853,
-                              sim::Formulation::direct, 30.0, 1);
+  auto base = sim::preset_run(physics::Case::generic, sim::Method::dop853, sim::Formulation::direct,
+                              30.0, 1);
   base.case_id = physics::Case::custom;
   base.t_end = 60.0;  // RK4 at step 0.2 parts from the truth by about t = 31
   base.body.inertia = {3.0, 2.0, 1.2};
@@ -55,11 +55,12 @@ Figure custom_body() {
 
 // Long enough that no tolerance keeps the generic body's picture true to the end.
 Figure chaos() {
-  auto base = sim::preset_run(physics::Case::generic, sim::Method::dop853,
-                              sim::Formulation::direct, 300.0, 1);
+  auto base = sim::preset_run(physics::Case::generic, sim::Method::dop853, sim::Formulation::direct,
+                              300.0, 1);
   auto nudged = base;
   nudged.initial.omega.x() += 1e-6;
-  return {"chaos", {{base, "omega0", false, true}, {nudged, "omega0 + 1e-6 e1", false, true}}, 15.0};
+  return {
+      "chaos", {{base, "omega0", false, true}, {nudged, "omega0 + 1e-6 e1", false, true}}, 15.0};
 }
 
 scene::SceneSettings settings_for(scene::ThemeId theme, int w, int h, double trail_length) {
@@ -91,7 +92,8 @@ bool meets_disc(const paint::Box& b, const paint::PaintedAnnotations::Disc& d) {
 }
 
 // Every legend box clear of the sphere, of the labels and of each other, inside the picture.
-void expect_legend_clear(const paint::PaintedAnnotations& a, int w, int h, const std::string& what) {
+void expect_legend_clear(const paint::PaintedAnnotations& a, int w, int h,
+                         const std::string& what) {
   ASSERT_TRUE(a.sphere) << what;
   const paint::Box picture{glm::vec2(0.0f), glm::vec2(float(w), float(h))};
   for (std::size_t i = 0; i < a.legend.size(); ++i) {
@@ -104,8 +106,8 @@ void expect_legend_clear(const paint::PaintedAnnotations& a, int w, int h, const
     for (const auto& ghost : a.ghosts)
       EXPECT_FALSE(l.box.intersects(ghost)) << what << ": " << l.text << " covers a ghost";
     for (std::size_t j = i + 1; j < a.legend.size(); ++j)
-      EXPECT_FALSE(l.box.intersects(a.legend[j].box)) << what << ": " << l.text << " / "
-                                                      << a.legend[j].text;
+      EXPECT_FALSE(l.box.intersects(a.legend[j].box))
+          << what << ": " << l.text << " / " << a.legend[j].text;
   }
 }
 
@@ -189,9 +191,9 @@ TEST(ComparisonFigureSnapshot, CustomBodyMatchesTheReviewedGoldens) {
     const auto figure = custom_body();
     const auto& img =
         painter.paint(last_frame(figure.runs, settings_for(theme, 640, 360, figure.trail_length)));
-    EXPECT_TRUE(et::matches_snapshot("paint_comparison_custom_body_" +
-                                         std::string(scene::name(theme)),
-                                     img.width, img.height, img.pixels));
+    EXPECT_TRUE(
+        et::matches_snapshot("paint_comparison_custom_body_" + std::string(scene::name(theme)),
+                             img.width, img.height, img.pixels));
   }
 }
 
