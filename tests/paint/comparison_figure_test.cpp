@@ -184,6 +184,37 @@ INSTANTIATE_TEST_SUITE_P(UsersFigures, ComparisonFigure,
                                   std::string(scene::name(param_info.param.theme));
                          });
 
+// Where a run leaves or re-enters the (a, b) panel, the mark is in the run's
+// colour (the time colours would not say whose it is).
+TEST(ComparisonFigureMarks, EdgeMarksAreInTheirRunsColours) {
+  const auto figure = chaos();
+  const auto s = settings_for(scene::ThemeId::dark, 1280, 720, figure.trail_length);
+  const auto f = last_frame(figure.runs, s);
+  ASSERT_TRUE(f.comparison);
+  const auto& img = painter_720().paint(f);
+  const auto layout = paint::layout_for(f, 1280, 720);
+  const double e = f.plane_extent;
+  const render::Panel2D plot(paint::to_viewport(*layout.plot_area), {-e, e, -e, e}, true);
+  const float ring = 7.0f;  // on the hollow mark's outline (radius 4, outline 1.5, times 2 at 720p)
+  for (std::size_t r = 0; r < 2; ++r) {
+    const auto& marks = r == 0 ? f.plane_marks : f.comparison->others[0].plane_marks;
+    int checked = 0, in_colour = 0;
+    for (const auto& m : marks) {
+      if (m.kind != scene::PlaneMark::Kind::leaves_panel) continue;
+      const glm::vec2 at = plot.to_pixel({m.ab.x(), m.ab.y()});
+      int near = 0;
+      for (const glm::vec2 d :
+           {glm::vec2(ring, 0), glm::vec2(-ring, 0), glm::vec2(0, ring), glm::vec2(0, -ring)})
+        near += et::lab_distance(et::pixel_colour(img, int(at.x + d.x), int(at.y + d.y)),
+                                 f.comparison->colours[r]) < 15.0;
+      ++checked;
+      in_colour += near >= 2;
+    }
+    ASSERT_GT(checked, 0) << "run " << r + 1 << " never leaves the panel: the check is moot";
+    EXPECT_GE(2 * in_colour, checked) << "run " << r + 1;
+  }
+}
+
 // The custom body's figure as a reviewed golden (tests/snapshots/), in both themes.
 TEST(ComparisonFigureSnapshot, CustomBodyMatchesTheReviewedGoldens) {
   static paint::FramePainter painter(et::shared_gl_context(), 640, 360, {.builtin_font = true});
