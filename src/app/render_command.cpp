@@ -230,6 +230,10 @@ int render_gallery(GalleryJob g, const RenderOptions& o, const render::GlChoice&
   if (!o.shard.empty())
     throw io::BadInput("--shard: a gallery renders whole jobs; shard a single job");
   if (!o.out.empty()) g.dir = o.out;
+  // --width and --height size every tile, so that gallery.png, the grid video
+  // and the videos of its jobs (each drawn at the tile size) follow them alike.
+  if (!o.width.empty()) g.tile_width = int(parse_integer("--width", o.width, 16, 8192));
+  if (!o.height.empty()) g.tile_height = int(parse_integer("--height", o.height, 16, 8192));
   io::check_output_dir(o.out.empty() ? g.file.string() + ": dir" : "--out", g.dir);
   format_option(o, g.videos);
   // Check every job before rendering any.

@@ -73,12 +73,13 @@ std::vector<Box> FramePainter::draw_trail_key(DrawList& flat, const scene::Frame
   const float left = float(view.x) + 8 * px, bottom = float(view.y + view.height) - 6 * px;
   const float room = float(view.width) - 16 * px;
 
-  // The caption on the bottom line, as long as the view is wide. In a
-  // comparison scene the colours name the runs (the legend), not the time.
-  const std::string colouring = f.comparison ? ", one colour per run" : ", coloured by time";
+  // In a comparison scene the colours name the runs: the legend's strip
+  // (paint/comparison_painter.hpp) says so, and the trail has no time key.
+  if (f.comparison) return taken;
+  // The caption on the bottom line, as long as the view is wide.
   std::string caption;
   for (const std::string& c :
-       {"trail: " + f.trail_label + colouring, "trail: " + f.trail_label, f.trail_label})
+       {"trail: " + f.trail_label + ", coloured by time", "trail: " + f.trail_label, f.trail_label})
     if (gui().text_size(c).x <= room) {
       caption = c;
       break;
@@ -90,7 +91,6 @@ std::vector<Box> FramePainter::draw_trail_key(DrawList& flat, const scene::Frame
     taken.push_back({{left, y - size.y}, {left + size.x, y}});
     y -= size.y + 2 * px;
   }
-  if (f.comparison) return taken;
 
   // The colour bar above it: the trail's colours from its oldest point (left)
   // to now (right), with the time before now under its ends and middle.
@@ -178,24 +178,42 @@ void FramePainter::draw_view_annotations(const scene::Frame& f, const render::Ca
   };
   DrawList flat;
   std::vector<Box> obstacles = draw_trail_key(flat, f, view, px);
-  // The legend and horizon note (paint/comparison_painter.hpp) go above the
-  // trail's key; the labels keep clear of the room they take.
+  // A single run's horizon note (paint/comparison_painter.hpp) goes above the
+  // trail's key; the labels keep clear of the room it takes.
   float key_top = float(view.y + view.height) - 6 * px;
   for (const Box& b : obstacles) key_top = std::min(key_top, b.min.y);
   annotations_.legend_bottom = key_top - 2 * px;
-  if (const auto rows = run_legend_rows(f, ink); !rows.empty()) {
-    const float height = float(rows.size()) * run_legend_line(px);
+  if (const int rows = horizon_note_rows(f)) {
+    const float height = float(rows) * horizon_note_line(px);
     obstacles.push_back({{float(view.x), *annotations_.legend_bottom - height},
                          {float(view.x) + 0.6f * float(view.width), *annotations_.legend_bottom}});
   }
-  if (auto key = draw_marks_key(flat, f, camera, view, px)) obstacles.push_back(*key);
+  annotations_.marks_key = draw_marks_key(flat, f, camera, view, px);
+  if (annotations_.marks_key) obstacles.push_back(*annotations_.marks_key);
   if (floating_overlay_) obstacles.push_back(*floating_overlay_);
 
-  // Marks the labels must not cover: the current point, the fixed point and
-  // the centre of mass (these two drawn here, on top of the body that hides them).
-  if (f.layers.sphere)
+  // Marks the labels must not cover: the current point, the other runs'
+  // (drawn here as diamonds), the fixed point and the centre of mass (these
+  // two drawn here, on top of the body that hides them).
+  if (f.layers.sphere) {
     if (auto p = project(to_glm(f.current)))
       obstacles.push_back(box_around(*p, glm::vec2(2.0f * (5.0f * px + 3.0f * px))));
+    annotations_.ghosts = draw_ghosts(flat, f, project, px);
+    obstacles.insert(obstacles.end(), annotations_.ghosts.begin(), annotations_.ghosts.end());
+    // The sphere's outline: the circle where the lines from the eye touch it.
+    const glm::vec3 eye = camera.eye_position();
+    const float d = glm::length(eye);
+    if (d > 1.0f) {
+      const glm::vec3 towards = eye / d;
+      glm::vec3 side = glm::cross(towards, glm::vec3(0, 0, 1));
+      if (glm::length(side) < 1e-3f) side = glm::vec3(1, 0, 0);
+      side = glm::normalize(side);
+      const auto centre = project(glm::vec3(0.0f));
+      const auto edge = project(towards / d + side * std::sqrt(1.0f - 1.0f / (d * d)));
+      if (centre && edge)
+        annotations_.sphere = PaintedAnnotations::Disc{*centre, glm::length(*edge - *centre)};
+    }
+  }
   const glm::mat4 rot = glm::mat4_cast(to_glm(f.body_rotation));
   const std::optional<glm::vec2> origin = project(glm::vec3(0.0f));
   if (f.layers.body) {

@@ -3,16 +3,17 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
 #include "paint/comparison_painter.hpp"
 #include "paint/painter_common.hpp"
-#include "paint/trail_colours.hpp"
 #include "render/colour_map.hpp"
 #include "render/imgui_context_scope.hpp"
 #include "render/mesh_data.hpp"
@@ -126,7 +127,8 @@ void FramePainter::draw_body(DrawList& list, const scene::Frame& f, float px) {
   }
 }
 
-void FramePainter::draw_sphere(DrawList& list, const scene::Frame& f, float px) const {
+void FramePainter::draw_sphere(DrawList& list, const scene::Frame& f, const render::Camera& camera,
+                               const render::Viewport& view, float px) const {
   const scene::Theme& ink = ink_for(f);
   // Unlit glass: it covers a third of the picture, and llvmpipe pays for every
   // pixel's lighting (about 6 ms a 720p frame); the rim term keeps its outline.
@@ -136,20 +138,19 @@ void FramePainter::draw_sphere(DrawList& list, const scene::Frame& f, float px) 
   const glm::vec4 grid = to_glm(ink.sphere_grid);
   for (const auto& line : grid_) list.add_polyline(line, grid, 1.0f * px);
 
-  std::vector<render::LineVertex> trail;
-  trail.reserve(f.trail.size());
-  for (const auto& p : f.trail)
-    trail.push_back(
-        {to_glm(p.p), first_run_colour(f, p.age, age_colour(p.age, ink.trail_map_top))});
-  if (trail.size() >= 2) list.add_polyline(trail, 2.2f * px);
-  draw_other_runs_3d(list, f, px);
+  // Every run's trail, its dashes measured on screen.
+  draw_trails_3d(list, f, ink.trail_map_top, px, [&](const glm::vec3& p) {
+    const auto at = render::project_to_pixel(camera, view, p);
+    return at ? glm::vec2(*at) : glm::vec2(0.0f);
+  });
   list.add_marker(
       {to_glm(f.current), to_glm(f.colours.marker), to_glm(ink.marker_edge), 5.0f * px, 1.3f * px});
   // The pole labels N and S are placed over the view (draw_view_annotations).
 }
 
 void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& column,
-                              const render::Viewport& area, float px) {
+                              const render::Viewport& area, std::optional<int> chart_top,
+                              float px) {
   const double e = f.plane_extent;
   const render::Panel2D plot(area, {-e, e, -e, e}, true);
   const scene::Theme& ink = ink_for(f);
@@ -167,45 +168,9 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
   plot.draw_circle(flat, {0.0, 0.0}, 1.0, {style.text.r, style.text.g, style.text.b, 0.85f},
                    1.3f * px);
 
-  // The path, in runs that do not join across a pass through infinity.
-  std::vector<glm::dvec2> run;
-  std::vector<glm::vec4> colours;
-  auto flush = [&] {
-    if (run.size() >= 2) plot.draw_polyline(flat, run, colours, 1.8f * px);
-    run.clear();
-    colours.clear();
-  };
-  for (const auto& p : f.plane_path) {
-    if (p.break_before) flush();
-    run.emplace_back(p.ab.x(), p.ab.y());
-    colours.push_back(first_run_colour(f, p.age, age_colour(p.age, ink.trail_map_top)));
-  }
-  flush();
-  draw_other_runs_plane(flat, plot, f, px);
-
-  bool any_infinity = false, any_exit = false;
-  for (const auto& m : f.plane_marks) {
-    const glm::dvec2 at(m.ab.x(), m.ab.y());
-    const glm::vec4 c = age_colour(m.age, ink.trail_map_top);
-    switch (m.kind) {
-      case scene::PlaneMark::Kind::leaves_panel:  // hollow: the path goes on outside
-        plot.draw_marker(flat, at, {{}, {0, 0, 0, 0}, {c.r, c.g, c.b, 1}, 4.0f * px, 1.5f * px});
-        any_exit = true;
-        break;
-      case scene::PlaneMark::Kind::enters_panel:  // filled: the path comes back
-        plot.draw_marker(flat, at, {{}, {c.r, c.g, c.b, 1}, {c.r, c.g, c.b, 1}, 3.0f * px, 0.0f});
-        any_exit = true;
-        break;
-      case scene::PlaneMark::Kind::through_infinity:
-        plot.draw_marker(flat, at,
-                         {{}, {0, 0, 0, 0}, to_glm(ink.infinity_mark), 6.0f * px, 2.0f * px});
-        plot.draw_text(
-            flat, at,
-            {{}, "inf", to_glm(ink.infinity_label), TextAnchor::centre, {0.0f, -11.0f * px}});
-        any_infinity = true;
-        break;
-    }
-  }
+  // Every run's path and marks (paint/comparison_painter.hpp).
+  const PlaneMarksDrawn marks = draw_paths_plane(flat, plot, f, ink, ink.trail_map_top, px);
+  const bool any_exit = marks.any_exit, any_infinity = marks.any_infinity;
   std::vector<Box> obstacles;
   const float marker_r = 4.5f * px;
   if (f.plane_current) {
@@ -253,14 +218,17 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
                      glm::vec2(area.x + area.width, area.y + area.height)};
     add_placed_labels(flat, {r}, {style.text}, obstacles, bounds);
   }
-  draw_plane_captions(flat, column, float(area.y + area.height) + style.tick_length, px, style.text,
-                      any_exit, any_infinity);
+  // At the column's foot; in a comparison right under the tick labels, far
+  // from the separation chart below, so that they read as the plane's.
+  draw_plane_captions(flat, column, float(area.y + area.height) + style.tick_length,
+                      chart_top ? std::optional<float>(float(*chart_top) - 2 * px) : std::nullopt,
+                      px, style.text, any_exit, any_infinity);
   renderer_->draw_2d(flat);
 }
 
 void FramePainter::draw_plane_captions(render::DrawList& flat, const render::Viewport& column,
-                                       float ticks_top, float px, const glm::vec4& text,
-                                       bool any_exit, bool any_infinity) {
+                                       float ticks_top, std::optional<float> chart_top, float px,
+                                       const glm::vec4& text, bool any_exit, bool any_infinity) {
   const float font = gui().label_font_px();
   const float centre = float(column.x + column.width / 2);
   const bool wide = column.width >= 360;
@@ -271,9 +239,11 @@ void FramePainter::draw_plane_captions(render::DrawList& flat, const render::Vie
   if (any_exit) legend += "hollow: leaves, dot: re-enters";
   if (any_infinity)
     legend += std::string(legend.empty() ? "" : "   ") + "inf: through the south pole";
-  float y = float(column.y + column.height) - 4 * px;
-  // Each line only where it stays below the plot's tick labels.
+  // Each line only where it stays below the plot's tick labels (and above a chart).
   const float lowest_top = ticks_top + font + 4.0f;
+  const int lines = (!legend.empty() && wide ? 1 : 0) + 1;
+  float y = chart_top ? std::min(*chart_top, lowest_top + float(lines) * font * 1.25f)
+                      : float(column.y + column.height) - 4 * px;
   if (!legend.empty() && wide && y - font >= lowest_top) {
     flat.add_text({{centre, y, 0}, legend, text, TextAnchor::bottom});
     y -= font * 1.25f;
@@ -291,18 +261,40 @@ render::ImGuiOverlay& FramePainter::gui() { return *renderer_->overlay(); }
 
 namespace {
 // The drift readouts' traffic light explained: the level each colour stands
-// for (scene::drift_level's thresholds).
+// for (scene::drift_level's thresholds) and what it means for the picture.
 std::string decade(double v) { return "1e" + std::to_string(int(std::lround(std::log10(v)))); }
-void draw_drift_key(const scene::Theme& ink) {
-  const std::string warn_from = decade(scene::kDriftWarnFrom),
-                    bad_from = decade(scene::kDriftBadFrom);
-  ImGui::TextColored(to_imgui(ink.drift_ok), "<%s", warn_from.c_str());
-  ImGui::SameLine();
-  ImGui::TextColored(to_imgui(ink.drift_warn), "<%s", bad_from.c_str());
-  ImGui::SameLine();
-  ImGui::TextColored(to_imgui(ink.drift_bad), ">=%s", bad_from.c_str());
+using DriftKey = std::array<std::string, 3>;
+// The key in words where the window is wide enough, else shorter: the
+// longest of these no wider than the window's other rows (the last one always).
+std::vector<DriftKey> drift_keys() {
+  const std::string warn = decade(scene::kDriftWarnFrom), bad = decade(scene::kDriftBadFrom);
+  return {{"round-off <" + warn, "  small <" + bad, "  visible >=" + bad},
+          {"ok <" + warn, "  fair <" + bad, "  bad >=" + bad},
+          {"<" + warn, "  <" + bad, "  >=" + bad}};
+}
+void draw_drift_key(const scene::Theme& ink, const DriftKey& parts) {
+  const scene::Rgba* colours[] = {&ink.drift_ok, &ink.drift_warn, &ink.drift_bad};
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    if (i) ImGui::SameLine(0.0f, 0.0f);
+    ImGui::TextColored(to_imgui(*colours[i]), "%s", parts[i].c_str());
+  }
+}
+// The drift table's heading: of the one run, or of each run of a comparison.
+const char* drift_heading(const scene::Frame& f) {
+  return f.comparison ? "largest rel. drift per run" : "max rel. drift";
 }
 }  // namespace
+
+std::string FramePainter::drift_key_text(const std::array<std::string, 3>& parts) {
+  return parts[0] + parts[1] + parts[2];
+}
+
+std::array<std::string, 3> FramePainter::drift_key(float room) {
+  const auto keys = drift_keys();
+  for (const auto& k : keys)
+    if (gui().text_size(drift_key_text(k)).x <= room + 0.5f) return k;
+  return keys.back();
+}
 
 Box FramePainter::info_window_box(const scene::Frame& f, const scene::FrameLayout& layout,
                                   float px) {
@@ -318,8 +310,11 @@ Box FramePainter::info_window_box(const scene::Frame& f, const scene::FrameLayou
   float text_w = gui().text_size(f.overlay.title).x;
   for (int i = 0; i < shown; ++i)
     text_w = std::max(text_w, gui().text_size(f.overlay.lines[std::size_t(i)]).x);
-  if (!f.overlay.drifts.empty())  // "%-12s" name, then "%9.1e" value
-    text_w = std::max(text_w, gui().text_size("xxxxxxxxxxxx  -0.0e+00 ").x);
+  if (!f.overlay.drifts.empty()) {  // "%-12s" name, then "%9.1e" value; the heading; the key
+    text_w = std::max({text_w, gui().text_size("xxxxxxxxxxxx  -0.0e+00 ").x,
+                       gui().text_size(drift_heading(f)).x});
+    text_w = std::max(text_w, gui().text_size(drift_key_text(drift_key(text_w))).x);
+  }
   // Title, lines, then the drifts' heading, their rows and the key of their colours.
   const int rows = 1 + shown + (f.overlay.drifts.empty() ? 0 : 2 + int(f.overlay.drifts.size()));
   const float h = 2 * st.WindowPadding.y +
@@ -368,14 +363,14 @@ void FramePainter::draw_info_window(const scene::Frame& f, const scene::FrameLay
     for (int i = 0; i < shown; ++i) ImGui::TextUnformatted(f.overlay.lines[std::size_t(i)].c_str());
     if (!f.overlay.drifts.empty()) {
       ImGui::Separator();
-      ImGui::TextDisabled("max rel. drift");
+      ImGui::TextDisabled("%s", drift_heading(f));
       for (const auto& [name, value] : f.overlay.drifts) {
         const ImVec4 c = to_imgui(ink.drift_colour(value));  // traffic light: scene::drift_level
         ImGui::Text("%-12s", name.c_str());
         ImGui::SameLine();
         ImGui::TextColored(c, "%9.1e", value);
       }
-      draw_drift_key(ink);
+      draw_drift_key(ink, drift_key(ImGui::GetContentRegionAvail().x));
     }
     ImGui::End();
     ImGui::PopStyleColor(pushed);
@@ -401,19 +396,25 @@ const render::RgbaImage& FramePainter::paint(const scene::Frame& f,
   renderer_->begin_frame(to_glm(f.colours.background));
   if (layout.view_3d) {
     DrawList scene3d;
-    if (f.layers.body) draw_body(scene3d, f, px);
-    if (f.layers.sphere) draw_sphere(scene3d, f, px);
     const render::Viewport view = to_viewport(*layout.view_3d);
     const render::Camera camera = camera_for(f, view);
+    if (f.layers.body) draw_body(scene3d, f, px);
+    if (f.layers.sphere) draw_sphere(scene3d, f, camera, view, px);
     renderer_->draw_3d(scene3d, camera, view);
     draw_view_annotations(f, camera, view, px);
   }
   if (layout.panel_column && f.layers.riccati)
-    draw_plane(f, to_viewport(*layout.panel_column), to_viewport(*layout.plot_area), px);
-  if (DrawList notes;
-      draw_run_annotations(notes, f, layout, ink_for(f), px,
-                           layout.view_3d ? annotations_.legend_bottom : std::nullopt))
+    draw_plane(f, to_viewport(*layout.panel_column), to_viewport(*layout.plot_area),
+               layout.chart_area ? std::optional<int>(layout.chart_area->y) : std::nullopt, px);
+  {
+    DrawList notes;
+    const auto drawn = draw_run_annotations(
+        notes, f, layout, ink_for(f), px,
+        [&](const std::string& text) { return gui().text_size(text); },
+        layout.view_3d ? annotations_.legend_bottom : std::nullopt);
+    for (const auto& d : drawn) annotations_.legend.push_back({d.text, d.box, {}});
     renderer_->draw_2d(notes);
+  }
   if (f.layers.overlay || extra_ui)
     renderer_->draw_overlay([&] {
       if (f.layers.overlay) draw_info_window(f, layout, px);

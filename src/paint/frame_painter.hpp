@@ -2,6 +2,7 @@
 // Draws a scene::Frame with the render toolkit: the body, the sphere with its
 // trail, the Riccati (a, b) plane and the ImGui overlay, each a layer the frame
 // switches on or off. The painter reads plain values; it knows no physics.
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -58,8 +59,21 @@ struct PaintedAnnotations {
   std::optional<Box> colour_bar;  // left end oldest (age 1), right end now
   float map_top = 1.0f;           // the theme's top of the time colour map
   float font_px = 0.0f;           // the labels' text height
-  // Where the legend or horizon note ends, above the trail's key (3D view only).
+  // Where the horizon note of a single run ends, above the trail's key (3D view only).
   std::optional<float> legend_bottom;
+  // What paint/comparison_painter placed: a comparison's legend rows, the
+  // caption, a single run's horizon note (`bounds` unset).
+  std::vector<Label> legend;
+  // The sphere's outline on screen: centre and radius in pixels.
+  struct Disc {
+    glm::vec2 centre{0.0f};
+    float radius = 0.0f;
+  };
+  std::optional<Disc> sphere;
+  // The other runs' current points (diamonds) over the 3D view.
+  std::vector<Box> ghosts;
+  // The key of the marks (gravity, fixed point, centre of mass) at the 3D view's top right.
+  std::optional<Box> marks_key;
 };
 
 class FramePainter {
@@ -84,7 +98,8 @@ class FramePainter {
 
  private:
   void draw_body(render::DrawList& list, const scene::Frame& f, float px);
-  void draw_sphere(render::DrawList& list, const scene::Frame& f, float px) const;
+  void draw_sphere(render::DrawList& list, const scene::Frame& f, const render::Camera& camera,
+                   const render::Viewport& view, float px) const;
   // Over the 3D view, in image pixels and after it (so never hidden by the
   // body): the fixed point and the centre of mass, the labels of the axes and
   // poles placed clear of each other, the key, the colour bar and the caption.
@@ -99,17 +114,25 @@ class FramePainter {
   std::optional<Box> draw_marks_key(render::DrawList& flat, const scene::Frame& f,
                                     const render::Camera& camera, const render::Viewport& view,
                                     float px);
+  // `chart_top`: where a comparison's separation chart begins under the plot.
   void draw_plane(const scene::Frame& f, const render::Viewport& column,
-                  const render::Viewport& area, float px);
+                  const render::Viewport& area, std::optional<int> chart_top, float px);
   // Under the plot: the projection's convention and a legend for its marks.
-  // `ticks_top`: where the plot's tick labels start (the captions stay below them).
+  // `ticks_top`: where the plot's tick labels start (the captions stay below
+  // them); with a separation chart under the plot (`chart_top`), right under
+  // the tick labels, else at the column's foot.
   void draw_plane_captions(render::DrawList& flat, const render::Viewport& column, float ticks_top,
-                           float px, const glm::vec4& text, bool any_exit, bool any_infinity);
+                           std::optional<float> chart_top, float px, const glm::vec4& text,
+                           bool any_exit, bool any_infinity);
   // Labels of one part of the picture, placed by place_labels and recorded.
   void add_placed_labels(render::DrawList& flat, const std::vector<LabelRequest>& requests,
                          const std::vector<glm::vec4>& colours, const std::vector<Box>& obstacles,
                          const Box& bounds);
   void draw_info_window(const scene::Frame& f, const scene::FrameLayout& layout, float px);
+  // The key of the drift colours that fits `room` pixels (in words where it
+  // does), and its text.
+  std::array<std::string, 3> drift_key(float room);
+  std::string drift_key_text(const std::array<std::string, 3>& parts);
   // Where the overlay window goes and how large it is (from this frame's text).
   Box info_window_box(const scene::Frame& f, const scene::FrameLayout& layout, float px);
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "paint/dash_pattern.hpp"
 #include "paint/painter_common.hpp"
 #include "render/panel_2d.hpp"
 
@@ -48,7 +49,18 @@ void draw_separation_chart(render::DrawList& flat, const scene::Comparison& c,
     for (const auto& p : sep)
       points.emplace_back(p.x(), std::log10(std::max(double(p.y()), kFloor)));
     const glm::vec4 colour = to_glm(c.colours[std::min(i + 1, c.colours.size() - 1)]);
-    if (points.size() >= 2) plot.draw_polyline(flat, points, std::span(&colour, 1), 1.4f * px);
+    // In the run's line style too, as on the sphere and the plane.
+    const scene::LineStyle line = i + 1 < c.lines.size() ? c.lines[i + 1] : scene::LineStyle::solid;
+    std::vector<glm::vec2> pixels;
+    for (const auto& p : points) pixels.push_back(plot.to_pixel(p));
+    const float width = 1.4f * px;
+    for (const auto& s : dash_spans(pixels, dash_pattern(line, width, false))) {
+      const auto piece = span_vertices<glm::dvec2>(
+          points, s, [](const glm::dvec2& a, const glm::dvec2& b, float f) {
+            return a + (b - a) * double(f);
+          });
+      plot.draw_polyline(flat, piece, std::span(&colour, 1), width);
+    }
   }
   flat.add_text({{float(area.x), float(area.y), 0.0f},
                  "log10 |gamma - gamma of run 1|  over t",

@@ -26,6 +26,9 @@ struct CameraSettings {
   double distance = 3.4;        // in units of the sphere radius
 };
 
+// How a run's line is drawn in a comparison scene (scene/run_palette.hpp).
+enum class LineStyle { solid, dashed, dotted, dash_dot, long_dash, dash_dot_dot };
+
 // The named colour sets (scene/theme.hpp); a job's own colours override a theme's defaults.
 enum class ThemeId { dark, light };
 
@@ -81,6 +84,7 @@ struct RunTrace {
   std::vector<TrailPoint> trail;
   Eigen::Vector3f current = Eigen::Vector3f::UnitZ();
   std::vector<PlanePoint> plane_path;
+  std::vector<PlaneMark> plane_marks;
   std::optional<Eigen::Vector2f> plane_current;
   // Separation of this run's gamma from the first run's, |delta gamma|, at the
   // samples so far: (t, separation).
@@ -94,6 +98,7 @@ struct Comparison {
   // Legend rows, one per run, the first run first: "rk4, step 0.2".
   std::vector<std::string> labels;
   std::vector<Rgba> colours;     // one per run: a qualitative palette (scene/run_palette.hpp)
+  std::vector<LineStyle> lines;  // one per run, as distinct as the colours
   std::vector<RunTrace> others;  // runs 2, 3, ...
   double t_end = 0.0;            // the separation chart's time axis
 };
@@ -131,8 +136,8 @@ struct Frame {
 
   // The time after which the (first) run's drawn trajectory may differ from
   // the true one by more than half a pixel (sim error estimated against a
-  // shadow run): empty while it is pixel-true. The painter fades the trail
-  // after it and says so.
+  // shadow run): empty while it is pixel-true. The painter draws the trail
+  // after it thinner and dashed, in the same colours, and says so.
   std::optional<double> pixel_true_until;
   std::optional<float> untrue_age;  // trail points newer than this age lie after it
   // What the overlay says of it: "beyond t = 41.7: not pixel-accurate (chaos)".

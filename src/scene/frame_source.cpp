@@ -7,7 +7,6 @@
 #include <string>
 
 #include "physics/format.hpp"
-#include "physics/stereographic.hpp"
 #include "scene/body_shape.hpp"
 #include "scene/plane_path.hpp"
 #include "scene/run_palette.hpp"
@@ -34,9 +33,20 @@ int overlay_drift_rows(const sim::RunSpec& run) {
 
 int overlay_drift_rows(const std::vector<sim::RunSpec>& runs) {
   if (runs.size() == 1) return overlay_drift_rows(runs.front());
-  int rows = 0;
-  for (const auto& r : runs) rows += overlay_drift_rows(r) - 2;  // C1 and the fourth integral
-  return rows;
+  return int(runs.size());  // one per run: its largest drift
+}
+
+std::pair<std::string, double> largest_drift(const sim::Drifts& d, physics::Case c) {
+  std::pair<std::string, double> worst{"|gamma|^2", d.gamma_norm2};
+  auto consider = [&](std::string name, double value) {
+    // A drift that is not a number is the worst there is.
+    if (std::isnan(worst.second)) return;
+    if (std::isnan(value) || value > worst.second) worst = {std::move(name), value};
+  };
+  consider("C0", d.area);
+  consider("C1", d.energy);
+  if (d.extra) consider(extra_integral_symbol(c), *d.extra);
+  return worst;
 }
 
 std::string run_legend(const std::string& label, const sim::RunSpec& run,
@@ -134,8 +144,8 @@ Frame FrameSource::compose(int index) const {
   auto path = build_plane_path(pts, f.plane_extent, age);
   f.plane_path = std::move(path.points);
   f.plane_marks = std::move(path.marks);
-  if (auto ab = physics::stereographic(last.gamma)) {
-    const Eigen::Vector2f now = ab->cast<float>();
+  if (auto ab = plane_point(last.gamma)) {
+    const Eigen::Vector2f now = *ab;
     f.plane_path.push_back({now, 0.0f, false});
     if (inside_panel(now, f.plane_extent)) f.plane_current = now;
   }
@@ -190,12 +200,10 @@ void FrameSource::compose_comparison(Frame& f) const {
         i == 0 ? plan_.accuracy_note : plan_.others[std::size_t(i - 1)].accuracy_note;
     c.labels.push_back(run_legend(label, track.spec(), note, formulations_differ));
     c.colours.push_back(run_colour(i, light));
-    // The energy's drift and the fourth integral's, per run.
-    const auto& d = track.max_drift();
-    const std::string n = std::to_string(i + 1) + ": ";
-    f.overlay.drifts.emplace_back(n + "C1", d.energy);
-    if (d.extra)
-      f.overlay.drifts.emplace_back(n + extra_integral_symbol(track.spec().case_id), *d.extra);
+    c.lines.push_back(run_line_style(i));
+    // Each run's largest drift, named: the one that says most of its accuracy.
+    auto [name, value] = largest_drift(track.max_drift(), track.spec().case_id);
+    f.overlay.drifts.emplace_back(std::to_string(i + 1) + ": " + name, value);
     if (i == 0) continue;
 
     RunTrace r;
@@ -207,8 +215,9 @@ void FrameSource::compose_comparison(Frame& f) const {
     r.trail.push_back({r.current, 0.0f});
     auto path = build_plane_path(pts, f.plane_extent, age);
     r.plane_path = std::move(path.points);
-    if (auto ab = physics::stereographic(latest.gamma)) {
-      const Eigen::Vector2f p = ab->cast<float>();
+    r.plane_marks = std::move(path.marks);
+    if (auto ab = plane_point(latest.gamma)) {
+      const Eigen::Vector2f p = *ab;
       r.plane_path.push_back({p, 0.0f, false});
       if (inside_panel(p, f.plane_extent)) r.plane_current = p;
     }

@@ -2,6 +2,8 @@
 // Runs the simulation ahead of the renderer and hands out one scene::Frame per
 // frame time, with bounded memory (the trail keeps only what the screen shows).
 #include <memory>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "scene/frame.hpp"
@@ -55,11 +57,13 @@ class FrameSource {
 
 // The overlay a FrameSource composes has this many text lines, and a drift row
 // per invariant it monitors for the run (the plan lays the picture out for it).
-// A comparison scene has the energy's row and the fourth integral's (if any)
-// for each run.
+// A comparison scene has one row per run: its largest drift.
 constexpr int kOverlayLines = 5;
 int overlay_drift_rows(const sim::RunSpec& run);
 int overlay_drift_rows(const std::vector<sim::RunSpec>& runs);
+// The largest relative drift among |gamma|^2, C0, C1 and the case's fourth
+// integral, with the invariant's overlay name ("C0", "K", ...).
+std::pair<std::string, double> largest_drift(const sim::Drifts& drifts, physics::Case c);
 // The legend's name of a comparison run: "label: method, accuracy" (the
 // formulation added where the runs differ in it).
 std::string run_legend(const std::string& label, const sim::RunSpec& run,

@@ -10,8 +10,10 @@ namespace {
 // this height shows, the drift table's heading, its rows and its key. Fixed
 // (kOverlayReserved), not this frame's: the plot must stay put from job to
 // job so that the tiles of a gallery line up.
-int overlay_height(int height) {
-  const OverlayShape o = kOverlayReserved;
+int overlay_height(int height, int runs) {
+  // A comparison of more runs than kOverlayReserved has drift rows gets room
+  // for each run's row.
+  const OverlayShape o{kOverlayReserved.lines, std::max(kOverlayReserved.drifts, runs)};
   const int rows = 1 + overlay_lines_shown(o.lines, height) + 2 + o.drifts;
   return int(std::ceil(overlay_font_px(height) * 1.36f * float(rows) + 18.0f * ui_scale(height)));
 }
@@ -19,16 +21,29 @@ int overlay_height(int height) {
 FrameLayout layout_in_width(const LayoutRequest& q, int width) {
   const int height = q.height;
   FrameLayout l;
+  // A caption takes a line across the top; everything else goes below it.
+  const int top = q.caption ? legend_row_height(height) : 0;
+  if (q.caption) l.caption_area = Rect{0, 0, width, top};
+  const int h = height - top;
   const bool three_d = q.layers.body || q.layers.sphere;
   // The 3D view takes the left 60 % when the panel is shown.
   if (three_d && q.layers.riccati) {
     const int w3 = width * 3 / 5;
-    l.view_3d = Rect{0, 0, w3, height};
-    l.panel_column = Rect{w3, 0, width - w3, height};
+    l.view_3d = Rect{0, top, w3, h};
+    l.panel_column = Rect{w3, top, width - w3, h};
   } else if (three_d) {
-    l.view_3d = Rect{0, 0, width, height};
+    l.view_3d = Rect{0, top, width, h};
   } else if (q.layers.riccati) {
-    l.panel_column = Rect{0, 0, width, height};
+    l.panel_column = Rect{0, top, width, h};
+  }
+  // The legend of a comparison: a strip under the 3D view (under the panel
+  // without one), so that it never covers the sphere or a mark.
+  if (q.legend_rows > 0 && (l.view_3d || l.panel_column)) {
+    Rect& above = l.view_3d ? *l.view_3d : *l.panel_column;
+    const int strip = std::min(above.height / 2, q.legend_rows * legend_row_height(height) +
+                                                     int(std::ceil(8.0f * ui_scale(height))));
+    above.height -= strip;
+    l.legend_area = Rect{above.x, above.bottom(), above.width, strip};
   }
   if (l.panel_column) {
     const auto& c = *l.panel_column;
@@ -45,7 +60,10 @@ FrameLayout layout_in_width(const LayoutRequest& q, int width) {
     // The overlay takes the top of the panel's column when the plot keeps at
     // least 35 % of the height there, so that it does not cover the sphere;
     // otherwise (small pictures) it floats over the 3D view's corner.
-    const int overlay_px = l.view_3d && q.layers.overlay ? overlay_height(height) : 0;
+    const int overlay_px =
+        l.view_3d && q.layers.overlay
+            ? overlay_height(height, q.legend_rows > 0 ? comparison_runs(q.legend_rows) : 0)
+            : 0;
     l.overlay_in_column =
         overlay_px > 0 && side_for(margin_top_base + overlay_px) >= height * 35 / 100;
     const int margin_top = margin_top_base + (l.overlay_in_column ? overlay_px : 0);
@@ -93,6 +111,12 @@ float camera_distance_for(double distance_setting, float aspect) {
 
 int comparison_chart_height(int height) { return std::max(60, height / 5); }
 
+int comparison_legend_rows(int runs) { return runs + 2; }
+
+int comparison_runs(int legend_rows) { return legend_rows - 2; }
+
+int legend_row_height(int height) { return int(std::ceil(overlay_font_px(height) * 1.45f)); }
+
 LayoutRequest layout_request(const Frame& f, int width, int height, int reserved_left) {
   return {width,
           height,
@@ -101,14 +125,17 @@ LayoutRequest layout_request(const Frame& f, int width, int height, int reserved
           f.camera.distance,
           f.plane_extent,
           reserved_left,
-          f.comparison ? comparison_chart_height(height) : 0};
+          f.comparison ? comparison_chart_height(height) : 0,
+          f.comparison ? comparison_legend_rows(int(f.comparison->labels.size())) : 0,
+          !f.caption.empty()};
 }
 
 FrameLayout frame_layout(const LayoutRequest& q) {
   const int reserved_left = std::clamp(q.reserved_left, 0, q.width - 16);
   FrameLayout l = layout_in_width(q, q.width - reserved_left);
   if (reserved_left == 0) return l;
-  for (auto* r : {&l.view_3d, &l.panel_column, &l.plot_area, &l.chart_area})
+  for (auto* r :
+       {&l.view_3d, &l.panel_column, &l.plot_area, &l.chart_area, &l.legend_area, &l.caption_area})
     if (*r) (*r)->x += reserved_left;
   return l;
 }

@@ -36,6 +36,8 @@ struct LayoutRequest {
   float plane_extent = 2.5f;     // the panel shows [-extent, extent]^2
   int reserved_left = 0;         // kept free at the left edge (interactive panels)
   int chart_height = 0;          // comparison scenes: the separation chart under the plot
+  int legend_rows = 0;           // comparison scenes: the legend's rows (comparison_legend_rows)
+  bool caption = false;          // a caption line across the top (gallery tiles)
 };
 
 struct FrameLayout {
@@ -43,6 +45,10 @@ struct FrameLayout {
   std::optional<Rect> panel_column;  // the Riccati panel's column
   std::optional<Rect> plot_area;     // the panel's square plot inside its column
   std::optional<Rect> chart_area;    // comparison scenes: under the plot (paint/separation_chart)
+  // Comparison scenes: the legend's strip under the 3D view (or under the
+  // panel without one), clear of the sphere and of every mark.
+  std::optional<Rect> legend_area;
+  std::optional<Rect> caption_area;  // the caption's line across the top
   bool overlay_in_column = false;    // the overlay sits above the plot (else over the 3D view)
   // Pixels per unit of gamma at the sphere's centre, and per unit of a or b in
   // the plot; 0 where the picture has no such part.
@@ -53,6 +59,12 @@ struct FrameLayout {
 FrameLayout frame_layout(const LayoutRequest& request);
 // The separation chart's height in a comparison scene of this picture height.
 int comparison_chart_height(int height);
+// The legend's rows in a comparison scene of `runs` runs: one per run, the
+// key of the line drawn after a run's pixel-true time, and the trail's caption.
+int comparison_legend_rows(int runs);
+int comparison_runs(int legend_rows);  // the inverse
+// The height of one legend row, and of the caption's line, at this picture height.
+int legend_row_height(int height);
 // What a frame asks of a picture of this size.
 LayoutRequest layout_request(const Frame& frame, int width, int height, int reserved_left = 0);
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/stereographic.hpp"
+
 namespace epviz::scene {
 
 bool inside_panel(const Eigen::Vector2f& p, float e) {
@@ -18,6 +20,13 @@ Eigen::Vector2f border_crossing(const Eigen::Vector2f& in, const Eigen::Vector2f
     if (d[i] < 0.0f) s = std::min(s, (-e - in[i]) / d[i]);
   }
   return in + std::max(s, 0.0f) * d;
+}
+
+std::optional<Eigen::Vector2f> plane_point(const Eigen::Vector3d& gamma) {
+  const double n = gamma.norm();
+  if (!(n > 0.0)) return std::nullopt;
+  if (auto ab = physics::stereographic(gamma / n)) return ab->cast<float>();
+  return std::nullopt;
 }
 
 bool through_infinity(const HistoryPoint& p, const HistoryPoint& q) {

@@ -2,6 +2,7 @@
 // The (a, b) path on the Riccati panel, honest about where it leaves the panel
 // and where it passes through infinity (gamma at or near the south pole).
 #include <deque>
+#include <optional>
 #include <vector>
 
 #include "scene/frame.hpp"
@@ -23,6 +24,12 @@ Eigen::Vector2f border_crossing(const Eigen::Vector2f& inside, const Eigen::Vect
                                 float e);
 
 bool inside_panel(const Eigen::Vector2f& p, float e);
+
+// The (a, b) of gamma's direction; empty at the south pole. A run whose
+// |gamma| drifted from 1 is projected along its direction: near the pole,
+// gamma itself would land near the origin (1 + gamma3 is then no measure of
+// the distance from the pole) and draw a chord across the panel.
+std::optional<Eigen::Vector2f> plane_point(const Eigen::Vector3d& gamma);
 
 // A step between two samples that goes around through infinity rather than
 // across the plane: both near the south pole and the direction flips.

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "physics/stereographic.hpp"
 #include "scene/plan.hpp"
+#include "scene/plane_path.hpp"
 
 namespace epviz::scene {
 
@@ -39,7 +39,7 @@ void RunTrack::take(const sim::Sample& s) {
   HistoryPoint p;
   p.t = s.t;
   p.sphere = on_sphere(s).cast<float>();
-  if (auto ab = physics::stereographic(s.gamma)) p.plane = ab->cast<float>();
+  p.plane = plane_point(s.gamma);
   p.gamma3 = float(s.gamma.z());
   history_.offer(p);
 }

@@ -124,5 +124,37 @@ TEST(FrameAnnotations, TextGrowsWithThePicture) {
   }
 }
 
+TEST(FrameAnnotations, AGalleryTilesCaptionHasItsOwnLineAndTheSphereFitsTheTile) {
+  // A gallery tile, its caption as long as a shipped job's, for every case.
+  paint::FramePainter tile(et::shared_gl_context(), 640, 360, {.builtin_font = true});
+  for (const Job& job : {Job{physics::Case::euler, scene::View::space, 3.3, 2},
+                         Job{physics::Case::lagrange, scene::View::space, 3.4, 3},
+                         Job{physics::Case::kovalevskaya, scene::View::body, 3.4, 3},
+                         Job{physics::Case::goryachev_chaplygin, scene::View::body, 3.4, 3},
+                         Job{physics::Case::generic, scene::View::body, 3.4, 3}}) {
+    auto f = frame_of(job.c, job.view, 640, 360, job.distance, job.trace_axis);
+    f.caption = "goryachev-chaplygin: dop853, tol 2.6e-05 (auto, tightened)";
+    tile.paint(f);
+    const auto& a = tile.annotations();
+    const auto layout = paint::layout_for(f, 640, 360);
+    ASSERT_TRUE(layout.caption_area);
+    const paint::Box caption_line = box_of(*layout.caption_area), view = box_of(*layout.view_3d);
+    const auto caption = std::find_if(a.legend.begin(), a.legend.end(),
+                                      [&](const auto& l) { return l.text == f.caption; });
+    ASSERT_NE(caption, a.legend.end()) << "the caption is not drawn whole";
+    EXPECT_TRUE(caption_line.contains(caption->box));
+    EXPECT_FALSE(caption_line.intersects(view));
+    if (a.marks_key) {
+      EXPECT_FALSE(caption->box.intersects(*a.marks_key));
+    }
+    for (const auto& l : a.labels) EXPECT_FALSE(caption->box.intersects(l.box)) << l.text;
+    // The whole sphere inside its view, with the pole labels inside the picture.
+    ASSERT_TRUE(a.sphere);
+    const glm::vec2 r(a.sphere->radius);
+    EXPECT_TRUE(view.contains({a.sphere->centre - r, a.sphere->centre + r}));
+    for (const auto& l : a.labels) EXPECT_TRUE(l.bounds.contains(l.box)) << l.text;
+  }
+}
+
 }  // namespace
 }  // namespace epviz

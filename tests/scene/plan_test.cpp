@@ -41,13 +41,15 @@ std::string describe(const std::optional<scene::Rect>& r) {
 
 std::string describe(const scene::FrameLayout& l) {
   return "3d " + describe(l.view_3d) + ", column " + describe(l.panel_column) + ", plot " +
-         describe(l.plot_area) + ", chart " + describe(l.chart_area) + ", overlay in column " +
-         std::to_string(l.overlay_in_column) + ", px/unit " + std::to_string(l.sphere_px_per_unit) +
-         " " + std::to_string(l.plane_px_per_unit);
+         describe(l.plot_area) + ", chart " + describe(l.chart_area) + ", legend " +
+         describe(l.legend_area) + ", overlay in column " + std::to_string(l.overlay_in_column) +
+         ", px/unit " + std::to_string(l.sphere_px_per_unit) + " " +
+         std::to_string(l.plane_px_per_unit);
 }
 
 // The painter's layout of a picture with these settings.
-scene::FrameLayout painted(const scene::SceneSettings& s, int chart_height = 0) {
+scene::FrameLayout painted(const scene::SceneSettings& s, int chart_height = 0,
+                           int legend_rows = 0) {
   scene::LayoutRequest q;
   q.width = s.width;
   q.height = s.height;
@@ -55,6 +57,7 @@ scene::FrameLayout painted(const scene::SceneSettings& s, int chart_height = 0) 
   q.camera_distance = s.camera.distance;
   q.plane_extent = s.plane_extent;
   q.chart_height = chart_height;
+  q.legend_rows = legend_rows;
   return scene::frame_layout(q);
 }
 
@@ -77,13 +80,16 @@ TEST(Plan, LaysOutThePictureAsThePainterWill) {
       EXPECT_NE(describe(painted(variants[i])), describe(painted(base)));
     }
   }
-  // A comparison scene keeps room for its separation chart under the plot.
+  // A comparison scene keeps room for its separation chart under the plot
+  // and for its legend under the 3D view.
   scene::RunRequest request;
   request.run = run;
   const auto plan = scene::plan_scene({request, request}, base, scene::Horizon::none);
   EXPECT_TRUE(plan.layout.chart_area);
+  EXPECT_TRUE(plan.layout.legend_area);
   EXPECT_EQ(describe(plan.layout),
-            describe(painted(base, scene::comparison_chart_height(base.height))));
+            describe(painted(base, scene::comparison_chart_height(base.height),
+                             scene::comparison_legend_rows(2))));
 }
 
 TEST(Plan, SpaceViewIntegratesTheAttitude) {
