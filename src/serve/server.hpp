@@ -38,6 +38,14 @@ struct ServerOptions {
   // smaller by one factor, so no connection waits long for its frame. The
   // default is two 3840x2160 views; 0: no budget.
   long pixel_budget = 2L * 3840 * 2160;
+  // Adaptive resolution: while a connection's frames take longer than this
+  // to render and encode (the average of the last few), its view is rendered
+  // smaller, down to min_detail of each side (the page stretches it), and
+  // larger again when they get cheap; when the picture rests (the session
+  // wants no frame) it is rendered once more at full size, as map viewers
+  // sharpen a map. 0: off (always full size within the pixel budget).
+  double frame_budget_ms = 0.0;
+  double min_detail = 0.5;
   ImageFormat image_format = ImageFormat::jpeg;
   int jpeg_quality = 85;
   // One line per event worth logging (connections, closes and their reasons).

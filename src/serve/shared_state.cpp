@@ -20,6 +20,28 @@ std::vector<ClientMessage> ConnectionLink::take(bool& resume) {
   return taken;
 }
 
+void ConnectionLink::note_written(const WriteTiming& timing) {
+  std::lock_guard lock(mutex_);
+  last_written_ = timing;
+}
+
+ConnectionLink::WriteTiming ConnectionLink::last_written() const {
+  std::lock_guard lock(mutex_);
+  return last_written_;
+}
+
+nlohmann::json stats_json(const ServerCounters& c) {
+  return {{"connections_accepted", c.connections_accepted.load()},
+          {"connections_open", c.connections_open.load()},
+          {"frames_sent", c.frames_sent.load()},
+          {"protocol_errors", c.protocol_errors.load()},
+          {"outbox_bytes", c.outbox_bytes.load()},
+          {"outbox_bytes_peak", c.outbox_bytes_peak.load()},
+          {"outbox_overflows", c.outbox_overflows.load()},
+          {"downscaled_frames", c.downscaled_frames.load()},
+          {"stages", c.stages.summary()}};
+}
+
 bool ConnectionLink::acknowledge(std::int64_t frame) {
   if (frame > frames_sent.load()) return false;
   std::int64_t current = frames_acked.load();

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "serve/protocol.hpp"
+#include "serve/stage_times.hpp"
 
 namespace epviz::serve {
 
@@ -51,7 +52,11 @@ struct ServerCounters {
   std::atomic<long> outbox_bytes_peak{0};  // the most outbox_bytes has been
   std::atomic<long> outbox_overflows{0};   // connections dropped for a full outbox
   std::atomic<long> downscaled_frames{0};  // frames rendered smaller than asked (pixel budget)
+  StageTimes stages;                       // each frame's stages, all connections together
 };
+
+// What `GET /stats` answers: the counters and the stages' medians (docs/serve.md).
+nlohmann::json stats_json(const ServerCounters& counters);
 
 // The network side of one connection as the render thread sees it. Every
 // call may come from any thread; it only queues work for the network thread.
@@ -91,6 +96,18 @@ class ConnectionLink {
   // Network thread: records an ack (acks never go backwards); false for an
   // ack of a frame never sent, which only a broken or hostile page sends.
   bool acknowledge(std::int64_t frame);
+
+  // How long the newest frame whose write completed waited in the outbox
+  // (queue) and took to write (send). The network thread notes it; the
+  // render thread puts it in the next frame's header, since a frame's own
+  // header is written before either is known.
+  struct WriteTiming {
+    std::int64_t frame = 0;  // 0: none written yet
+    double queue_ms = 0.0;
+    double send_ms = 0.0;
+  };
+  void note_written(const WriteTiming& timing);
+  WriteTiming last_written() const;
   // Frames the page cannot have shown yet. An ack counts only up to the last
   // frame whose write completed: a page cannot have shown a frame still in
   // the server's outbox, and counting a forged ack would let the outbox grow.
@@ -99,9 +116,10 @@ class ConnectionLink {
   }
 
  private:
-  std::mutex mutex_;
+  mutable std::mutex mutex_;
   std::vector<ClientMessage> inbox_;  // guarded by mutex_
   bool paused_ = false;               // guarded by mutex_
+  WriteTiming last_written_;          // guarded by mutex_
 };
 
 // Where the network thread hands new connections and wake-ups to the render
