@@ -77,7 +77,7 @@ void RenderLoop::run() {
     if (hub_.stop_requested()) break;
     // After a frame, go round again at once (a playing session wants the
     // next); otherwise sleep until a message, an ack or a connection arrives.
-    if (!rendered && !hub_.wait_for_work()) break;
+    if (!rendered && !hub_.wait_for_work(next_sharpening())) break;
   }
   clients_.clear();
 }
@@ -132,6 +132,31 @@ void RenderLoop::fit_view(Client& client) {
   if (width != client.width || height != client.height) resize_session(client, width, height);
 }
 
+bool RenderLoop::sharpen_if_rested(Client& client) {
+  if (client.resting || client.detail >= 1.0 || client.session->wants_frame()) {
+    client.idle_since.reset();
+    return false;
+  }
+  const auto now = Clock::now();
+  if (!client.idle_since) client.idle_since = now;
+  if (now - *client.idle_since < options_.rest_before_sharpening) return false;
+  // Once more at full size: the resize makes the session want that frame.
+  client.idle_since.reset();
+  client.resting = true;
+  fit_view(client);
+  return true;
+}
+
+std::optional<Clock::time_point> RenderLoop::next_sharpening() const {
+  std::optional<Clock::time_point> first;
+  for (const Client& c : clients_)
+    if (c.idle_since && !c.finished) {
+      const Clock::time_point due = *c.idle_since + options_.rest_before_sharpening;
+      if (!first || due < *first) first = due;
+    }
+  return first;
+}
+
 void RenderLoop::adapt_detail(Client& client, double frame_cost_ms) {
   const double budget = options_.frame_budget_ms;
   if (budget <= 0 || client.resting) return;
@@ -159,13 +184,7 @@ bool RenderLoop::render_if_due(Client& client) {
   bool rendered = false;
   guarded(client, [&] {
     const bool room = client.link->frames_in_flight() < options_.max_frames_in_flight;
-    // At rest after frames rendered smaller: once more at full size (the
-    // resize makes the session want that frame).
-    if (client.sized && room && !client.resting && client.detail < 1.0 &&
-        !client.session->wants_frame()) {
-      client.resting = true;
-      fit_view(client);
-    }
+    if (client.sized && room) sharpen_if_rested(client);
     if (client.sized && room && client.session->wants_frame()) {
       send_frame(client);
       rendered = true;

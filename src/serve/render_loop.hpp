@@ -7,10 +7,12 @@
 // the views together ask for more, every view is rendered smaller by the same
 // factor, so a round takes bounded time and every connection keeps a frame
 // rate however many large views are open.
+#include <chrono>
 #include <cstdint>
 #include <deque>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "serve/image_encoder.hpp"
@@ -49,6 +51,7 @@ class RenderLoop {
     // side while the picture moves, and whether it was sharpened at rest.
     double detail = 1.0;
     bool resting = false;
+    std::optional<std::chrono::steady_clock::time_point> idle_since;  // smaller, no frame wanted
     double cost_ms = 0.0;             // average render + encode time at this detail
     int frames_at_detail = 0;         // frames averaged into cost_ms
     std::deque<SentSize> sent_sizes;  // the newest frames' sizes, oldest first
@@ -65,6 +68,10 @@ class RenderLoop {
   void resize_session(Client& client, int width, int height);
   void fit_view(Client& client);  // the size from the page's, the budget's scale and the detail
   void adapt_detail(Client& client, double frame_cost_ms);
+  // Sharpens a view that has rested long enough; true when it did.
+  bool sharpen_if_rested(Client& client);
+  // When the earliest view at rest is due to be sharpened, if any.
+  std::optional<std::chrono::steady_clock::time_point> next_sharpening() const;
   void send_frame(Client& client);
   void send(const Client& client, std::vector<std::uint8_t> message, std::int64_t frame = 0);
   void record(const Client& client, const std::string& line);

@@ -46,6 +46,9 @@ struct ServerOptions {
   // sharpen a map. 0: off (always full size within the pixel budget).
   double frame_budget_ms = 0.0;
   double min_detail = 0.5;
+  // How long the picture must have rested before it is sharpened: a pointer
+  // that pauses between moves does not pay for a full-size frame each time.
+  std::chrono::milliseconds rest_before_sharpening{250};
   ImageFormat image_format = ImageFormat::jpeg;
   int jpeg_quality = 85;
   // One line per event worth logging (connections, closes and their reasons).

@@ -76,9 +76,13 @@ void RenderHub::request_stop() {
   wake_.notify_one();
 }
 
-bool RenderHub::wait_for_work() {
+bool RenderHub::wait_for_work(std::optional<std::chrono::steady_clock::time_point> until) {
   std::unique_lock lock(mutex_);
-  wake_.wait(lock, [&] { return dirty_ || stopping_; });
+  const auto woken = [&] { return dirty_ || stopping_; };
+  if (until)
+    wake_.wait_until(lock, *until, woken);
+  else
+    wake_.wait(lock, woken);
   dirty_ = false;
   return !stopping_;
 }

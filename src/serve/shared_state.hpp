@@ -5,11 +5,13 @@
 // never appear here; only the render thread touches them.
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -131,8 +133,9 @@ class RenderHub {
   void request_stop();
 
   // Render thread: blocks until notify(), add() or request_stop() happened
-  // since the last call (returns at once if one did); false once stopping.
-  bool wait_for_work();
+  // since the last call (returns at once if one did), or until `until`
+  // when given; false once stopping.
+  bool wait_for_work(std::optional<std::chrono::steady_clock::time_point> until = {});
   bool stop_requested();
   std::vector<std::shared_ptr<ConnectionLink>> take_new_links();
 

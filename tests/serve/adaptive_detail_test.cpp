@@ -29,10 +29,12 @@ json move_to(int seq, float x, float y) {
 
 // Options with a budget of `budget_ms` (fake sessions made slow_ take
 // about 40 ms for a full 64 x 48 frame, sleeping, so whatever the machine's load).
-std::function<void(ServerOptions&)> budget(double budget_ms) {
-  return [budget_ms](ServerOptions& o) {
+std::function<void(ServerOptions&)> budget(double budget_ms,
+                                           std::chrono::milliseconds rest = 250ms) {
+  return [budget_ms, rest](ServerOptions& o) {
     o.frame_budget_ms = budget_ms;
     o.min_detail = 0.5;
+    o.rest_before_sharpening = rest;
   };
 }
 void slow_(TestServer& server) { server.probe->render_ms_per_megapixel = 13'000; }
@@ -113,6 +115,21 @@ TEST(ServeAdaptiveDetail, AtRestTheViewIsRenderedSharpAndInputIsScaledToTheSessi
   EXPECT_EQ(after.header["width"], small_width);
   EXPECT_NEAR(server.probe->last_x.load(), 40.0 * small_width / kWidth, 1e-3);
   EXPECT_NEAR(server.probe->last_y.load(), 30.0 * small_height / kHeight, 1e-3);
+}
+
+TEST(ServeAdaptiveDetail, APauseShorterThanTheRestIsNotSharpened) {
+  TestServer server(budget(10.0, 60s), false);
+  slow_(server);
+  TestClient client(server.port());
+  client.send(resize(kWidth, kHeight));
+  int seq = 0;
+  ASSERT_TRUE(first_reduced_frame(client, 12, seq, true));
+  // Frames already asked for may still come; then nothing, for far less than a minute.
+  std::optional<ServerMessage> m;
+  while ((m = client.receive(quiet_period))) {
+    client.send(ack(m->header["frame"].get<std::int64_t>()));
+    EXPECT_LT(m->header["width"].get<int>(), kWidth) << "sharpened before the rest was over";
+  }
 }
 
 }  // namespace
