@@ -56,6 +56,9 @@ void LiveSession::resize(int width, int height) {
     base_style_ = std::make_unique<ImGuiStyle>(ImGui::GetStyle());
   } else {
     painter_->resize(width, height);
+    // ImGui finds the window under the pointer from the last frame's layout:
+    // lay the panels out at the new size before applying input given in it.
+    hold_input_frames_ = std::max(hold_input_frames_, 1);
   }
   settle_frames_ = kSettleFrames;
 }
