@@ -32,7 +32,7 @@ for (let i = 1; i <= Number(runs); ++i) {
   rows.push(r);
 }
 const s = (r, k) => (r.stages[k] === null ? '-' : r.stages[k]);
-console.log(`${rows[0].width}x${rows[0].height} ${rows[0].mime}, ${new Date().toISOString()}`);
+console.log(`view ${rows[0].width}x${rows[0].height}, ${rows[0].mime}, ${new Date().toISOString()}, ${require('os').cpus().length} cores`);
 console.log('| run | load | frames/s | latency median (p90) ms | paused median (p90) ms | simulate | draw | read back | encode | queue | send | decode | paint | kB |');
 console.log('|---|---|---|---|---|---|---|---|---|---|---|---|---|---|');
 rows.forEach((r, i) => {
