@@ -23,7 +23,7 @@ int scaled(int size, double scale) { return std::max(min_view_pixels, int(size *
 
 // Adaptive resolution changes the detail in steps of this (fewer sizes, fewer reallocations).
 constexpr double detail_step = 1.0 / 16.0;
-// Frames averaged before the detail is judged, and the average's weight for a new frame.
+// Frames averaged (a plain mean) before the detail is judged again.
 constexpr int frames_to_judge = 4;
 // Below this share of the budget a frame is cheap enough to add detail.
 constexpr double cheap_share = 0.5;

@@ -67,7 +67,7 @@ struct ServerStats {
   long outbox_bytes = 0;       // waiting to be written now, all connections together
   long outbox_bytes_peak = 0;  // the most that ever waited
   long outbox_overflows = 0;   // connections dropped for not reading
-  long downscaled_frames = 0;  // frames rendered smaller than asked to keep the pixel budget
+  long downscaled_frames = 0;  // frames rendered smaller than asked (pixel budget, frame budget)
 };
 
 class Server {

@@ -53,7 +53,7 @@ struct ServerCounters {
   std::atomic<long> outbox_bytes{0};       // waiting to be written, all connections together
   std::atomic<long> outbox_bytes_peak{0};  // the most outbox_bytes has been
   std::atomic<long> outbox_overflows{0};   // connections dropped for a full outbox
-  std::atomic<long> downscaled_frames{0};  // frames rendered smaller than asked (pixel budget)
+  std::atomic<long> downscaled_frames{0};  // rendered smaller than asked (pixel or frame budget)
   StageTimes stages;                       // each frame's stages, all connections together
 };
 
