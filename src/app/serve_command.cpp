@@ -92,6 +92,10 @@ std::function<int()> add_serve_command(CLI::App& app) {
   add_gl_option(*cmd, o->gl);
   cmd->add_option("--image", o->server.image, "frame encoding: jpeg or png")->capture_default_str();
   cmd->add_option("--quality", o->server.quality, "JPEG quality 1..100")->capture_default_str();
+  cmd->add_option("--frame-budget", o->server.frame_budget,
+                  "ms a frame may take to render; views are drawn smaller while frames take "
+                  "longer, and sharp again at rest (0: always full size)")
+      ->capture_default_str();
   cmd->add_option("--save-dir", o->save_dir,
                   "also write saved frames and jobs here (default: browser downloads only)");
   cmd->add_option("--allow-origin", o->server.allow_origins,

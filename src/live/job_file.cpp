@@ -46,14 +46,17 @@ job::JobDocument job_document(const LiveSetup& setup, const std::string& name,
   else
     sim.tol.set(moment.tolerance.value_or(run.tol), from);
   if (run.formulation == sim::Formulation::riccati) sim.chart_switch.set(run.chart_switch, from);
-  // From t = 0 through the time reached and `duration_s` more, at the live speed.
-  const double t_end = std::max(moment.time, 0.0) + setup.speed * duration_s;
+  // From t = 0 to the moment shown, so that the video's last frame is the one seen.
+  const double t_end = moment.time > 0 ? moment.time : setup.speed * duration_s;
   sim.t_end.set(t_end, from);
 
   d.scene = setup.scene;
   if (sim::is_adaptive(run.method)) d.scene.auto_tolerance = false;  // the tol written is the one
   d.scene.fps = 30.0;
-  d.scene.duration = t_end / std::max(setup.speed, 1e-9);
+  // Frames 1/fps s apart at the live speed, the first at t = 0 and the last
+  // at t_end: one frame more than t_end / speed seconds hold, so that the
+  // frames (and the trail samples between them) fall where the live ones did.
+  d.scene.duration = t_end / std::max(setup.speed, 1e-9) + 1.0 / d.scene.fps;
   d.output.dir = "out/" + name;
   d.output.video = io::VideoFormat::mp4;
   d.output.name = name;

@@ -1,9 +1,9 @@
 #pragma once
 // The current interactive setup as a render job (render_jobs/*.json format)
 // that `epviz render` accepts: the same body, state, integrator, camera and
-// view, at the live speed. Render jobs start at t = 0 (the format has no
-// start time), so the job's t_end covers the time the live scene has reached
-// and `duration` seconds more.
+// view, at the live speed. A live run starts at t = 0, as render jobs do (the
+// format has no start time), so the job covers what the user watched: from
+// t = 0 to the moment shown, its video ending on that moment.
 #include <string>
 
 #include "job/document.hpp"
@@ -23,7 +23,9 @@ struct LiveMoment {
 // The job's content. `name` is the output stem (out/<name>/...). The body and
 // state are given in full, so the job reproduces an edited body; the case is
 // named only when its conditions hold (else the run is a custom body). The
-// tolerance or step is written as a number, never "auto".
+// tolerance or step is written as a number, never "auto". Before anything
+// was watched (moment.time 0) the job runs `duration_s` of video at the
+// live speed instead.
 job::JobDocument job_document(const LiveSetup& setup, const std::string& name,
                               const LiveMoment& moment = {}, double duration_s = 10.0);
 

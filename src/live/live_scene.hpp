@@ -52,6 +52,8 @@ class LiveScene {
   const sim::Drifts& max_drift() const { return source_->max_drift(); }
   const std::string& accuracy_note() const { return source_->plan().accuracy_note; }
   sim::Formulation formulation() const { return source_->plan().run.formulation; }
+  // The tolerance the run uses (planned when it started; a view change since does not re-plan it).
+  double tolerance() const { return source_->plan().run.tol; }
 
  private:
   static std::unique_ptr<scene::FrameSource> make_source(const LiveSetup& setup);

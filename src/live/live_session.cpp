@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
@@ -11,6 +12,8 @@
 #include "job/schema.hpp"
 #include "live/camera_control.hpp"
 #include "live/job_file.hpp"
+#include "render/framebuffer.hpp"
+#include "render/imgui_context_scope.hpp"
 
 namespace epviz::live {
 namespace {
@@ -19,6 +22,11 @@ constexpr double kFixedFrameSeconds = 1.0 / 30.0;
 // A frame after a long pause must not jump the simulation ahead.
 constexpr double kMaxFrameSeconds = 0.1;
 constexpr int kSettleFrames = 3;
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
 
 bool inside(const render::Viewport& v, float x, float y) {
   return x >= float(v.x) && y >= float(v.y) && x < float(v.x + v.width) &&
@@ -43,8 +51,14 @@ void LiveSession::resize(int width, int height) {
     po.builtin_font = options_.builtin_font;
     painter_ = std::make_unique<paint::FramePainter>(gl_, width, height, po);
     render::GuiInput::configure(painter_->gui().context());
+    render::ImGuiContextScope scope(painter_->gui().context());
+    base_font_scale_ = ImGui::GetIO().FontGlobalScale;
+    base_style_ = std::make_unique<ImGuiStyle>(ImGui::GetStyle());
   } else {
     painter_->resize(width, height);
+    // ImGui finds the window under the pointer from the last frame's layout:
+    // lay the panels out at the new size before applying input given in it.
+    hold_input_frames_ = std::max(hold_input_frames_, 1);
   }
   settle_frames_ = kSettleFrames;
 }
@@ -115,11 +129,22 @@ const render::RgbaImage& LiveSession::render() {
   const double dt = wall_seconds_since_last_frame();
   render::ImGuiOverlay& gui = painter_->gui();
   gui.set_delta_time(float(dt));
+  if (view_scale_ != applied_view_scale_) {
+    // Text, paddings and spacing in proportion, so that a control lies
+    // where the page, which stretches the frame, expects it at any scale.
+    render::ImGuiContextScope scope(gui.context());
+    ImGui::GetIO().FontGlobalScale = base_font_scale_ * float(view_scale_);
+    ImGui::GetStyle() = *base_style_;
+    ImGui::GetStyle().ScaleAllSizes(float(view_scale_));
+    applied_view_scale_ = view_scale_;
+  }
   if (hold_input_frames_ > 0)
     --hold_input_frames_;
   else
     gui_input_.apply(gui.context(), [this](const render::InputEvent& e) { observe(e); });
+  const auto simulate_start = Clock::now();
   scene_.update(dt);
+  stages_.simulate_ms = ms_since(simulate_start);
   const scene::Frame& frame = scene_.frame();
   // The scene moves right of the expanded panel when the window is wide
   // enough to keep most of it; in a narrow window the panel floats over it.
@@ -132,6 +157,7 @@ const render::RgbaImage& LiveSession::render() {
                             : render::Viewport{reserved, 0, width_ - reserved, height_};
 
   PanelActions actions;
+  const auto draw_start = Clock::now();
   const render::RgbaImage& image = painter_->paint(frame, [&] {
     actions = panel_.draw(scene_, render::Viewport{0, 0, width_, height_});
     const bool popup_open =
@@ -140,6 +166,8 @@ const render::RgbaImage& LiveSession::render() {
     if (popup_open && !popup_was_open_) hold_input_frames_ = 2;
     popup_was_open_ = popup_open;
   });
+  stages_.read_back_ms = render::last_read_back_ms();
+  stages_.draw_ms = std::max(0.0, ms_since(draw_start) - stages_.read_back_ms);
   if (panel_.occupied_width() != panel_px)
     settle_frames_ = kSettleFrames;  // lay the scene out again
   if (settle_frames_ > 0) --settle_frames_;
@@ -209,19 +237,27 @@ void LiveSession::save_frame() {
 }
 
 void LiveSession::save_job() {
-  const LiveSetup& setup = scene_.setup();
-  const LiveMoment moment{scene_.time(), live_tolerance(setup)};
+  // The picture as seen: this view's size (the scene's part of it is what a render draws).
+  LiveSetup setup = scene_.setup();
+  // The page's size: the server may be rendering it smaller just now (adaptive resolution).
+  setup.scene.width = int(std::lround(width_ / view_scale_));
+  setup.scene.height = int(std::lround(height_ / view_scale_));
+  // The tolerance the run was planned with: a zoom since then changes what
+  // live_tolerance would choose for the setup, not what was run.
+  std::optional<double> tolerance;
+  if (live_tolerance(scene_.setup())) tolerance = scene_.tolerance();
+  const LiveMoment moment{scene_.time(), tolerance};
   const job::JobDocument job = job_document(setup, panel_.save_name(), moment);
   const std::string text = job::write_job(job).dump(2) + "\n";
   deliver({panel_.save_name() + ".json", "application/json",
            std::vector<std::uint8_t>(text.begin(), text.end())});
-  // Render jobs have no start time: say where the moment seen lies in the video.
+  // Render jobs have no start time; the live run started at t = 0 too.
   if (moment.time > 0) {
     char note[200];
     std::snprintf(note, sizeof note,
-                  "the job runs from t = 0 (jobs have no start time): t = %.3f is at %.1f s of "
-                  "its video, which ends at t = %.3f",
-                  moment.time, moment.time / std::max(setup.speed, 1e-9), *job.simulation.t_end);
+                  "the job runs from t = 0, where this run started, to t = %.3f, the moment "
+                  "shown: %.1f s of video at the live speed",
+                  moment.time, job.scene.duration);
     notices_.push_back(note);
   }
 }

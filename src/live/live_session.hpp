@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <imgui.h>
+
 #include "live/control_panel.hpp"
 #include "live/live_scene.hpp"
 #include "paint/frame_painter.hpp"
@@ -40,12 +42,14 @@ class LiveSession : public serve::Session {
   ~LiveSession() override;
 
   void resize(int width, int height) override;
+  void set_view_scale(double scale) override { view_scale_ = scale; }
   void input(const render::InputEvent& event) override;
   bool wants_frame() const override;
   const render::RgbaImage& render() override;
   std::vector<serve::Download> take_downloads() override;
   std::vector<std::string> take_notices() override;
   std::string controls_json() const override;
+  serve::RenderStages last_render_stages() const override { return stages_; }
 
   const LiveScene& scene() const { return scene_; }
   const ControlPanel& panel() const { return panel_; }
@@ -82,6 +86,14 @@ class LiveSession : public serve::Session {
   std::vector<serve::Download> downloads_;
   std::vector<std::string> notices_;
   std::optional<std::chrono::steady_clock::time_point> last_frame_;
+  serve::RenderStages stages_;  // of the last render()
+  // The server's scale of this view (set_view_scale) and the interface's
+  // own text scale at full size: the panels and labels are drawn at their
+  // product, so they keep their size on the page at any scale.
+  double view_scale_ = 1.0;
+  double applied_view_scale_ = 1.0;
+  float base_font_scale_ = 1.0f;
+  std::unique_ptr<ImGuiStyle> base_style_;  // the style at full size (paddings, spacing, ...)
 };
 
 }  // namespace epviz::live

@@ -1,6 +1,7 @@
 #include "render/framebuffer.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -8,6 +9,8 @@
 
 namespace epviz::render {
 namespace {
+
+thread_local double read_back_ms = 0.0;
 
 void check_complete(const char* which) {
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
@@ -100,8 +103,12 @@ RgbaImage OffscreenFramebuffer::read_pixels_rgba() const {
   return image;
 }
 
+double last_read_back_ms() { return read_back_ms; }
+
 void OffscreenFramebuffer::read_pixels_rgba(RgbaImage& image) const {
   resolve();
+  glFinish();
+  const auto start = std::chrono::steady_clock::now();
   image.width = width_;
   image.height = height_;
   const std::size_t row = static_cast<std::size_t>(width_) * 4;
@@ -120,6 +127,8 @@ void OffscreenFramebuffer::read_pixels_rgba(RgbaImage& image) const {
     std::memcpy(top, bottom, row);
     std::memcpy(bottom, swap.data(), row);
   }
+  read_back_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace epviz::render

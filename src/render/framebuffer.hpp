@@ -7,6 +7,12 @@
 
 namespace epviz::render {
 
+// How long this thread's last read_pixels_rgba took, in ms: from the moment
+// GL had finished drawing (it waits for that first, untimed, so that drawing
+// on a deferred rasteriser is not counted here) through the copy and the row
+// flip. The live server reports it as a stage of its own.
+double last_read_back_ms();
+
 class OffscreenFramebuffer {
  public:
   // samples <= 1 disables multisampling; larger values are clamped to GL_MAX_SAMPLES.

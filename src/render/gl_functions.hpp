@@ -37,6 +37,7 @@
   X(PFNGLDRAWELEMENTSBASEVERTEXPROC, glDrawElementsBaseVertex)                 \
   X(PFNGLENABLEPROC, glEnable)                                                 \
   X(PFNGLENABLEVERTEXATTRIBARRAYPROC, glEnableVertexAttribArray)               \
+  X(PFNGLFINISHPROC, glFinish)                                                 \
   X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, glFramebufferRenderbuffer)               \
   X(PFNGLGENBUFFERSPROC, glGenBuffers)                                         \
   X(PFNGLGENFRAMEBUFFERSPROC, glGenFramebuffers)                               \
@@ -109,6 +110,7 @@
 #define glDrawElementsBaseVertex epviz_glDrawElementsBaseVertex
 #define glEnable epviz_glEnable
 #define glEnableVertexAttribArray epviz_glEnableVertexAttribArray
+#define glFinish epviz_glFinish
 #define glFramebufferRenderbuffer epviz_glFramebufferRenderbuffer
 #define glGenBuffers epviz_glGenBuffers
 #define glGenFramebuffers epviz_glGenFramebuffers

@@ -116,6 +116,10 @@ void HttpSession::on_request(beast::error_code ec) {
   }
   if (request.method() != http::verb::get)
     return respond(request, http::status::method_not_allowed, "text/plain", "only GET is served\n");
+  if (path == "/stats")
+    // The counters and where frames' time goes; harmless to show, and behind the same Host check.
+    return respond(request, http::status::ok, "application/json",
+                   stats_json(context_.counters).dump() + "\n");
   if (path != "/")
     return respond(request, http::status::not_found, "text/plain", "not found: " + path + "\n");
   std::optional<std::string> page = read_file(context_.options.page);

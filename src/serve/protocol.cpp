@@ -223,7 +223,13 @@ std::vector<std::uint8_t> encode_frame_message(const FrameInfo& info,
                  {"height", info.height},
                  {"mime", info.mime},
                  {"render_ms", info.render_ms},
+                 {"simulate_ms", info.stages.simulate_ms},
+                 {"draw_ms", info.stages.draw_ms},
+                 {"read_back_ms", info.stages.read_back_ms},
                  {"encode_ms", info.encode_ms}};
+  if (info.written_frame > 0)
+    header["written"] = {
+        {"frame", info.written_frame}, {"queue_ms", info.queue_ms}, {"send_ms", info.send_ms}};
   // A session's own JSON: parsed so that a malformed one is dropped, not sent.
   if (!info.controls_json.empty()) {
     json controls = json::parse(info.controls_json, nullptr, /*allow_exceptions=*/false);

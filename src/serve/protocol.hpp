@@ -67,9 +67,16 @@ struct FrameInfo {
   std::uint64_t seq = 0;   // last input seq applied before rendering, 0 if none
   int width = 0;
   int height = 0;
-  std::string mime;  // "image/jpeg" or "image/png"
-  double render_ms = 0.0;
+  std::string mime;        // "image/jpeg" or "image/png"
+  double render_ms = 0.0;  // the session's render(): simulate + draw + read back
+  RenderStages stages;     // render_ms split as the session measured it
   double encode_ms = 0.0;
+  // The queue and send times of the newest earlier frame whose write had
+  // completed (`written_frame`, 0: none yet); this frame's are not known
+  // when its header is written.
+  std::int64_t written_frame = 0;
+  double queue_ms = 0.0;
+  double send_ms = 0.0;
   std::string controls_json;  // the session's named control rectangles (a JSON object), or ""
 };
 std::vector<std::uint8_t> encode_frame_message(const FrameInfo& info,

@@ -21,6 +21,15 @@ constexpr int min_view_pixels = 16;
 
 int scaled(int size, double scale) { return std::max(min_view_pixels, int(size * scale)); }
 
+// Adaptive resolution changes the detail in steps of this (fewer sizes, fewer reallocations).
+constexpr double detail_step = 1.0 / 16.0;
+// Frames averaged (a plain mean) before the detail is judged again.
+constexpr int frames_to_judge = 4;
+// Below this share of the budget a frame is cheap enough to add detail.
+constexpr double cheap_share = 0.5;
+// Sizes of the newest frames sent, enough to cover every frame in flight.
+constexpr std::size_t sent_sizes_kept = 16;
+
 std::string describe_current_exception() {
   try {
     throw;
@@ -68,7 +77,7 @@ void RenderLoop::run() {
     if (hub_.stop_requested()) break;
     // After a frame, go round again at once (a playing session wants the
     // next); otherwise sleep until a message, an ack or a connection arrives.
-    if (!rendered && !hub_.wait_for_work()) break;
+    if (!rendered && !hub_.wait_for_work(next_sharpening())) break;
   }
   clients_.clear();
 }
@@ -112,19 +121,70 @@ void RenderLoop::apply_pixel_budget() {
   const double budget = double(options_.pixel_budget);
   // The same factor for every view: each keeps its shape and its share.
   scale_ = budget > 0 && asked > budget ? std::sqrt(budget / asked) : 1.0;
-  for (Client& c : clients_) {
-    if (!c.sized) continue;
-    const int width = scaled(c.asked_width, scale_);
-    const int height = scaled(c.asked_height, scale_);
-    if (width != c.width || height != c.height)
-      guarded(c, [&] { resize_session(c, width, height); });
+  for (Client& c : clients_)
+    if (c.sized) guarded(c, [&] { fit_view(c); });
+}
+
+void RenderLoop::fit_view(Client& client) {
+  const double scale = scale_ * (client.resting ? 1.0 : client.detail);
+  const int width = scaled(client.asked_width, scale);
+  const int height = scaled(client.asked_height, scale);
+  if (width != client.width || height != client.height) resize_session(client, width, height);
+}
+
+bool RenderLoop::sharpen_if_rested(Client& client) {
+  if (client.resting || client.detail >= 1.0 || client.session->wants_frame()) {
+    client.idle_since.reset();
+    return false;
   }
+  const auto now = Clock::now();
+  if (!client.idle_since) client.idle_since = now;
+  if (now - *client.idle_since < options_.rest_before_sharpening) return false;
+  // Once more at full size: the resize makes the session want that frame.
+  client.idle_since.reset();
+  client.resting = true;
+  fit_view(client);
+  return true;
+}
+
+std::optional<Clock::time_point> RenderLoop::next_sharpening() const {
+  std::optional<Clock::time_point> first;
+  for (const Client& c : clients_)
+    if (c.idle_since && !c.finished) {
+      const Clock::time_point due = *c.idle_since + options_.rest_before_sharpening;
+      if (!first || due < *first) first = due;
+    }
+  return first;
+}
+
+void RenderLoop::adapt_detail(Client& client, double frame_cost_ms) {
+  const double budget = options_.frame_budget_ms;
+  if (budget <= 0 || client.resting) return;
+  ++client.frames_at_detail;
+  client.cost_ms += (frame_cost_ms - client.cost_ms) / double(client.frames_at_detail);
+  if (client.frames_at_detail < frames_to_judge) return;
+  double detail = client.detail;
+  const double min_detail = std::clamp(options_.min_detail, detail_step, 1.0);
+  if (client.cost_ms > budget && detail > min_detail) {
+    // Cost goes roughly with the pixels, the square of the detail; at least one step down.
+    const double aim = detail * std::sqrt(budget / client.cost_ms);
+    detail = std::max(min_detail,
+                      std::min(detail - detail_step, std::floor(aim / detail_step) * detail_step));
+  } else if (client.cost_ms < cheap_share * budget && detail < 1.0) {
+    detail = std::min(1.0, detail + detail_step);
+  }
+  client.cost_ms = 0;
+  client.frames_at_detail = 0;
+  if (detail == client.detail) return;
+  client.detail = detail;
+  fit_view(client);
 }
 
 bool RenderLoop::render_if_due(Client& client) {
   bool rendered = false;
   guarded(client, [&] {
     const bool room = client.link->frames_in_flight() < options_.max_frames_in_flight;
+    if (client.sized && room) sharpen_if_rested(client);
     if (client.sized && room && client.session->wants_frame()) {
       send_frame(client);
       rendered = true;
@@ -157,20 +217,43 @@ void RenderLoop::apply(Client& client, const ClientMessage& message) {
           client.sized = true;
           // At once, in order with the input around it, at the last round's
           // scale; apply_pixel_budget then corrects every view's scale.
-          resize_session(client, scaled(width, scale_), scaled(height, scale_));
+          fit_view(client);
         } else if constexpr (std::is_same_v<T, render::InputEvent>) {
-          record(client, encode_client_message(message));
+          if (client.resting) {
+            // Moving again: back to the detail the motion had.
+            client.resting = false;
+            fit_view(client);
+          }
+          // Recorded as the session gets it, so a replay makes the same calls.
+          const render::InputEvent event = in_session_pixels(client, m);
+          record(client, encode_client_message(event));
           if (m.seq != 0) client.last_seq = m.seq;
-          client.session->input(m);
+          client.session->input(event);
         }
         // Acks never reach the inbox: the network thread records them directly.
       },
       message);
 }
 
+render::InputEvent RenderLoop::in_session_pixels(const Client& client,
+                                                 render::InputEvent event) const {
+  // The page gives positions in the pixels of the frame it shows, the last
+  // one it acknowledged (its ack goes out before any later event): when the
+  // session has been resized since, they are scaled to its size.
+  const std::int64_t shown = client.link->frames_acked;
+  const auto it = std::find_if(client.sent_sizes.rbegin(), client.sent_sizes.rend(),
+                               [&](const SentSize& s) { return s.frame <= shown; });
+  if (it == client.sent_sizes.rend() || (it->width == client.width && it->height == client.height))
+    return event;
+  event.x *= float(client.width) / float(it->width);
+  event.y *= float(client.height) / float(it->height);
+  return event;
+}
+
 void RenderLoop::resize_session(Client& client, int width, int height) {
   // Recorded as the session gets it (clamped, scaled), so a replay makes the same calls.
   record(client, encode_client_message(Resize{width, height}));
+  client.session->set_view_scale(double(height) / double(std::max(1, client.asked_height)));
   client.session->resize(width, height);
   client.width = width;
   client.height = height;
@@ -181,6 +264,8 @@ void RenderLoop::send_frame(Client& client) {
   const auto render_start = Clock::now();
   const render::RgbaImage& image = client.session->render();
   const double render_ms = ms_since(render_start);
+  RenderStages stages = client.session->last_render_stages();
+  if (stages.simulate_ms + stages.draw_ms + stages.read_back_ms <= 0) stages.draw_ms = render_ms;
   const auto encode_start = Clock::now();
   EncodedImage encoded = encoder_.encode(image);
   FrameInfo info;
@@ -190,14 +275,27 @@ void RenderLoop::send_frame(Client& client) {
   info.height = image.height;
   info.mime = encoded.mime;
   info.render_ms = render_ms;
+  info.stages = stages;
   info.encode_ms = ms_since(encode_start);
+  const ConnectionLink::WriteTiming written = client.link->last_written();
+  info.written_frame = written.frame;
+  info.queue_ms = written.queue_ms;
+  info.send_ms = written.send_ms;
   info.controls_json = client.session->controls_json();
+  StageTimes& times = counters_.stages;
+  times.record(Stage::simulate, stages.simulate_ms);
+  times.record(Stage::draw, stages.draw_ms);
+  times.record(Stage::read_back, stages.read_back_ms);
+  times.record(Stage::encode, info.encode_ms);
   // Counted before it is handed over, so an ack can never name a frame that
   // is not yet counted as sent.
   client.link->frames_sent = info.frame;
+  client.sent_sizes.push_back({info.frame, image.width, image.height});
+  if (client.sent_sizes.size() > sent_sizes_kept) client.sent_sizes.pop_front();
   ++counters_.frames_sent;
   if (client.width < client.asked_width) ++counters_.downscaled_frames;
   send(client, encode_frame_message(info, encoded.bytes), info.frame);
+  adapt_detail(client, render_ms + info.encode_ms);
 }
 
 void RenderLoop::send(const Client& client, std::vector<std::uint8_t> message, std::int64_t frame) {

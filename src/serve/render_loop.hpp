@@ -7,9 +7,12 @@
 // the views together ask for more, every view is rendered smaller by the same
 // factor, so a round takes bounded time and every connection keeps a frame
 // rate however many large views are open.
+#include <chrono>
 #include <cstdint>
+#include <deque>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "serve/image_encoder.hpp"
@@ -31,6 +34,10 @@ class RenderLoop {
   void run();
 
  private:
+  struct SentSize {
+    std::int64_t frame;
+    int width, height;
+  };
   struct Client {
     std::shared_ptr<ConnectionLink> link;
     std::unique_ptr<Session> session;
@@ -40,6 +47,14 @@ class RenderLoop {
     std::uint64_t last_seq = 0;             // of the last input event applied
     bool finished = false;                  // remove (and destroy the session) after this pass
     bool recorded = false;                  // its messages go to options.record_path
+    // Adaptive resolution (ServerOptions::frame_budget_ms): the scale of each
+    // side while the picture moves, and whether it was sharpened at rest.
+    double detail = 1.0;
+    bool resting = false;
+    std::optional<std::chrono::steady_clock::time_point> idle_since;  // smaller, no frame wanted
+    double cost_ms = 0.0;             // average render + encode time at this detail
+    int frames_at_detail = 0;         // frames averaged into cost_ms
+    std::deque<SentSize> sent_sizes;  // the newest frames' sizes, oldest first
   };
 
   // Each step for one connection; a session that throws ends its connection only.
@@ -49,7 +64,14 @@ class RenderLoop {
   template <class Step>
   void guarded(Client& client, Step&& step);
   void apply(Client& client, const ClientMessage& message);
+  render::InputEvent in_session_pixels(const Client& client, render::InputEvent event) const;
   void resize_session(Client& client, int width, int height);
+  void fit_view(Client& client);  // the size from the page's, the budget's scale and the detail
+  void adapt_detail(Client& client, double frame_cost_ms);
+  // Sharpens a view that has rested long enough; true when it did.
+  bool sharpen_if_rested(Client& client);
+  // When the earliest view at rest is due to be sharpened, if any.
+  std::optional<std::chrono::steady_clock::time_point> next_sharpening() const;
   void send_frame(Client& client);
   void send(const Client& client, std::vector<std::uint8_t> message, std::int64_t frame = 0);
   void record(const Client& client, const std::string& line);

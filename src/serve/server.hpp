@@ -38,6 +38,17 @@ struct ServerOptions {
   // smaller by one factor, so no connection waits long for its frame. The
   // default is two 3840x2160 views; 0: no budget.
   long pixel_budget = 2L * 3840 * 2160;
+  // Adaptive resolution: while a connection's frames take longer than this
+  // to render and encode (the average of the last few), its view is rendered
+  // smaller, down to min_detail of each side (the page stretches it), and
+  // larger again when they get cheap; when the picture rests (the session
+  // wants no frame) it is rendered once more at full size, as map viewers
+  // sharpen a map. 0: off (always full size within the pixel budget).
+  double frame_budget_ms = 0.0;
+  double min_detail = 0.5;
+  // How long the picture must have rested before it is sharpened: a pointer
+  // that pauses between moves does not pay for a full-size frame each time.
+  std::chrono::milliseconds rest_before_sharpening{250};
   ImageFormat image_format = ImageFormat::jpeg;
   int jpeg_quality = 85;
   // One line per event worth logging (connections, closes and their reasons).
@@ -56,7 +67,7 @@ struct ServerStats {
   long outbox_bytes = 0;       // waiting to be written now, all connections together
   long outbox_bytes_peak = 0;  // the most that ever waited
   long outbox_overflows = 0;   // connections dropped for not reading
-  long downscaled_frames = 0;  // frames rendered smaller than asked to keep the pixel budget
+  long downscaled_frames = 0;  // frames rendered smaller than asked (pixel budget, frame budget)
 };
 
 class Server {

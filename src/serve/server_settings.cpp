@@ -14,6 +14,7 @@ ServerOptions server_options(const ServerSettings& s) {
   so.bind = s.bind;
   so.port = static_cast<unsigned short>(io::parse_integer("--port", s.port, 0, 65535));
   so.jpeg_quality = int(io::parse_integer("--quality", s.quality, 1, 100));
+  so.frame_budget_ms = double(io::parse_integer("--frame-budget", s.frame_budget, 0, 1000));
   // A page asks for its view's size; it gets at most this (a 16384^2 view
   // would be a 1 GiB framebuffer per page), and all pages together are drawn
   // within two such views a round (ServerOptions::pixel_budget).

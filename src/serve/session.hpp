@@ -25,6 +25,16 @@ struct Download {
   std::vector<std::uint8_t> bytes;
 };
 
+// How long the parts of the last render() took, as the session measured
+// them (simulate: advancing the run; draw: issuing the picture; read back:
+// copying it out of GL). Zero where a session does not tell; the server then
+// counts all of render() as draw.
+struct RenderStages {
+  double simulate_ms = 0.0;
+  double draw_ms = 0.0;
+  double read_back_ms = 0.0;
+};
+
 class Session {
  public:
   virtual ~Session() = default;
@@ -32,6 +42,11 @@ class Session {
   // The browser's view size in frame pixels (called before the first frame,
   // and whenever the page is resized). Sizes are already clamped by the server.
   virtual void resize(int width, int height) = 0;
+  // The view is rendered at `scale` of the page's size (the pixel budget or
+  // adaptive resolution; 1: full size), called before the resize that
+  // applies it. A session whose interface has a fixed size in pixels scales
+  // it by this, so that the page shows it the same size at every scale.
+  virtual void set_view_scale(double scale) { (void)scale; }
   // One input event; positions are in the pixels of the frames this session renders.
   virtual void input(const render::InputEvent& event) = 0;
   // Whether the next frame could differ from the last one rendered: playing,
@@ -41,6 +56,7 @@ class Session {
   // Renders the next frame (advancing the simulation when playing). The
   // image stays valid until the next call.
   virtual const render::RgbaImage& render() = 0;
+  virtual RenderStages last_render_stages() const { return {}; }
   // Files and one-line messages for the user produced since the last call.
   virtual std::vector<Download> take_downloads() { return {}; }
   virtual std::vector<std::string> take_notices() { return {}; }

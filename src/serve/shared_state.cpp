@@ -20,6 +20,28 @@ std::vector<ClientMessage> ConnectionLink::take(bool& resume) {
   return taken;
 }
 
+void ConnectionLink::note_written(const WriteTiming& timing) {
+  std::lock_guard lock(mutex_);
+  last_written_ = timing;
+}
+
+ConnectionLink::WriteTiming ConnectionLink::last_written() const {
+  std::lock_guard lock(mutex_);
+  return last_written_;
+}
+
+nlohmann::json stats_json(const ServerCounters& c) {
+  return {{"connections_accepted", c.connections_accepted.load()},
+          {"connections_open", c.connections_open.load()},
+          {"frames_sent", c.frames_sent.load()},
+          {"protocol_errors", c.protocol_errors.load()},
+          {"outbox_bytes", c.outbox_bytes.load()},
+          {"outbox_bytes_peak", c.outbox_bytes_peak.load()},
+          {"outbox_overflows", c.outbox_overflows.load()},
+          {"downscaled_frames", c.downscaled_frames.load()},
+          {"stages", c.stages.summary()}};
+}
+
 bool ConnectionLink::acknowledge(std::int64_t frame) {
   if (frame > frames_sent.load()) return false;
   std::int64_t current = frames_acked.load();
@@ -54,9 +76,13 @@ void RenderHub::request_stop() {
   wake_.notify_one();
 }
 
-bool RenderHub::wait_for_work() {
+bool RenderHub::wait_for_work(std::optional<std::chrono::steady_clock::time_point> until) {
   std::unique_lock lock(mutex_);
-  wake_.wait(lock, [&] { return dirty_ || stopping_; });
+  const auto woken = [&] { return dirty_ || stopping_; };
+  if (until)
+    wake_.wait_until(lock, *until, woken);
+  else
+    wake_.wait(lock, woken);
   dirty_ = false;
   return !stopping_;
 }

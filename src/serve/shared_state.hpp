@@ -5,15 +5,18 @@
 // never appear here; only the render thread touches them.
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "serve/protocol.hpp"
+#include "serve/stage_times.hpp"
 
 namespace epviz::serve {
 
@@ -50,8 +53,12 @@ struct ServerCounters {
   std::atomic<long> outbox_bytes{0};       // waiting to be written, all connections together
   std::atomic<long> outbox_bytes_peak{0};  // the most outbox_bytes has been
   std::atomic<long> outbox_overflows{0};   // connections dropped for a full outbox
-  std::atomic<long> downscaled_frames{0};  // frames rendered smaller than asked (pixel budget)
+  std::atomic<long> downscaled_frames{0};  // rendered smaller than asked (pixel or frame budget)
+  StageTimes stages;                       // each frame's stages, all connections together
 };
+
+// What `GET /stats` answers: the counters and the stages' medians (docs/serve.md).
+nlohmann::json stats_json(const ServerCounters& counters);
 
 // The network side of one connection as the render thread sees it. Every
 // call may come from any thread; it only queues work for the network thread.
@@ -91,6 +98,18 @@ class ConnectionLink {
   // Network thread: records an ack (acks never go backwards); false for an
   // ack of a frame never sent, which only a broken or hostile page sends.
   bool acknowledge(std::int64_t frame);
+
+  // How long the newest frame whose write completed waited in the outbox
+  // (queue) and took to write (send). The network thread notes it; the
+  // render thread puts it in the next frame's header, since a frame's own
+  // header is written before either is known.
+  struct WriteTiming {
+    std::int64_t frame = 0;  // 0: none written yet
+    double queue_ms = 0.0;
+    double send_ms = 0.0;
+  };
+  void note_written(const WriteTiming& timing);
+  WriteTiming last_written() const;
   // Frames the page cannot have shown yet. An ack counts only up to the last
   // frame whose write completed: a page cannot have shown a frame still in
   // the server's outbox, and counting a forged ack would let the outbox grow.
@@ -99,9 +118,10 @@ class ConnectionLink {
   }
 
  private:
-  std::mutex mutex_;
+  mutable std::mutex mutex_;
   std::vector<ClientMessage> inbox_;  // guarded by mutex_
   bool paused_ = false;               // guarded by mutex_
+  WriteTiming last_written_;          // guarded by mutex_
 };
 
 // Where the network thread hands new connections and wake-ups to the render
@@ -113,8 +133,9 @@ class RenderHub {
   void request_stop();
 
   // Render thread: blocks until notify(), add() or request_stop() happened
-  // since the last call (returns at once if one did); false once stopping.
-  bool wait_for_work();
+  // since the last call (returns at once if one did), or until `until`
+  // when given; false once stopping.
+  bool wait_for_work(std::optional<std::chrono::steady_clock::time_point> until = {});
   bool stop_requested();
   std::vector<std::shared_ptr<ConnectionLink>> take_new_links();
 

@@ -173,8 +173,9 @@ void WebSocketConnection::protocol_error(const std::string& problem) {
 }
 
 void WebSocketConnection::send(std::vector<std::uint8_t> message, std::int64_t frame) {
-  net::post(ws_.get_executor(), [self = shared_from_this(), message = std::move(message),
-                                 frame]() mutable {
+  const auto handed_over = std::chrono::steady_clock::now();  // the queue stage starts here
+  net::post(ws_.get_executor(), [self = shared_from_this(), message = std::move(message), frame,
+                                 handed_over]() mutable {
     if (self->closing_ || self->finished_) return;
     self->outbox_bytes_ += message.size();
     const long total = self->context_.counters.outbox_bytes += long(message.size());
@@ -182,7 +183,7 @@ void WebSocketConnection::send(std::vector<std::uint8_t> message, std::int64_t f
     while (total > peak &&
            !self->context_.counters.outbox_bytes_peak.compare_exchange_weak(peak, total)) {
     }
-    self->outbox_.push_back({std::move(message), frame});
+    self->outbox_.push_back({std::move(message), frame, handed_over});
     self->watch_outbox();
     self->write_next();
   });
@@ -233,6 +234,7 @@ void WebSocketConnection::close(std::uint16_t code, std::string reason) {
 void WebSocketConnection::write_next() {
   if (writing_ || outbox_.empty() || closing_ || finished_) return;
   writing_ = true;
+  write_started_ = std::chrono::steady_clock::now();
   ws_.binary(true);
   ws_.async_write(net::buffer(outbox_.front().bytes),
                   [self = shared_from_this()](beast::error_code ec, std::size_t) {
@@ -243,6 +245,7 @@ void WebSocketConnection::write_next() {
                     self->release_outbox_bytes(written.bytes.size());
                     self->watch_outbox();
                     if (!ec && written.frame > 0) {
+                      self->note_written(written);
                       // Only now may an ack of this frame open the window.
                       self->link_->frames_written = written.frame;
                       self->context_.hub.notify();
@@ -255,6 +258,16 @@ void WebSocketConnection::write_next() {
                     }
                     self->write_next();
                   });
+}
+
+void WebSocketConnection::note_written(const Outgoing& written) {
+  using ms = std::chrono::duration<double, std::milli>;
+  const ConnectionLink::WriteTiming timing{
+      written.frame, ms(write_started_ - written.handed_over).count(),
+      ms(std::chrono::steady_clock::now() - write_started_).count()};
+  context_.counters.stages.record(Stage::queue, timing.queue_ms);
+  context_.counters.stages.record(Stage::send, timing.send_ms);
+  link_->note_written(timing);
 }
 
 void WebSocketConnection::start_close(std::uint16_t code, std::string reason) {

@@ -4,6 +4,7 @@
 // thread's messages one at a time (Beast allows a single write in flight, so
 // they wait in an outbox, bounded in bytes), and closes with the protocol's
 // codes.
+#include <chrono>
 #include <cstdint>
 #include <deque>
 #include <memory>
@@ -63,13 +64,16 @@ class WebSocketConnection : public ConnectionOutlet,
   boost::beast::flat_buffer buffer_;
   struct Outgoing {
     std::vector<std::uint8_t> bytes;
-    std::int64_t frame = 0;  // 0: not a frame
+    std::int64_t frame = 0;                             // 0: not a frame
+    std::chrono::steady_clock::time_point handed_over;  // when the render thread sent it
   };
-  std::deque<Outgoing> outbox_;  // front() is being written while writing_
+  std::deque<Outgoing> outbox_;                // front() is being written while writing_
+  void note_written(const Outgoing& written);  // a frame's queue and send times
   std::size_t outbox_bytes_ = 0;
   boost::asio::steady_timer overflow_timer_;
   bool overflow_armed_ = false;
   bool writing_ = false;
+  std::chrono::steady_clock::time_point write_started_;  // of outbox_.front(), while writing_
   bool reading_ = false;
   bool read_paused_ = false;  // the link's inbox is full
   bool closing_ = false;      // we sent (or are sending) a close frame

@@ -5,7 +5,11 @@
 //   node tests/e2e/measure.mjs path/to/epviz [out.json|-] [job arguments...]
 //
 // Prints one JSON object {width, height, fps, latency_median_ms,
-// latency_p90_ms, samples, ...} and writes it to out.json when given.
+// latency_p90_ms, samples, ..., stages} and writes it to out.json when given;
+// `stages` holds the median of each stage of a frame while playing (the
+// server's from the frame headers, the page's decode and paint) and
+// `server_stats` what the server's /stats said at the end.
+// tests/e2e/measure.sh runs it three times and prints a table.
 // Exit codes as serve_e2e.mjs (77: skipped).
 import fs from 'node:fs';
 import { run, log, fail, sleep, frameRectToCss, epvizState } from './harness.mjs';
@@ -22,6 +26,19 @@ function percentile(sorted, q) {
   if (!sorted.length) return null;
   const i = Math.min(sorted.length - 1, Math.max(0, Math.ceil(q * sorted.length) - 1));
   return sorted[i];
+}
+
+const STAGES = ['simulate_ms', 'draw_ms', 'read_back_ms', 'encode_ms', 'queue_ms', 'send_ms', 'decode_ms', 'paint_ms', 'bytes'];
+
+// The median of each stage over the frames drawn in [a, b] (page clock).
+function stageMedians(frames, a, b) {
+  const inside = frames.filter((f) => f.at >= a && f.at <= b);
+  const out = {};
+  for (const k of STAGES) {
+    const v = inside.map((f) => f[k]).filter((x) => typeof x === 'number').sort((x, y) => x - y);
+    out[k] = round(percentile(v, 0.5), k === 'bytes' ? 0 : 2);
+  }
+  return out;
 }
 
 function round(v, digits = 1) {
@@ -45,7 +62,7 @@ await run({
   name: 'measure.mjs',
   binary,
   serverArgs,
-  async body({ page }) {
+  async body({ page, url }) {
     await sleep(300);   // the layout of the latest frame (the first frames may precede it)
     const latest = (await epvizState(page)).header;
     const controls = latest.controls || {};
@@ -84,12 +101,17 @@ await run({
     log(`measure: paused; ${PAUSED_MOVES} pointer moves`);
     const paused = await moveSamples(page, point, PAUSED_MOVES);
 
+    const frames = await page.evaluate(() => window.epviz.stages.slice());
+    const stats = await page.evaluate(async (u) => (await fetch(u + 'stats')).json(), url);
+
     const sorted = playing.slice().sort((a, b) => a - b);
     const sortedPaused = paused.slice().sort((a, b) => a - b);
     const h = state.header;
+    const viewSize = await page.evaluate(() => [innerWidth * devicePixelRatio, innerHeight * devicePixelRatio]);
     const result = {
-      width: h.width,
-      height: h.height,
+      width: viewSize[0],
+      height: viewSize[1],
+      last_frame: `${h.width}x${h.height}`,  // smaller than the view while adaptive resolution holds it down
       fps: round(fps),
       latency_median_ms: round(percentile(sorted, 0.5)),
       latency_p90_ms: round(percentile(sorted, 0.9)),
@@ -99,6 +121,8 @@ await run({
       paused_samples: sortedPaused.length,
       mime: h.mime,
       measure_s: round((t1 - t0) / 1000, 2),
+      stages: stageMedians(frames, t0, t1),
+      server_stats: stats,
     };
     if (sorted.length < MOVES / 2) fail(`only ${sorted.length} of ${MOVES} pointer moves got a latency: ${JSON.stringify(result)}`);
     const text = JSON.stringify(result);

@@ -4,6 +4,7 @@
 // that renders what was seen, and a panel that fits a 1280x720 view.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -119,13 +120,18 @@ TEST(PanelState, SaveJobKeepsTheTimeTheCameraAndTheLiveTolerance) {
   std::snprintf(printed, sizeof printed, "tol %.2g", job["simulation"]["tol"].get<double>());
   EXPECT_EQ(d.session->scene().accuracy_note().rfind(printed, 0), 0u)
       << printed << " vs the live " << d.session->scene().accuracy_note();
-  // No start time in the format: t_end covers the time reached, at the live speed.
-  const double t_end = job["simulation"]["t_end"];
-  EXPECT_GE(t_end, t);
-  EXPECT_NEAR(t_end / job["duration"].get<double>(), s.speed, 1e-9 * s.speed);
+  // What was watched: from t = 0, where the run started, to the moment
+  // shown, at the live speed (not a t_end extrapolated beyond it).
+  EXPECT_DOUBLE_EQ(job["simulation"]["t_end"].get<double>(), t);
+  // Frames 1/fps apart at the live speed, the first at t = 0, the last at t.
+  const double fps = job["fps"];
+  const double frames = std::round(fps * job["duration"].get<double>());
+  EXPECT_NEAR((frames - 1) / fps * s.speed, t, 1e-9 * t);
+  EXPECT_EQ(job["width"], 960);
+  EXPECT_EQ(job["height"], 540);
   bool said = false;
   for (const auto& n : d.session->take_notices())
-    said |= n.find("no start time") != std::string::npos;
+    said |= n.find("from t = 0, where this run started") != std::string::npos;
   EXPECT_TRUE(said) << "the user is not told the job starts at t = 0";
 }
 

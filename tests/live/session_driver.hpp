@@ -36,9 +36,12 @@ inline std::uint64_t image_hash(const render::RgbaImage& image) {
 
 class SessionDriver {
  public:
-  explicit SessionDriver(SessionOptions options, int width = 960, int height = 540) {
+  // `builtin_font`: ImGui's bitmap font, pictures the same on every machine;
+  // false: the system font `epviz render` uses, for comparing with a render.
+  explicit SessionDriver(SessionOptions options, int width = 960, int height = 540,
+                         bool builtin_font = true) {
     options.fixed_clock = true;
-    options.builtin_font = true;
+    options.builtin_font = builtin_font;
     session = std::make_unique<LiveSession>(shared_gl(), std::move(options));
     session->resize(width, height);
     settle();

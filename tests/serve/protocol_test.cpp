@@ -217,7 +217,11 @@ TEST(ServeProtocol, FrameMessageHasTheDocumentedLayout) {
   info.height = 360;
   info.mime = "image/jpeg";
   info.render_ms = 1.5;
+  info.stages = {0.25, 1.0, 0.125};
   info.encode_ms = 2.25;
+  info.written_frame = 2;
+  info.queue_ms = 0.5;
+  info.send_ms = 0.75;
   const std::vector<std::uint8_t> image = {0xff, 0xd8, 0x00, 0x01};
   const auto bytes = encode_frame_message(info, image);
 
@@ -232,12 +236,27 @@ TEST(ServeProtocol, FrameMessageHasTheDocumentedLayout) {
   EXPECT_EQ(header["height"], 360);
   EXPECT_EQ(header["mime"], "image/jpeg");
   EXPECT_DOUBLE_EQ(header["render_ms"].get<double>(), 1.5);
+  EXPECT_DOUBLE_EQ(header["simulate_ms"].get<double>(), 0.25);
+  EXPECT_DOUBLE_EQ(header["draw_ms"].get<double>(), 1.0);
+  EXPECT_DOUBLE_EQ(header["read_back_ms"].get<double>(), 0.125);
   EXPECT_DOUBLE_EQ(header["encode_ms"].get<double>(), 2.25);
+  EXPECT_EQ(header["written"]["frame"], 2);
+  EXPECT_DOUBLE_EQ(header["written"]["queue_ms"].get<double>(), 0.5);
+  EXPECT_DOUBLE_EQ(header["written"]["send_ms"].get<double>(), 0.75);
   EXPECT_TRUE(std::equal(image.begin(), image.end(), bytes.begin() + 4 + n));
 
   const ServerMessage decoded = decode_server_message(bytes);
   EXPECT_EQ(decoded.header, header);
   EXPECT_EQ(decoded.payload, image);
+}
+
+TEST(ServeProtocol, FrameMessageBeforeAnyWriteHasNoWrittenTimes) {
+  FrameInfo info;
+  info.frame = 1;
+  info.width = info.height = 16;
+  info.mime = "image/png";
+  const auto header = decode_server_message(encode_frame_message(info, {})).header;
+  EXPECT_FALSE(header.contains("written"));
 }
 
 TEST(ServeProtocol, ClientMessagesSurviveEncodeAndParse) {

@@ -50,6 +50,10 @@ void FakeSession::input(const render::InputEvent& event) {
   ++inputs_;
   ++probe_->inputs;
   dirty_ = true;
+  if (event.kind == render::InputEvent::Kind::mouse_move) {
+    probe_->last_x = event.x;
+    probe_->last_y = event.y;
+  }
   if (event.kind != render::InputEvent::Kind::key || !event.down) return;
   if (event.key == "notice")
     notices_.push_back("notice after " + std::to_string(inputs_) + " inputs");
@@ -85,6 +89,15 @@ const render::RgbaImage& FakeSession::render() {
     image_.pixels[i + 3] = colour.a;
   }
   return image_;
+}
+
+void FakeSession::set_view_scale(double scale) {
+  probe_->check_thread();
+  probe_->view_scale = scale;
+}
+
+RenderStages FakeSession::last_render_stages() const {
+  return probe_->reports_stages ? fake_stages : RenderStages{};
 }
 
 std::vector<Download> FakeSession::take_downloads() {

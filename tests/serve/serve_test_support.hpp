@@ -43,6 +43,9 @@ inline const std::chrono::milliseconds expect_within = 10s * slowdown();
 // How long "nothing arrives" is watched for.
 inline constexpr auto quiet_period = 300ms;
 
+// What a fake session reports as its render stages when FakeProbe::reports_stages.
+inline constexpr RenderStages fake_stages{0.5, 2.0, 0.25};
+
 // The fake session's colour after `inputs` input events.
 glm::u8vec4 fake_colour(int inputs);
 
@@ -58,6 +61,12 @@ struct FakeProbe {
   // Simulated render cost: render() sleeps this long per million pixels
   // (sleeping, not spinning, so the cost does not depend on the machine's load).
   std::atomic<int> render_ms_per_megapixel{0};
+  // Whether the fake sessions report their render stages (fake_stages) or,
+  // like a session that does not measure them, none.
+  std::atomic<bool> reports_stages{false};
+  // The last pointer position a session got, and the last view scale it was told.
+  std::atomic<float> last_x{-1.0f}, last_y{-1.0f};
+  std::atomic<double> view_scale{1.0};
   // A key event "block" holds the render thread in input() until this is set.
   std::atomic<bool> blocked{false};  // a session is waiting in input("block")
   std::promise<void> unblock;
@@ -82,6 +91,8 @@ class FakeSession : public Session {
   std::vector<Download> take_downloads() override;
   std::vector<std::string> take_notices() override;
   std::string controls_json() const override;
+  RenderStages last_render_stages() const override;
+  void set_view_scale(double scale) override;
 
  private:
   std::shared_ptr<FakeProbe> probe_;

@@ -14,12 +14,14 @@ namespace {
 TEST(ServerSettings, TextToOptions) {
   const auto o = server_options({.port = "0",
                                  .quality = "60",
+                                 .frame_budget = "25",
                                  .max_view = "1920x1080",
                                  .image = "png",
                                  .allow_origins = {"HTTP://Example.org:8000"},
                                  .record = ""});
   EXPECT_EQ(o.port, 0);
   EXPECT_EQ(o.jpeg_quality, 60);
+  EXPECT_EQ(o.frame_budget_ms, 25.0);
   EXPECT_EQ(o.max_width, 1920);
   EXPECT_EQ(o.max_height, 1080);
   EXPECT_EQ(o.pixel_budget, 2L * 1920 * 1080);
@@ -41,6 +43,8 @@ TEST(ServerSettings, MistakesNameTheirOption) {
   };
   EXPECT_EQ(error([](auto& s) { s.port = "65536"; }).rfind("--port: ", 0), 0u);
   EXPECT_EQ(error([](auto& s) { s.quality = "0"; }).rfind("--quality: ", 0), 0u);
+  EXPECT_EQ(error([](auto& s) { s.frame_budget = "-1"; }).rfind("--frame-budget: ", 0), 0u);
+  EXPECT_EQ(error([](auto& s) { s.frame_budget = "1001"; }).rfind("--frame-budget: ", 0), 0u);
   EXPECT_EQ(
       error([](auto& s) { s.max_view = "1920"; }).rfind("--max-view: expected WIDTHxHEIGHT", 0),
       0u);
