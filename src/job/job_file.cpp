@@ -1,8 +1,17 @@
 #include "job/job_file.hpp"
 
+#include <string_view>
+
 #include "job/schema_entries.hpp"
 
 namespace epviz::job {
+
+bool is_other_command_file(const std::filesystem::path& file) {
+  const auto name = file.filename().string();
+  for (const std::string_view suffix : {".sweep.json", ".section.json"})
+    if (name.size() > suffix.size() && name.ends_with(suffix)) return true;
+  return false;
+}
 
 using namespace entries;
 

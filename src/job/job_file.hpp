@@ -53,6 +53,11 @@ struct LoadedJob {
 };
 LoadedJob load_job_file(const std::filesystem::path& path);
 
+// Whether `file` is read by another command though it may sit beside render
+// jobs: a sweep (*.sweep.json, epviz sweep) or a Poincaré section
+// (*.section.json, epviz section). Directories of jobs skip these.
+bool is_other_command_file(const std::filesystem::path& file);
+
 // The keys of a gallery and of a bench-figures job, as render_job_keys() lists a single job's.
 std::vector<KeyInfo> gallery_job_keys();
 std::vector<KeyInfo> bench_job_keys();

@@ -34,7 +34,9 @@ std::vector<std::pair<RenderJob, std::string>> render_jobs_in(
     if (fs::is_directory(arg)) {
       std::vector<fs::path> files;
       for (const auto& e : fs::directory_iterator(arg))
-        if (e.is_regular_file() && e.path().extension() == ".json") files.push_back(e.path());
+        if (e.is_regular_file() && e.path().extension() == ".json" &&
+            !is_other_command_file(e.path()))
+          files.push_back(e.path());
       std::sort(files.begin(), files.end());
       if (files.empty()) throw io::BadInput(arg + ": no render jobs (*.json) in this directory");
       for (const auto& f : files) add_loaded(f, true);

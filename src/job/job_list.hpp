@@ -1,7 +1,7 @@
 #pragma once
 // The render jobs a list of paths names (`epviz check JOB...`): job files,
 // galleries (each of their jobs) and directories (their *.json files in name
-// order, bench-figures jobs skipped), each job once.
+// order; bench-figures jobs, sweeps and sections skipped), each job once.
 #include <string>
 #include <utility>
 #include <vector>

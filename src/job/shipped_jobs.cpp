@@ -1,7 +1,6 @@
 #include "job/shipped_jobs.hpp"
 
 #include <algorithm>
-#include <string_view>
 
 #include "io/bad_input.hpp"
 #include "io/data_dir.hpp"
@@ -12,15 +11,6 @@ namespace epviz::job {
 namespace fs = std::filesystem;
 
 namespace {
-
-// Files beside the render jobs that other commands read: sweeps (epviz sweep)
-// and Poincaré sections (epviz section).
-bool is_other_command_file(const fs::path& file) {
-  const auto name = file.filename().string();
-  for (const std::string_view suffix : {".sweep.json", ".section.json"})
-    if (name.size() > suffix.size() && name.ends_with(suffix)) return true;
-  return false;
-}
 
 std::string about(const LoadedJob& loaded) {
   if (loaded.bench)

@@ -23,10 +23,14 @@ class JobList : public ::testing::Test {
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
 };
 
-TEST_F(JobList, ADirectoryGivesItsJobsInNameOrderWithoutBenchJobs) {
+TEST_F(JobList, ADirectoryGivesItsJobsInNameOrderWithoutBenchSweepOrSectionFiles) {
   write("jobs/b.json", R"({"simulation": {"case": "euler"}})");
   write("jobs/a.json", R"({"simulation": {"case": "lagrange"}})");
   write("jobs/bench.json", R"({"bench": {}})");
+  // Files of other commands sit beside render jobs (render_jobs/ ships both);
+  // read as render jobs they would be refused for their keys.
+  write("jobs/chaos.sweep.json", R"({"simulation": {"case": "generic"}, "axes": []})");
+  write("jobs/k.section.json", R"({"case": "kovalevskaya", "section": {}})");
   write("jobs/notes.txt", "not a job");
   const auto jobs = render_jobs_in({path("jobs")});
   ASSERT_EQ(jobs.size(), 2u);
@@ -62,6 +66,21 @@ TEST_F(JobList, RefusesABenchJobNamedDirectlyAndAnEmptyDirectory) {
   } catch (const io::BadInput& e) {
     EXPECT_NE(std::string(e.what()).find("no render jobs (*.json)"), std::string::npos) << e.what();
   }
+}
+
+}  // namespace
+}  // namespace epviz::job
+
+namespace epviz::job {
+namespace {
+
+// docs/ci.md's recipes run `epviz check render_jobs/`: the shipped directory,
+// sweeps and sections beside the render jobs, must read as a list of jobs.
+TEST(ShippedJobList, TheShippedDirectoryReadsAsRenderJobs) {
+  const auto dir = std::filesystem::path(EPVIZ_SOURCE_DIR) / "render_jobs";
+  const auto jobs = render_jobs_in({dir.string()});
+  EXPECT_GE(jobs.size(), 6u);
+  for (const auto& [job, shown] : jobs) EXPECT_FALSE(is_other_command_file(job.file)) << shown;
 }
 
 }  // namespace
