@@ -14,6 +14,19 @@ namespace {
 
 using study::StudyRow;
 
+// A work-precision row of the "euler" case.
+study::WorkPrecisionRow wp_row(const char* method, const char* formulation, double error,
+                               double cpu_ms, long rhs_evals) {
+  study::WorkPrecisionRow r;
+  r.run.case_name = "euler";
+  r.run.method = method;
+  r.run.formulation = formulation;
+  r.error = error;
+  r.run.cpu_ms = cpu_ms;
+  r.run.rhs_evals = rhs_evals;
+  return r;
+}
+
 std::vector<StudyRow> tiny_bench() {
   std::vector<StudyRow> rows;
   for (const char* method : {"rk4", "dop853"})
@@ -87,13 +100,8 @@ TEST(BenchFigures, ChartsFromRows) {
 // and its legend does not name it.
 TEST(BenchFigures, LegendsNameOnlySeriesDrawn) {
   auto rows = tiny_bench();
-  study::WorkPrecisionRow split;
-  split.run.case_name = "euler";
-  split.run.method = "exact-split4";
-  split.run.formulation = "direct";
+  auto split = wp_row("exact-split4", "direct", 1e-6, 0.02, 0);
   split.run.adaptive = false;
-  split.error = 1e-6;
-  split.run.cpu_ms = 0.02;
   split.run.flow_evals = 400;
   rows.emplace_back(split);
   const auto figures = study::bench_figures(rows);
@@ -157,16 +165,8 @@ TEST(BenchFigures, DriftPanelPerMethodFamily) {
 TEST(BenchFigures, ColourByMethodMarkerByFormulation) {
   std::vector<StudyRow> rows;
   for (const char* f : {"direct", "riccati"})
-    for (const char* method : {"rk4", "dop853"}) {
-      study::WorkPrecisionRow r;
-      r.run.case_name = "euler";
-      r.run.method = method;
-      r.run.formulation = f;
-      r.error = 1e-6;
-      r.run.cpu_ms = 1.0;
-      r.run.rhs_evals = 100;
-      rows.emplace_back(r);
-    }
+    for (const char* method : {"rk4", "dop853"})
+      rows.emplace_back(wp_row(method, f, 1e-6, 1.0, 100));
   const auto figures = study::bench_figures(rows);
   const auto& cpu = std::get<chart::ChartSpec>(figures[0].content);
   ASSERT_EQ(cpu.series.size(), 4u);
