@@ -54,12 +54,14 @@ study::Problem job_problem(const std::string& file) {
 
 // --json may name a file in the folder that --out is about to make.
 void check_json_path(const BenchRequest& request) {
-  const fs::path json(request.json);
-  if (!request.out.empty() && !request.json.empty() && request.json.back() != '/' &&
-      !fs::exists(request.out) &&
-      fs::weakly_canonical(fs::absolute(json).parent_path()) ==
-          fs::weakly_canonical(fs::absolute(request.out)))
-    return;  // check_output_dir has checked that the folder can be made
+  if (!request.out.empty() && !request.json.empty() && request.json.back() != '/') {
+    std::error_code e1, e2, e3;
+    const bool out_missing = !fs::exists(request.out, e1) && !e1;
+    const fs::path json_dir = fs::weakly_canonical(fs::absolute(request.json).parent_path(), e2);
+    const fs::path out = fs::weakly_canonical(fs::absolute(request.out), e3);
+    if (out_missing && !e2 && !e3 && json_dir == out)
+      return;  // check_output_dir has checked that the folder can be made
+  }
   io::check_output_file("--json", request.json);
 }
 
@@ -71,8 +73,8 @@ double target_error(const BenchRequest& request) {
     throw io::BadInput("--target-error: needs --job FILE (the job the recommendation is for)");
   const double v = parse_number("--target-error", request.target_error);
   if (!(v >= 1e-13 && v <= 1.0))
-    throw io::BadInput("--target-error: " + request.target_error +
-                       " is outside 1e-13 to 1 (an error at t_end the reference can judge)");
+    throw io::BadInput("--target-error: '" + request.target_error +
+                       "' is outside 1e-13 to 1 (an error at t_end the reference can judge)");
   return v;
 }
 
