@@ -121,11 +121,13 @@ Recommendation recommend(const Problem& p, const std::vector<StudyRow>& rows, do
   out.case_name = p.name;
   out.t_end = wp_t_end(p);
   out.target_error = target_error;
+  // The job's rows: its case name and final time (a job of a preset's case
+  // shares the name with the preset's own rows, not their final time).
   std::vector<const WorkPrecisionRow*> mine;
   for (const auto* r : rows_of<WorkPrecisionRow>(rows))
-    if (r->run.case_name == p.name) mine.push_back(r);
+    if (r->run.case_name == p.name && r->run.t_end == out.t_end) mine.push_back(r);
   for (const auto* r : rows_of<ReferenceRow>(rows))
-    if (r->case_name == p.name) out.reference_self_check = r->self_check;
+    if (r->case_name == p.name && r->t_end == out.t_end) out.reference_self_check = r->self_check;
   for (const auto* r : mine)
     if (measured(*r, "epviz")) {
       ++out.compared;

@@ -75,6 +75,25 @@ TEST(Recommendation, NoneMeetsTheTargetThenTheClosest) {
   EXPECT_EQ(study::closest_to_target({}), nullptr);
 }
 
+// A job of a preset's case shares the case name with the preset's rows: the
+// recommendation takes only the rows at the job's final time.
+TEST(Recommendation, OnlyTheRowsAtTheJobsFinalTime) {
+  study::Problem p = study::preset_problem(physics::Case::euler);
+  p.t_end = 2.0;
+  auto preset = row("rk4", 1e-12, 0.001, 10);  // cheaper, but the preset's run to t = 10
+  preset.run.case_name = "euler";
+  preset.run.t_end = 10.0;
+  auto job = row("dop853", 1e-9, 1.0, 500);
+  job.run.case_name = "euler";
+  job.run.t_end = 2.0;
+  const std::vector<study::StudyRow> rows{preset, job};
+  const auto rec = study::recommend(p, rows, 1e-8);
+  ASSERT_TRUE(rec.choice.has_value());
+  EXPECT_EQ(rec.choice->run.method, "dop853");
+  EXPECT_EQ(rec.compared, 1);
+  EXPECT_TRUE(std::isfinite(rec.choice->drift));  // re-run at tol 1e-9 to t = 2
+}
+
 // On measured rows of a small body: the choice is one of the rows, meets the
 // target, and no cheaper row does; its drift is measured, not left out.
 TEST(Recommendation, OnAStudyOfABodyOfOnesOwn) {
