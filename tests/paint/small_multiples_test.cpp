@@ -38,7 +38,7 @@ std::vector<render::TextLabel> labels(const paint::FigureDrawing& d) {
 TEST(SmallMultiples, AnExtentWidensTheAxes) {
   auto low = panel("low", 1e-12, 1e-11);
   const auto alone = paint::chart_layout(low, 640, 400, kFont);
-  low.extent = {{1.0, 1e-4}};
+  low.axis_extent = {{1.0, 1e-4}};
   const auto widened = paint::chart_layout(low, 640, 400, kFont);
   EXPECT_EQ(alone.range.y_max, -11.0);
   EXPECT_EQ(widened.range.y_max, -4.0);
