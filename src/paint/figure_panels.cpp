@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <glm/vec2.hpp>
+
 namespace epviz::paint {
 namespace {
 
@@ -28,40 +30,41 @@ render::DrawList moved(const render::DrawList& list, glm::vec2 d) {
   return out;
 }
 
-}  // namespace
-
-FigureDrawing side_by_side(const std::vector<FigureDrawing>& panels, int gap) {
+// The drawings placed one after the other with `gap` pixels between them:
+// left to right (`across`) with their tops aligned, or top to bottom with
+// their left edges aligned.
+FigureDrawing placed(const std::vector<FigureDrawing>& parts, int gap, bool across) {
   FigureDrawing all;
-  int x = 0;
-  for (const auto& panel : panels) {
-    if (x > 0) x += gap;
-    for (const auto& layer : panel.layers) {
+  int at = 0;
+  for (const auto& part : parts) {
+    if (at > 0) at += gap;
+    const glm::ivec2 d = across ? glm::ivec2(at, 0) : glm::ivec2(0, at);
+    for (const auto& layer : part.layers) {
       auto clip = layer.clip;
-      if (clip) clip->x += x;
-      all.layers.push_back({moved(layer.list, {float(x), 0.0f}), clip});
+      if (clip) {
+        clip->x += d.x;
+        clip->y += d.y;
+      }
+      all.layers.push_back({moved(layer.list, glm::vec2(d)), clip});
     }
-    x += panel.width;
-    all.height = std::max(all.height, panel.height);
+    at += across ? part.width : part.height;
+    if (across)
+      all.height = std::max(all.height, part.height);
+    else
+      all.width = std::max(all.width, part.width);
   }
-  all.width = x;
+  (across ? all.width : all.height) = at;
   return all;
 }
 
+}  // namespace
+
+FigureDrawing side_by_side(const std::vector<FigureDrawing>& panels, int gap) {
+  return placed(panels, gap, true);
+}
+
 FigureDrawing stacked(const std::vector<FigureDrawing>& rows, int gap) {
-  FigureDrawing all;
-  int y = 0;
-  for (const auto& row : rows) {
-    if (y > 0) y += gap;
-    for (const auto& layer : row.layers) {
-      auto clip = layer.clip;
-      if (clip) clip->y += y;
-      all.layers.push_back({moved(layer.list, {0.0f, float(y)}), clip});
-    }
-    y += row.height;
-    all.width = std::max(all.width, row.width);
-  }
-  all.height = y;
-  return all;
+  return placed(rows, gap, false);
 }
 
 }  // namespace epviz::paint
