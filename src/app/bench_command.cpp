@@ -6,16 +6,20 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
+#include "app/cli_values.hpp"
 #include "app/gl_option.hpp"
 #include "io/atomic_file.hpp"
 #include "io/bad_input.hpp"
+#include "io/json_reader.hpp"
 #include "io/output_paths.hpp"
-#include "job/job_file.hpp"
 #include "job/resolve.hpp"
+#include "job/schema.hpp"
 #include "study/bench_json.hpp"
 #include "study/bench_studies.hpp"
 #include "study/bench_tables.hpp"
+#include "study/recommendation.hpp"
 #ifdef EPVIZ_HAVE_RENDER
 #include "render/gl_choice.hpp"
 #include "study/bench_figures.hpp"
@@ -27,21 +31,58 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The body and initial state of a render job's "simulation" (a single job),
-// checked as `epviz render` checks them.
+// The body, initial state and final time of a job: a single render job's
+// "simulation", or a simulate job (its fields at the top level), checked as
+// `epviz render` and `epviz simulate` check them.
 study::Problem job_problem(const std::string& file) {
   if (!fs::is_regular_file(file)) throw io::BadInput("--job: no such file '" + file + "'");
-  const job::LoadedJob loaded = job::load_job_file(file);
-  if (!loaded.single)
+  const nlohmann::json json = io::read_json_file(file);
+  if (json.contains("jobs") || json.contains("bench"))
     throw io::BadInput("--job: '" + file +
-                       "' is a gallery or bench-figures job; expected a single render job");
-  return study::run_problem(job::resolve(loaded.single->simulation));
+                       "' is a gallery or bench-figures job; expected a single render job or a "
+                       "simulate job");
+  job::SimulationFields fields;
+  if (json.contains("simulation")) {
+    fields = job::read_job(json, file).simulation;
+  } else {
+    io::ObjectReader reader(json, file);
+    fields = job::read_simulation_fields(reader);
+    reader.finish();
+  }
+  return study::run_problem(job::resolve(fields));
+}
+
+// --json may name a file in the folder that --out is about to make.
+void check_json_path(const BenchRequest& request) {
+  if (!request.out.empty() && !request.json.empty() && request.json.back() != '/') {
+    std::error_code e1, e2, e3;
+    const bool out_missing = !fs::exists(request.out, e1) && !e1;
+    const fs::path json_dir = fs::weakly_canonical(fs::absolute(request.json).parent_path(), e2);
+    const fs::path out = fs::weakly_canonical(fs::absolute(request.out), e3);
+    if (out_missing && !e2 && !e3 && json_dir == out)
+      return;  // check_output_dir has checked that the folder can be made
+  }
+  io::check_output_file("--json", request.json);
+}
+
+// --target-error: an error the references can judge (they agree to 1e-12 or
+// better), with --job only.
+double target_error(const BenchRequest& request) {
+  if (request.target_error.empty()) return study::kDefaultTargetError;
+  if (request.job.empty())
+    throw io::BadInput("--target-error: needs --job FILE (the job the recommendation is for)");
+  const double v = parse_number("--target-error", request.target_error);
+  if (!(v >= 1e-13 && v <= 1.0))
+    throw io::BadInput("--target-error: '" + request.target_error +
+                       "' is outside 1e-13 to 1 (an error at t_end the reference can judge)");
+  return v;
 }
 
 void write_outputs(const BenchRequest& request, const std::vector<study::StudyRow>& rows,
-                   double wall) {
+                   double wall, const std::optional<study::Recommendation>& recommendation) {
   if (request.json.empty() && request.out.empty()) return;
-  const std::string text = study::bench_document(rows, request.quick, wall).dump(1) + "\n";
+  const std::string text =
+      study::bench_document(rows, request.quick, wall, recommendation).dump(1) + "\n";
   if (!request.json.empty()) io::write_file_atomically(request.json, text);
   if (request.out.empty()) return;
   io::write_file_atomically(fs::path(request.out) / "bench.json", text);
@@ -61,15 +102,14 @@ int run_bench(const BenchRequest& request) {
   opts.quick = request.quick;
   if (!request.job.empty()) opts.custom = job_problem(request.job);
   opts.cases = study::parse_case_list(request.cases, !request.job.empty());
+  const double target = target_error(request);
 #ifdef EPVIZ_HAVE_RENDER
   (void)vector::parse_figure_format(request.format);
   (void)render::GlChoice(request.gl);
 #endif
-  io::check_output_file("--json", request.json);
-  if (!request.out.empty()) {
-    io::check_output_dir("--out", request.out);
-    io::make_output_folder("--out", request.out);
-  }
+  if (!request.out.empty()) io::check_output_dir("--out", request.out);
+  check_json_path(request);
+  if (!request.out.empty()) io::make_output_folder("--out", request.out);
 
   bool first = true;  // the first line says whether the run is quick
   const auto note = [&](const std::string& line) {
@@ -81,8 +121,13 @@ int run_bench(const BenchRequest& request) {
   const auto rows = study::bench_studies(opts, note);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::fputs(study::bench_tables(rows).c_str(), stdout);
+  std::optional<study::Recommendation> recommendation;
+  if (opts.custom) {
+    recommendation = study::recommend(*opts.custom, rows, target);
+    std::printf("\n%s", study::recommendation_text(*recommendation).c_str());
+  }
   std::printf("\nbench finished in %.1f s\n", wall);
-  write_outputs(request, rows, wall);
+  write_outputs(request, rows, wall, recommendation);
   return 0;
 }
 
@@ -102,8 +147,12 @@ std::function<int()> add_bench_command(CLI::App& app) {
                   "comma-separated presets for the work-precision and drift studies (default all; "
                   "none with --job unless named; custom: the --job body)");
   cmd->add_option("--job", request->job,
-                  "a render job (JSON) whose \"simulation\" gives a body of one's own: the "
-                  "work-precision study runs on it too");
+                  "a render job (its \"simulation\") or a simulate job (JSON): the "
+                  "work-precision study and the peers run on its body, initial state and t_end, "
+                  "and the bench recommends a method for it");
+  cmd->add_option("--target-error", request->target_error,
+                  "with --job: the error at t_end the recommended method must reach (default "
+                  "1e-8)");
   return [request] { return run_bench(*request); };
 }
 

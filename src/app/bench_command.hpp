@@ -18,12 +18,13 @@ std::function<int()> add_bench_command(CLI::App& app);
 // (render_jobs/bench_figures.json: `epviz render` draws the bench's figures).
 struct BenchRequest {
   bool quick = false;
-  std::string json;    // write the rows here ("" for none)
-  std::string out;     // directory for bench.json and the charts ("" for none)
-  std::string cases;   // comma-separated presets ("" for all)
-  std::string gl;      // GL backend for the charts ("" for $EPVIZ_GL or auto)
-  std::string format;  // the charts' files: png, svg or pdf ("" for png)
-  std::string job;     // a render job whose simulation is a body to study too ("" for none)
+  std::string json;          // write the rows here ("" for none)
+  std::string out;           // directory for bench.json and the charts ("" for none)
+  std::string cases;         // comma-separated presets ("" for all)
+  std::string gl;            // GL backend for the charts ("" for $EPVIZ_GL or auto)
+  std::string format;        // the charts' files: png, svg or pdf ("" for png)
+  std::string job;           // a render or simulate job whose body to study too ("" for none)
+  std::string target_error;  // with a job: the error the recommendation must reach ("" for 1e-8)
 };
 int run_bench(const BenchRequest& request);
 

@@ -48,6 +48,12 @@ struct ChartSpec {
   // Points the axes take in besides the series' (not drawn): charts side by
   // side share their axes by taking in each other's points.
   std::vector<ChartPoint> axis_extent;
+  // Small multiples: when given, the chart is these panels (each with its
+  // title, series and legend) under this chart's title, `panel_columns` to a
+  // row, every panel's axes taking in every panel's points; this chart's own
+  // series are not drawn.
+  std::vector<ChartSpec> panels;
+  int panel_columns = 1;
 };
 
 // A grid of values, rows by columns, each cell coloured by its value on a

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "paint/figure_drawing.hpp"
+#include "paint/small_multiples.hpp"
 #include "render/draw_list.hpp"
 
 namespace epviz::paint {
@@ -276,6 +277,7 @@ ChartLayout chart_layout(const ChartSpec& spec, int width, int height, const Cha
 
 FigureDrawing draw_chart(const ChartSpec& spec, const ChartOptions& requested,
                          const ChartFont& font) {
+  if (!spec.panels.empty()) return draw_small_multiples(spec, requested, font);
   // Keep the requested font size, but grow the picture downwards when a long
   // legend (many series) would not fit beside the plot: nothing is cut off.
   ChartOptions options = requested;

@@ -13,5 +13,8 @@ namespace epviz::paint {
 // Panel k's drawing moved right by the widths of the panels before it and
 // `gap` pixels each; the result as wide as all of them and as tall as the tallest.
 FigureDrawing side_by_side(const std::vector<FigureDrawing>& panels, int gap);
+// Row k's drawing moved down by the heights of the rows before it and `gap`
+// pixels each, left edges aligned; as tall as all of them and as wide as the widest.
+FigureDrawing stacked(const std::vector<FigureDrawing>& rows, int gap);
 
 }  // namespace epviz::paint

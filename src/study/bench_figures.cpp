@@ -106,6 +106,63 @@ std::vector<std::string> table_row(const char* study, const RunRecord& r, const 
   return {study, r.case_name, r.method, r.formulation, r.ok ? "ok" : "failed", result.text()};
 }
 
+ChartSpec chart_of(std::string title, std::string x_label, std::string y_label, bool log_x) {
+  ChartSpec chart;
+  chart.title = std::move(title);
+  chart.x_label = std::move(x_label);
+  chart.y_label = std::move(y_label);
+  chart.log_x = log_x;
+  chart.log_y = true;
+  return chart;
+}
+
+// The families the drift chart has a panel for, in the order drawn: methods
+// of a family drift alike (explicit ones steadily, symplectic ones bounded),
+// so that a panel shows a few lines that differ by their settings.
+std::string_view method_family(sim::Method m) {
+  switch (m) {
+    case sim::Method::rk4:
+    case sim::Method::dopri5:
+    case sim::Method::dop853: return "explicit Runge-Kutta";
+    case sim::Method::midpoint:
+    case sim::Method::gauss4:
+    case sim::Method::gauss6: return "implicit Gauss-Legendre (symplectic)";
+    case sim::Method::splitting:
+    case sim::Method::exact_split2:
+    case sim::Method::exact_split4: return "splittings";
+  }
+  return "other";
+}
+
+std::string_view method_family(const std::string& method) {
+  const auto m = sim::method_from_name(method);
+  return m ? method_family(*m) : "other";
+}
+
+// The drift series of one case as small multiples: a panel per method family
+// (in the methods' order), each with its methods' legend, all on the same axes.
+ChartSpec drift_panels(const std::string& case_name, std::vector<ChartSeries> series) {
+  ChartSpec chart =
+      chart_of("Relative drift of the integrals: " + case_name, "time", "relative drift", false);
+  std::vector<std::string_view> families;
+  for (const auto m : sim::all_methods())
+    if (std::find(families.begin(), families.end(), method_family(m)) == families.end())
+      families.push_back(method_family(m));
+  for (const auto family : families) {
+    ChartSpec panel = chart_of(std::string(family), "time", "relative drift", false);
+    for (const auto& one : series) {
+      const std::string method = one.name.substr(0, one.name.find(", "));
+      if (method_family(method) != family) continue;
+      add_legend_key(panel.colour_legend, one.colour_key, method);
+      add_legend_key(panel.marker_legend, one.marker_key,
+                     one.marker_key == 0 ? "C1" : "4th integral");
+      panel.series.push_back(one);
+    }
+    if (!panel.series.empty()) chart.panels.push_back(std::move(panel));
+  }
+  return chart;
+}
+
 }  // namespace
 
 TableSpec stability_table(const std::vector<StudyRow>& rows, bool with_heat_mapped) {
@@ -301,26 +358,20 @@ std::vector<chart::Figure> bench_figures(const std::vector<StudyRow>& rows) {
     }
   }
   for (auto& [c, by_name] : wp) {
-    ChartSpec cpu{
-        "Work-precision: " + c, "CPU time [ms]", "error at t_end", true, true, {}, {}, {}, {}};
-    ChartSpec evals{"Work-precision: " + c,
-                    "right-hand side evaluations",
-                    "error at t_end",
-                    true,
-                    true,
-                    {},
-                    {},
-                    {},
-                    {}};
+    ChartSpec cpu = chart_of("Work-precision: " + c, "CPU time [ms]", "error at t_end", true);
+    ChartSpec evals =
+        chart_of("Work-precision: " + c, "right-hand side evaluations", "error at t_end", true);
     for (auto& [name, pair] : by_name) {
       sort_by_x(pair.first);
       sort_by_x(pair.second);
-      for (ChartSpec* chart : {&cpu, &evals}) {
-        add_legend_key(chart->colour_legend, pair.first.colour_key, legend_names[name].first);
-        add_legend_key(chart->marker_legend, pair.first.marker_key, legend_names[name].second);
+      // A series without points (a splitting's cost is not in rhs
+      // evaluations) is left out, and so is its legend key.
+      for (auto [chart, series] : {std::pair{&cpu, &pair.first}, std::pair{&evals, &pair.second}}) {
+        if (series->points.empty()) continue;
+        add_legend_key(chart->colour_legend, series->colour_key, legend_names[name].first);
+        add_legend_key(chart->marker_legend, series->marker_key, legend_names[name].second);
+        chart->series.push_back(*series);
       }
-      if (!pair.first.points.empty()) cpu.series.push_back(pair.first);
-      if (!pair.second.points.empty()) evals.series.push_back(pair.second);
     }
     // Keys in order: epviz's methods and formulations first, then the peers'.
     for (ChartSpec* chart : {&cpu, &evals})
@@ -331,24 +382,8 @@ std::vector<chart::Figure> bench_figures(const std::vector<StudyRow>& rows) {
     figures.push_back({"work_precision_" + c + ".png", std::move(cpu)});
     figures.push_back({"work_precision_evals_" + c + ".png", std::move(evals)});
   }
-  for (auto& [c, series] : drift) {
-    ChartSpec chart{"Relative drift of the integrals: " + c,
-                    "time",
-                    "relative drift",
-                    false,
-                    true,
-                    {},
-                    {},
-                    {},
-                    {}};
-    for (const auto& one : series) {
-      add_legend_key(chart.colour_legend, one.colour_key, one.name.substr(0, one.name.find(", ")));
-      add_legend_key(chart.marker_legend, one.marker_key,
-                     one.marker_key == 0 ? "C1" : "4th integral");
-    }
-    chart.series = std::move(series);
-    figures.push_back({"drift_" + c + ".png", std::move(chart)});
-  }
+  for (auto& [c, series] : drift)
+    figures.push_back({"drift_" + c + ".png", drift_panels(c, std::move(series))});
   auto heat = stability_heat_map(rows);
   if (!heat.rows.empty()) figures.push_back({"stability.png", std::move(heat)});
   auto chaos = chaos_heat_map(rows);

@@ -3,7 +3,8 @@
 // (chart/chart_spec.hpp) for a painter to draw; the file names say what each is:
 //   work_precision_<case>.png        error vs CPU time (log-log), a line per formulation x method (x impl)
 //   work_precision_evals_<case>.png  error vs rhs evaluations (log-log)
-//   drift_<case>.png                 relative drift of C1 and the fourth integral vs time (log y)
+//   drift_<case>.png                 relative drift of C1 and the fourth integral vs time (log y),
+//                                    a panel per method family on shared axes
 //   stability.png                    the largest stable step, method x case, as a heat map
 //   stability_chaos.png              time until a chaotic run separates, method x accuracy
 //   stability_separatrix.png         error of the first flip's time, method x accuracy

@@ -179,7 +179,38 @@ json rows_json(const std::vector<StudyRow>& rows) {
   return a;
 }
 
-json bench_document(const std::vector<StudyRow>& rows, bool quick, double wall_seconds) {
+namespace {
+
+json evidence_json(const Evidence& e) {
+  json j;
+  put(j, e.run);
+  j["error"] = number_or_null(e.error);
+  j["drift"] = number_or_null(e.drift);
+  j["drift_invariant"] = e.drift_invariant.empty() ? json(nullptr) : json(e.drift_invariant);
+  j["drift_steps"] = e.drift_samples;
+  return j;
+}
+
+}  // namespace
+
+json recommendation_json(const Recommendation& r) {
+  return {{"case", r.case_name},
+          {"t_end", number_or_null(r.t_end)},
+          {"target_error", number_or_null(r.target_error)},
+          {"reference_self_check", number_or_null(r.reference_self_check)},
+          {"compared", r.compared},
+          {"meeting", r.meeting},
+          {"met", r.met},
+          {"rule",
+           "the least CPU time among epviz's runs with error <= target_error; none: the smallest "
+           "error"},
+          {"choice", r.choice ? evidence_json(*r.choice) : json(nullptr)},
+          {"fastest_peer", r.fastest_peer ? evidence_json(*r.fastest_peer) : json(nullptr)},
+          {"text", recommendation_text(r)}};
+}
+
+json bench_document(const std::vector<StudyRow>& rows, bool quick, double wall_seconds,
+                    const std::optional<Recommendation>& recommendation) {
   double worst_check = 0.0, smallest = INFINITY;
   for (const auto* r : rows_of<ReferenceRow>(rows)) {
     worst_check = std::max(worst_check, r->self_check);
@@ -201,6 +232,7 @@ json bench_document(const std::vector<StudyRow>& rows, bool quick, double wall_s
         {"smallest_reported_error", number_or_null(smallest)}}},
   };
   doc["rows"] = rows_json(rows);
+  if (recommendation) doc["recommendation"] = recommendation_json(*recommendation);
   return doc;
 }
 

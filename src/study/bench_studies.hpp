@@ -1,7 +1,8 @@
 #pragma once
 // Every study of `epviz bench`, in the order its tables print: work-precision
 // (epviz's methods, then the peers and their CPU-time ratios), invariant
-// drift, invariant cost and the five stability studies.
+// drift, invariant cost and the five stability studies. With a body of one's
+// own and no preset named, only the first two: those run on that body.
 #include <functional>
 #include <string>
 #include <vector>

@@ -32,6 +32,7 @@ Problem run_problem(const sim::RunSpec& spec) {
   p.name = physics::case_name(spec.case_id);
   p.body = spec.body;
   p.initial = spec.initial;
+  p.t_end = spec.t_end;
   return p;
 }
 

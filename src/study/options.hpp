@@ -1,6 +1,7 @@
 #pragma once
 // What a bench run asks of the studies, and the defaults they fill in.
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,12 +12,15 @@
 namespace epviz::study {
 
 // A body and its initial state to study: a preset, or a custom body (from a
-// render job's "simulation").
+// render or simulate job).
 struct Problem {
   physics::Case id = physics::Case::custom;
   std::string name;  // the rows' case name: the preset's, or "custom"
   physics::Body body;
   physics::InitialState initial;
+  // A job's final time, which its work-precision runs reach; NaN: the
+  // study's own for the case (study::wp_t_end).
+  double t_end = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct StudyOptions {
@@ -35,8 +39,8 @@ std::vector<physics::Case> cases_of(const StudyOptions& o);
 // The work-precision study's problems: the presets of cases_of, then the custom body.
 std::vector<Problem> problems_of(const StudyOptions& o);
 Problem preset_problem(physics::Case c);
-// A body of one's own from a checked run (a render job's "simulation"),
-// named after its case: a preset's name, or "custom".
+// A body of one's own from a checked run (a job's simulation), named after
+// its case (a preset's name, or "custom"), with the run's final time.
 Problem run_problem(const sim::RunSpec& spec);
 // The presets of a comma-separated list (`epviz bench --cases`; "" for none).
 // "custom" stands for the body of one's own and is left out of the list:

@@ -15,6 +15,8 @@ namespace epviz::study {
 // units every error saturates at O(1) and the chart says nothing).
 double wp_t_end(physics::Case c) { return c == physics::Case::generic ? 5.0 : 10.0; }
 
+double wp_t_end(const Problem& p) { return std::isfinite(p.t_end) ? p.t_end : wp_t_end(p.id); }
+
 std::vector<StudyRow> work_precision_study(const StudyOptions& o) {
   std::vector<StudyRow> rows;
   const int repeats = repeats_of(o);
@@ -24,7 +26,7 @@ std::vector<StudyRow> work_precision_study(const StudyOptions& o) {
   const int max_points = o.quick ? 5 : 8;
   const long cost_cap = o.quick ? 400'000 : 4'000'000;
   for (const auto& p : problems_of(o)) {
-    const double t_end = wp_t_end(p.id);
+    const double t_end = wp_t_end(p);
     tell(o, "work-precision: reference for " + p.name);
     const auto ref = compute_reference(p.body, p.initial, t_end, 1, reference_step(p.initial));
     const sim::Sample& ref_end = ref.samples.back();

@@ -12,6 +12,8 @@ namespace epviz::study {
 
 // The final time of the work-precision runs of case c.
 double wp_t_end(physics::Case c);
+// The final time of p's work-precision runs: a job's own, else wp_t_end(p.id).
+double wp_t_end(const Problem& p);
 
 // Per case: its WorkPrecisionRows, then its ReferenceRow.
 std::vector<StudyRow> work_precision_study(const StudyOptions& o);

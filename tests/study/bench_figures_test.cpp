@@ -3,6 +3,7 @@
 // stability rows as one table.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -12,6 +13,19 @@ namespace epviz {
 namespace {
 
 using study::StudyRow;
+
+// A work-precision row of the "euler" case.
+study::WorkPrecisionRow wp_row(const char* method, const char* formulation, double error,
+                               double cpu_ms, long rhs_evals) {
+  study::WorkPrecisionRow r;
+  r.run.case_name = "euler";
+  r.run.method = method;
+  r.run.formulation = formulation;
+  r.error = error;
+  r.run.cpu_ms = cpu_ms;
+  r.run.rhs_evals = rhs_evals;
+  return r;
+}
 
 std::vector<StudyRow> tiny_bench() {
   std::vector<StudyRow> rows;
@@ -70,7 +84,9 @@ TEST(BenchFigures, ChartsFromRows) {
   const auto& evals = std::get<chart::ChartSpec>(figures[1].content);
   EXPECT_DOUBLE_EQ(evals.series[1].points[2].x, 300.0);
 
-  const auto& drift = std::get<chart::ChartSpec>(figures[2].content);
+  const auto& small_multiples = std::get<chart::ChartSpec>(figures[2].content);
+  ASSERT_EQ(small_multiples.panels.size(), 1u);  // rk4's family only
+  const auto& drift = small_multiples.panels[0];
   EXPECT_FALSE(drift.log_x);
   ASSERT_EQ(drift.series.size(), 2u);
   EXPECT_EQ(drift.series[0].name, "rk4, C1");
@@ -79,21 +95,78 @@ TEST(BenchFigures, ChartsFromRows) {
   EXPECT_EQ(drift.series[1].points.size(), 19u);         // the NaN point is left out
 }
 
+// A method whose cost is not counted in right-hand side evaluations (a
+// splitting's are exact sub-flows) has no series on the evaluations chart,
+// and its legend does not name it.
+TEST(BenchFigures, LegendsNameOnlySeriesDrawn) {
+  auto rows = tiny_bench();
+  auto split = wp_row("exact-split4", "direct", 1e-6, 0.02, 0);
+  split.run.adaptive = false;
+  split.run.flow_evals = 400;
+  rows.emplace_back(split);
+  const auto figures = study::bench_figures(rows);
+  const auto names = [](const chart::ChartSpec& c) {
+    std::vector<std::string> out;
+    for (const auto& k : c.colour_legend) out.push_back(k.name);
+    return out;
+  };
+  const auto& cpu = std::get<chart::ChartSpec>(figures[0].content);
+  const auto& evals = std::get<chart::ChartSpec>(figures[1].content);
+  EXPECT_EQ(cpu.series.size(), 3u);
+  EXPECT_EQ(names(cpu), (std::vector<std::string>{"rk4", "dop853", "exact-split4"}));
+  EXPECT_EQ(evals.series.size(), 2u);
+  EXPECT_EQ(names(evals), (std::vector<std::string>{"rk4", "dop853"}));
+}
+
+// The drift chart as small multiples: a panel per method family, each
+// holding only its family's series and naming only its methods, the families
+// in the methods' order.
+TEST(BenchFigures, DriftPanelPerMethodFamily) {
+  std::vector<StudyRow> rows;
+  for (const char* method : {"gauss6", "rk4", "exact-split4", "dop853", "midpoint"}) {
+    study::DriftRow d;
+    d.run.case_name = "kovalevskaya";
+    d.run.method = method;
+    d.run.formulation = "direct";
+    d.series_t = {1.0, 2.0};
+    d.series_drift_C1 = {1e-12, 2e-12};
+    d.series_drift_extra = {1e-11, 3e-11};
+    rows.emplace_back(d);
+  }
+  const auto figures = study::bench_figures(rows);
+  ASSERT_EQ(figures.size(), 1u);
+  const auto& chart = std::get<chart::ChartSpec>(figures[0].content);
+  EXPECT_EQ(chart.title, "Relative drift of the integrals: kovalevskaya");
+  const std::vector<std::pair<std::string, std::vector<std::string>>> expected{
+      {"explicit Runge-Kutta", {"rk4", "dop853"}},
+      {"implicit Gauss-Legendre (symplectic)", {"midpoint", "gauss6"}},
+      {"splittings", {"exact-split4"}}};
+  ASSERT_EQ(chart.panels.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    const auto& panel = chart.panels[i];
+    EXPECT_EQ(panel.title, expected[i].first);
+    EXPECT_TRUE(panel.log_y);
+    std::vector<std::string> named;
+    for (const auto& k : panel.colour_legend) named.push_back(k.name);
+    std::sort(named.begin(), named.end());
+    auto want = expected[i].second;
+    std::sort(want.begin(), want.end());
+    EXPECT_EQ(named, want) << panel.title;
+    EXPECT_EQ(panel.series.size(), 2 * want.size()) << panel.title;  // C1 and the 4th integral
+    for (const auto& s : panel.series) {
+      const std::string method = s.name.substr(0, s.name.find(", "));
+      EXPECT_NE(std::find(want.begin(), want.end(), method), want.end()) << s.name;
+    }
+  }
+}
+
 // Colour by method, marker by formulation: a method keeps its colour across
 // formulations and charts, and the legend names each colour and shape once.
 TEST(BenchFigures, ColourByMethodMarkerByFormulation) {
   std::vector<StudyRow> rows;
   for (const char* f : {"direct", "riccati"})
-    for (const char* method : {"rk4", "dop853"}) {
-      study::WorkPrecisionRow r;
-      r.run.case_name = "euler";
-      r.run.method = method;
-      r.run.formulation = f;
-      r.error = 1e-6;
-      r.run.cpu_ms = 1.0;
-      r.run.rhs_evals = 100;
-      rows.emplace_back(r);
-    }
+    for (const char* method : {"rk4", "dop853"})
+      rows.emplace_back(wp_row(method, f, 1e-6, 1.0, 100));
   const auto figures = study::bench_figures(rows);
   const auto& cpu = std::get<chart::ChartSpec>(figures[0].content);
   ASSERT_EQ(cpu.series.size(), 4u);
@@ -115,7 +188,7 @@ TEST(BenchFigures, ColourByMethodMarkerByFormulation) {
   EXPECT_EQ(cpu.marker_legend.size(), 2u);
   // The drift chart colours rk4 as the work-precision chart does.
   const auto drift = study::bench_figures(tiny_bench());
-  const auto& d = std::get<chart::ChartSpec>(drift[2].content);
+  const auto& d = std::get<chart::ChartSpec>(drift[2].content).panels.at(0);
   EXPECT_EQ(d.series[0].colour_key, colour_of_method["rk4"]);
   EXPECT_NE(d.series[0].marker_key, d.series[1].marker_key);  // C1 and the 4th integral
 }

@@ -106,7 +106,8 @@ TEST(ScipyPeer, SkipsWithAMessageWhenScipyIsAbsent) {
 
 TEST(PeerWorkPrecision, OneRowPerPeerAndTolerance) {
   const std::vector<double> tols{1e-6, 1e-9};
-  const auto rows = peer_work_precision(physics::Case::kovalevskaya, tols, kTEnd, 1);
+  const auto& k = physics::preset(physics::Case::kovalevskaya);
+  const auto rows = peer_work_precision(k.body, k.initial, tols, kTEnd, 1);
   ASSERT_EQ(rows.size(), all_peers().size() * tols.size());
   for (const auto& row : rows) {
     const std::string impl = impl_name(row.id), method = method_name(row.id);

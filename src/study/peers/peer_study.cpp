@@ -59,13 +59,12 @@ RunRecord peer_record(const PeerRow& p, const std::string& case_name) {
 
 PeerStudy peer_work_precision_study(const StudyOptions& o) {
   PeerStudy out;
-  for (const auto c : cases_of(o)) {
-    const auto& p = physics::preset(c);
-    const double t_end = wp_t_end(c);
+  for (const auto& p : problems_of(o)) {
+    const double t_end = wp_t_end(p);
     tell(o, "peers: " + p.name);
     const auto ref = compute_reference(p.body, p.initial, t_end, 1, reference_step(p.initial));
     for (const auto& peer :
-         peer_work_precision(c, peer_tolerances(o.quick), t_end, repeats_of(o))) {
+         peer_work_precision(p.body, p.initial, peer_tolerances(o.quick), t_end, repeats_of(o))) {
       if (peer.result.status == PeerStatus::skipped) {
         const std::string line =
             impl_name(peer.id) + " " + method_name(peer.id) + ": skipped: " + peer.result.reason;
@@ -73,7 +72,7 @@ PeerStudy peer_work_precision_study(const StudyOptions& o) {
           out.skipped.push_back(line);
         continue;
       }
-      WorkPrecisionRow row{peer_record(peer, physics::case_name(c))};
+      WorkPrecisionRow row{peer_record(peer, p.name)};
       if (peer.result.ok()) {
         sim::Sample s;
         s.omega = peer.result.omega;

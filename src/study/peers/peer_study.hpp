@@ -15,7 +15,8 @@ struct PeerStudy {
   std::vector<std::string> skipped;  // one line per peer that could not run, and why
 };
 
-// Same cases, final times, reference and error measure as study::work_precision_study.
+// Same problems (the presets and a job's body), final times, reference and
+// error measure as study::work_precision_study.
 PeerStudy peer_work_precision_study(const StudyOptions& o);
 
 // For each case and peer method, the CPU time ratio peer / epviz DOP853 at

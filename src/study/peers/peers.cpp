@@ -121,10 +121,12 @@ PeerResult run_peer(PeerId id, const sim::RunSpec& spec, int repeats) {
   return out;
 }
 
-std::vector<PeerRow> peer_work_precision(physics::Case c, const std::vector<double>& tolerances,
-                                         double t_end, int repeats) {
-  const auto& p = physics::preset(c);
-  sim::RunSpec spec = sim::preset_run(c, sim::Method::dop853, sim::Formulation::direct, t_end, 1);
+std::vector<PeerRow> peer_work_precision(const physics::Body& body,
+                                         const physics::InitialState& initial,
+                                         const std::vector<double>& tolerances, double t_end,
+                                         int repeats) {
+  sim::RunSpec spec = sim::body_run(physics::Case::custom, body, initial, sim::Method::dop853,
+                                    sim::Formulation::direct, t_end, 1);
   std::vector<PeerRow> rows;
   for (const PeerId id : all_peers()) {
     if (is_scipy(id)) continue;
@@ -133,7 +135,7 @@ std::vector<PeerRow> peer_work_precision(physics::Case c, const std::vector<doub
       rows.push_back({id, tol, t_end, run_peer(id, spec, repeats)});
     }
   }
-  const auto s = run_scipy_peers(p.body, p.initial, t_end, tolerances, repeats);
+  const auto s = run_scipy_peers(body, initial, t_end, tolerances, repeats);
   for (std::size_t i = 0; i < tolerances.size(); ++i)
     rows.push_back({PeerId::scipy_dop853_solve_ivp, tolerances[i], t_end, s.solve_ivp[i]});
   for (std::size_t i = 0; i < tolerances.size(); ++i)

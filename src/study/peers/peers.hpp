@@ -66,11 +66,13 @@ struct PeerRow {
   PeerResult result;
 };
 
-// Every peer at every tolerance on `c`'s preset (body and initial state of
-// physics::preset(c)) over [0, t_end]. The SciPy rows come from one Python
-// process for all tolerances; without /usr/bin/python3 or scipy they are
-// skipped, with the reason.
-std::vector<PeerRow> peer_work_precision(physics::Case c, const std::vector<double>& tolerances,
-                                         double t_end, int repeats);
+// Every peer at every tolerance on a body from an initial state (a preset's,
+// or a job's) over [0, t_end]. The SciPy rows come from one Python process for
+// all tolerances; without /usr/bin/python3 or scipy they are skipped, with the
+// reason.
+std::vector<PeerRow> peer_work_precision(const physics::Body& body,
+                                         const physics::InitialState& initial,
+                                         const std::vector<double>& tolerances, double t_end,
+                                         int repeats);
 
 }  // namespace epviz::study::peers
