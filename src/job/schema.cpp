@@ -174,6 +174,43 @@ void read_runs(io::ObjectReader& r, JobDocument& d) {
   }
 }
 
+std::string cloud_allowed() {
+  std::string s = "{\"members\": ";
+  s += std::to_string(scene::kMinCloudMembers);
+  s += " to ";
+  s += std::to_string(scene::kMaxCloudMembers);
+  s += " (default ";
+  s += std::to_string(scene::kDefaultCloudMembers);
+  s += "), \"radius\": more than 0, at most ";
+  s += format_number(scene::kMaxCloudRadius);
+  s += " radians (default ";
+  s += format_number(scene::kDefaultCloudRadius);
+  s += ")}";
+  return s;
+}
+
+// "cloud": {"members": N, "radius": r}; absent: no cloud.
+void read_cloud(io::ObjectReader& r, JobDocument& d) {
+  auto cloud = r.object("cloud");
+  if (!cloud) return;
+  d.scene.cloud.members =
+      int(cloud->integer("members", scene::kMinCloudMembers, scene::kMaxCloudMembers)
+              .value_or(scene::kDefaultCloudMembers));
+  if (auto radius = cloud->positive_number("radius")) {
+    if (*radius > scene::kMaxCloudRadius)
+      cloud->fail("radius", "expected more than 0 and at most " +
+                                format_number(scene::kMaxCloudRadius) + " radians, got " +
+                                io::describe(*cloud->raw("radius")));
+    d.scene.cloud.radius = *radius;
+  }
+  cloud->finish();
+}
+
+void write_cloud(const JobDocument& d, Json& j) {
+  if (!d.scene.cloud.enabled()) return;
+  j["cloud"] = Json{{"members", d.scene.cloud.members}, {"radius", d.scene.cloud.radius}};
+}
+
 void write_runs(const JobDocument& d, Json& j) {
   if (d.runs.empty()) return;
   Json list = Json::array();
@@ -318,6 +355,12 @@ const std::vector<Job>& job_entries() {
               if (d.scene.trail_length > 0.0) j["length"] = d.scene.trail_length;
             }},
        }},
+      {{"cloud", ValueType::object, "", cloud_allowed(),
+        "an ensemble launched with the run: its members' gamma fill a disc of that radius about "
+        "the run's gamma, Omega scaled to keep the run's energy; drawn as points on sphere and "
+        "plane, with its spread"},
+       read_cloud,
+       write_cloud},
       {{"plane", ValueType::object, "", "", "the Riccati (a, b) panel"},
        {},
        {},

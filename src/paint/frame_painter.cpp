@@ -10,6 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "paint/cloud_drawing.hpp"
 #include "paint/comparison_painter.hpp"
 #include "paint/painter_common.hpp"
 #include "paint/trail_colours.hpp"
@@ -143,6 +144,7 @@ void FramePainter::draw_sphere(DrawList& list, const scene::Frame& f, float px) 
         {to_glm(p.p), first_run_colour(f, p.age, age_colour(p.age, ink.trail_map_top))});
   if (trail.size() >= 2) list.add_polyline(trail, 2.2f * px);
   draw_other_runs_3d(list, f, px);
+  if (f.cloud) draw_cloud_sphere(list, *f.cloud, cloud_colour(f), px);  // the cloud
   list.add_marker(
       {to_glm(f.current), to_glm(f.colours.marker), to_glm(ink.marker_edge), 5.0f * px, 1.3f * px});
   // The pole labels N and S are placed over the view (draw_view_annotations).
@@ -182,6 +184,7 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
   }
   flush();
   draw_other_runs_plane(flat, plot, f, px);
+  if (f.cloud) draw_cloud_plane(flat, plot, *f.cloud, cloud_colour(f), px);  // the cloud
 
   bool any_infinity = false, any_exit = false;
   for (const auto& m : f.plane_marks) {
@@ -407,6 +410,10 @@ const render::RgbaImage& FramePainter::paint(const scene::Frame& f,
     const render::Camera camera = camera_for(f, view);
     renderer_->draw_3d(scene3d, camera, view);
     draw_view_annotations(f, camera, view, px);
+    if (DrawList chart; f.cloud && f.layers.overlay) {  // the cloud's spread
+      draw_cloud_spread(chart, view, *f.cloud, cloud_colour(f), ink_for(f), px);
+      renderer_->draw_2d(chart);
+    }
   }
   if (layout.panel_column && f.layers.riccati)
     draw_plane(f, to_viewport(*layout.panel_column), to_viewport(*layout.plot_area), px);
