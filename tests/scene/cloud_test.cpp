@@ -72,7 +72,10 @@ TEST(Cloud, MembersAreTheScalarRunsAlone) {
   const auto& gamma = c.gamma_at(frame);
   ASSERT_EQ(gamma.size(), 37u);
   const auto members = scene::cloud_members(run.body, run.initial, cloud);
-  const auto opts = scene::cloud_batch_settings(run).adaptive;
+  // The cloud's integrator as documented: DOP853 at the run's tolerance.
+  numerics::AdaptiveOptions opts;
+  opts.rtol = opts.atol = run.tol;
+  opts.max_steps = run.max_steps;
   for (std::size_t i = 0; i < members.size(); ++i) {
     numerics::Dop853<physics::DirectSystem> s(physics::DirectSystem(run.body), opts);
     physics::DirectSystem::State x0;
