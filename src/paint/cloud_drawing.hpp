@@ -18,8 +18,11 @@ namespace epviz::paint {
 glm::vec4 cloud_colour(const scene::Frame& f);
 
 // `px`: the picture's line-width scale (pixels per 360th of its height).
+// The points are small squares facing `camera` (two triangles each, no
+// geometry shader: ten thousand markers cost llvmpipe several times more).
 void draw_cloud_sphere(render::DrawList& list, const scene::CloudFrame& cloud,
-                       const glm::vec4& colour, float px);
+                       const glm::vec4& colour, const render::Camera& camera,
+                       const render::Viewport& view, float px);
 void draw_cloud_plane(render::DrawList& flat, const render::Panel2D& plot,
                       const scene::CloudFrame& cloud, const glm::vec4& colour, float px);
 // The spread chart, at the top left of `view` (image pixels): log10 of the

@@ -144,7 +144,6 @@ void FramePainter::draw_sphere(DrawList& list, const scene::Frame& f, float px) 
         {to_glm(p.p), first_run_colour(f, p.age, age_colour(p.age, ink.trail_map_top))});
   if (trail.size() >= 2) list.add_polyline(trail, 2.2f * px);
   draw_other_runs_3d(list, f, px);
-  if (f.cloud) draw_cloud_sphere(list, *f.cloud, cloud_colour(f), px);  // the cloud
   list.add_marker(
       {to_glm(f.current), to_glm(f.colours.marker), to_glm(ink.marker_edge), 5.0f * px, 1.3f * px});
   // The pole labels N and S are placed over the view (draw_view_annotations).
@@ -408,6 +407,8 @@ const render::RgbaImage& FramePainter::paint(const scene::Frame& f,
     if (f.layers.sphere) draw_sphere(scene3d, f, px);
     const render::Viewport view = to_viewport(*layout.view_3d);
     const render::Camera camera = camera_for(f, view);
+    if (f.cloud && f.layers.sphere)  // the cloud
+      draw_cloud_sphere(scene3d, *f.cloud, cloud_colour(f), camera, view, px);
     renderer_->draw_3d(scene3d, camera, view);
     draw_view_annotations(f, camera, view, px);
     if (DrawList chart; f.cloud && f.layers.overlay) {  // the cloud's spread
