@@ -72,11 +72,13 @@ void draw_cloud_spread(render::DrawList& flat, const render::Viewport& view,
                        const scene::CloudFrame& cloud, const glm::vec4& colour,
                        const scene::Theme& ink, float px) {
   if (cloud.spread.empty() || cloud.t_end <= 0.0) return;
-  const int w = int(std::min(150.0f * px, 0.4f * float(view.width)));
-  const int h = int(std::min(45.0f * px, 0.25f * float(view.height)));
+  const int w = int(std::min(110.0f * px, 0.4f * float(view.width)));
+  const int h = int(std::min(35.0f * px, 0.25f * float(view.height)));
   const int margin = int(12.0f * px);
-  // Top left: the colour bar of the trail's time takes the bottom left.
-  const render::Viewport area{view.x + margin, view.y + margin + int(18.0f * px), w, h};
+  // Bottom right: the colour bar of the trail's time takes the bottom left,
+  // the overlay floating over a small picture's view the top left.
+  const render::Viewport area{view.x + view.width - margin - w, view.y + view.height - margin - h,
+                              w, h};
   const render::Panel2D plot(area, {0.0, cloud.t_end, kLogSpreadMin, kLogSpreadMax}, false);
   auto rgba = [](const scene::Rgba& c) { return glm::vec4(c[0], c[1], c[2], c[3]); };
   render::PanelStyle s;

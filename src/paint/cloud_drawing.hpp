@@ -25,7 +25,7 @@ void draw_cloud_sphere(render::DrawList& list, const scene::CloudFrame& cloud,
                        const render::Viewport& view, float px);
 void draw_cloud_plane(render::DrawList& flat, const render::Panel2D& plot,
                       const scene::CloudFrame& cloud, const glm::vec4& colour, float px);
-// The spread chart, at the top left of `view` (image pixels): log10 of the
+// The spread chart, at the bottom right of `view` (image pixels): log10 of the
 // fraction of the sphere covered against time, with the value now.
 void draw_cloud_spread(render::DrawList& flat, const render::Viewport& view,
                        const scene::CloudFrame& cloud, const glm::vec4& colour,
