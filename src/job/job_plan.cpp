@@ -2,6 +2,7 @@
 
 #include "io/bad_input.hpp"
 #include "job/resolve.hpp"
+#include "scene/cloud_run.hpp"
 #include "sim/methods.hpp"
 
 namespace epviz::job {
@@ -41,7 +42,11 @@ std::vector<scene::RunRequest> run_requests(const RenderJob& job) {
 scene::ScenePlan plan_job(const RenderJob& job) {
   auto requests = run_requests(job);
   try {
-    return scene::plan_scene(std::move(requests), job.scene);
+    auto plan = scene::plan_scene(std::move(requests), job.scene);
+    // The cloud's members, checked before any work (they must keep the run's energy).
+    if (job.scene.cloud.enabled())
+      (void)scene::cloud_members(plan.run.body, plan.run.initial, job.scene.cloud);
+    return plan;
   } catch (const scene::PlanError& e) {
     throw io::BadInput(job.file.string() + ": " + e.what());
   }

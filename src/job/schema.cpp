@@ -174,6 +174,13 @@ void read_runs(io::ObjectReader& r, JobDocument& d) {
   }
 }
 
+std::string cloud_members_allowed() {
+  std::string s = std::to_string(scene::kMinCloudMembers);
+  s += " to ";
+  s += std::to_string(scene::kMaxCloudMembers);
+  return s;
+}
+
 void write_runs(const JobDocument& d, Json& j) {
   if (d.runs.empty()) return;
   Json list = Json::array();
@@ -316,6 +323,40 @@ const std::vector<Job>& job_entries() {
             },
             [](const JobDocument& d, Json& j) {
               if (d.scene.trail_length > 0.0) j["length"] = d.scene.trail_length;
+            }},
+       }},
+      {{"cloud", ValueType::object, "", "",
+        "an ensemble launched with the run: its members' gamma fill a disc about the run's "
+        "gamma, Omega scaled to keep the run's energy; drawn as points on sphere and plane, "
+        "with its spread (absent: no cloud)"},
+       {},
+       {},
+       {
+           {{"members", ValueType::integer, std::to_string(scene::kDefaultCloudMembers),
+             cloud_members_allowed(), "how many states"},
+            [](io::ObjectReader& r, JobDocument& d) {
+              // Read only when "cloud" is given: absent, the default.
+              d.scene.cloud.members =
+                  int(r.integer("members", scene::kMinCloudMembers, scene::kMaxCloudMembers)
+                          .value_or(scene::kDefaultCloudMembers));
+            },
+            [](const JobDocument& d, Json& j) {
+              if (d.scene.cloud.enabled()) j["members"] = d.scene.cloud.members;
+            }},
+           {{"radius", ValueType::number, format_number(scene::kDefaultCloudRadius),
+             "more than 0, at most " + format_number(scene::kMaxCloudRadius),
+             "the disc's angular radius on the sphere, radians"},
+            [](io::ObjectReader& r, JobDocument& d) {
+              if (auto v = r.positive_number("radius")) {
+                if (*v > scene::kMaxCloudRadius)
+                  r.fail("radius", "expected more than 0 and at most " +
+                                       format_number(scene::kMaxCloudRadius) + " radians, got " +
+                                       io::describe(*r.raw("radius")));
+                d.scene.cloud.radius = *v;
+              }
+            },
+            [](const JobDocument& d, Json& j) {
+              if (d.scene.cloud.enabled()) j["radius"] = d.scene.cloud.radius;
             }},
        }},
       {{"plane", ValueType::object, "", "", "the Riccati (a, b) panel"},

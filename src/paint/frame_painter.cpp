@@ -12,6 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "paint/cloud_drawing.hpp"
 #include "paint/comparison_painter.hpp"
 #include "paint/painter_common.hpp"
 #include "render/colour_map.hpp"
@@ -171,6 +172,7 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
   // Every run's path and marks (paint/comparison_painter.hpp).
   const PlaneMarksDrawn marks = draw_paths_plane(flat, plot, f, ink, ink.trail_map_top, px);
   const bool any_exit = marks.any_exit, any_infinity = marks.any_infinity;
+  if (f.cloud) draw_cloud_plane(flat, plot, *f.cloud, cloud_colour(f), px);  // the cloud
   std::vector<Box> obstacles;
   const float marker_r = 4.5f * px;
   if (f.plane_current) {
@@ -400,8 +402,14 @@ const render::RgbaImage& FramePainter::paint(const scene::Frame& f,
     const render::Camera camera = camera_for(f, view);
     if (f.layers.body) draw_body(scene3d, f, px);
     if (f.layers.sphere) draw_sphere(scene3d, f, camera, view, px);
+    if (f.cloud && f.layers.sphere)  // the cloud
+      draw_cloud_sphere(scene3d, *f.cloud, cloud_colour(f), camera, view, px);
     renderer_->draw_3d(scene3d, camera, view);
     draw_view_annotations(f, camera, view, px);
+    if (DrawList chart; f.cloud && f.layers.overlay) {  // the cloud's spread
+      draw_cloud_spread(chart, view, *f.cloud, cloud_colour(f), ink_for(f), px);
+      renderer_->draw_2d(chart);
+    }
   }
   if (layout.panel_column && f.layers.riccati)
     draw_plane(f, to_viewport(*layout.panel_column), to_viewport(*layout.plot_area),

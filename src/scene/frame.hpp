@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/cloud.hpp"  // the cloud
 #include "scene/layers.hpp"
 
 namespace epviz::scene {
@@ -144,6 +145,7 @@ struct Frame {
   std::string pixel_true_note;
 
   std::optional<Comparison> comparison;  // comparison scenes only
+  std::optional<CloudFrame> cloud;       // jobs with a "cloud" only
 
   // A line under the picture naming what it shows (gallery tiles); empty: none.
   std::string caption;

@@ -80,6 +80,13 @@ FrameSource::FrameSource(const ScenePlan& plan, const SceneSettings& settings)
   add(plan.run);
   for (const auto& other : plan.others) add(other.run);
   separation_.resize(plan.others.size());
+  // The cloud: integrated to every frame time at once (renders only: an
+  // open-ended scene has no last frame).
+  if (settings.cloud.enabled() && !plan.open_ended) {
+    std::vector<double> times;
+    for (int i = 0; i < plan.frames; ++i) times.push_back(plan.frame_time(i));
+    cloud_ = std::make_unique<CloudRun>(plan.run, settings.cloud, times);
+  }
 }
 
 void FrameSource::advance() {
@@ -148,6 +155,11 @@ Frame FrameSource::compose(int index) const {
     const Eigen::Vector2f now = *ab;
     f.plane_path.push_back({now, 0.0f, false});
     if (inside_panel(now, f.plane_extent)) f.plane_current = now;
+  }
+
+  if (cloud_ && index < cloud_->frame_count()) {
+    f.cloud = cloud_->frame(index, f.plane_extent);
+    if (settings_.view == View::space) f.cloud->sphere.clear();  // its points are body-frame gamma
   }
 
   const auto& run = plan_.run;

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "scene/cloud_run.hpp"  // the cloud
 #include "scene/frame.hpp"
 #include "scene/plan.hpp"
 #include "scene/run_track.hpp"
@@ -53,6 +54,7 @@ class FrameSource {
   long sample_index_ = 0;
   int frames_composed_ = 0;
   BodyShape shape_;
+  std::unique_ptr<CloudRun> cloud_;  // renders of jobs with a "cloud" only
 };
 
 // The overlay a FrameSource composes has this many text lines, and a drift row

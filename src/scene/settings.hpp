@@ -1,5 +1,6 @@
 #pragma once
 // What a render job asks of the picture, independent of the physics.
+#include "scene/cloud.hpp"  // the cloud
 #include "scene/frame.hpp"
 
 namespace epviz::scene {
@@ -20,6 +21,7 @@ struct SceneSettings {
   bool formulation_given = false;  // the job chose the formulation itself
   std::string title;               // overrides the case's title when not empty
   int trace_axis = 3;              // space view: the body axis (1, 2 or 3) the trail follows
+  CloudSettings cloud;             // an ensemble launched with the first run (scene/cloud.hpp)
 
   int frame_count() const;  // round(fps * duration), at least 1
 };

@@ -1,0 +1,106 @@
+#include "paint/cloud_drawing.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+
+namespace epviz::paint {
+namespace {
+
+// The spread chart's vertical range: log10 of the fraction of the sphere,
+// from well under one histogram cell (1/1152) to the whole sphere.
+constexpr double kLogSpreadMin = -3.5, kLogSpreadMax = 0.0;
+
+double log_spread(float fraction) {
+  return std::clamp(std::log10(std::max(double(fraction), 1e-12)), kLogSpreadMin, kLogSpreadMax);
+}
+
+}  // namespace
+
+glm::vec4 cloud_colour(const scene::Frame& f) {
+  const auto& c = f.colours.marker;
+  return {c[0], c[1], c[2], 0.5f};
+}
+
+// Two triangles: the square of half-width `dx`, `dy` (each a vector) about `c`.
+void add_square(std::vector<render::ColouredVertex>& out, const glm::vec3& c, const glm::vec3& dx,
+                const glm::vec3& dy, const glm::vec4& colour) {
+  const glm::vec3 a = c - dx - dy, b = c + dx - dy, d = c + dx + dy, e = c - dx + dy;
+  for (const glm::vec3& v : {a, b, d, a, d, e}) out.push_back({v, colour});
+}
+
+void draw_cloud_sphere(render::DrawList& list, const scene::CloudFrame& cloud,
+                       const glm::vec4& colour, const render::Camera& camera,
+                       const render::Viewport& view, float px) {
+  if (cloud.sphere.empty() || view.height <= 0) return;
+  // The camera's right and up in world axes (rows of the view matrix), and
+  // the world size of one pixel at eye depth 1 (projection[1][1] = 1 / tan(fov / 2)).
+  const glm::mat4& v = camera.view;
+  const glm::vec3 right(v[0][0], v[1][0], v[2][0]), up(v[0][1], v[1][1], v[2][1]);
+  const float per_depth = 2.0f / (camera.projection[1][1] * float(view.height));
+  const float half_px = 1.0f * px;
+  std::vector<render::ColouredVertex> quads;
+  quads.reserve(6 * cloud.sphere.size());
+  for (const auto& p : cloud.sphere) {
+    // A little inside the sphere: the squares write depth, and the trail and
+    // the current point on the near side must stay in front of them.
+    const glm::vec3 at = 0.997f * glm::vec3(p.x(), p.y(), p.z());
+    const float depth = -(v * glm::vec4(at, 1.0f)).z;
+    if (depth <= 0.0f) continue;
+    const float h = half_px * per_depth * depth;
+    add_square(quads, at, right * h, up * h, colour);
+  }
+  list.add_triangles(quads);
+}
+
+void draw_cloud_plane(render::DrawList& flat, const render::Panel2D& plot,
+                      const scene::CloudFrame& cloud, const glm::vec4& colour, float px) {
+  std::vector<render::ColouredVertex> quads;
+  quads.reserve(6 * cloud.plane.size());
+  const float h = 0.8f * px;
+  for (const auto& p : cloud.plane) {
+    const glm::vec2 at = plot.to_pixel({p.x(), p.y()});
+    add_square(quads, glm::vec3(at, 0.0f), {h, 0.0f, 0.0f}, {0.0f, h, 0.0f}, colour);
+  }
+  flat.add_triangles(quads);
+}
+
+void draw_cloud_spread(render::DrawList& flat, const render::Viewport& view,
+                       const scene::CloudFrame& cloud, const glm::vec4& colour,
+                       const scene::Theme& ink, float px) {
+  if (cloud.spread.empty() || cloud.t_end <= 0.0) return;
+  const int w = int(std::min(110.0f * px, 0.4f * float(view.width)));
+  const int h = int(std::min(35.0f * px, 0.25f * float(view.height)));
+  const int margin = int(12.0f * px);
+  // Bottom right: the colour bar of the trail's time takes the bottom left,
+  // the overlay floating over a small picture's view the top left.
+  const render::Viewport area{view.x + view.width - margin - w, view.y + view.height - margin - h,
+                              w, h};
+  const render::Panel2D plot(area, {0.0, cloud.t_end, kLogSpreadMin, kLogSpreadMax}, false);
+  auto rgba = [](const scene::Rgba& c) { return glm::vec4(c[0], c[1], c[2], c[3]); };
+  render::PanelStyle s;
+  s.background = rgba(ink.panel_background);
+  s.frame = rgba(ink.panel_frame);
+  s.axis = rgba(ink.panel_axis);
+  s.text = rgba(ink.panel_text);
+  s.tick_labels = false;
+  s.grid_lines = false;
+  s.tick_length = 0.0f;
+  s.frame_width = s.axis_width = 1.0f * px;
+  plot.draw_axes(flat, s);
+  std::vector<glm::dvec2> curve;
+  curve.reserve(cloud.spread.size());
+  for (const auto& p : cloud.spread) curve.emplace_back(p.x(), log_spread(p.y()));
+  const glm::vec4 line{colour.r, colour.g, colour.b, 1.0f};
+  if (curve.size() >= 2) plot.draw_polyline(flat, curve, std::span(&line, 1), 1.5f * px);
+  char text[120];
+  std::snprintf(text, sizeof text, "cloud of %d: covers %.2g%% of the sphere", cloud.members,
+                100.0 * double(cloud.spread.back().y()));
+  plot.draw_text(flat, {0.0, kLogSpreadMax},
+                 {{}, text, s.text, render::TextAnchor::bottom_left, {0.0f, -4.0f * px}});
+}
+
+}  // namespace epviz::paint

@@ -1,0 +1,34 @@
+#pragma once
+// Draws a cloud (scene/cloud.hpp): its members as points on the sphere and in
+// the (a, b) panel, and a small chart of its spread over time in a corner of
+// the 3D view. Plain positions in, draw lists out: no physics here.
+#include <glm/vec4.hpp>
+
+#include "render/camera.hpp"
+#include "render/draw_list.hpp"
+#include "render/panel_2d.hpp"
+#include "scene/cloud.hpp"
+#include "scene/frame.hpp"
+#include "scene/theme.hpp"
+
+namespace epviz::paint {
+
+// The members' colour: the current point's, half transparent, so that a
+// dense cloud reads darker where it is denser.
+glm::vec4 cloud_colour(const scene::Frame& f);
+
+// `px`: the picture's line-width scale (pixels per 360th of its height).
+// The points are small squares facing `camera` (two triangles each, no
+// geometry shader: ten thousand markers cost llvmpipe several times more).
+void draw_cloud_sphere(render::DrawList& list, const scene::CloudFrame& cloud,
+                       const glm::vec4& colour, const render::Camera& camera,
+                       const render::Viewport& view, float px);
+void draw_cloud_plane(render::DrawList& flat, const render::Panel2D& plot,
+                      const scene::CloudFrame& cloud, const glm::vec4& colour, float px);
+// The spread chart, at the bottom right of `view` (image pixels): log10 of the
+// fraction of the sphere covered against time, with the value now.
+void draw_cloud_spread(render::DrawList& flat, const render::Viewport& view,
+                       const scene::CloudFrame& cloud, const glm::vec4& colour,
+                       const scene::Theme& ink, float px);
+
+}  // namespace epviz::paint
