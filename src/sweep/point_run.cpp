@@ -142,18 +142,22 @@ std::optional<double> FtleWindows::value() const {
   return sum_ / (double(windows_) * window_);
 }
 
-std::optional<double> finite_time_lyapunov(const sim::RunSpec& run, const FtleSettings& settings) {
+std::optional<double> finite_time_lyapunov(const sim::RunSpec& run, const FtleSettings& settings,
+                                           const std::function<void(const FtleState&)>& on_window) {
   FtleWindows w(run, settings);
   while (!w.done()) {
     const auto a = advance(run, w.base(), w.window());
     const auto b = advance(run, w.neighbour(), w.window());
     w.absorb(a, b);
+    if (a && on_window) on_window(*a);
   }
   return w.value();
 }
 
 PreparedPoint prepared_point(const PointFields& fields, sim::RunSpec run) {
-  return {fields.index, fields.axis_values.dump(), fields.ignored, std::move(run)};
+  PreparedPoint p{fields.index, fields.axis_values.dump(), fields.ignored, std::move(run), {}};
+  if (fields.area) p.level = physics::Level{*fields.energy, *fields.area};
+  return p;
 }
 
 namespace {
