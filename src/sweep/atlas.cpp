@@ -227,8 +227,10 @@ std::vector<AtlasFigure> atlas_figures(const std::vector<Json>& rows, const Atla
           hi = std::max(hi, v);
         }
     // (a largest step on a log grid reads best in log10 whatever its spread).
-    h.log_scale = positive && hi > 0.0 && lo > 0.0 &&
-                  (hi / lo > 100.0 || (!reduced.empty() && hi / lo > 4.0));
+    // A colour bar fixed to start at zero or below cannot be logarithmic;
+    // values all below 1e-3 (a drift of an integral) read only in log10.
+    h.log_scale = positive && hi > 0.0 && lo > 0.0 && !(q.min <= 0.0) &&
+                  (hi / lo > 100.0 || hi < 1e-3 || (!reduced.empty() && hi / lo > 4.0));
     h.range_min = q.min;
     h.range_max = q.max;
     f.file_name = safe("atlas_" + q.metric + "_" + q.x + "_" + q.y + key + ".png");

@@ -78,10 +78,7 @@ PointRow level_row(const PreparedPoint& point, const std::string& sweep_hash,
                    const LevelMetrics& m) {
   const sim::RunSpec& run = point.run;
   io::JsonLine row;
-  row.begin_object();
-  row.key("index").value(point.index);
-  row.key("sweep").value(sweep_hash);
-  row.key("axes").raw(point.axes);
+  begin_row(row, point, sweep_hash);
   row.key("case").value(physics::case_name(run.case_id));
   row.key("method").value(sim::name(run.method));
   if (sim::is_adaptive(run.method))

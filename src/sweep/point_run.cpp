@@ -217,16 +217,20 @@ PointRow run_point(const PreparedPoint& point, const std::string& sweep_hash, bo
   return point_row(point, sweep_hash, outcome, reference, cache, exponent);
 }
 
+void begin_row(io::JsonLine& row, const PreparedPoint& point, const std::string& sweep_hash) {
+  row.begin_object();
+  row.key("index").value(point.index);
+  row.key("sweep").value(sweep_hash);
+  row.key("axes").raw(point.axes);
+}
+
 PointRow point_row(const PreparedPoint& point, const std::string& sweep_hash,
                    const PointOutcome& outcome, bool reference, ReferenceCache* cache,
                    const std::optional<std::optional<double>>& ftle) {
   const sim::RunSpec& run = point.run;
   const sim::RunResult& result = outcome.result;
   io::JsonLine row;
-  row.begin_object();
-  row.key("index").value(point.index);
-  row.key("sweep").value(sweep_hash);
-  row.key("axes").raw(point.axes);
+  begin_row(row, point, sweep_hash);
   if (!point.ignored.empty()) {
     row.key("ignored").begin_array();
     for (const auto& name : point.ignored) row.value(name);

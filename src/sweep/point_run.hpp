@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/json_line.hpp"
 #include "physics/level_set.hpp"
 #include "sim/drift.hpp"
 #include "sim/run_spec.hpp"
@@ -100,6 +101,10 @@ struct PreparedPoint {
   std::optional<physics::Level> level;
 };
 PreparedPoint prepared_point(const PointFields& fields, sim::RunSpec run);
+
+// Opens a point's row with the keys every row starts with: the point's
+// index, its sweep's hash and its axis values.
+void begin_row(io::JsonLine& row, const PreparedPoint& point, const std::string& sweep_hash);
 
 struct PointRow {
   std::string line;     // a JSON object on one line, without the line break

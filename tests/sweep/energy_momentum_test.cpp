@@ -96,6 +96,27 @@ TEST(EnergyMomentum, ALevelBelowTheLeastPotentialIsInadmissibleNotAFailure) {
 // C0 from 0.5: at C0 = 0 one of the generator's Kovalevskaya orbits lies near
 // a hyperbolic set of the integrable top (FTLE 0.3 to 0.6 with K kept to
 // 1e-10; docs/cluster.md).
+// A colour bar fixed from 0 stays linear however far the values spread (the
+// two shipped FTLE maps compare by colour); values all below 1e-3, such as a
+// drift of K, are drawn in log10, where linear ticks would all read 0.
+TEST(EnergyMomentum, AtlasScaleFollowsTheFixedRangeAndTinyValues) {
+  std::vector<Json> rows;
+  for (int i = 0; i < 2; ++i) {
+    Json r = {{"index", i},
+              {"axes", {{"energy", 1.0 + i}, {"area_constant", 0.5}}},
+              {"ftle", i == 0 ? 1e-4 : 0.2},
+              {"extra_integral_range", i == 0 ? 1e-11 : 5e-11},
+              {"failure", nullptr}};
+    rows.push_back(r);
+  }
+  const auto ftle = sweep::atlas_figures(rows, {"ftle", "area_constant", "energy", 0.0, 0.3});
+  EXPECT_FALSE(ftle.at(0).heat_map.log_scale);
+  const auto free_ftle = sweep::atlas_figures(rows, {"ftle", "area_constant", "energy"});
+  EXPECT_TRUE(free_ftle.at(0).heat_map.log_scale);  // 1e-4 to 0.2, no range given
+  const auto k = sweep::atlas_figures(rows, {"extra_integral_range", "area_constant", "energy"});
+  EXPECT_TRUE(k.at(0).heat_map.log_scale);
+}
+
 TEST(EnergyMomentum, KovalevskayaStaysNearZeroFtleWhileTheGenericBodyHasChaos) {
   TempDir dir;
   const auto kov =
