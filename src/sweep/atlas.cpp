@@ -190,11 +190,24 @@ std::vector<AtlasFigure> atlas_figures(const std::vector<Json>& rows, const Atla
         h.title += " — " + verdict;
     h.missing = reduced.empty() ? (q.metric == "ftle" ? "no value (a run failed)" : "no value")
                                 : "every " + reduced + " failed";
+    // A level near the boundary may have no state on the generator's grid.
+    if (members.front()->contains("admissible"))
+      h.missing = "no value (no orbit found or all lost)";
     h.values.assign(h.rows.size(), std::vector<double>(h.columns.size(), kNaN));
     for (const Json* r : members) {
       const std::size_t i = position[q.x][label_of((*r)["axes"][q.x])];
       const std::size_t j = position[q.y][label_of((*r)["axes"][q.y])];
-      double& cell = h.values[upwards ? h.rows.size() - 1 - j : j][i];
+      const std::size_t row = upwards ? h.rows.size() - 1 - j : j;
+      double& cell = h.values[row][i];
+      // A level below the least energy at its C0 has no states: hatched
+      // as such, not grey as a failed run (sweep/level_point.hpp).
+      if (r->contains("admissible") && (*r)["admissible"] == false) {
+        if (h.undecided.empty())
+          h.undecided.assign(h.rows.size(), std::vector<bool>(h.columns.size(), false));
+        h.undecided[row][i] = true;
+        h.undecided_label = "inadmissible: below the least energy at this C₀";
+        continue;
+      }
       if (!reduced.empty()) {
         const bool failed = !(*r)["failure"].is_null();
         const Json& v = (*r)["axes"][reduced];
@@ -214,8 +227,10 @@ std::vector<AtlasFigure> atlas_figures(const std::vector<Json>& rows, const Atla
           hi = std::max(hi, v);
         }
     // (a largest step on a log grid reads best in log10 whatever its spread).
-    h.log_scale = positive && hi > 0.0 && lo > 0.0 &&
-                  (hi / lo > 100.0 || (!reduced.empty() && hi / lo > 4.0));
+    // A colour bar fixed to start at zero or below cannot be logarithmic;
+    // values all below 1e-3 (a drift of an integral) read only in log10.
+    h.log_scale = positive && hi > 0.0 && lo > 0.0 && !(q.min <= 0.0) &&
+                  (hi / lo > 100.0 || hi < 1e-3 || (!reduced.empty() && hi / lo > 4.0));
     h.range_min = q.min;
     h.range_max = q.max;
     f.file_name = safe("atlas_" + q.metric + "_" + q.x + "_" + q.y + key + ".png");

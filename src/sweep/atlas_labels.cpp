@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "sim/section.hpp"
+#include "sweep/level_point.hpp"
 
 namespace epviz::sweep {
 namespace {
@@ -44,12 +45,14 @@ std::string axis_symbol(const std::string& field) {
   if (const int k = component(field, "gamma"); k >= 0)
     return std::string(sim::symbol(sim::StateComponent(int(sim::StateComponent::gamma1) + k)));
   if (field == "energy") return "E";
+  if (field == "area_constant") return "C₀";
   if (field == "t_end") return "T";
   return field;
 }
 
 std::string axis_title(const std::string& field, const std::vector<const Json*>& rows) {
   if (field == "energy") return "energy E";
+  if (field == "area_constant") return "area constant C₀";
   if (field == "t_end") return "end time T";
   const int k = component(field, "gamma");
   if (k < 0) return axis_symbol(field);
@@ -67,6 +70,9 @@ std::string metric_label(const std::string& metric) {
   if (metric == "ftle") return "largest FTLE λ (1/time)";
   if (metric == "time_to_failure") return "time to failure (time)";
   if (metric == "cpu_seconds") return "CPU time (s)";
+  if (metric == "chaotic_share")
+    return "share of chaotic orbits (FTLE > " + number_text(kChaoticFtle) + ")";
+  if (metric == "extra_integral_range") return "largest relative range of K over an orbit";
   if (metric == "reference_error") return "largest distance from the reference run";
   const std::string drift = "max_relative_drift.";
   if (metric.starts_with(drift)) {

@@ -142,18 +142,22 @@ std::optional<double> FtleWindows::value() const {
   return sum_ / (double(windows_) * window_);
 }
 
-std::optional<double> finite_time_lyapunov(const sim::RunSpec& run, const FtleSettings& settings) {
+std::optional<double> finite_time_lyapunov(const sim::RunSpec& run, const FtleSettings& settings,
+                                           const std::function<void(const FtleState&)>& on_window) {
   FtleWindows w(run, settings);
   while (!w.done()) {
     const auto a = advance(run, w.base(), w.window());
     const auto b = advance(run, w.neighbour(), w.window());
     w.absorb(a, b);
+    if (a && on_window) on_window(*a);
   }
   return w.value();
 }
 
 PreparedPoint prepared_point(const PointFields& fields, sim::RunSpec run) {
-  return {fields.index, fields.axis_values.dump(), fields.ignored, std::move(run)};
+  PreparedPoint p{fields.index, fields.axis_values.dump(), fields.ignored, std::move(run), {}};
+  if (fields.area) p.level = physics::Level{*fields.energy, *fields.area};
+  return p;
 }
 
 namespace {
@@ -213,16 +217,20 @@ PointRow run_point(const PreparedPoint& point, const std::string& sweep_hash, bo
   return point_row(point, sweep_hash, outcome, reference, cache, exponent);
 }
 
+void begin_row(io::JsonLine& row, const PreparedPoint& point, const std::string& sweep_hash) {
+  row.begin_object();
+  row.key("index").value(point.index);
+  row.key("sweep").value(sweep_hash);
+  row.key("axes").raw(point.axes);
+}
+
 PointRow point_row(const PreparedPoint& point, const std::string& sweep_hash,
                    const PointOutcome& outcome, bool reference, ReferenceCache* cache,
                    const std::optional<std::optional<double>>& ftle) {
   const sim::RunSpec& run = point.run;
   const sim::RunResult& result = outcome.result;
   io::JsonLine row;
-  row.begin_object();
-  row.key("index").value(point.index);
-  row.key("sweep").value(sweep_hash);
-  row.key("axes").raw(point.axes);
+  begin_row(row, point, sweep_hash);
   if (!point.ignored.empty()) {
     row.key("ignored").begin_array();
     for (const auto& name : point.ignored) row.value(name);

@@ -4,6 +4,7 @@
 // state, steps, evaluations and CPU time, the same numbers `epviz simulate`
 // reports for the same run; optionally the separation from a reference run
 // and a finite-time Lyapunov exponent. Safe to call from several threads.
+#include <functional>
 #include <future>
 #include <map>
 #include <mutex>
@@ -13,6 +14,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/json_line.hpp"
+#include "physics/level_set.hpp"
 #include "sim/drift.hpp"
 #include "sim/run_spec.hpp"
 #include "sim/simulate.hpp"
@@ -42,15 +45,19 @@ sim::RunSpec reference_run(const sim::RunSpec& run);
 double max_separation(const std::vector<sim::Sample>& a, const std::vector<sim::Sample>& b);
 
 // The finite-time Lyapunov exponent of `run` (docs/cluster.md defines it):
-// nullopt when either state's integration fails.
-std::optional<double> finite_time_lyapunov(const sim::RunSpec& run, const FtleSettings& settings);
+// nullopt when either state's integration fails. `on_window`, if given, sees
+// the base state at the end of every window (an energy-momentum map follows
+// the fourth integral along the orbit with it).
+using FtleState = Eigen::Matrix<double, 6, 1>;
+std::optional<double> finite_time_lyapunov(
+    const sim::RunSpec& run, const FtleSettings& settings,
+    const std::function<void(const FtleState&)>& on_window = {});
 
 // The exponent's bookkeeping, window after window: the base state and its
 // neighbour, each advanced over one window by the run's own method and
 // accuracy (window_run), and the sum of the logarithmic growths.
 // finite_time_lyapunov drives it for one point; the batch path
 // (batch_points.hpp) for many side by side.
-using FtleState = Eigen::Matrix<double, 6, 1>;
 class FtleWindows {
  public:
   FtleWindows(const sim::RunSpec& run, const FtleSettings& settings);
@@ -89,8 +96,15 @@ struct PreparedPoint {
   std::string axes = "{}";           // the point's axis values, one JSON object
   std::vector<std::string> ignored;  // PointFields::ignored
   sim::RunSpec run;
+  // A point of an energy-momentum map: the level its orbits start on (the
+  // run's initial state is then unused; sweep/level_point.hpp).
+  std::optional<physics::Level> level;
 };
 PreparedPoint prepared_point(const PointFields& fields, sim::RunSpec run);
+
+// Opens a point's row with the keys every row starts with: the point's
+// index, its sweep's hash and its axis values.
+void begin_row(io::JsonLine& row, const PreparedPoint& point, const std::string& sweep_hash);
 
 struct PointRow {
   std::string line;     // a JSON object on one line, without the line break

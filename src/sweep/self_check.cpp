@@ -13,6 +13,7 @@
 #include "io/bad_input.hpp"
 #include "job/resolve.hpp"
 #include "sim/simulate.hpp"
+#include "sweep/level_point.hpp"
 #include "sweep/point_run.hpp"
 #include "sweep/sweep_point.hpp"
 
@@ -134,13 +135,16 @@ SelfCheck run_self_check(const SweepSpec& spec, const std::vector<Json>& rows,
   // the reader keeps what it has read.
   PointReader read_point(spec);
   std::vector<sim::RunSpec> runs;
+  std::vector<std::optional<physics::Level>> levels;
   for (long i : sample) {
     if (!by_index.count(i))
       throw io::BadInput(spec.file + ": the self-check's point " + std::to_string(i) +
                          " has no row");
     try {
-      runs.push_back(resolve_point(read_point(i),
-                                   [](const job::SimulationFields& f) { return job::resolve(f); }));
+      const auto p = read_point(i);
+      runs.push_back(
+          resolve_point(p, [](const job::SimulationFields& f) { return job::resolve(f); }));
+      levels.push_back(prepared_point(p, runs.back()).level);
     } catch (const std::invalid_argument& e) {
       throw io::BadInput(e.what());
     }
@@ -161,9 +165,12 @@ SelfCheck run_self_check(const SweepSpec& spec, const std::vector<Json>& rows,
           v.index = sample[k];
           v.metric = metrics[m];
           v.value = number_in(row, metrics[m]);
-          v.tighter = metrics[m] == "ftle"
-                          ? finite_time_lyapunov(tightened(runs[k], tighter), *spec.ftle)
-                          : tighter_reference_error(runs[k], tighter);
+          // A level's FTLE is the largest of its orbits' (sweep/level_point.hpp).
+          v.tighter = metrics[m] != "ftle" ? tighter_reference_error(runs[k], tighter)
+                      : levels[k]          ? level_metrics(tightened(runs[k], tighter), *levels[k],
+                                                           spec.level_orbits, *spec.ftle)
+                                        .largest_ftle
+                                  : finite_time_lyapunov(tightened(runs[k], tighter), *spec.ftle);
         }
       } catch (...) {
         std::lock_guard g(lock);

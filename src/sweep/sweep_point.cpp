@@ -68,6 +68,8 @@ PointReader::PointReader(const SweepSpec& spec) : spec_(spec) {
     AxisTarget t;
     if (axis.field == energy_axis) {
       t.kind = AxisTarget::Kind::energy;
+    } else if (axis.field == area_axis) {
+      t.kind = AxisTarget::Kind::area;
     } else if (const auto bracket = axis.field.find('['); bracket != std::string::npos) {
       // "omega[1]": the axis reader accepts only this form.
       t.kind = AxisTarget::Kind::component;
@@ -117,6 +119,7 @@ PointFields PointReader::operator()(long index) {
           p.energy = value.get<double>();
           p.energy_origin = read.origin;
           break;
+        case AxisTarget::Kind::area: p.area = value.get<double>(); break;
         case AxisTarget::Kind::field: p.fields.overlay(read.fields); break;
         case AxisTarget::Kind::component: {
           auto v = current_vector(p.fields, target.vector);

@@ -18,8 +18,11 @@ namespace epviz::sweep {
 struct PointFields {
   long index = 0;
   job::SimulationFields fields;
-  std::optional<double> energy;  // total energy C1 the initial omega is scaled to
+  // Total energy C1: the initial omega is scaled to it, or, with `area`, the
+  // level (C1, C0) an energy-momentum map's orbits start on.
+  std::optional<double> energy;
   std::string energy_origin;
+  std::optional<double> area;  // the area constant C0 of the level
   // The point's value of each axis, by field name, in axis order.
   nlohmann::ordered_json axis_values = nlohmann::ordered_json::object();
   // Axes that do not apply to this point: "step" for an adaptive method,
@@ -41,7 +44,7 @@ class PointReader {
  private:
   // Where an axis's values go, from its field name, worked out once.
   struct AxisTarget {
-    enum class Kind { field, component, energy } kind = Kind::field;
+    enum class Kind { field, component, energy, area } kind = Kind::field;
     std::string vector;         // a component's vector: "inertia", "com", "omega" or "gamma"
     std::size_t component = 0;  // and its index, 0 to 2
   };
@@ -71,11 +74,12 @@ PointFields point_fields(const SweepSpec& spec, long index);
 void set_energy(sim::RunSpec& spec, double energy, const std::string& origin);
 
 // The resolved run of a point: fields checked and defaults filled (the
-// caller's resolver, which is `epviz simulate`'s), then the energy level set.
+// caller's resolver, which is `epviz simulate`'s), then the energy level set
+// (unless the point is a level (C1, C0), whose states come from the level).
 template <class Resolver>
 sim::RunSpec resolve_point(const PointFields& p, const Resolver& resolve) {
   sim::RunSpec run = resolve(p.fields);
-  if (p.energy) set_energy(run, *p.energy, p.energy_origin);
+  if (p.energy && !p.area) set_energy(run, *p.energy, p.energy_origin);
   return run;
 }
 

@@ -11,6 +11,7 @@
 #include "io/bad_input.hpp"
 #include "job/resolve.hpp"
 #include "sweep/batch_points.hpp"
+#include "sweep/level_point.hpp"
 
 namespace epviz::sweep {
 
@@ -53,7 +54,7 @@ std::vector<Work> work_list(const std::vector<PreparedPoint>& points, int thread
   std::map<std::string, std::vector<const PreparedPoint*>> groups;
   std::vector<Work> scalar;
   for (const auto& p : points) {
-    if (path == PointPath::batch && runs_batched(p.run)) {
+    if (path == PointPath::batch && !p.level && runs_batched(p.run)) {
       auto [it, fresh] = groups.try_emplace(batch_key(p.run));
       if (fresh) keys.push_back(it->first);
       it->second.push_back(&p);
@@ -107,8 +108,12 @@ SweepTotals run_points(const SweepSpec& spec, const std::vector<PreparedPoint>& 
             on_row();
           }
         };
+        const PreparedPoint& first = *w.points.front();
         if (w.batched)
           run_batched(w.points, spec.hash, spec.reference, spec.ftle, &references, put);
+        else if (first.level)
+          put(level_row(first, spec.hash,
+                        level_metrics(first.run, *first.level, spec.level_orbits, *spec.ftle)));
         else
           put(run_point(*w.points.front(), spec.hash, spec.reference, spec.ftle, &references));
       } catch (...) {

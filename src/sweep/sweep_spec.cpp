@@ -106,6 +106,7 @@ std::vector<std::string> axis_fields() {
       for (int i = 0; i < 3; ++i) components.push_back(info.key + "[" + std::to_string(i) + "]");
   }
   f.emplace_back(energy_axis);
+  f.emplace_back(area_axis);
   f.insert(f.end(), components.begin(), components.end());
   return f;
 }
@@ -135,6 +136,11 @@ std::vector<std::string> row_metrics() {
           "cpu_seconds"};
 }
 
+std::vector<std::string> level_row_metrics() {
+  return {"ftle",           "chaotic_share", "extra_integral_range",
+          "minimum_energy", "lost_orbits",   "cpu_seconds"};
+}
+
 std::string atlas_metrics_allowed(bool reference, bool ftle, const std::vector<std::string>& axes) {
   std::string s;
   auto add = [&](const std::string& m) { s += (s.empty() ? "" : ", ") + m; };
@@ -153,7 +159,11 @@ namespace {
 // Whether the rows of a sweep will hold `metric` (an atlas that draws one
 // they lack would only be refused by merge, after every point has run).
 bool metric_in_rows(const std::string& metric, bool reference, bool ftle,
-                    const std::vector<std::string>& axes) {
+                    const std::vector<std::string>& axes, bool levels) {
+  if (levels) {
+    const auto known = level_row_metrics();
+    return std::find(known.begin(), known.end(), metric) != known.end();
+  }
   if (metric == "ftle") return ftle;
   if (metric == "reference_error") return reference;
   if (metric == "time_to_failure") return true;
@@ -162,6 +172,37 @@ bool metric_in_rows(const std::string& metric, bool reference, bool ftle,
     return std::find(axes.begin(), axes.end(), metric.substr(stable.size())) != axes.end();
   const auto known = row_metrics();
   return std::find(known.begin(), known.end(), metric) != known.end();
+}
+
+// An energy-momentum map: "level_orbits" with an "energy" and an
+// "area_constant" axis, an FTLE, and no axis or reference that would
+// contradict the states the level gives.
+void check_levels(io::ObjectReader& r, const SweepSpec& s) {
+  auto axis = [&](const std::string& field) -> const Axis* {
+    for (const auto& a : s.axes)
+      if (a.field == field) return &a;
+    return nullptr;
+  };
+  const Axis* area = axis(area_axis);
+  if (!s.levels()) {
+    if (area)
+      throw io::BadInput(s.file + ": key '" + area->key +
+                         ".field': 'area_constant' makes a level (C1, C0) of an energy-momentum "
+                         "map and needs \"level_orbits\": M (1 to " +
+                         std::to_string(kMaxLevelOrbits) + ")");
+    return;
+  }
+  if (!area || !axis(energy_axis))
+    r.fail("level_orbits",
+           "an energy-momentum map needs an 'energy' axis (C1) and an 'area_constant' axis (C0)");
+  if (!s.ftle)
+    r.fail("level_orbits", "an energy-momentum map needs \"ftle\" (true or {\"window\": ...})");
+  if (s.reference)
+    r.fail("reference", "not with \"level_orbits\" (an energy-momentum map measures the FTLE)");
+  for (const auto& a : s.axes)
+    if (a.field.starts_with("omega") || a.field.starts_with("gamma"))
+      throw io::BadInput(s.file + ": key '" + a.key + ".field': '" + a.field +
+                         "' cannot vary with \"level_orbits\": the level gives the initial states");
 }
 
 }  // namespace
@@ -219,6 +260,7 @@ SweepSpec read_sweep(const Json& root, const std::string& file) {
                          " points; split the sweep into several files");
   }
   if (auto ref = r.boolean("reference")) s.reference = *ref;
+  if (auto m = r.integer("level_orbits", 1, kMaxLevelOrbits)) s.level_orbits = int(*m);
   if (r.has("ftle")) {
     const Json* f = r.raw("ftle");
     if (f->is_boolean()) {
@@ -235,6 +277,7 @@ SweepSpec read_sweep(const Json& root, const std::string& file) {
                          io::describe(*f));
     }
   }
+  check_levels(r, s);
   if (r.has("atlas")) {
     const Json* a = r.raw("atlas");
     if (!a->is_array()) r.fail("atlas", "expected a list of {\"metric\", \"x\", \"y\"} objects");
@@ -265,10 +308,14 @@ SweepSpec read_sweep(const Json& root, const std::string& file) {
       }
       std::vector<std::string> axis_names;
       for (const auto& ax : s.axes) axis_names.push_back(ax.field);
-      if (!metric_in_rows(q.metric, s.reference, s.ftle.has_value(), axis_names))
-        ar.fail("metric",
-                "'" + io::printable(q.metric) + "' is not in this sweep's rows (allowed: " +
-                    atlas_metrics_allowed(s.reference, s.ftle.has_value(), axis_names) + ")");
+      if (!metric_in_rows(q.metric, s.reference, s.ftle.has_value(), axis_names, s.levels())) {
+        std::string allowed;
+        for (const auto& k : level_row_metrics()) allowed += (allowed.empty() ? "" : ", ") + k;
+        if (!s.levels())
+          allowed = atlas_metrics_allowed(s.reference, s.ftle.has_value(), axis_names);
+        ar.fail("metric", "'" + io::printable(q.metric) +
+                              "' is not in this sweep's rows (allowed: " + allowed + ")");
+      }
       ar.finish();
       s.atlases.push_back(q);
     }

@@ -24,11 +24,14 @@
 
 namespace epviz::sweep {
 
-// Fields an axis may name: the simulation keys themselves, one component of
-// a vector ("inertia[0]"), and "energy", the total energy C1 reached by
-// scaling the initial angular velocity (sweep/energy_level.hpp).
-// The sweepable fields of the table (job/fields.hpp) with their components.
+// Fields an axis may name: the sweepable fields of the table (job/fields.hpp)
+// with their components ("inertia[0]"), "energy", the total energy C1
+// reached by scaling the initial angular velocity (sweep/sweep_point.hpp),
+// and "area_constant", C0: with it "energy" and "area_constant" are a level
+// (C1, C0) of an energy-momentum map, whose "level_orbits" orbits start on
+// the level (sweep/level_point.hpp).
 inline constexpr const char* energy_axis = "energy";
+inline constexpr const char* area_axis = "area_constant";
 std::vector<std::string> axis_fields();
 std::string axis_fields_joined();
 
@@ -63,6 +66,11 @@ std::vector<std::string> row_metrics();
 // "ftle, time_to_failure, largest_stable:AXIS (AXIS: gamma[0], ...), cpu_seconds, ...".
 std::string atlas_metrics_allowed(bool reference, bool ftle, const std::vector<std::string>& axes);
 
+// The numbers an energy-momentum map's rows hold (sweep/level_point.hpp).
+std::vector<std::string> level_row_metrics();
+
+inline constexpr int kMaxLevelOrbits = 4096;
+
 struct SweepSpec {
   std::string file;
   job::SimulationFields base;
@@ -70,6 +78,9 @@ struct SweepSpec {
   bool reference = false;
   std::optional<FtleSettings> ftle;
   std::vector<AtlasRequest> atlases;
+  // Orbits per level of an energy-momentum map; 0: the sweep is not one.
+  int level_orbits = 0;
+  bool levels() const { return level_orbits > 0; }
   // The self-check's limit (sweep/self_check.hpp): the largest change a
   // sampled point's metric may show at a 100x tighter tolerance, as a share of
   // the colour bar's range ("self_check": {"threshold": 0.05}).
