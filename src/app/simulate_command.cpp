@@ -81,23 +81,25 @@ int run_simulate(const RawOptions& raw) {
   std::optional<io::AtomicFile> csv_file;
   if (!raw.csv.empty()) csv_file.emplace(raw.csv);
   for (const auto& spec : specs) {
-    const sim::InvariantMonitor monitor(spec.body, spec.case_id, spec.initial);
-    sim::Drifts drift = monitor.no_drift();
+    sim::RunDriftMonitor drifts(spec);
     std::optional<sweep::SamplesCsvWriter> csv;
     if (csv_file) csv.emplace(spec, *csv_file);
     io::ProgressOptions po;
     po.label = "simulate " + physics::case_name(spec.case_id);
     po.unit = "samples";
     io::ProgressLine progress(spec.samples + 1, po);
-    const auto result = sim::simulate(spec, [&](const sim::Sample& s) {
-      monitor.worsen(drift, s);
-      if (csv) csv->add(s);
-      progress.advance();
-    });
+    const auto result = sim::simulate(
+        spec,
+        [&](const sim::Sample& s) {
+          drifts.output(s);
+          if (csv) csv->add(s);
+          progress.advance();
+        },
+        [&](const sim::Sample& s) { drifts.step(s); });
     progress.finish();
     if (csv) csv->flush();
-    std::fputs(sweep::run_summary(spec, result, drift).c_str(), summary);
-    reports.push_back(sweep::run_report(spec, result, drift));
+    std::fputs(sweep::run_summary(spec, result, drifts.drifts()).c_str(), summary);
+    reports.push_back(sweep::simulate_report(spec, result, drifts.drifts()));
     if (result.failure) {
       ++failures;
       std::fprintf(stderr, "epviz: %s\n",

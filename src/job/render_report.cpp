@@ -16,6 +16,14 @@ nlohmann::json number_or_null(double v) {
 
 }  // namespace
 
+nlohmann::json drift_json(const sim::Drifts& d) {
+  nlohmann::json j = {{"gamma_norm2", number_or_null(d.gamma_norm2)},
+                      {"area", number_or_null(d.area)},
+                      {"energy", number_or_null(d.energy)}};
+  j["extra_integral"] = d.extra ? number_or_null(*d.extra) : nlohmann::json(nullptr);
+  return j;
+}
+
 nlohmann::json runs_report(const scene::FrameSource& source) {
   const auto& plan = source.plan();
   nlohmann::json runs = nlohmann::json::array();
@@ -40,12 +48,8 @@ nlohmann::json runs_report(const scene::FrameSource& source) {
     j["flow_evals"] = stats.flow_evals;
     j["interpolation_evals"] = track.trajectory().interpolation_evals();
     j["t_reached"] = track.latest().t;
-    const auto& d = track.max_drift();
-    nlohmann::json drift = {{"gamma_norm2", number_or_null(d.gamma_norm2)},
-                            {"area", number_or_null(d.area)},
-                            {"energy", number_or_null(d.energy)}};
-    drift["extra_integral"] = d.extra ? number_or_null(*d.extra) : nlohmann::json(nullptr);
-    j["max_relative_drift"] = std::move(drift);
+    j["max_relative_drift"] = drift_json(track.drifts().output);
+    j["step_drift"] = drift_json(track.drifts().steps);
     // null: pixel-true over the whole run drawn (or not checked: "shadowed" says which).
     j["shadowed"] = track.shadowed();
     j["pixel_true_until"] = track.pixel_true_until() ? nlohmann::json(*track.pixel_true_until())

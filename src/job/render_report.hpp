@@ -10,6 +10,7 @@
 #include "numerics/failure.hpp"
 #include "scene/frame_source.hpp"
 #include "scene/plan.hpp"
+#include "sim/drift.hpp"
 
 namespace epviz::job {
 
@@ -21,9 +22,16 @@ struct RenderCounts {
 };
 
 // Per run of a scene after its frames: method, the step used (fixed) or
-// tolerance (adaptive), steps, evaluations, the drift of its steps, and its
+// tolerance (adaptive), steps, evaluations, its two drifts (sim::RunDrifts:
+// "max_relative_drift" over the samples drawn, as in simulate's report and a
+// sweep's rows, and "step_drift" at the integrator's steps), and its
 // pixel-true horizon.
 nlohmann::json runs_report(const scene::FrameSource& source);
+
+// A report's object of the largest relative drift of each invariant
+// (gamma_norm2, area, energy, extra_integral; null where none or not finite):
+// render's and simulate's "step_drift".
+nlohmann::json drift_json(const sim::Drifts& d);
 
 // The job's report; `runs` is runs_report() after its last frame (its first
 // run's step and pixel-true horizon are repeated at the top level).

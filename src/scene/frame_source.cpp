@@ -214,7 +214,7 @@ void FrameSource::compose_comparison(Frame& f) const {
     c.colours.push_back(run_colour(i, light));
     c.lines.push_back(run_line_style(i));
     // Each run's largest drift, named: the one that says most of its accuracy.
-    auto [name, value] = largest_drift(track.max_drift(), track.spec().case_id);
+    auto [name, value] = largest_drift(track.drifts().output, track.spec().case_id);
     f.overlay.drifts.emplace_back(std::to_string(i + 1) + ": " + name, value);
     if (i == 0) continue;
 

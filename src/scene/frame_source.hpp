@@ -32,7 +32,8 @@ class FrameSource {
 
   // The first run (the only one outside comparison scenes).
   const sim::Trajectory& trajectory() const { return tracks_.front()->trajectory(); }
-  const sim::Drifts& max_drift() const { return tracks_.front()->max_drift(); }
+  // The drift over the samples drawn (the overlay's), interpolated ones included.
+  const sim::Drifts& max_drift() const { return tracks_.front()->drifts().output; }
   const ScenePlan& plan() const { return plan_; }
   double time() const { return latest().t; }
   const sim::Sample& latest() const { return tracks_.front()->latest(); }

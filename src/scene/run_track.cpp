@@ -14,12 +14,9 @@ RunTrack::RunTrack(const sim::RunSpec& spec, View view, int trace_axis, double s
       traced_axis_(Eigen::Vector3d::Unit(std::clamp(trace_axis, 1, 3) - 1)),
       trajectory_(sim::Trajectory::start(spec)),
       error_scale_px_(px_per_gamma * shadow_error_factor(spec)),
-      monitor_(spec.body, spec.case_id, spec.initial),
+      drifts_(spec),
       history_(sphere_px, plane_px) {
-  max_drift_ = monitor_.no_drift();
-  // The drift shown is that of the integrator's steps (sim::Trajectory::observe_steps),
-  // so that it does not depend on how often the frames sample the run.
-  trajectory_->observe_steps([this](const sim::Sample& s) { monitor_.worsen(max_drift_, s); });
+  trajectory_->observe_steps([this](const sim::Sample& s) { drifts_.step(s); });
   if (shadowed) shadow_ = sim::Trajectory::start(shadow_run(spec));
   take(trajectory_->initial());
 }
@@ -36,6 +33,7 @@ const sim::Sample& RunTrack::advance() {
 
 void RunTrack::take(const sim::Sample& s) {
   latest_ = s;
+  drifts_.output(s);
   HistoryPoint p;
   p.t = s.t;
   p.sphere = on_sphere(s).cast<float>();

@@ -1,6 +1,6 @@
 #pragma once
 // One run of a scene as the frame source follows it: its trajectory, the
-// drift of its steps, its trail history, and a shadow run that estimates how
+// drifts of its steps and of the states it draws, its trail history, and a shadow run that estimates how
 // far its picture is from the true motion.
 #include <memory>
 #include <optional>
@@ -33,7 +33,9 @@ class RunTrack {
   const sim::RunSpec& spec() const { return spec_; }
   const sim::Trajectory& trajectory() const { return *trajectory_; }
   sim::Trajectory& trajectory() { return *trajectory_; }
-  const sim::Drifts& max_drift() const { return max_drift_; }
+  // At the integrator's steps and over the samples drawn (sim::RunDrifts):
+  // the picture shows the second.
+  const sim::RunDrifts& drifts() const { return drifts_.drifts(); }
   const sim::Sample& latest() const { return latest_; }
   const TrailHistory& history() const { return history_; }
   // The point drawn on the sphere for a sample (gamma, or the apex in the space view).
@@ -59,8 +61,7 @@ class RunTrack {
   std::unique_ptr<sim::Trajectory> shadow_;
   bool shadow_failed_ = false;
   double error_scale_px_;  // estimated error in pixels per unit of |run - shadow|
-  sim::InvariantMonitor monitor_;
-  sim::Drifts max_drift_;
+  sim::RunDriftMonitor drifts_;
   TrailHistory history_;
   sim::Sample latest_;
   std::optional<double> pixel_true_until_;

@@ -52,6 +52,11 @@ Drifts InvariantMonitor::max_relative_drift(const std::vector<Sample>& samples) 
   return worst;
 }
 
+RunDriftMonitor::RunDriftMonitor(const RunSpec& spec)
+    : monitor_(spec.body, spec.case_id, spec.initial) {
+  drifts_.steps = drifts_.output = monitor_.no_drift();
+}
+
 MotionCheck::MotionCheck(const physics::Body& body, const physics::InitialState& initial,
                          double max_drift)
     : monitor_(body, physics::Case::custom, initial), max_drift_(max_drift) {}

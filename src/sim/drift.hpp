@@ -8,6 +8,7 @@
 #include "numerics/failure.hpp"
 
 #include "physics/invariants.hpp"
+#include "sim/run_spec.hpp"
 #include "sim/simulate.hpp"
 
 namespace epviz::sim {
@@ -40,6 +41,32 @@ class InvariantMonitor {
   physics::Case case_;
   physics::Invariants initial_;
   physics::Invariants scale_;
+};
+
+// The two figures every report gives of a run's invariants (epviz simulate's
+// and render's, from one RunDriftMonitor each): the largest relative drift at
+// the integrator's steps, the method's own conservation, and over the states
+// handed out (written or drawn, at the output times, interpolated between
+// steps or by dense output). They differ: implicit midpoint keeps a quadratic
+// invariant to round-off at its steps, not on the cubic between them.
+struct RunDrifts {
+  Drifts steps;
+  Drifts output;
+};
+
+// Folds both of one run: step() with the state at the end of every accepted
+// step (sim::Trajectory::observe_steps), output() with every state handed out.
+class RunDriftMonitor {
+ public:
+  explicit RunDriftMonitor(const RunSpec& spec);
+
+  void step(const Sample& s) { monitor_.worsen(drifts_.steps, s); }
+  void output(const Sample& s) { monitor_.worsen(drifts_.output, s); }
+  const RunDrifts& drifts() const { return drifts_; }
+
+ private:
+  InvariantMonitor monitor_;
+  RunDrifts drifts_;
 };
 
 // The test every run passes at each output time, whoever consumes it (epviz

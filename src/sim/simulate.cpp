@@ -40,10 +40,18 @@ RunResult simulate(const RunSpec& spec) {
   return r;
 }
 
-RunResult simulate(const RunSpec& spec, const SampleSink& sink) {
+RunResult simulate(const RunSpec& spec, const SampleSink& sink, const SampleSink& on_step) {
   RunResult r;
   double start = thread_cpu_seconds();
   auto trajectory = Trajectory::start(spec);
+  // The steps are kept while the clock runs and handed on after it stops:
+  // a copy per step costs nothing next to a step.
+  std::vector<Sample> steps;
+  if (on_step) trajectory->observe_steps([&steps](const Sample& s) { steps.push_back(s); });
+  auto hand_on_steps = [&] {
+    for (const auto& s : steps) on_step(s);
+    steps.clear();
+  };
   Sample s = trajectory->initial();
   r.cpu_seconds += thread_cpu_seconds() - start;
   sink(s);
@@ -56,6 +64,7 @@ RunResult simulate(const RunSpec& spec, const SampleSink& sink) {
       r.failure = e.failure();
     }
     r.cpu_seconds += thread_cpu_seconds() - start;
+    hand_on_steps();
     if (r.failure) break;
     sink(s);
     ++r.samples_written;

@@ -44,8 +44,11 @@ RunResult simulate(const RunSpec& spec);
 // keeping it, so that memory does not grow with spec.samples (result.samples
 // stays empty). cpu_seconds counts the integration only, not the sink.
 // Exceptions from the sink propagate.
+// `on_step`, when given, receives the state at the end of every accepted step
+// (Trajectory::observe_steps), those before an output time ahead of that
+// sample; it is called outside the timed integration, like the sink.
 using SampleSink = std::function<void(const Sample&)>;
-RunResult simulate(const RunSpec& spec, const SampleSink& sink);
+RunResult simulate(const RunSpec& spec, const SampleSink& sink, const SampleSink& on_step = {});
 
 // The calling thread's CPU time in seconds, the clock of cpu_seconds: a run
 // integrates on one thread, and in a sweep other threads run other points

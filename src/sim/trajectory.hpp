@@ -33,9 +33,8 @@ class Trajectory {
   virtual long interpolation_evals() const { return 0; }
 
   // Called with the state at the end of every accepted step, before the
-  // output time that needed it is handed out: the invariants' drift of a run
-  // is that of its steps, whatever the output spacing (render and simulate
-  // then agree).
+  // output time that needed it is handed out: the drift at the steps, which
+  // does not depend on the output spacing (sim::RunDriftMonitor).
   using StepObserver = std::function<void(const Sample&)>;
   virtual void observe_steps(StepObserver observer) { step_observer_ = std::move(observer); }
   double spacing() const { return spacing_; }

@@ -3,9 +3,11 @@
 #include <cstdio>
 
 #include "io/bad_input.hpp"
+#include "job/render_report.hpp"
 #include "job/resolve.hpp"
 #include "physics/cases.hpp"
 #include "sim/failure_advice.hpp"
+#include "sweep/simulation_output.hpp"
 
 namespace epviz::sweep {
 namespace {
@@ -52,7 +54,8 @@ void check_step_budget(const sim::RunSpec& spec) {
                        " (--max-steps); shorten --t-end or take a larger --step");
 }
 
-std::string run_summary(const sim::RunSpec& spec, const sim::RunResult& r, const sim::Drifts& d) {
+std::string run_summary(const sim::RunSpec& spec, const sim::RunResult& r,
+                        const sim::RunDrifts& drifts) {
   const std::string accuracy =
       sim::is_adaptive(spec.method) ? "tol " + fmt(spec.tol) : "step " + fmt(r.effective_step);
   char line[512];
@@ -62,11 +65,14 @@ std::string run_summary(const sim::RunSpec& spec, const sim::RunResult& r, const
       std::string(sim::name(spec.method)).c_str(), accuracy.c_str(), r.stats.steps,
       r.stats.rhs_evals, r.stats.rejected_steps, r.cpu_seconds);
   std::string text = line;
-  std::snprintf(line, sizeof line,
-                "%-20s max relative drift  |gamma|^2 %-9s  C0 %-9s  C1 %-9s  extra %s\n", "",
-                fmt(d.gamma_norm2).c_str(), fmt(d.area).c_str(), fmt(d.energy).c_str(),
-                d.extra ? fmt(*d.extra).c_str() : "-");
-  text += line;
+  auto drift_line = [&](const char* name, const sim::Drifts& d) {
+    std::snprintf(line, sizeof line, "%-20s %-18s  |gamma|^2 %-9s  C0 %-9s  C1 %-9s  extra %s\n",
+                  "", name, fmt(d.gamma_norm2).c_str(), fmt(d.area).c_str(), fmt(d.energy).c_str(),
+                  d.extra ? fmt(*d.extra).c_str() : "-");
+    text += line;
+  };
+  drift_line("max relative drift", drifts.output);
+  drift_line("step drift", drifts.steps);
   if (r.failure) {
     text += std::string(21, ' ');
     text += "FAILED: ";
@@ -74,6 +80,13 @@ std::string run_summary(const sim::RunSpec& spec, const sim::RunResult& r, const
     text += '\n';
   }
   return text;
+}
+
+nlohmann::json simulate_report(const sim::RunSpec& spec, const sim::RunResult& result,
+                               const sim::RunDrifts& drifts) {
+  nlohmann::json j = run_report(spec, result, drifts.output);
+  j["step_drift"] = job::drift_json(drifts.steps);
+  return j;
 }
 
 }  // namespace epviz::sweep

@@ -2,6 +2,7 @@
 // The runs `epviz simulate` makes of its fields, all checked before any is
 // integrated so that bad input leaves nothing behind, and the summary it
 // prints of each (the CSV and report are simulation_output.hpp).
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,9 +29,17 @@ std::vector<sim::RunSpec> simulate_runs(const job::SimulationFields& fields,
 // --t-end or --step, so it is refused (io::BadInput naming them).
 void check_step_budget(const sim::RunSpec& spec);
 
-// Two lines (three when the run failed): the case, formulation, method and
-// accuracy with the step counts and CPU time; the largest relative drifts.
+// Three lines (four when the run failed): the case, formulation, method and
+// accuracy with the step counts and CPU time; the largest relative drifts
+// over the samples ("max relative drift") and at the integrator's steps
+// ("step drift"), the names of the report's keys.
 std::string run_summary(const sim::RunSpec& spec, const sim::RunResult& result,
-                        const sim::Drifts& drift);
+                        const sim::RunDrifts& drifts);
+
+// simulate's report of a run (sweep::run_report, whose "max_relative_drift"
+// is over the samples written, as in a sweep's rows and render's report) with
+// render's "step_drift" added: the drift at the integrator's steps.
+nlohmann::json simulate_report(const sim::RunSpec& spec, const sim::RunResult& result,
+                               const sim::RunDrifts& drifts);
 
 }  // namespace epviz::sweep

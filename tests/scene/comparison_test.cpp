@@ -78,7 +78,7 @@ TEST(ComparisonFrames, IdenticalRunsCoincideAndDifferentOnesPart) {
   EXPECT_EQ(int(f.overlay.drifts.size()), scene::overlay_drift_rows(std::vector{ref, ref, coarse}));
   ASSERT_EQ(f.overlay.drifts.size(), 3u);
   for (int i = 0; i < 3; ++i) {
-    const auto& d = src.run(i).max_drift();
+    const auto& d = src.run(i).drifts().output;
     const double largest = std::max({d.gamma_norm2, d.area, d.energy, d.extra.value_or(0.0)});
     const auto& [name, value] = f.overlay.drifts[std::size_t(i)];
     EXPECT_EQ(value, largest) << name;

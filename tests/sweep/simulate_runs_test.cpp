@@ -60,19 +60,19 @@ TEST(SimulateRuns, SummaryLines) {
   sim::RunResult r;
   r.stats.steps = 2;
   r.effective_step = 0.5;
-  sim::Drifts d;
-  d.energy = 2.5e-7;
+  sim::RunDrifts d;
+  d.output.energy = 2.5e-7;
   const auto ok = run_summary(spec, r, d);
   EXPECT_EQ(ok.rfind("euler ", 0), 0u) << ok;
   EXPECT_NE(ok.find(" rk4 "), std::string::npos) << ok;
   EXPECT_NE(ok.find("step 0.5 "), std::string::npos) << ok;
   EXPECT_NE(ok.find("C1 2.5e-07"), std::string::npos) << ok;
   EXPECT_NE(ok.find("extra -\n"), std::string::npos) << ok;
-  EXPECT_EQ(std::count(ok.begin(), ok.end(), '\n'), 2);
+  EXPECT_EQ(std::count(ok.begin(), ok.end(), '\n'), 3);
 
   r.failure = numerics::Failure{0.25, "rk4", numerics::FailureKind::non_finite, "NaN in the state"};
   const auto failed = run_summary(spec, r, d);
-  EXPECT_EQ(std::count(failed.begin(), failed.end(), '\n'), 3);
+  EXPECT_EQ(std::count(failed.begin(), failed.end(), '\n'), 4);
   const auto last = failed.substr(failed.rfind('\n', failed.size() - 2) + 1);
   EXPECT_EQ(last.rfind(std::string(21, ' ') + "FAILED: rk4 failed at t = 0.25", 0), 0u) << last;
 }
