@@ -36,12 +36,10 @@ struct Reports {
 Reports run_both(const Settings& s, const test::TempDir& dir) {
   nlohmann::json sim = {{"case", "kovalevskaya"}, {"t_end", kTEnd}, {"method", s.method}};
   sim[s.fixed() ? "step" : "tol"] = s.accuracy;
-  const nlohmann::json job = {{"simulation", sim},
-                              {"width", 160},
-                              {"height", 120},
-                              {"fps", 5},
-                              {"duration", 2.8},
-                              {"output", {{"dir", (dir / "frames").string()}, {"format", "png"}}}};
+  const nlohmann::json job = {
+      {"simulation", sim}, {"width", 160},
+      {"height", 120},     {"fps", 5},
+      {"duration", 2.8},   {"output", {{"dir", (dir / "frames").string()}, {"format", "png"}}}};
   std::ofstream(dir / "job.json") << job.dump();
   auto r = test::run_epviz("render " + (dir / "job.json").string() + " --frames " +
                                std::to_string(kLastFrame) + " --quiet --report-json " +
