@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iterator>
 #include <string_view>
+#include <vector>
 
 namespace epviz::io {
 namespace {
@@ -19,6 +20,21 @@ bool is_regular(const std::filesystem::path& path) {
 std::int64_t big_endian32(const unsigned char* p) {
   return (std::int64_t(p[0]) << 24) | (std::int64_t(p[1]) << 16) | (std::int64_t(p[2]) << 8) |
          std::int64_t(p[3]);
+}
+
+// Every chunk (length, type, data, CRC) lies within the file. stb_image
+// trusts a chunk's stated length and grows its buffer to it before reading
+// the data: a 318-byte file claiming a 2 GB IDAT made it allocate 2 GB (found
+// by fuzz/golden_reader_fuzz.cpp).
+bool chunks_within(const std::vector<unsigned char>& bytes) {
+  std::size_t at = 8;  // after the signature
+  while (bytes.size() - at >= 12) {
+    const std::int64_t length = big_endian32(&bytes[at]);
+    if (length > std::int64_t(bytes.size() - at - 12)) return false;
+    if (std::string_view(reinterpret_cast<const char*>(&bytes[at + 4]), 4) == "IEND") break;
+    at += 12 + std::size_t(length);
+  }
+  return true;
 }
 
 }  // namespace
@@ -45,6 +61,7 @@ std::optional<RgbaPixels> read_png_rgba(const std::filesystem::path& path,
   std::ifstream in(path, std::ios::binary);
   const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
                                          std::istreambuf_iterator<char>());
+  if (bytes.size() < 8 || !chunks_within(bytes)) return std::nullopt;
   RgbaPixels out;
   int channels = 0;
   unsigned char* data =
