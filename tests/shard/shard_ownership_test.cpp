@@ -28,9 +28,11 @@ using epviz::testing::rows_by_index;
 // running when the test looks; 2 shards of 12 points. The spinor formulation
 // keeps them off the SIMD batch path, whose lanes run a shard's points side
 // by side and end them together: here rows must come one after another, so
-// that a kill lands between two of them.
+// that a kill lands between two of them. About 0.3 s a point here, so that
+// the kill has a second and more after the second row even on a busy machine
+// (at 0.08 s a point, one full run of the suite saw the shard end first).
 const char* kSlowSweep = R"({
-  "simulation": {"case": "kovalevskaya", "formulation": "spinor", "t_end": 40000,
+  "simulation": {"case": "kovalevskaya", "formulation": "spinor", "t_end": 150000,
                  "samples": 10, "tol": 1e-12},
   "axes": [{"field": "omega[0]", "from": 0.5, "to": 1.5, "count": 24}]})";
 
