@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "io/number_text.hpp"
 #include "sim/drift.hpp"
 #include "sim/trajectory.hpp"
 #include "study/work_precision.hpp"
@@ -62,11 +63,7 @@ void measure_drift(const Problem& p, const RunRecord& run, Evidence& e) {
 
 Evidence evidence_of(const WorkPrecisionRow& row) { return {row.run, row.error, kNaN, {}, 0}; }
 
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2g", v);
-  return buf;
-}
+std::string number(double v) { return io::number_text(v, 2); }
 
 // "dop853 (direct) at tol 1e-10", "gauss6 (spinor) at step 0.0125".
 std::string setting(const RunRecord& r) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "io/number_text.hpp"
 #include "sim/section.hpp"
 #include "sweep/level_point.hpp"
 
@@ -11,12 +12,6 @@ namespace epviz::sweep {
 namespace {
 
 using Json = nlohmann::json;
-
-std::string number_text(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
-  return buf;
-}
 
 // The component index of "name[k]", or -1.
 int component(const std::string& field, const std::string& name) {
@@ -71,7 +66,7 @@ std::string metric_label(const std::string& metric) {
   if (metric == "time_to_failure") return "time to failure (time)";
   if (metric == "cpu_seconds") return "CPU time (s)";
   if (metric == "chaotic_share")
-    return "share of chaotic orbits (FTLE > " + number_text(kChaoticFtle) + ")";
+    return "share of chaotic orbits (FTLE > " + io::number_text(kChaoticFtle, 4) + ")";
   if (metric == "extra_integral_range") return "largest relative range of K over an orbit";
   if (metric == "reference_error") return "largest distance from the reference run";
   const std::string drift = "max_relative_drift.";
@@ -94,7 +89,7 @@ std::string atlas_caption(const std::vector<const Json*>& rows, const std::strin
   std::string run;
   auto add = [&](const std::string& part) { run += (run.empty() ? "" : ", ") + part; };
   if (const auto t = shared(rows, "t_end"); t && t->is_number()) {
-    add("T = " + number_text(t->get<double>()));
+    add("T = " + io::number_text(t->get<double>(), 4));
   } else {  // an axis varies it: its range, so that T is never left unsaid
     double lo = HUGE_VAL, hi = -HUGE_VAL;
     for (const Json* r : rows)
@@ -102,18 +97,18 @@ std::string atlas_caption(const std::vector<const Json*>& rows, const std::strin
         lo = std::min(lo, (*r)["t_end"].get<double>());
         hi = std::max(hi, (*r)["t_end"].get<double>());
       }
-    if (hi >= lo) add("T = " + number_text(lo) + " to " + number_text(hi));
+    if (hi >= lo) add("T = " + io::number_text(lo, 4) + " to " + io::number_text(hi, 4));
   }
   if (const auto m = shared(rows, "method"); m && m->is_string())
     add("method " + m->get<std::string>());
   for (const char* key : {"tol", "step"})
     if (const auto v = shared(rows, key); v && v->is_number())
-      add(std::string(key) + " = " + number_text(v->get<double>()));
+      add(std::string(key) + " = " + io::number_text(v->get<double>(), 4));
   auto part = [&](const std::string& p) { run += (run.empty() ? "" : "; ") + p; };
   if (metric == "ftle" && ftle) {
     const std::string window =
-        ftle->window > 0.0 ? number_text(ftle->window) : "the sample spacing";
-    part("FTLE window " + window + ", separation " + number_text(ftle->separation));
+        ftle->window > 0.0 ? io::number_text(ftle->window, 4) : "the sample spacing";
+    part("FTLE window " + window + ", separation " + io::number_text(ftle->separation, 4));
   } else if (metric == "ftle") {
     part("FTLE window unknown (the sweep file is gone or changed)");
   }

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "io/bad_input.hpp"
+#include "io/number_text.hpp"
 #include "job/resolve.hpp"
 #include "sim/simulate.hpp"
 #include "sweep/level_point.hpp"
@@ -21,12 +22,6 @@ namespace epviz::sweep {
 namespace {
 
 using Json = nlohmann::json;
-
-std::string short_number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2g", v);
-  return buf;
-}
 
 std::string metric_name(const std::string& metric) {
   return metric == "ftle" ? "FTLE" : metric == "reference_error" ? "reference error" : metric;
@@ -189,7 +184,7 @@ SelfCheck run_self_check(const SweepSpec& spec, const std::vector<Json>& rows,
     MetricCheck c;
     c.metric = metric;
     c.tightened = metric == "ftle" ? ftle_tightening(runs, tighter)
-                                   : "reference tol " + short_number(1e-13 / tighter);
+                                   : "reference tol " + io::number_text(1e-13 / tighter, 2);
     c.range = colour_range(metric, rows, atlases);
     c.limit = check.threshold * c.range;
     for (const auto& v : values) {
@@ -251,10 +246,11 @@ std::vector<std::string> self_check_lines(const SelfCheck& check) {
   for (const auto& m : check.metrics) {
     std::string line = "self-check " + m.metric + " (" + m.tightened + ", " +
                        std::to_string(check.sampled) + " points): largest change " +
-                       short_number(m.largest_change);
+                       io::number_text(m.largest_change, 2);
     if (m.worst_index >= 0) line += " at point " + std::to_string(m.worst_index);
-    line += ", limit " + short_number(m.limit) + " (" + short_number(100 * check.threshold) +
-            " % of the colour bar's range " + short_number(m.range) + ")";
+    line += ", limit " + io::number_text(m.limit, 2) + " (" +
+            io::number_text(100 * check.threshold, 2) + " % of the colour bar's range " +
+            io::number_text(m.range, 2) + ")";
     if (m.one_sided)
       line += ", " + std::to_string(m.one_sided) + " points with a value only one of the two times";
     line += m.converged() ? ": converged" : ": NOT CONVERGED, tighten tol";
@@ -270,8 +266,9 @@ std::string self_check_caption(const SelfCheck& check, const std::string& metric
   on += std::to_string(check.sampled);
   on += " sampled points";
   const std::string what = metric_name(metric);
-  if (m->converged()) return what + " converged to ±" + short_number(m->largest_change) + on;
-  std::string why = what + " ±" + short_number(m->largest_change) + " > " + short_number(m->limit);
+  if (m->converged()) return what + " converged to ±" + io::number_text(m->largest_change, 2) + on;
+  std::string why =
+      what + " ±" + io::number_text(m->largest_change, 2) + " > " + io::number_text(m->limit, 2);
   if (m->one_sided) {
     why += ", ";
     why += std::to_string(m->one_sided);
