@@ -65,18 +65,40 @@ if [ "$which" != tsan ]; then
     # Peak memory under ASan measures its quarantine of freed blocks (256 MB
     # by default), not ours: 100 frames peaked 250 MB above 5 there.
     '^Check\.MemoryDoesNotGrowWithTheFramesChecked$'
+    # Bounds of an algorithm (memory that stays flat as time or samples grow),
+    # which hold in the Release pass: the trail's 200,000 offers took 67 s at
+    # -O0 under ASan, and a process's peak memory there is ASan's quarantine.
+    '^TrailHistory\.MemoryDoesNotGrowWithTimeForAFixedWindow$'
+    '^SimulateStreams\.MemoryDoesNotGrowWithSamples$'
+    # Slurm's daemons run the sharded sweep and render (47 s); the sharding,
+    # locks and merge they drive run under ASan in test_shard, test_sweep
+    # and test_app.
+    '^slurm_sharded_sweep_and_render$'
+    # A shard killed midway: its points are sized so that the kill comes
+    # before the shard's last row in the Release binary (45 s under ASan);
+    # the takeover and resume code runs under ASan in the lock and resume
+    # tests of test_shard and test_app.
+    '^ShardOwnership\.AShardKilledMidwayIsTakenOverAndResumedToTheUnshardedRows$'
     # The GL tests' second pass on OSMesa: the same code of ours on another driver
     # (the driver is not instrumented); gl_context_test still makes an OSMesa
     # context and draws with it in the first pass.
     '\.osmesa$'
   )
   exclude=$(IFS='|'; echo "${asan_excluded[*]}")
+  # One retry of a failed test (--repeat until-pass:2): LeakSanitizer's own
+  # stop-the-world tracer sometimes crashes at the exit of a process with
+  # threads ("Tracer caught signal 11 ... LeakSanitizer has encountered a
+  # fatal error"), with no leak found; sanitizer projects report it about
+  # once in a few hundred runs, and this suite starts over a thousand
+  # processes. ctest still prints the failed try. The Release pass, which
+  # runs the same tests, retries nothing, so a test of ours that fails at
+  # random fails there.
   # detect_leaks: LeakSanitizer at exit of every test process; lsan.supp lists
   # the leaks of the GL drivers (Mesa), which are not ours.
   ASAN_OPTIONS=detect_leaks=1:check_initialization_order=1:strict_init_order=1 \
     LSAN_OPTIONS=suppressions=$PWD/$here/lsan.supp:print_suppressions=0 \
     UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-    ctest --test-dir build-asan --output-on-failure -j2 -E "$exclude"
+    ctest --test-dir build-asan --output-on-failure -j2 -E "$exclude" --repeat until-pass:2
   stage_done "ASan tests"
 fi
 
