@@ -17,6 +17,7 @@
 #include "shard/merged_rows.hpp"
 #include "shard/resubmit.hpp"
 #include "sweep/atlas.hpp"
+#include "sweep/ftle_curves.hpp"
 #include "sweep/self_check.hpp"
 #include "sweep/sweep_spec.hpp"
 #ifdef EPVIZ_HAVE_RENDER
@@ -53,28 +54,35 @@ std::vector<std::string> merge_command_line(const MergeOptions& o) {
   return c;
 }
 
-// `ftle`: the sweep's FTLE settings, named in the captions; nullopt when unknown.
-void draw_atlases(const std::vector<Json>& rows, const std::vector<sweep::AtlasRequest>& requests,
-                  const std::optional<sweep::FtleSettings>& ftle, const sweep::SelfCheck* check,
-                  const fs::path& out_dir, const MergeOptions& o) {
-  if (requests.empty()) return;
-  // As figures: no taller than the grid needs (a few rows leave no blank band).
-  std::vector<chart::Figure> figures;
-  for (const auto& q : requests)
-    for (auto& f : sweep::atlas_figures(rows, q, ftle, check))
-      figures.push_back({std::move(f.file_name), std::move(f.heat_map)});
+// Writes a sweep's figures in --format, each named on a line after `what`.
+void write_sweep_figures(const std::vector<chart::Figure>& figures, const char* what,
+                         const fs::path& out_dir, const MergeOptions& o) {
+  if (figures.empty()) return;
 #ifdef EPVIZ_HAVE_RENDER
   paint::ChartOptions options;
   options.width = 1280;
   options.height = 900;
   for (const auto& path : vector::write_figures(
            figures, out_dir, vector::parse_figure_format(o.format), o.gl, options))
-    std::printf("  atlas %s\n", path.string().c_str());
+    std::printf("  %s %s\n", what, path.string().c_str());
 #else
+  (void)what;
   (void)out_dir;
   (void)o;
   throw io::BadInput("--atlas: this epviz was built without the renderer (EPVIZ_BUILD_RENDER=OFF)");
 #endif
+}
+
+// `ftle`: the sweep's FTLE settings, named in the captions; nullopt when unknown.
+void draw_atlases(const std::vector<Json>& rows, const std::vector<sweep::AtlasRequest>& requests,
+                  const std::optional<sweep::FtleSettings>& ftle, const sweep::SelfCheck* check,
+                  const fs::path& out_dir, const MergeOptions& o) {
+  // As figures: no taller than the grid needs (a few rows leave no blank band).
+  std::vector<chart::Figure> figures;
+  for (const auto& q : requests)
+    for (auto& f : sweep::atlas_figures(rows, q, ftle, check))
+      figures.push_back({std::move(f.file_name), std::move(f.heat_map)});
+  write_sweep_figures(figures, "atlas", out_dir, o);
 }
 
 // The sweep file, when it is still there and unchanged (its atlases and FTLE
@@ -116,8 +124,10 @@ bool merge_sweep(const shard::Batch& b, const std::vector<Json>& rows, const fs:
              (rows.front().contains("ftle") || rows.front().contains("reference_error"))) {
     std::printf("  no self-check: the sweep file %s is gone or changed\n", any.source.c_str());
   }
-  draw_atlases(rows, requests, saved ? saved->ftle : std::nullopt, check ? &*check : nullptr,
-               out_dir, o);
+  const auto ftle = saved ? saved->ftle : std::nullopt;
+  draw_atlases(rows, requests, ftle, check ? &*check : nullptr, out_dir, o);
+  if (auto curves = sweep::ftle_curve_figure(rows, ftle))
+    write_sweep_figures({std::move(*curves)}, "λ(T)", out_dir, o);
   return !check || check->converged();
 }
 

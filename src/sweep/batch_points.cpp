@@ -79,8 +79,8 @@ sim::RunResult run_result(const physics::DirectBatchTask& task, physics::DirectB
 
 // The exponents of every point: round after round, the base and neighbour
 // states of the points still going advance one window, all in one batch.
-std::vector<std::optional<double>> exponents(const std::vector<const PreparedPoint*>& points,
-                                             const FtleSettings& settings) {
+std::vector<FtleResult> exponents(const std::vector<const PreparedPoint*>& points,
+                                  const FtleSettings& settings) {
   std::vector<FtleWindows> windows;
   windows.reserve(points.size());
   for (const auto* p : points) windows.emplace_back(p->run, settings);
@@ -112,9 +112,9 @@ std::vector<std::optional<double>> exponents(const std::vector<const PreparedPoi
     for (std::size_t k = 0; k < owner.size(); ++k)
       windows[owner[k]].absorb(state(2 * k), state(2 * k + 1));
   }
-  std::vector<std::optional<double>> values;
+  std::vector<FtleResult> values;
   values.reserve(windows.size());
-  for (const auto& w : windows) values.push_back(w.value());
+  for (const auto& w : windows) values.push_back(w.result());
   return values;
 }
 
@@ -162,7 +162,7 @@ void run_batched(const std::vector<const PreparedPoint*>& points, const std::str
     tasks.push_back(task_of(p->run, long(tasks.size())));
   }
   const auto row = [&](std::size_t i, physics::DirectBatchResult r, double cpu,
-                       const std::optional<std::optional<double>>& exponent) {
+                       const std::optional<FtleResult>& exponent) {
     sim::RunResult result = run_result(tasks[i], std::move(r));
     result.cpu_seconds = cpu;
     const PointOutcome outcome = outcome_of(runs[i], std::move(result), reference);

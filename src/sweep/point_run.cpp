@@ -106,7 +106,8 @@ double max_separation(const std::vector<sim::Sample>& a, const std::vector<sim::
 }
 
 FtleWindows::FtleWindows(const sim::RunSpec& run, const FtleSettings& settings)
-    : separation_(settings.separation),
+    : curve_wanted_(settings.curve),
+      separation_(settings.separation),
       window_(settings.window > 0.0 ? settings.window : run.t_end / run.samples),
       windows_(std::max(1L, std::lround(run.t_end / window_))) {
   a_ << run.initial.omega, run.initial.gamma;
@@ -135,6 +136,11 @@ void FtleWindows::absorb(const std::optional<FtleState>& a, const std::optional<
   sum_ += std::log(dist / separation_);
   b_ = a_ + d * (separation_ / dist);
   ++k_;
+  // k a power of two, or the last window: evenly spaced on a log axis.
+  if (curve_wanted_ && ((k_ & (k_ - 1)) == 0 || k_ == windows_)) {
+    const double t = double(k_) * window_;
+    curve_.push_back({t, sum_ / t});
+  }
 }
 
 std::optional<double> FtleWindows::value() const {
@@ -142,8 +148,10 @@ std::optional<double> FtleWindows::value() const {
   return sum_ / (double(windows_) * window_);
 }
 
-std::optional<double> finite_time_lyapunov(const sim::RunSpec& run, const FtleSettings& settings,
-                                           const std::function<void(const FtleState&)>& on_window) {
+namespace {
+
+FtleWindows run_windows(const sim::RunSpec& run, const FtleSettings& settings,
+                        const std::function<void(const FtleState&)>& on_window) {
   FtleWindows w(run, settings);
   while (!w.done()) {
     const auto a = advance(run, w.base(), w.window());
@@ -151,7 +159,18 @@ std::optional<double> finite_time_lyapunov(const sim::RunSpec& run, const FtleSe
     w.absorb(a, b);
     if (a && on_window) on_window(*a);
   }
-  return w.value();
+  return w;
+}
+
+}  // namespace
+
+std::optional<double> finite_time_lyapunov(const sim::RunSpec& run, const FtleSettings& settings,
+                                           const std::function<void(const FtleState&)>& on_window) {
+  return run_windows(run, settings, on_window).value();
+}
+
+FtleResult ftle_result(const sim::RunSpec& run, const FtleSettings& settings) {
+  return run_windows(run, settings, {}).result();
 }
 
 PreparedPoint prepared_point(const PointFields& fields, sim::RunSpec run) {
@@ -212,8 +231,8 @@ PointRow run_point(const PreparedPoint& point, const std::string& sweep_hash, bo
     outcome.result = std::move(result);
     outcome.kept = std::move(kept);
   }
-  std::optional<std::optional<double>> exponent;
-  if (ftle) exponent = finite_time_lyapunov(run, *ftle);
+  std::optional<FtleResult> exponent;
+  if (ftle) exponent = ftle_result(run, *ftle);
   return point_row(point, sweep_hash, outcome, reference, cache, exponent);
 }
 
@@ -226,7 +245,7 @@ void begin_row(io::JsonLine& row, const PreparedPoint& point, const std::string&
 
 PointRow point_row(const PreparedPoint& point, const std::string& sweep_hash,
                    const PointOutcome& outcome, bool reference, ReferenceCache* cache,
-                   const std::optional<std::optional<double>>& ftle) {
+                   const std::optional<FtleResult>& ftle) {
   const sim::RunSpec& run = point.run;
   const sim::RunResult& result = outcome.result;
   io::JsonLine row;
@@ -265,7 +284,18 @@ PointRow point_row(const PreparedPoint& point, const std::string& sweep_hash,
     row.key("reference_error")
         .value(ref->empty() ? std::nullopt : std::optional(max_separation(outcome.kept, *ref)));
   }
-  if (ftle) row.key("ftle").value(*ftle);
+  if (ftle) {
+    row.key("ftle").value(ftle->value);
+    if (!ftle->curve.empty()) {
+      row.key("ftle_curve").begin_array();
+      for (const auto& p : ftle->curve) {
+        row.begin_array();
+        row.value(p.t).value(p.lambda);
+        row.end_array();
+      }
+      row.end_array();
+    }
+  }
   row.end_object();
   return {row.take(), result.failure.has_value()};
 }

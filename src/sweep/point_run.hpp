@@ -49,6 +49,21 @@ double max_separation(const std::vector<sim::Sample>& a, const std::vector<sim::
 // the base state at the end of every window (an energy-momentum map follows
 // the fourth integral along the orbit with it).
 using FtleState = Eigen::Matrix<double, 6, 1>;
+
+// λ(T): the exponent over the first k windows, T = k · window.
+struct FtlePoint {
+  double t = 0.0;
+  double lambda = 0.0;
+};
+// The exponent (nullopt: undefined, an integration failed) and, when the
+// settings ask for it, λ(T) at k = 1, 2, 4, 8, … windows and at the last
+// (until the failure, if one came).
+struct FtleResult {
+  std::optional<double> value;
+  std::vector<FtlePoint> curve;
+};
+FtleResult ftle_result(const sim::RunSpec& run, const FtleSettings& settings);
+
 std::optional<double> finite_time_lyapunov(
     const sim::RunSpec& run, const FtleSettings& settings,
     const std::function<void(const FtleState&)>& on_window = {});
@@ -71,8 +86,12 @@ class FtleWindows {
   void absorb(const std::optional<FtleState>& a, const std::optional<FtleState>& b);
   // Once done(): the exponent, or nullopt.
   std::optional<double> value() const;
+  // The exponent and λ(T) as far as it went.
+  FtleResult result() const { return {value(), curve_}; }
 
  private:
+  bool curve_wanted_;
+  std::vector<FtlePoint> curve_;
   double separation_, window_;
   long windows_, k_ = 0;
   FtleState a_, b_;
@@ -127,9 +146,10 @@ struct PointOutcome {
 PointOutcome outcome_of(const sim::RunSpec& run, sim::RunResult result, bool keep_samples);
 
 // The row of a point whose run ended as `outcome`. ftle: absent when the
-// sweep asks for no exponent, else the exponent or nullopt (undefined).
+// sweep asks for no exponent, else the exponent (nullopt: undefined) and
+// λ(T) when asked for (`ftle_curve`: [[T, λ], …]).
 PointRow point_row(const PreparedPoint& point, const std::string& sweep_hash,
                    const PointOutcome& outcome, bool reference, ReferenceCache* cache,
-                   const std::optional<std::optional<double>>& ftle);
+                   const std::optional<FtleResult>& ftle);
 
 }  // namespace epviz::sweep

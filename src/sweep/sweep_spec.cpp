@@ -270,14 +270,25 @@ SweepSpec read_sweep(const Json& root, const std::string& file) {
       FtleSettings st;
       if (auto v = fr.number_in("separation", 1e-14, 1e-2, "1e-14 to 0.01")) st.separation = *v;
       if (auto v = fr.positive_number("window")) st.window = *v;
+      if (auto v = fr.boolean("curve")) st.curve = *v;
       fr.finish();
       s.ftle = st;
     } else {
-      r.fail("ftle", "expected true, false or {\"separation\": ..., \"window\": ...}, got " +
-                         io::describe(*f));
+      r.fail("ftle",
+             "expected true, false or {\"separation\": ..., \"window\": ..., \"curve\": ...}, "
+             "got " +
+                 io::describe(*f));
     }
   }
   check_levels(r, s);
+  if (s.ftle && s.ftle->curve) {
+    if (s.levels())
+      r.fail("ftle", "\"curve\" follows single orbits, not an energy-momentum map's levels");
+    if (points > kMaxCurvePoints)
+      r.fail("ftle", "\"curve\": at most " + std::to_string(kMaxCurvePoints) +
+                         " points (merge draws every curve in one chart), this sweep has " +
+                         std::to_string(points));
+  }
   if (r.has("atlas")) {
     const Json* a = r.raw("atlas");
     if (!a->is_array()) r.fail("atlas", "expected a list of {\"metric\", \"x\", \"y\"} objects");

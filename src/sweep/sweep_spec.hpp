@@ -45,7 +45,12 @@ struct Axis {
 struct FtleSettings {
   double separation = 1e-8;  // initial and renormalised distance of the two states
   double window = 0.0;       // time between renormalisations; 0: the sample spacing
+  // Also λ(T), the exponent over the first k windows, at k = 1, 2, 4, … and
+  // the last: how it converges with the time (rows' `ftle_curve`, merge's chart).
+  bool curve = false;
 };
+// At most this many points may ask for λ(T) curves: merge draws them all in one chart.
+inline constexpr long kMaxCurvePoints = 12;
 
 // A heat map merge draws from the rows: `metric` over axes x and y.
 struct AtlasRequest {

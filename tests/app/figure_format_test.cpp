@@ -110,5 +110,21 @@ TEST(FigureFormatOption, AMergedFtleAtlasCaptionNamesTheWindow) {
     EXPECT_NE(words.find(w), std::string::npos) << w << " not in\n" << words;
 }
 
+// A sweep that asks for λ(T) curves gets them as one chart from merge, each
+// point's line named by its axis values, with the ln T / T guide, and the
+// FTLE's window and separation on the time axis.
+TEST(FigureFormatOption, MergeDrawsTheFtleCurvesOfASweepThatAsksForThem) {
+  if (std::system("command -v pdftotext >/dev/null") != 0) GTEST_SKIP() << "no pdftotext";
+  TempDir dir;
+  const std::string words = merged_atlas_text(dir, R"({
+    "simulation": {"t_end": 20, "samples": 1, "tol": 1e-10,
+                   "omega": [1.0, 0.8, 0.6], "gamma": [0.72, 0.6, 0.34], "normalize_gamma": true},
+    "axes": [{"field": "case", "values": ["lagrange", "generic"]}],
+    "ftle": {"separation": 1e-8, "window": 1, "curve": true},
+    "self_check": {"threshold": 1}})");
+  for (const char* w : {"λ(T)", "case lagrange", "case generic", "ln T / T", "window 1"})
+    EXPECT_NE(words.find(w), std::string::npos) << w << " not in\n" << words;
+}
+
 }  // namespace
 }  // namespace epviz

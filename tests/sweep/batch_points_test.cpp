@@ -70,7 +70,7 @@ TEST(BatchSweep, TheBatchPathWritesTheScalarPathsRows) {
   SweepSpec spec;
   spec.hash = "h";
   spec.reference = true;
-  spec.ftle = FtleSettings{1e-8, 0.5};
+  spec.ftle = FtleSettings{1e-8, 0.5, true};
   const auto points = mixed_points(45);
   const Rows scalar = rows_of(spec, points, 1, PointPath::scalar, dir / "scalar.jsonl");
   const Rows batch = rows_of(spec, points, 2, PointPath::batch, dir / "batch.jsonl");
@@ -86,6 +86,7 @@ TEST(BatchSweep, TheBatchPathWritesTheScalarPathsRows) {
   for (long i : {0L, 1L, 5L, 8L, 9L, 10L}) {
     EXPECT_TRUE(batch.at(i)["failure"].is_null()) << i;
     EXPECT_TRUE(batch.at(i)["ftle"].is_number()) << i;
+    EXPECT_TRUE(batch.at(i)["ftle_curve"].is_array()) << i;
     EXPECT_TRUE(batch.at(i)["reference_error"].is_number()) << i;
   }
 }

@@ -85,6 +85,13 @@ TEST(SweepSpec, BadFilesNameTheKeyAndWhatIsAllowed) {
            "'atlas[0].y'", "not one of the sweep's axes"},
           {R"({"axes": [{"field": "step", "values": [1]}], "atlas": [{"metric": "ftle", "x": "step", "y": "step", "min": 1, "max": 0}]})",
            "'atlas[0].max'", "larger than \"min\""},
+          {R"({"axes": [{"field": "step", "from": 0.1, "to": 1, "count": 13}], "ftle": {"curve": true}})",
+           "'ftle'", "at most 12 points (merge draws every curve in one chart), this sweep has 13"},
+          {R"({"axes": [{"field": "energy", "values": [3]}, {"field": "area_constant", "values": [0]}],
+               "level_orbits": 4, "ftle": {"curve": true}})",
+           "'ftle'", "not an energy-momentum map"},
+          {R"({"axes": [{"field": "step", "values": [1]}], "ftle": {"curve": 1}})", "'ftle.curve'",
+           ""},
       }) {
     const std::string e = error_of(c.text);
     EXPECT_NE(e.find(c.key), std::string::npos) << c.text << " -> " << e;
