@@ -7,12 +7,19 @@
 //   section    section::run_section, as `epviz section` runs it: every step
 //              checked for a sign change, each crossing located on the dense
 //              output, checked and kept
-// Each is timed twice, in the order bare, section, bare, section, and the
-// better of the two is kept (other load on the machine only slows a round).
-// It prints wall and CPU seconds of each, the cost per crossing and the
-// section's ratio to the bare integration.
+//   batch      for comparison, the same bare integration by the SIMD batch
+//              integrator (physics/direct_batch.hpp), which sweeps use
+// Each is timed twice, in turn, and the round with less CPU time is kept
+// (other load on the machine only slows a round). Then `epviz section` runs
+// the same section once as a process, writing the CSV of every crossing (its
+// figures are left out: docs/benchmarks.md times them). It prints wall and
+// CPU seconds of each, the CPU cost per crossing and the section's ratio to
+// the bare integration.
 //
 //   epviz_section_bench [ORBITS] [CROSSINGS] [THREADS]   (default 1024 1000 0: all cores)
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <ctime>
 
 #include <algorithm>
@@ -20,11 +27,18 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
 #include <thread>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
+#include "io/subprocess.hpp"
 #include "numerics/embedded_rk.hpp"
 #include "physics/direct.hpp"
+#include "physics/direct_batch.hpp"
 #include "section/section_job.hpp"
 #include "section/section_run.hpp"
 
@@ -51,17 +65,29 @@ Timing timed(F&& f) {
   return {std::chrono::duration<double>(Clock::now() - w0).count(), process_cpu_seconds() - c0};
 }
 
+double children_cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_CHILDREN, &u);
+  auto s = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+  return s(u.ru_utime) + s(u.ru_stime);
+}
+
 Timing better(const Timing& a, const Timing& b) { return a.cpu <= b.cpu ? a : b; }
 
 // Each orbit from its start to `t_end[i]` with the section's stepper and
 // options (sim/section.cpp), nothing else; the orbits shared among `threads`
 // threads as run_section shares them. Returns the steps taken.
-long bare_integration(const section::SectionJob& job,
-                      const std::vector<physics::InitialState>& starts,
-                      const std::vector<double>& t_end, int threads) {
+numerics::AdaptiveOptions options_of(const section::SectionJob& job) {
   numerics::AdaptiveOptions opts;
   opts.rtol = job.methods[0].tol;
   opts.atol = job.methods[0].tol;
+  return opts;
+}
+
+long bare_integration(const section::SectionJob& job,
+                      const std::vector<physics::InitialState>& starts,
+                      const std::vector<double>& t_end, int threads) {
+  const numerics::AdaptiveOptions opts = options_of(job);
   const physics::DirectSystem sys(job.body);
   std::atomic<std::size_t> next{0};
   std::atomic<long> steps{0};
@@ -82,6 +108,52 @@ long bare_integration(const section::SectionJob& job,
   work();
   for (auto& t : pool) t.join();
   return steps;
+}
+
+void batch_integration(const section::SectionJob& job,
+                       const std::vector<physics::InitialState>& starts,
+                       const std::vector<double>& t_end, int threads) {
+  std::vector<physics::DirectBatchTask> tasks;
+  for (std::size_t i = 0; i < starts.size(); ++i)
+    tasks.push_back(physics::direct_batch_task(starts[i], t_end[i]));
+  physics::DirectBatchSettings settings;
+  settings.adaptive = options_of(job);
+  for (const auto& r : physics::integrate_direct_batch_parallel(job.body, tasks, settings, threads))
+    if (r.failure) {
+      std::fprintf(stderr, "epviz_section_bench: a batch trajectory failed\n");
+      std::exit(1);
+    }
+}
+
+// `epviz section` on the shipped generic section with `orbits`, `crossings`
+// and `threads`, writing only its CSV.
+Timing section_command(int orbits, int crossings, int threads) {
+  namespace fs = std::filesystem;
+  std::string name = "epviz-section-bench-";
+  name += std::to_string(::getpid());
+  const fs::path dir = fs::temp_directory_path() / name;
+  fs::create_directories(dir);
+  auto spec =
+      nlohmann::json::parse(std::ifstream(EPVIZ_SOURCE_DIR "/render_jobs/generic.section.json"));
+  spec.erase("png");
+  spec.erase("svg");
+  spec["orbits"] = orbits;
+  spec["crossings"] = crossings;
+  spec["t_end"] = 1e9;
+  spec["csv"] = (dir / "crossings.csv").string();
+  std::ofstream(dir / "bench.section.json") << spec.dump();
+  const double c0 = children_cpu_seconds();
+  const auto w0 = Clock::now();
+  const auto r = io::run_process({EPVIZ_BINARY, "section", (dir / "bench.section.json").string(),
+                                  "-j", std::to_string(threads)});
+  const Timing t{std::chrono::duration<double>(Clock::now() - w0).count(),
+                 children_cpu_seconds() - c0};
+  fs::remove_all(dir);
+  if (!r.status.success()) {
+    std::fprintf(stderr, "epviz section %s: %s\n", r.status.describe().c_str(), r.err.c_str());
+    std::exit(1);
+  }
+  return t;
 }
 
 }  // namespace
@@ -109,7 +181,8 @@ int main(int argc, char** argv) {
   long found = 0;
   for (const auto& r : results) {
     if (r.failure) {
-      std::fprintf(stderr, "epviz_section_bench: %s\n", section::lost_orbits_line(job, results).c_str());
+      std::fprintf(stderr, "epviz_section_bench: %s\n",
+                   section::lost_orbits_line(job, results).c_str());
       return 1;
     }
     t_end.push_back(r.crossings.empty() ? job.t_end : r.crossings.back().t);
@@ -118,25 +191,35 @@ int main(int argc, char** argv) {
   long steps = 0;
   const Timing bare1 = timed([&] { steps = bare_integration(job, starts, t_end, threads); });
   const Timing sec1 = timed(run_section);
+  const Timing batch1 = timed([&] { batch_integration(job, starts, t_end, threads); });
   const Timing bare2 = timed([&] { bare_integration(job, starts, t_end, threads); });
   const Timing sec2 = timed(run_section);
-  const Timing bare = better(bare1, bare2), sec = better(sec1, sec2);
+  const Timing batch2 = timed([&] { batch_integration(job, starts, t_end, threads); });
+  const Timing bare = better(bare1, bare2), sec = better(sec1, sec2),
+               batch = better(batch1, batch2);
+  const Timing command = section_command(orbits, crossings, threads);
 
   double time_sum = 0.0;
   for (double t : t_end) time_sum += t;
   std::printf("generic body, level C1 = %g, C0 = %g; section %s = %g %s; %s\n", job.level->energy,
               job.level->area, sim::name(job.surface.function).data(), job.surface.value,
-              sim::name(job.surface.direction).data(), section::method_label(job.methods[0]).c_str());
-  std::printf("%zu orbits (of %d asked), %ld crossings, mean T %.1f, %.1f steps per crossing, %d threads\n",
-              starts.size(), orbits, found, time_sum / double(starts.size()),
-              double(steps) / double(found), threads);
+              sim::name(job.surface.direction).data(),
+              section::method_label(job.methods[0]).c_str());
+  std::printf(
+      "%zu orbits (of %d asked), %ld crossings, mean T %.1f, %.1f steps per crossing, %d threads\n",
+      starts.size(), orbits, found, time_sum / double(starts.size()), double(steps) / double(found),
+      threads);
   auto line = [&](const char* name, const Timing& t) {
-    std::printf("%-8s wall %7.2f s  cpu %7.2f s  %7.3f us cpu per crossing\n", name, t.wall, t.cpu,
-                1e6 * t.cpu / double(found));
+    std::printf("%-22s wall %7.2f s  cpu %7.2f s  %6.2f us cpu per crossing  %5.2fx bare\n", name,
+                t.wall, t.cpu, 1e6 * t.cpu / double(found), t.cpu / bare.cpu);
   };
   line("bare", bare);
   line("section", sec);
-  std::printf("section / bare: %.3f (cpu), %.3f (wall); rounds: bare %.2f, %.2f s, section %.2f, %.2f s cpu\n",
-              sec.cpu / bare.cpu, sec.wall / bare.wall, bare1.cpu, bare2.cpu, sec1.cpu, sec2.cpu);
+  line("batch (SIMD), bare", batch);
+  line("epviz section, CSV", command);
+  std::printf(
+      "section / bare: %.3f (cpu), %.3f (wall); cpu of the rounds: bare %.2f, %.2f s, "
+      "section %.2f, %.2f s\n",
+      sec.cpu / bare.cpu, sec.wall / bare.wall, bare1.cpu, bare2.cpu, sec1.cpu, sec2.cpu);
   return 0;
 }
