@@ -1,7 +1,7 @@
 // What a Poincaré section costs against the integration under it, in one run:
 // the orbits of the shipped generic section's level (render_jobs/
 // generic.section.json: its level, surface, method and tolerance), each run
-// two ways on the same threads —
+// three ways on the same threads —
 //   bare       the DOP853 stepper stepping to the orbit's last crossing and
 //              no further: the integration alone
 //   section    section::run_section, as `epviz section` runs it: every step
@@ -70,6 +70,14 @@ double children_cpu_seconds() {
   getrusage(RUSAGE_CHILDREN, &u);
   auto s = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
   return s(u.ru_utime) + s(u.ru_stime);
+}
+
+// The first three fields of /proc/loadavg: how busy the machine was.
+std::string load_average() {
+  std::ifstream in("/proc/loadavg");
+  std::string a, b, c;
+  in >> a >> b >> c;
+  return a + " " + b + " " + c;
 }
 
 Timing better(const Timing& a, const Timing& b) { return a.cpu <= b.cpu ? a : b; }
@@ -171,6 +179,7 @@ int main(int argc, char** argv) {
   job.crossings = crossings;
   job.t_end = 1e9;  // every orbit runs to its crossings
   const auto starts = section::section_starts(job);
+  const std::string load_before = load_average();
 
   std::vector<section::OrbitResult> results;
   auto run_section = [&] { results = section::run_section(job, starts, threads); };
@@ -221,5 +230,6 @@ int main(int argc, char** argv) {
       "section / bare: %.3f (cpu), %.3f (wall); cpu of the rounds: bare %.2f, %.2f s, "
       "section %.2f, %.2f s\n",
       sec.cpu / bare.cpu, sec.wall / bare.wall, bare1.cpu, bare2.cpu, sec1.cpu, sec2.cpu);
+  std::printf("load average before: %s, after: %s\n", load_before.c_str(), load_average().c_str());
   return 0;
 }
