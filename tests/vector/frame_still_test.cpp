@@ -85,7 +85,8 @@ std::string field(const std::string& text, const std::string& key) {
 class StillCommand : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (!have_tools()) GTEST_SKIP() << "poppler-utils or librsvg2-bin missing (scripts/setup.sh --test)";
+    if (!have_tools())
+      GTEST_SKIP() << "poppler-utils or librsvg2-bin missing (scripts/setup.sh --test)";
     for (const char* format : {"png", "pdf", "svg"}) {
       const auto r = test::run_epviz(std::string("render compare_methods --frames 30 --width 640 "
                                                  "--height 360 --quiet --format ") +
@@ -175,9 +176,10 @@ TEST(StillRefusedGallery, NamesTheFormat) {
   EXPECT_FALSE(fs::exists(out));
 }
 
-// The painter's own frame, part by part: the still's overlay window and the
-// plane's panel are where the PNG has them and look the same, and the
-// painter draws whole PNGs again afterwards.
+// The painter's own frame, part by part: the still's overlay window (its
+// title in Greek letters and subscripts, as text) and the plane's panel are
+// where the PNG has them and look the same, and the painter draws whole PNGs
+// again afterwards.
 TEST(FrameStill, PartsMatchThePainterAndThePainterIsLeftAsItWas) {
   if (!have_tools()) GTEST_SKIP() << "poppler-utils or librsvg2-bin missing";
   test::TempDir dir;
@@ -186,22 +188,25 @@ TEST(FrameStill, PartsMatchThePainterAndThePainterIsLeftAsItWas) {
   settings.height = 480;  // from 480 rows the overlay shows all its lines
   settings.fps = 10;
   settings.duration = 1;
-  const auto plan = scene::plan_scene(
-      sim::preset_run(physics::Case::generic, sim::Method::dop853, sim::Formulation::direct, 4.0,
-                      100),
-      settings);
+  const auto plan = scene::plan_scene(sim::preset_run(physics::Case::generic, sim::Method::dop853,
+                                                      sim::Formulation::direct, 4.0, 100),
+                                      settings);
   paint::FramePainter painter(et::shared_gl_context(), settings.width, settings.height);
   paint::FrameDrawer drawer(plan, settings);
-  const scene::Frame frame = drawer.frame(7);
+  scene::Frame frame = drawer.frame(7);
+  frame.overlay.title = "Heavy top: γ₁ and Ω₃";  // symbols stay text in a PDF
   const render::RgbaImage png = painter.paint(frame);
   const auto annotations = painter.annotations();
   ASSERT_TRUE(annotations.overlay_window);
 
   const auto pdf = dir / "still.pdf";
   {
-    std::ofstream(pdf, std::ios::binary) << vector::frame_still_bytes(painter, frame, FigureFormat::pdf);
+    std::ofstream(pdf, std::ios::binary)
+        << vector::frame_still_bytes(painter, frame, FigureFormat::pdf);
   }
   EXPECT_EQ(painter.paint(frame).pixels, png.pixels) << "the painter was left drawing stills";
+  const auto text = et::run_tool("pdftotext -enc UTF-8 '" + pdf.string() + "' -").out;
+  EXPECT_NE(text.find("Heavy top: γ₁ and Ω₃"), std::string::npos) << text;
   const auto raster = rasterise(pdf, dir);
   ASSERT_EQ(raster.width, png.width);
   ASSERT_EQ(raster.height, png.height);
