@@ -2,7 +2,7 @@
 
 #include <imgui.h>
 
-#include <array>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
