@@ -1,6 +1,7 @@
 #include "app/render_command.hpp"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -13,6 +14,7 @@
 #include "io/bad_input.hpp"
 #include "io/frame_range.hpp"
 #include "io/output_paths.hpp"
+#include "io/printable.hpp"
 #include "io/progress.hpp"
 #include "io/temp_name.hpp"
 #include "io/temp_registry.hpp"
@@ -32,6 +34,8 @@
 #include "shard/checksum.hpp"
 #include "shard/frame_shard.hpp"
 #include "sim/failure_advice.hpp"
+#include "vector/figure_format.hpp"
+#include "vector/frame_still.hpp"
 
 namespace epviz::app {
 namespace {
@@ -50,12 +54,35 @@ struct PreparedJob {
   RenderJob job;
   scene::ScenePlan plan;
   io::FrameRange range;
-  std::string caption;  // under every frame (gallery tiles)
+  std::string caption;                        // under every frame (gallery tiles)
+  std::optional<vector::FigureFormat> still;  // --format svg|pdf: vector stills
 };
 
-// --format, checked; when given, `video` becomes its video format (none for png).
+// --format svg|pdf: the frames as vector stills (vector/frame_still.hpp)
+// instead of PNG frames or a video.
+std::optional<vector::FigureFormat> still_format(const RenderOptions& o) {
+  if (o.format != "svg" && o.format != "pdf") return std::nullopt;
+  return vector::parse_figure_format(o.format);
+}
+
+// --format, checked; when given, `video` becomes its video format (none for
+// png and the vector stills).
 void format_option(const RenderOptions& o, std::optional<io::VideoFormat>& video) {
-  if (!o.format.empty()) video = job::parse_output_format("--format", o.format);
+  if (o.format.empty()) return;
+  if (still_format(o)) {
+    video.reset();
+    return;
+  }
+  auto names = job::output_format_names();
+  if (std::find(names.begin(), names.end(), o.format) == names.end()) {
+    std::string message = "--format: unknown format '";
+    message += io::printable(o.format);
+    message += "' (allowed: ";
+    for (const auto& n : names) message += n + ", ";
+    message += "svg, pdf)";
+    throw io::BadInput(message);
+  }
+  video = job::parse_output_format("--format", o.format);
 }
 
 PreparedJob prepare(RenderJob job, const RenderOptions& o) {
@@ -78,11 +105,17 @@ PreparedJob prepare(RenderJob job, const RenderOptions& o) {
         ": ffmpeg not found on PATH; install the Debian package ffmpeg (scripts/setup.sh does)");
   if (o.resume && video)
     throw io::BadInput("--resume: applies to PNG sequences only (a video is written whole)");
-
   PreparedJob p;
+  p.still = still_format(o);
+  if (p.still && o.resume)
+    throw io::BadInput("--resume: applies to PNG sequences only (--format " + o.format +
+                       " writes each still whole)");
+
   p.plan = job::plan_job(job);
-  p.range = o.frames.empty() ? io::all_frames(p.plan.frames)
-                             : io::parse_frame_range(o.frames, p.plan.frames);
+  // A vector still is of one frame: without --frames, the job's last.
+  p.range = !o.frames.empty() ? io::parse_frame_range(o.frames, p.plan.frames)
+            : p.still         ? io::FrameRange{p.plan.frames - 1, p.plan.frames - 1}
+                              : io::all_frames(p.plan.frames);
   p.job = std::move(job);
   return p;
 }
@@ -107,11 +140,16 @@ RenderStats render_frames(const PreparedJob& p, paint::FramePainter& painter,
   const auto& job = p.job;
   paint::FrameDrawer drawer(p.plan, job.scene);
   drawer.set_caption(p.caption);
-  const paint::FrameFiles files{job.output.dir, job.output.name, job.output.video, job.scene.fps,
-                                o.resume};
+  const auto progress = progress_options(o, job.file.stem().string());
   RenderStats stats;
-  stats.written = paint::write_frames(drawer, painter, p.range, files,
-                                      progress_options(o, job.file.stem().string()));
+  if (p.still) {
+    stats.written = vector::write_frame_stills(
+        drawer, painter, p.range, {job.output.dir, job.output.name, *p.still}, progress);
+  } else {
+    const paint::FrameFiles files{job.output.dir, job.output.name, job.output.video, job.scene.fps,
+                                  o.resume};
+    stats.written = paint::write_frames(drawer, painter, p.range, files, progress);
+  }
   stats.runs = job::runs_report(drawer.source());
   return stats;
 }
@@ -181,7 +219,12 @@ int render_single(RenderJob job, const RenderOptions& o, const render::GlChoice&
   // A shard draws a contiguous range of frames (shard/frame_shard.hpp).
   shard::FrameBatch batch;
   std::optional<shard::FrameShard> shard;
-  if (const auto spec = shard::shard_from_options(o.shard, o.shard_count)) {
+  if (p.still && !o.shard.empty())
+    throw io::BadInput("--shard: a vector still (--format " + o.format +
+                       ") is one frame; give --frames instead");
+  // A still is never sharded, not even by an array job's environment.
+  if (const auto spec =
+          p.still ? std::nullopt : shard::shard_from_options(o.shard, o.shard_count)) {
     if (!o.frames.empty())
       throw io::BadInput("--frames: a shard's frames follow from --shard; give one of them");
     batch = frame_batch(p.job, p.plan.frames);
@@ -235,6 +278,10 @@ int render_gallery(GalleryJob g, const RenderOptions& o, const render::GlChoice&
   if (!o.width.empty()) g.tile_width = int(parse_integer("--width", o.width, 16, 8192));
   if (!o.height.empty()) g.tile_height = int(parse_integer("--height", o.height, 16, 8192));
   io::check_output_dir(o.out.empty() ? g.file.string() + ": dir" : "--out", g.dir);
+  if (still_format(o))
+    throw io::BadInput("--format " + o.format +
+                       ": a gallery writes gallery.png and videos; give a single job for a vector "
+                       "still");
   format_option(o, g.videos);
   // Check every job before rendering any.
   std::vector<PreparedJob> stills, videos;
@@ -332,7 +379,9 @@ std::function<int()> add_render_command(CLI::App& app) {
   cmd->add_option("--frames", o->frames, "frame range A:B (inclusive), A:, :B or N");
   cmd->add_option("--width", o->width, "frame width in pixels");
   cmd->add_option("--height", o->height, "frame height in pixels");
-  cmd->add_option("--format", o->format, "png|mp4|webm|gif");
+  cmd->add_option("--format", o->format,
+                  "png|mp4|webm|gif, or svg|pdf: vector stills of --frames (default: the last "
+                  "frame)");
   add_gl_option(*cmd, o->gl);
   cmd->add_option("--report-json", o->report_json,
                   "write what was rendered (tolerance chosen, timings) as JSON ('-': standard "

@@ -265,7 +265,7 @@ void FramePainter::draw_view_annotations(const scene::Frame& f, const render::Ca
   }
   const Box bounds = box_of(view.inset(int(2 * px), int(2 * px), int(2 * px), int(2 * px)));
   add_placed_labels(flat, requests, colours, obstacles, bounds);
-  renderer_->draw_2d(flat);
+  draw_flat(flat);
 }
 
 }  // namespace epviz::paint

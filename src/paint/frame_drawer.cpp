@@ -5,10 +5,15 @@ namespace epviz::paint {
 FrameDrawer::FrameDrawer(const scene::ScenePlan& plan, const scene::SceneSettings& settings)
     : source_(plan, settings) {}
 
-const render::RgbaImage& FrameDrawer::draw(int index, FramePainter& painter,
-                                           std::mutex* paint_lock) {
+scene::Frame FrameDrawer::frame(int index) {
   scene::Frame frame = source_.frame(index);
   frame.caption = caption_;
+  return frame;
+}
+
+const render::RgbaImage& FrameDrawer::draw(int index, FramePainter& painter,
+                                           std::mutex* paint_lock) {
+  const scene::Frame frame = this->frame(index);
   if (!paint_lock) return painter.paint(frame);
   std::lock_guard lock(*paint_lock);
   return painter.paint(frame);

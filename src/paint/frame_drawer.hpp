@@ -25,6 +25,9 @@ class FrameDrawer {
   // paint. `paint_lock`, when given, is held while painting only. Throws
   // numerics::IntegrationError on a numerical failure.
   const render::RgbaImage& draw(int index, FramePainter& painter, std::mutex* paint_lock = nullptr);
+  // Frame `index` as draw() paints it (same order rule), for painters of
+  // other kinds (vector/frame_still.hpp).
+  scene::Frame frame(int index);
   const scene::FrameSource& source() const { return source_; }
   // A caption drawn under every frame (gallery tiles).
   void set_caption(std::string caption) { caption_ = std::move(caption); }

@@ -225,7 +225,7 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
   draw_plane_captions(flat, column, float(area.y + area.height) + style.tick_length,
                       chart_top ? std::optional<float>(float(*chart_top) - 2 * px) : std::nullopt,
                       px, style.text, any_exit, any_infinity);
-  renderer_->draw_2d(flat);
+  draw_flat(flat);
 }
 
 void FramePainter::draw_plane_captions(render::DrawList& flat, const render::Viewport& column,
@@ -286,6 +286,15 @@ const char* drift_heading(const scene::Frame& f) {
   return f.comparison ? "largest rel. drift per run" : "max rel. drift";
 }
 }  // namespace
+
+const char* FramePainter::drift_table_heading(const scene::Frame& f) { return drift_heading(f); }
+
+void FramePainter::draw_flat(const render::DrawList& list) {
+  if (flat_sink_)
+    flat_sink_(list);
+  else
+    renderer_->draw_2d(list);
+}
 
 std::string FramePainter::drift_key_text(const std::array<std::string, 3>& parts) {
   return parts[0] + parts[1] + parts[2];
@@ -392,8 +401,9 @@ const render::RgbaImage& FramePainter::paint(const scene::Frame& f,
   // The overlay floating over the 3D view (small pictures) is drawn over
   // everything: the view's labels keep out of it.
   floating_overlay_.reset();
-  if (f.layers.overlay && layout.view_3d && !layout.overlay_in_column)
-    floating_overlay_ = info_window_box(f, layout, px);
+  if (f.layers.overlay) annotations_.overlay_window = info_window_box(f, layout, px);
+  if (annotations_.overlay_window && layout.view_3d && !layout.overlay_in_column)
+    floating_overlay_ = annotations_.overlay_window;
 
   renderer_->begin_frame(to_glm(f.colours.background));
   if (layout.view_3d) {
@@ -408,7 +418,7 @@ const render::RgbaImage& FramePainter::paint(const scene::Frame& f,
     draw_view_annotations(f, camera, view, px);
     if (DrawList chart; f.cloud && f.layers.overlay) {  // the cloud's spread
       draw_cloud_spread(chart, view, *f.cloud, cloud_colour(f), ink_for(f), px);
-      renderer_->draw_2d(chart);
+      draw_flat(chart);
     }
   }
   if (layout.panel_column && f.layers.riccati)
@@ -421,11 +431,12 @@ const render::RgbaImage& FramePainter::paint(const scene::Frame& f,
         [&](const std::string& text) { return gui().text_size(text); },
         layout.view_3d ? annotations_.legend_bottom : std::nullopt);
     for (const auto& d : drawn) annotations_.legend.push_back({d.text, d.box, {}});
-    renderer_->draw_2d(notes);
+    draw_flat(notes);
   }
-  if (f.layers.overlay || extra_ui)
+  const bool info_window = f.layers.overlay && !flat_sink_;  // a vector still draws its own
+  if (info_window || extra_ui)
     renderer_->draw_overlay([&] {
-      if (f.layers.overlay) draw_info_window(f, layout, px);
+      if (info_window) draw_info_window(f, layout, px);
       if (extra_ui) extra_ui();
     });
   renderer_->finish_frame(image_);

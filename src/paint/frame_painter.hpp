@@ -74,6 +74,8 @@ struct PaintedAnnotations {
   std::vector<Box> ghosts;
   // The key of the marks (gravity, fixed point, centre of mass) at the 3D view's top right.
   std::optional<Box> marks_key;
+  // The overlay window (title, lines, drift table), where the overlay layer is on.
+  std::optional<Box> overlay_window;
 };
 
 class FramePainter {
@@ -95,6 +97,18 @@ class FramePainter {
   // The ImGui overlay, for feeding it input and its clock.
   render::ImGuiOverlay& gui();
   const PaintedAnnotations& annotations() const { return annotations_; }
+  // For vector stills (vector/frame_still.hpp): while set, paint() draws only
+  // the 3D view with GL and hands every 2D list over it and beside it (marks,
+  // labels, keys, the plane, the charts) to `sink` instead, in drawing order;
+  // the overlay window is left out (annotations().overlay_window says where
+  // it goes). An empty sink: GL draws everything again.
+  void set_flat_sink(std::function<void(const render::DrawList&)> sink) {
+    flat_sink_ = std::move(sink);
+  }
+  // The overlay's drift table as draw_info_window writes it: its heading and
+  // the key of its colours that fits `room` pixels (for vector stills).
+  static const char* drift_table_heading(const scene::Frame& f);
+  std::array<std::string, 3> drift_table_key(float room) { return drift_key(room); }
 
  private:
   void draw_body(render::DrawList& list, const scene::Frame& f, float px);
@@ -128,6 +142,8 @@ class FramePainter {
   void add_placed_labels(render::DrawList& flat, const std::vector<LabelRequest>& requests,
                          const std::vector<glm::vec4>& colours, const std::vector<Box>& obstacles,
                          const Box& bounds);
+  // A 2D list to the GPU, or to the flat sink where one is set.
+  void draw_flat(const render::DrawList& list);
   void draw_info_window(const scene::Frame& f, const scene::FrameLayout& layout, float px);
   // The key of the drift colours that fits `room` pixels (in words where it
   // does), and its text.
@@ -146,7 +162,9 @@ class FramePainter {
   render::RgbaImage image_;
   int reserved_left_ = 0;
   PaintedAnnotations annotations_;
-  std::optional<Box> floating_overlay_;  // this frame's overlay window where it covers the 3D view
+  std::optional<Box> floating_overlay_;
+  std::function<void(const render::DrawList&)>
+      flat_sink_;  // this frame's overlay window where it covers the 3D view
 };
 
 }  // namespace epviz::paint

@@ -111,14 +111,21 @@ void paint_drawing(cairo_t* cr, const paint::FigureDrawing& drawing, const Cairo
       cairo_rectangle(cr, c.x, c.y, c.width, c.height);
       cairo_clip(cr);
     }
-    fill_triangles(cr, layer.list);
-    stroke_polylines(cr, layer.list);
-    draw_markers(cr, layer.list);
+    paint_shapes(cr, layer.list);
     cairo_restore(cr);
   }
+  for (const auto& layer : drawing.layers) paint_labels(cr, layer.list, font);
+}
+
+void paint_shapes(cairo_t* cr, const render::DrawList& list) {
+  fill_triangles(cr, list);
+  stroke_polylines(cr, list);
+  draw_markers(cr, list);
+}
+
+void paint_labels(cairo_t* cr, const render::DrawList& list, const CairoFont& font) {
   font.select(cr);
-  for (const auto& layer : drawing.layers)
-    for (const auto& label : layer.list.labels()) draw_text(cr, label, font);
+  for (const auto& label : list.labels()) draw_text(cr, label, font);
 }
 
 }  // namespace epviz::vector

@@ -1,23 +1,16 @@
 #include "vector/vector_figure.hpp"
 
-#include <cairo-pdf.h>
-#include <cairo-svg.h>
-
 #include <stdexcept>
 
 #include "io/atomic_file.hpp"
 #include "paint/figure_drawing.hpp"
 #include "paint/figure_panels.hpp"
 #include "vector/cairo_font.hpp"
+#include "vector/cairo_page.hpp"
 #include "vector/cairo_painter.hpp"
 
 namespace epviz::vector {
 namespace {
-
-cairo_status_t append(void* closure, const unsigned char* data, unsigned int length) {
-  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-  return CAIRO_STATUS_SUCCESS;
-}
 
 const std::string& title_of(const chart::Figure& figure) {
   return std::visit([](const auto& spec) -> const std::string& { return spec.title; },
@@ -28,31 +21,8 @@ const std::string& title_of(const chart::Figure& figure) {
 // a PDF's metadata and `name` in messages.
 std::string drawing_bytes(const paint::FigureDrawing& drawing, const CairoFont& font,
                           FigureFormat format, const std::string& title, const std::string& name) {
-  std::string bytes;
-  cairo_surface_t* surface =
-      format == FigureFormat::svg
-          ? cairo_svg_surface_create_for_stream(append, &bytes, drawing.width, drawing.height)
-          : cairo_pdf_surface_create_for_stream(append, &bytes, drawing.width, drawing.height);
-  if (format == FigureFormat::svg) {
-    // The picture's numbers are pixels: a browser shows the SVG at the PNG's size.
-    cairo_svg_surface_set_document_unit(surface, CAIRO_SVG_UNIT_PX);
-  } else {
-    cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_TITLE, title.c_str());
-    cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "epviz");
-  }
-  cairo_t* cr = cairo_create(surface);
-  paint_drawing(cr, drawing, font);
-  cairo_show_page(cr);
-  const cairo_status_t drawn = cairo_status(cr);
-  cairo_destroy(cr);
-  cairo_surface_finish(surface);
-  const cairo_status_t finished = cairo_surface_status(surface);
-  cairo_surface_destroy(surface);
-  for (const cairo_status_t s : {drawn, finished})
-    if (s != CAIRO_STATUS_SUCCESS)
-      throw std::runtime_error(std::string("cairo could not draw the figure '") + name +
-                               "': " + cairo_status_to_string(s));
-  return bytes;
+  return page_bytes({drawing.width, drawing.height, title, name}, format,
+                    [&](cairo_t* cr) { paint_drawing(cr, drawing, font); });
 }
 
 }  // namespace

@@ -1,0 +1,25 @@
+#pragma once
+// One page of width x height units (a unit per pixel of the matching PNG) as
+// an SVG or PDF file's bytes, drawn by a callback on a cairo context: the one
+// place that opens, finishes and checks cairo's vector surfaces.
+#include <functional>
+#include <string>
+
+#include <cairo.h>
+
+#include "vector/figure_format.hpp"
+
+namespace epviz::vector {
+
+struct PageInfo {
+  int width = 0, height = 0;
+  std::string title;  // a PDF's metadata
+  std::string name;   // in messages
+};
+
+// `format` must be svg or pdf. Throws std::runtime_error naming `page.name`
+// when cairo fails.
+std::string page_bytes(const PageInfo& page, FigureFormat format,
+                       const std::function<void(cairo_t*)>& draw);
+
+}  // namespace epviz::vector
