@@ -99,8 +99,10 @@ void draw_cloud_spread(render::DrawList& flat, const render::Viewport& view,
   char text[120];
   std::snprintf(text, sizeof text, "cloud of %d: covers %.2g%% of the sphere", cloud.members,
                 100.0 * double(cloud.spread.back().y()));
-  plot.draw_text(flat, {0.0, kLogSpreadMax},
-                 {{}, text, s.text, render::TextAnchor::bottom_left, {0.0f, -4.0f * px}});
+  // Over the chart, ending at its right edge: the text is wider than the
+  // chart and would otherwise run out of the view into the panels beside it.
+  plot.draw_text(flat, {cloud.t_end, kLogSpreadMax},
+                 {{}, text, s.text, render::TextAnchor::bottom_right, {0.0f, -4.0f * px}});
 }
 
 }  // namespace epviz::paint
