@@ -25,47 +25,29 @@ glm::vec4 cloud_colour(const scene::Frame& f) {
   return {c[0], c[1], c[2], 0.5f};
 }
 
-// Two triangles: the square of half-width `dx`, `dy` (each a vector) about `c`.
-void add_square(std::vector<render::ColouredVertex>& out, const glm::vec3& c, const glm::vec3& dx,
-                const glm::vec3& dy, const glm::vec4& colour) {
-  const glm::vec3 a = c - dx - dy, b = c + dx - dy, d = c + dx + dy, e = c - dx + dy;
-  for (const glm::vec3& v : {a, b, d, a, d, e}) out.push_back({v, colour});
-}
-
 void draw_cloud_sphere(render::DrawList& list, const scene::CloudFrame& cloud,
                        const glm::vec4& colour, const render::Camera& camera,
                        const render::Viewport& view, float px) {
   if (cloud.sphere.empty() || view.height <= 0) return;
-  // The camera's right and up in world axes (rows of the view matrix), and
-  // the world size of one pixel at eye depth 1 (projection[1][1] = 1 / tan(fov / 2)).
   const glm::mat4& v = camera.view;
-  const glm::vec3 right(v[0][0], v[1][0], v[2][0]), up(v[0][1], v[1][1], v[2][1]);
-  const float per_depth = 2.0f / (camera.projection[1][1] * float(view.height));
-  const float half_px = 1.0f * px;
-  std::vector<render::ColouredVertex> quads;
-  quads.reserve(6 * cloud.sphere.size());
+  std::vector<render::ColouredVertex> dots;
+  dots.reserve(cloud.sphere.size());
   for (const auto& p : cloud.sphere) {
-    // A little inside the sphere: the squares write depth, and the trail and
+    // A little inside the sphere: the dots write depth, and the trail and
     // the current point on the near side must stay in front of them.
     const glm::vec3 at = 0.997f * glm::vec3(p.x(), p.y(), p.z());
-    const float depth = -(v * glm::vec4(at, 1.0f)).z;
-    if (depth <= 0.0f) continue;
-    const float h = half_px * per_depth * depth;
-    add_square(quads, at, right * h, up * h, colour);
+    if (-(v * glm::vec4(at, 1.0f)).z <= 0.0f) continue;  // behind the eye
+    dots.push_back({at, colour});
   }
-  list.add_triangles(quads);
+  list.add_dots(dots, 2.0f * px);
 }
 
 void draw_cloud_plane(render::DrawList& flat, const render::Panel2D& plot,
                       const scene::CloudFrame& cloud, const glm::vec4& colour, float px) {
-  std::vector<render::ColouredVertex> quads;
-  quads.reserve(6 * cloud.plane.size());
-  const float h = 0.8f * px;
-  for (const auto& p : cloud.plane) {
-    const glm::vec2 at = plot.to_pixel({p.x(), p.y()});
-    add_square(quads, glm::vec3(at, 0.0f), {h, 0.0f, 0.0f}, {0.0f, h, 0.0f}, colour);
-  }
-  flat.add_triangles(quads);
+  std::vector<render::ColouredVertex> dots;
+  dots.reserve(cloud.plane.size());
+  for (const auto& p : cloud.plane) dots.push_back({glm::vec3(plot.to_pixel({p.x(), p.y()}), 0.0f), colour});
+  flat.add_dots(dots, 1.6f * px);
 }
 
 void draw_cloud_spread(render::DrawList& flat, const render::Viewport& view,

@@ -18,8 +18,9 @@ namespace epviz::paint {
 glm::vec4 cloud_colour(const scene::Frame& f);
 
 // `px`: the picture's line-width scale (pixels per 360th of its height).
-// The points are small squares facing `camera` (two triangles each, no
-// geometry shader: ten thousand markers cost llvmpipe several times more).
+// The points are square dots (render::DrawList::add_dots, one vertex each:
+// ten thousand round markers, through a geometry shader, cost llvmpipe
+// several times more, and squares made of two triangles a third more).
 void draw_cloud_sphere(render::DrawList& list, const scene::CloudFrame& cloud,
                        const glm::vec4& colour, const render::Camera& camera,
                        const render::Viewport& view, float px);

@@ -32,6 +32,12 @@ void DrawList::add_triangles(std::span<const ColouredVertex> vertices) {
                     vertices.end() - static_cast<long>(vertices.size() % 3));
 }
 
+void DrawList::add_dots(std::span<const ColouredVertex> centres, float size_px) {
+  if (centres.empty() || !(size_px > 0.0f)) return;
+  dots_.push_back({dot_vertices_.size(), centres.size(), size_px});
+  dot_vertices_.insert(dot_vertices_.end(), centres.begin(), centres.end());
+}
+
 void DrawList::add_rect(const glm::vec2& min, const glm::vec2& max, const glm::vec4& colour) {
   const ColouredVertex corners[] = {
       {{min.x, min.y, 0}, colour}, {{max.x, min.y, 0}, colour}, {{max.x, max.y, 0}, colour},
@@ -48,6 +54,8 @@ void DrawList::clear() {
   polylines_.clear();
   markers_.clear();
   triangles_.clear();
+  dot_vertices_.clear();
+  dots_.clear();
   labels_.clear();
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // What to draw, as plain data: meshes with materials, thick polylines with
-// per-vertex colour, round markers, filled triangles and text labels. A
+// per-vertex colour, round markers, filled triangles, square dots and text labels. A
 // DrawList knows nothing about GL state; the Renderer draws it in an order
 // that keeps translucency right (opaque first, translucent last).
 #include <span>
@@ -93,6 +93,11 @@ class DrawList {
   void add_marker(const Marker& marker);
   // Filled triangles (three vertices each), unlit; drawn before lines.
   void add_triangles(std::span<const ColouredVertex> vertices);
+  // Square dots `size_px` pixels wide, one per vertex, unlit and not
+  // anti-aliased; drawn with the triangles (depth tested and written in a 3D
+  // view). For many points at once (a cloud of states): one vertex a dot
+  // costs llvmpipe a fraction of a square made of two triangles.
+  void add_dots(std::span<const ColouredVertex> centres, float size_px);
   // A filled axis-aligned rectangle in the xy plane (for 2D panels).
   void add_rect(const glm::vec2& min, const glm::vec2& max, const glm::vec4& colour);
   void add_text(TextLabel label);
@@ -103,6 +108,13 @@ class DrawList {
   const std::vector<PolylineRange>& polylines() const { return polylines_; }
   const std::vector<Marker>& markers() const { return markers_; }
   const std::vector<ColouredVertex>& triangles() const { return triangles_; }
+  struct DotRange {
+    std::size_t first;  // into dot_vertices()
+    std::size_t count;
+    float size_px;
+  };
+  const std::vector<ColouredVertex>& dot_vertices() const { return dot_vertices_; }
+  const std::vector<DotRange>& dots() const { return dots_; }
   const std::vector<TextLabel>& labels() const { return labels_; }
 
  private:
@@ -110,6 +122,8 @@ class DrawList {
   std::vector<LineVertex> line_vertices_;
   std::vector<PolylineRange> polylines_;
   std::vector<Marker> markers_;
+  std::vector<ColouredVertex> dot_vertices_;
+  std::vector<DotRange> dots_;
   std::vector<ColouredVertex> triangles_;
   std::vector<TextLabel> labels_;
 };

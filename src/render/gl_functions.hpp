@@ -54,6 +54,7 @@
   X(PFNGLGETUNIFORMLOCATIONPROC, glGetUniformLocation)                         \
   X(PFNGLLINKPROGRAMPROC, glLinkProgram)                                       \
   X(PFNGLPIXELSTOREIPROC, glPixelStorei)                                       \
+  X(PFNGLPOINTSIZEPROC, glPointSize)                                           \
   X(PFNGLPOLYGONOFFSETPROC, glPolygonOffset)                                   \
   X(PFNGLREADPIXELSPROC, glReadPixels)                                         \
   X(PFNGLRENDERBUFFERSTORAGEPROC, glRenderbufferStorage)                       \
@@ -127,6 +128,7 @@
 #define glGetUniformLocation epviz_glGetUniformLocation
 #define glLinkProgram epviz_glLinkProgram
 #define glPixelStorei epviz_glPixelStorei
+#define glPointSize epviz_glPointSize
 #define glPolygonOffset epviz_glPolygonOffset
 #define glReadPixels epviz_glReadPixels
 #define glRenderbufferStorage epviz_glRenderbufferStorage

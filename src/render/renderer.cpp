@@ -73,6 +73,10 @@ Renderer::Renderer(GlContext& context, const RendererOptions& options)
   create_stream_buffer(triangles_.vao, triangles_.vertices, nullptr);
   float_attribute(0, 3, 7, 0);
   float_attribute(1, 4, 7, 3);
+  // Dots: the same, one GL_POINT each.
+  create_stream_buffer(dots_.vao, dots_.vertices, nullptr);
+  float_attribute(0, 3, 7, 0);
+  float_attribute(1, 4, 7, 3);
   glBindVertexArray(0);
   if (options.overlay) overlay_ = std::make_unique<ImGuiOverlay>(options.overlay_options);
   check_gl_error("creating the renderer");
@@ -83,6 +87,7 @@ Renderer::~Renderer() {
   delete_stream_buffer(lines_.vao, lines_.vertices, lines_.indices);
   delete_stream_buffer(markers_.vao, markers_.vertices, 0);
   delete_stream_buffer(triangles_.vao, triangles_.vertices, 0);
+  delete_stream_buffer(dots_.vao, dots_.vertices, 0);
 }
 
 void Renderer::resize(int width, int height) { framebuffer_.resize(width, height); }
@@ -176,6 +181,29 @@ void Renderer::draw_triangles(const DrawList& list, const glm::mat4& view_projec
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(scratch_vertices_.size() * sizeof(float)),
                scratch_vertices_.data(), GL_STREAM_DRAW);
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(list.triangles().size()));
+}
+
+void Renderer::draw_dots(const DrawList& list, const glm::mat4& view_projection) {
+  if (list.dots().empty()) return;
+  scratch_vertices_.clear();
+  scratch_vertices_.reserve(7 * list.dot_vertices().size());
+  for (const auto& v : list.dot_vertices()) {
+    scratch_vertices_.insert(scratch_vertices_.end(), {v.position.x, v.position.y, v.position.z});
+    push_colour(scratch_vertices_, v.colour);
+  }
+  standard_blending();
+  solid_program_.use();
+  solid_program_.set("u_view_projection", view_projection);
+  glBindVertexArray(dots_.vao);
+  glBindBuffer(GL_ARRAY_BUFFER, dots_.vertices);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(scratch_vertices_.size() * sizeof(float)),
+               scratch_vertices_.data(), GL_STREAM_DRAW);
+  // The point size set here (GL_PROGRAM_POINT_SIZE is off): a square of that many pixels.
+  for (const auto& range : list.dots()) {
+    glPointSize(range.size_px);
+    glDrawArrays(GL_POINTS, static_cast<GLint>(range.first), static_cast<GLsizei>(range.count));
+  }
+  glPointSize(1.0f);
 }
 
 void Renderer::draw_lines(const DrawList& list, const glm::mat4& view_projection,
@@ -279,6 +307,7 @@ void Renderer::draw_3d(const DrawList& list, const Camera& camera, const Viewpor
 
   draw_meshes(list, camera, lighting, false);
   draw_triangles(list, view_projection);
+  draw_dots(list, view_projection);
   // Lines and markers test depth against the opaque meshes but do not write
   // it while they draw: lines lying on one surface (a trail crossing a grid)
   // would otherwise hide each other at random where their depths tie.
@@ -317,6 +346,7 @@ void Renderer::draw_2d(const DrawList& list, const Viewport* clip) {
   const glm::mat4 view_projection = Camera::pixel_space(width(), height()).view_projection();
   const glm::vec2 size(static_cast<float>(width()), static_cast<float>(height()));
   draw_triangles(list, view_projection);
+  draw_dots(list, view_projection);
   draw_lines(list, view_projection, size);
   draw_markers(list, view_projection, size);
   glDisable(GL_SCISSOR_TEST);

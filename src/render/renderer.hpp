@@ -90,6 +90,7 @@ class Renderer {
   void draw_meshes(const DrawList& list, const Camera& camera, const Lighting& lighting,
                    bool translucent);
   void draw_triangles(const DrawList& list, const glm::mat4& view_projection);
+  void draw_dots(const DrawList& list, const glm::mat4& view_projection);
   void draw_lines(const DrawList& list, const glm::mat4& view_projection,
                   const glm::vec2& viewport_size);
   void draw_markers(const DrawList& list, const glm::mat4& view_projection,
@@ -109,6 +110,7 @@ class Renderer {
   StreamBuffer lines_;
   StreamBuffer markers_;
   StreamBuffer triangles_;
+  StreamBuffer dots_;
   std::unique_ptr<ImGuiOverlay> overlay_;
   // Labels of this frame: copies, because the lists may be gone before the overlay runs.
   std::vector<TextLabel> labels_;

@@ -263,4 +263,47 @@ TEST(Readback, TwoDPixelCoordinatesCountRowsFromTheTop) {
   EXPECT_EQ(image.at(10, 45).g, 0);
 }
 
+// Dots are squares of their size in pixels, each where its centre says, in
+// its colour; and, in a 3D view, hidden behind what is nearer.
+TEST(Dots, EachIsASquareOfItsSizeAtItsCentre) {
+  render::Renderer renderer(et::shared_gl_context(), small_options());
+  renderer.begin_frame({0, 0, 0, 1});
+  render::DrawList list;
+  const render::ColouredVertex dots[] = {{{10.0f, 10.0f, 0.0f}, {1, 0, 0, 1}},
+                                         {{40.0f, 30.0f, 0.0f}, {0, 0, 1, 1}}};
+  list.add_dots(dots, 4.0f);
+  renderer.draw_2d(list);
+  const auto image = renderer.finish_frame();
+  const auto lit = [&](int x0, int y0, int size, char channel) {
+    int n = 0;
+    for (int y = y0 - size; y < y0 + size; ++y)
+      for (int x = x0 - size; x < x0 + size; ++x) {
+        const auto p = image.at(x, y);
+        n += (channel == 'r' ? p.r : p.b) > 200;
+      }
+    return n;
+  };
+  EXPECT_EQ(lit(10, 10, 4, 'r'), 16) << "a 4 x 4 square about (10, 10)";
+  EXPECT_EQ(lit(40, 30, 4, 'b'), 16) << "a 4 x 4 square about (40, 30)";
+  EXPECT_EQ(lit(40, 30, 4, 'r'), 0);
+}
+
+TEST(Dots, InAThreeDViewANearerTriangleHidesThem) {
+  render::Renderer renderer(et::shared_gl_context(), small_options());
+  renderer.begin_frame({0, 0, 0, 1});
+  render::DrawList list;
+  // A green square at depth 0 over the left half; red dots behind it (z = 0.5,
+  // farther in clip space) on both halves.
+  list.add_rect({-1.0f, -1.0f}, {0.0f, 1.0f}, {0, 1, 0, 1});
+  const render::ColouredVertex dots[] = {{{-0.5f, 0.0f, 0.5f}, {1, 0, 0, 1}},
+                                         {{0.5f, 0.0f, 0.5f}, {1, 0, 0, 1}}};
+  list.add_dots(dots, 3.0f);
+  render::Camera identity;  // clip space = world space
+  renderer.draw_3d(list, identity, {0, 0, 64, 48});
+  const auto image = renderer.finish_frame();
+  EXPECT_GT(image.at(16, 24).g, 200) << "the dot behind the square is hidden";
+  EXPECT_LT(image.at(16, 24).r, 50);
+  EXPECT_GT(image.at(48, 24).r, 200) << "the other dot is drawn";
+}
+
 }  // namespace
