@@ -5,10 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "live/case_constraints.hpp"
 #include "physics/cases.hpp"
+#include "render/font_text.hpp"
 #include "scene/frame_source.hpp"
+#include "scene/symbols.hpp"
 #include "scene/theme.hpp"
 
 namespace epviz::live {
@@ -51,7 +54,7 @@ LiveSetup edited_body(LiveSetup s, physics::Case chosen, Edited what) {
 
 struct PlotData {
   const std::deque<DriftPoint>* history;
-  int which;  // 0 |gamma|^2, 1 C0, 2 C1, 3 extra
+  int which;  // 0 |γ|², 1 C₀, 2 C₁, 3 the fourth integral
 };
 
 float drift_log10(void* data, int index) {
@@ -135,9 +138,10 @@ PanelActions ControlPanel::draw(const LiveScene& scene, const render::Viewport& 
 
 void ControlPanel::draw_playback(const LiveScene& scene, PanelActions& out) {
   const LiveSetup& s = scene.setup();
-  ImGui::TextColored(
-      to_imgui(kTheme.title), "%s",
-      s.scene.title.empty() ? scene::case_title(s.run.case_id).c_str() : s.scene.title.c_str());
+  ImGui::TextColored(to_imgui(kTheme.title), "%s",
+                     render::drawable_text(s.scene.title.empty() ? scene::case_title(s.run.case_id)
+                                                                 : s.scene.title)
+                         .c_str());
   ImGui::Text("t = %.3f   %s, %s", scene.time(), std::string(sim::name(s.run.method)).c_str(),
               scene.accuracy_note().c_str());
   const float button_w = 5.5f * ImGui::GetFontSize();
@@ -236,10 +240,13 @@ void ControlPanel::draw_case_and_body(const LiveScene& scene, PanelActions& out)
                          ImGuiInputTextFlags_EnterReturnsTrue))
     edited(Edited::weight);
   note_item("weight");
-  if (ImGui::DragScalarN("omega(0)", ImGuiDataType_Double, e.run.initial.omega.data(), 3, 0.01f,
+  // The initial state by its symbols, as the font can draw them.
+  const std::string omega0 = render::drawable_text(std::string(scene::symbol::omega) + "(0)");
+  const std::string gamma0 = render::drawable_text(std::string(scene::symbol::gamma) + "(0)");
+  if (ImGui::DragScalarN(omega0.c_str(), ImGuiDataType_Double, e.run.initial.omega.data(), 3, 0.01f,
                          nullptr, nullptr, "%.4g"))
     edited(Edited::omega);
-  if (ImGui::DragScalarN("gamma(0)", ImGuiDataType_Double, e.run.initial.gamma.data(), 3, 0.01f,
+  if (ImGui::DragScalarN(gamma0.c_str(), ImGuiDataType_Double, e.run.initial.gamma.data(), 3, 0.01f,
                          nullptr, nullptr, "%.4g")) {
     // gamma is a unit vector: the edit sets its direction.
     const double n = e.run.initial.gamma.norm();
@@ -336,12 +343,16 @@ void ControlPanel::draw_drift(const LiveScene& scene) {
   if (history.empty()) return;
   const sim::Drifts& now = history.back().drift;
   const sim::Drifts& worst = scene.max_drift();
-  const char* names[] = {"|gamma|^2", "C0 (area)", "C1 (energy)"};
+  const std::string names[] = {std::string(scene::symbol::gamma_norm2),
+                               std::string(scene::symbol::area) + " (area)",
+                               std::string(scene::symbol::energy) + " (energy)"};
   const double values[] = {now.gamma_norm2, now.area, now.energy};
   const double maxima[] = {worst.gamma_norm2, worst.area, worst.energy};
   const std::string extra_name = scene::extra_integral_symbol(scene.setup().run.case_id);
   const int rows = now.extra ? 4 : 3;
-  ImGui::TextDisabled("log10 relative drift over the last %zu frames", history.size());
+  ImGui::TextDisabled("%s", render::drawable_text("log₁₀ relative drift over the last " +
+                                                  std::to_string(history.size()) + " frames")
+                                .c_str());
   for (int i = 0; i < rows; ++i) {
     const double v = i < 3 ? values[i] : *now.extra;
     const double m = i < 3 ? maxima[i] : worst.extra.value_or(0.0);
@@ -349,8 +360,9 @@ void ControlPanel::draw_drift(const LiveScene& scene) {
     std::snprintf(overlay, sizeof overlay, "%.1e (max %.1e)", v, m);
     PlotData data{&history, i};
     ImGui::PushStyleColor(ImGuiCol_PlotLines, to_imgui(kTheme.drift_colour(m)));
-    ImGui::PlotLines(i < 3 ? names[i] : extra_name.c_str(), drift_log10, &data, int(history.size()),
-                     0, overlay, -17.0f, 0.0f, ImVec2(0, 2.4f * ImGui::GetFontSize()));
+    const std::string name = render::drawable_text(i < 3 ? names[i] : extra_name);
+    ImGui::PlotLines(name.c_str(), drift_log10, &data, int(history.size()), 0, overlay, -17.0f,
+                     0.0f, ImVec2(0, 2.4f * ImGui::GetFontSize()));
     ImGui::PopStyleColor();
   }
 }

@@ -381,7 +381,7 @@ FigureDrawing draw_chart(const ChartSpec& spec, const ChartOptions& requested,
                                      {float(b.x + b.width), float(b.y), 0},
                                      {float(b.x + b.width), float(b.y + b.height), 0},
                                      {float(b.x), float(b.y + b.height), 0}};
-    legend.add_polyline(box, {0.0f, 0.0f, 0.0f, 0.35f}, 1.0f, true);
+    legend.add_polyline(box, {0.0f, 0.0f, 0.0f, 0.5f}, 1.0f, true);  // 3:1 on paper, for print
     float top = float(b.y) + font_px * 0.4f;
     const glm::vec4 grey{0.45f, 0.45f, 0.47f, 1.0f};  // marker-only rows: the shape, no colour
     for (const auto& r : legend_rows(spec)) {

@@ -10,6 +10,7 @@
 #include "paint/painter_common.hpp"
 #include "paint/separation_chart.hpp"
 #include "paint/trail_colours.hpp"
+#include "scene/symbols.hpp"
 
 namespace epviz::paint {
 namespace {
@@ -95,7 +96,12 @@ std::string until_note(double until) {
 // The text cut (with "...") to fit `room` pixels.
 std::string fitted(std::string text, float room, const TextMeasure& measure) {
   if (measure(text).x <= room) return text;
-  while (!text.empty() && measure(text + "...").x > room) text.pop_back();
+  while (!text.empty() && measure(text + "...").x > room) {
+    // A whole character at a time: UTF-8's continuation bytes go with their lead.
+    while (text.size() > 1 && (static_cast<unsigned char>(text.back()) & 0xC0) == 0x80)
+      text.pop_back();
+    text.pop_back();
+  }
   return text.empty() ? text : text + "...";
 }
 
@@ -112,24 +118,25 @@ float run_line_width(std::size_t /*run*/, float base) {
   return base;
 }
 
-glm::vec4 run_line_colour(const scene::Frame& f, std::size_t run, float age, float map_top) {
+glm::vec4 run_line_colour(const scene::Frame& f, std::size_t run, float age,
+                          const scene::Theme& ink) {
   if (f.comparison && run < f.comparison->colours.size()) return to_glm(f.comparison->colours[run]);
-  return age_colour(age, map_top);
+  return age_colour(age, ink.trail_map_top, ink.trail_oldest_alpha);
 }
 
 const std::optional<float>& run_untrue_age(const scene::Frame& f, std::size_t run) {
   return run == 0 ? f.untrue_age : f.comparison->others[run - 1].untrue_age;
 }
 
-void draw_trails_3d(render::DrawList& list, const scene::Frame& f, float map_top, float px,
-                    const std::function<glm::vec2(const glm::vec3&)>& to_pixel) {
+void draw_trails_3d(render::DrawList& list, const scene::Frame& f, const scene::Theme& ink,
+                    float px, const std::function<glm::vec2(const glm::vec3&)>& to_pixel) {
   for (std::size_t r = 0; r < run_count(f); ++r) {
     const auto& trail = trail_of(f, r);
     std::vector<render::LineVertex> vertices;
     std::vector<glm::vec2> pixels;
     std::vector<float> ages;
     for (const auto& p : trail) {
-      vertices.push_back({to_glm(p.p), run_line_colour(f, r, p.age, map_top)});
+      vertices.push_back({to_glm(p.p), run_line_colour(f, r, p.age, ink)});
       pixels.push_back(to_pixel(to_glm(p.p)));
       ages.push_back(p.age);
     }
@@ -169,8 +176,7 @@ std::vector<Box> draw_ghosts(
 }
 
 PlaneMarksDrawn draw_paths_plane(render::DrawList& flat, const render::Panel2D& plot,
-                                 const scene::Frame& f, const scene::Theme& ink, float map_top,
-                                 float px) {
+                                 const scene::Frame& f, const scene::Theme& ink, float px) {
   PlaneMarksDrawn drawn;
   for (std::size_t r = 0; r < run_count(f); ++r) {
     // The path, in pieces that do not join across a pass through infinity.
@@ -198,7 +204,7 @@ PlaneMarksDrawn draw_paths_plane(render::DrawList& flat, const render::Panel2D& 
     for (const auto& p : path) {
       if (p.break_before) flush();
       const glm::dvec2 ab(p.ab.x(), p.ab.y());
-      vertices.push_back({ab, run_line_colour(f, r, p.age, map_top)});
+      vertices.push_back({ab, run_line_colour(f, r, p.age, ink)});
       pixels.push_back(plot.to_pixel(ab));
       ages.push_back(p.age);
     }
@@ -207,7 +213,7 @@ PlaneMarksDrawn draw_paths_plane(render::DrawList& flat, const render::Panel2D& 
     // Its marks, in the run's colour (the time colour for a single run).
     for (const auto& m : plane_marks_of(f, r)) {
       const glm::dvec2 at(m.ab.x(), m.ab.y());
-      glm::vec4 c = run_line_colour(f, r, m.age, map_top);
+      glm::vec4 c = run_line_colour(f, r, m.age, ink);
       c.a = 1.0f;
       switch (m.kind) {
         case scene::PlaneMark::Kind::leaves_panel:  // hollow: the path goes on outside
@@ -225,9 +231,12 @@ PlaneMarksDrawn draw_paths_plane(render::DrawList& flat, const render::Panel2D& 
           if (r == 0) {
             plot.draw_marker(flat, at,
                              {{}, {0, 0, 0, 0}, to_glm(ink.infinity_mark), 6.0f * px, 2.0f * px});
-            plot.draw_text(
-                flat, at,
-                {{}, "inf", to_glm(ink.infinity_label), TextAnchor::centre, {0.0f, -11.0f * px}});
+            plot.draw_text(flat, at,
+                           {{},
+                            std::string(scene::symbol::infinity),
+                            to_glm(ink.infinity_label),
+                            TextAnchor::centre,
+                            {0.0f, -11.0f * px}});
             drawn.any_infinity = true;
           }
           break;
@@ -332,7 +341,7 @@ std::vector<AnnotationBox> draw_run_annotations(render::DrawList& flat, const sc
     flat.add_text(std::move(label));
   }
   if (f.comparison && layout.chart_area)
-    draw_separation_chart(flat, *f.comparison, *layout.chart_area, ink, px);
+    draw_separation_chart(flat, *f.comparison, *layout.chart_area, ink, px, measure);
   return drawn;
 }
 

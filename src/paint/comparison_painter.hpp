@@ -33,25 +33,25 @@ constexpr float kUntrueWidthFactor = 0.7f;
 
 // Run `run` (0 = the first) of the frame: its line style (solid for a single
 // run), its width from `base`, and its colour at a trail point of this age:
-// the run's own, opaque, in a comparison; the time colour alone.
+// the run's own, opaque, in a comparison; the theme's time colour alone.
 scene::LineStyle run_line_style(const scene::Frame& f, std::size_t run);
 float run_line_width(std::size_t run, float base);
-glm::vec4 run_line_colour(const scene::Frame& f, std::size_t run, float age, float map_top);
+glm::vec4 run_line_colour(const scene::Frame& f, std::size_t run, float age,
+                          const scene::Theme& ink);
 // Where run `run`'s pixel-true time falls on its trail (trail points newer than this age lie after it).
 const std::optional<float>& run_untrue_age(const scene::Frame& f, std::size_t run);
 
 // Every run's trail on the sphere, into the 3D list; `to_pixel` says where a
 // point lands on screen (the dashes are measured there).
-void draw_trails_3d(render::DrawList& list, const scene::Frame& f, float map_top, float px,
-                    const std::function<glm::vec2(const glm::vec3&)>& to_pixel);
+void draw_trails_3d(render::DrawList& list, const scene::Frame& f, const scene::Theme& ink,
+                    float px, const std::function<glm::vec2(const glm::vec3&)>& to_pixel);
 
 // Every run's (a, b) path, its edge marks and the other runs' current points.
 struct PlaneMarksDrawn {
   bool any_exit = false, any_infinity = false;
 };
 PlaneMarksDrawn draw_paths_plane(render::DrawList& flat, const render::Panel2D& plot,
-                                 const scene::Frame& f, const scene::Theme& ink, float map_top,
-                                 float px);
+                                 const scene::Frame& f, const scene::Theme& ink, float px);
 
 // A hollow diamond of `radius` pixels, on a halo of the background's colour.
 void add_diamond(render::DrawList& flat, glm::vec2 centre, float radius, const glm::vec4& colour,

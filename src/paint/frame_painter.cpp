@@ -6,7 +6,9 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -16,9 +18,11 @@
 #include "paint/comparison_painter.hpp"
 #include "paint/painter_common.hpp"
 #include "render/colour_map.hpp"
+#include "render/font_text.hpp"
 #include "render/imgui_context_scope.hpp"
 #include "render/mesh_data.hpp"
 #include "scene/layout.hpp"
+#include "scene/symbols.hpp"
 #include "scene/theme.hpp"
 
 namespace epviz::paint {
@@ -140,7 +144,7 @@ void FramePainter::draw_sphere(DrawList& list, const scene::Frame& f, const rend
   for (const auto& line : grid_) list.add_polyline(line, grid, 1.0f * px);
 
   // Every run's trail, its dashes measured on screen.
-  draw_trails_3d(list, f, ink.trail_map_top, px, [&](const glm::vec3& p) {
+  draw_trails_3d(list, f, ink, px, [&](const glm::vec3& p) {
     const auto at = render::project_to_pixel(camera, view, p);
     return at ? glm::vec2(*at) : glm::vec2(0.0f);
   });
@@ -170,7 +174,7 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
                    1.3f * px);
 
   // Every run's path and marks (paint/comparison_painter.hpp).
-  const PlaneMarksDrawn marks = draw_paths_plane(flat, plot, f, ink, ink.trail_map_top, px);
+  const PlaneMarksDrawn marks = draw_paths_plane(flat, plot, f, ink, px);
   const bool any_exit = marks.any_exit, any_infinity = marks.any_infinity;
   if (f.cloud) draw_cloud_plane(flat, plot, *f.cloud, cloud_colour(f), px);  // the cloud
   std::vector<Box> obstacles;
@@ -184,8 +188,9 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
 
   // The title above the plot says whose coordinates these are; the caption
   // under it, how they are made.
-  for (const char* title : {"Riccati plane (a, b) of gamma (body axes)",
-                            "Riccati plane (a, b) of gamma", "(a, b) plane"})
+  const std::string of_gamma = "Riccati plane (a, b) of " + std::string(scene::symbol::gamma);
+  for (const std::string& title :
+       {of_gamma + " (body axes)", of_gamma, std::string("(a, b) plane")})
     if (gui().text_size(title).x <= float(column.width) - 8 * px) {
       plot.draw_text(flat, {0.0, e}, {{}, title, style.text, TextAnchor::bottom, {0, -6 * px}});
       break;
@@ -239,8 +244,10 @@ void FramePainter::draw_plane_captions(render::DrawList& flat, const render::Vie
   // the minus signs).
   std::string legend;
   if (any_exit) legend += "hollow: leaves, dot: re-enters";
-  if (any_infinity)
-    legend += std::string(legend.empty() ? "" : "   ") + "inf: through the south pole";
+  if (any_infinity) {
+    if (!legend.empty()) legend += "   ";
+    legend += std::string(scene::symbol::infinity) + ": through the south pole";
+  }
   // Each line only where it stays below the plot's tick labels (and above a chart).
   const float lowest_top = ticks_top + font + 4.0f;
   const int lines = (!legend.empty() && wide ? 1 : 0) + 1;
@@ -250,9 +257,8 @@ void FramePainter::draw_plane_captions(render::DrawList& flat, const render::Vie
     flat.add_text({{centre, y, 0}, legend, text, TextAnchor::bottom});
     y -= font * 1.25f;
   }
-  for (const char* convention :
-       {"projected from the south pole: a = -gamma1/(1+gamma3), b = -gamma2/(1+gamma3)",
-        "a = -gamma1/(1+gamma3), b = -gamma2/(1+gamma3)", "a = -g1/(1+g3), b = -g2/(1+g3)"})
+  const std::string projection(scene::symbol::riccati_projection);
+  for (const std::string& convention : {"projected from the south pole: " + projection, projection})
     if (gui().text_size(convention).x <= float(column.width) - 8 * px && y - font >= lowest_top) {
       flat.add_text({{centre, y, 0}, convention, text, TextAnchor::bottom});
       break;
@@ -270,16 +276,23 @@ using DriftKey = std::array<std::string, 3>;
 // longest of these no wider than the window's other rows (the last one always).
 std::vector<DriftKey> drift_keys() {
   const std::string warn = decade(scene::kDriftWarnFrom), bad = decade(scene::kDriftBadFrom);
-  return {{"round-off <" + warn, "  small <" + bad, "  visible >=" + bad},
-          {"ok <" + warn, "  fair <" + bad, "  bad >=" + bad},
-          {"<" + warn, "  <" + bad, "  >=" + bad}};
+  return {{"round-off <" + warn, "  small <" + bad, "  visible ≥" + bad},
+          {"ok <" + warn, "  fair <" + bad, "  bad ≥" + bad},
+          {"<" + warn, "  <" + bad, "  ≥" + bad}};
 }
 void draw_drift_key(const scene::Theme& ink, const DriftKey& parts) {
   const scene::Rgba* colours[] = {&ink.drift_ok, &ink.drift_warn, &ink.drift_bad};
   for (std::size_t i = 0; i < parts.size(); ++i) {
     if (i) ImGui::SameLine(0.0f, 0.0f);
-    ImGui::TextColored(to_imgui(*colours[i]), "%s", parts[i].c_str());
+    ImGui::TextColored(to_imgui(*colours[i]), "%s", render::drawable_text(parts[i]).c_str());
   }
+}
+// The width of the drift table's names column: 12 characters of the bitmap
+// font (as its "%-12s" was), or the widest name.
+float drift_names_width(const render::ImGuiOverlay& gui, const scene::Frame& f) {
+  float w = gui.text_size("xxxxxxxxxxxx").x;
+  for (const auto& d : f.overlay.drifts) w = std::max(w, gui.text_size(d.first).x);
+  return w;
 }
 // The drift table's heading: of the one run, or of each run of a comparison.
 const char* drift_heading(const scene::Frame& f) {
@@ -321,9 +334,11 @@ Box FramePainter::info_window_box(const scene::Frame& f, const scene::FrameLayou
   float text_w = gui().text_size(f.overlay.title).x;
   for (int i = 0; i < shown; ++i)
     text_w = std::max(text_w, gui().text_size(f.overlay.lines[std::size_t(i)]).x);
-  if (!f.overlay.drifts.empty()) {  // "%-12s" name, then "%9.1e" value; the heading; the key
-    text_w = std::max({text_w, gui().text_size("xxxxxxxxxxxx  -0.0e+00 ").x,
-                       gui().text_size(drift_heading(f)).x});
+  if (!f.overlay.drifts.empty()) {  // the names, then "%9.1e" values; the heading; the key
+    text_w =
+        std::max({text_w, gui().text_size("xxxxxxxxxxxx  -0.0e+00 ").x,
+                  drift_names_width(gui(), f) + st.ItemSpacing.x + gui().text_size("-0.0e+00 ").x,
+                  gui().text_size(drift_heading(f)).x});
     text_w = std::max(text_w, gui().text_size(drift_key_text(drift_key(text_w))).x);
   }
   // Title, lines, then the drifts' heading, their rows and the key of their colours.
@@ -354,31 +369,37 @@ void FramePainter::draw_info_window(const scene::Frame& f, const scene::FrameLay
     ImGui::SetNextWindowBgAlpha(layout.overlay_in_column || !layout.view_3d
                                     ? ink.overlay_alpha_in_column
                                     : ink.overlay_alpha_floating);
-    // The overlay's ImGui context has ImGui's dark colours; a light theme
-    // lends its window ImGui's light ones.
-    int pushed = 0;
-    if (ink.light_gui) {
-      ImGuiStyle light;
-      ImGui::StyleColorsLight(&light);
-      for (ImGuiCol c : {ImGuiCol_WindowBg, ImGuiCol_Border, ImGuiCol_Text, ImGuiCol_TextDisabled,
-                         ImGuiCol_Separator}) {
-        ImGui::PushStyleColor(c, light.Colors[c]);
-        ++pushed;
-      }
-    }
+    // The window in the theme's colours (the overlay's ImGui context has ImGui's dark ones).
+    const std::pair<ImGuiCol, const scene::Rgba*> window_colours[] = {
+        {ImGuiCol_WindowBg, &ink.overlay_window},
+        {ImGuiCol_Border, &ink.overlay_border},
+        {ImGuiCol_Separator, &ink.overlay_border},
+        {ImGuiCol_Text, &ink.overlay_text},
+        {ImGuiCol_TextDisabled, &ink.overlay_heading}};
+    for (const auto& [which, colour] : window_colours)
+      ImGui::PushStyleColor(which, to_imgui(*colour));
+    const int pushed = int(std::size(window_colours));
     ImGui::Begin("overlay", nullptr,
                  ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |
                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoTitleBar |
                      ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoScrollbar);
-    ImGui::TextColored(to_imgui(ink.title), "%s", f.overlay.title.c_str());
-    for (int i = 0; i < shown; ++i) ImGui::TextUnformatted(f.overlay.lines[std::size_t(i)].c_str());
+    // Every text as the font can draw it (symbols, or ASCII in the bitmap font).
+    auto text = [](const std::string& t) {
+      ImGui::TextUnformatted(render::drawable_text(t).c_str());
+    };
+    ImGui::PushStyleColor(ImGuiCol_Text, to_imgui(ink.title));
+    text(f.overlay.title);
+    ImGui::PopStyleColor();
+    for (int i = 0; i < shown; ++i) text(f.overlay.lines[std::size_t(i)]);
     if (!f.overlay.drifts.empty()) {
       ImGui::Separator();
       ImGui::TextDisabled("%s", drift_heading(f));
+      const float values_x = ImGui::GetStyle().WindowPadding.x + drift_names_width(gui(), f) +
+                             ImGui::GetStyle().ItemSpacing.x;
       for (const auto& [name, value] : f.overlay.drifts) {
         const ImVec4 c = to_imgui(ink.drift_colour(value));  // traffic light: scene::drift_level
-        ImGui::Text("%-12s", name.c_str());
-        ImGui::SameLine();
+        text(name);
+        ImGui::SameLine(values_x);
         ImGui::TextColored(c, "%9.1e", value);
       }
       draw_drift_key(ink, drift_key(ImGui::GetContentRegionAvail().x));

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "paint/dash_pattern.hpp"
 #include "paint/painter_common.hpp"
 #include "render/panel_2d.hpp"
+#include "scene/symbols.hpp"
 
 namespace epviz::paint {
 namespace {
@@ -17,9 +19,10 @@ constexpr double kFloor = 1e-16;
 }  // namespace
 
 void draw_separation_chart(render::DrawList& flat, const scene::Comparison& c,
-                           const scene::Rect& area, const scene::Theme& ink, float px) {
+                           const scene::Rect& area, const scene::Theme& ink, float px,
+                           const std::function<glm::vec2(const std::string&)>& measure) {
   if (area.width < 40 || area.height < 30 || c.others.empty()) return;
-  // Log scale: from the smallest separation drawn (a decade below) to |delta gamma| = 2.
+  // Log scale: from the smallest separation drawn (a decade below) to |Δγ| = 2.
   double lo = 0.0;
   for (const auto& run : c.others)
     for (const auto& p : run.separation)
@@ -62,8 +65,12 @@ void draw_separation_chart(render::DrawList& flat, const scene::Comparison& c,
       plot.draw_polyline(flat, piece, std::span(&colour, 1), width);
     }
   }
+  // |Δγ|, the distance of a run's γ from run 1's, on a log scale; what Δγ is where there is room.
+  const std::string title = "log₁₀ " + std::string(scene::symbol::separation) + " over t";
+  const std::string gamma(scene::symbol::gamma);
+  const std::string defined = title + ",  Δ" + gamma + " = " + gamma + " − " + gamma + " of run 1";
   flat.add_text({{float(area.x), float(area.y), 0.0f},
-                 "log10 |gamma - gamma of run 1|  over t",
+                 measure(defined).x <= float(area.width) ? defined : title,
                  style.text,
                  render::TextAnchor::top_left});
 }

@@ -11,10 +11,11 @@ inline const render::ColourMap& time_map() {
   static const render::ColourMap map = render::ColourMap::time();
   return map;
 }
-// Newest points bright and opaque, old ones darker and fading out; the map's
-// top is cut where the theme's background would swallow it.
-inline glm::vec4 age_colour(float age, float top) {
-  return time_map()((1.0f - age) * top, 0.25f + 0.75f * (1.0f - age));
+// Newest points bright and opaque, old ones darker and fading to
+// `oldest_alpha`; the map's top is cut where the theme's background would
+// swallow it (scene::Theme::trail_map_top, trail_oldest_alpha).
+inline glm::vec4 age_colour(float age, float top, float oldest_alpha) {
+  return time_map()((1.0f - age) * top, oldest_alpha + (1.0f - oldest_alpha) * (1.0f - age));
 }
 // The same hue, opaque: the colour bar's.
 inline glm::vec4 age_colour_opaque(float age, float top) {

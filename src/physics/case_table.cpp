@@ -20,7 +20,7 @@ CasePreset euler() {
   p.id = Case::euler;
   p.name = "euler";
   p.title = "Euler top (torque-free)";
-  p.integral_symbol = "|L|^2";
+  p.integral_symbol = "|L|²";
   p.summary =
       "torque-free body spun near its intermediate axis: periodic flips (tennis racket effect)";
   p.conditions = "r = 0 or P = 0";
@@ -46,7 +46,7 @@ CasePreset lagrange() {
   p.id = Case::lagrange;
   p.name = "lagrange";
   p.title = "Lagrange top";
-  p.integral_symbol = "Omega3";
+  p.integral_symbol = "Ω₃";
   p.summary = "symmetric spinning top tilted 30 degrees: slow precession with cusped nutation";
   p.conditions = "I1 = I2, a0 = b0 = 0";
   p.panel_conditions = "I1 = I2, centre of mass on axis 3";

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "io/data_dir.hpp"
+#include "render/font_text.hpp"
 #include "render/gl.hpp"
 #include "render/imgui_context_scope.hpp"
 #include "render/imgui_gl_renderer.hpp"
@@ -51,8 +52,9 @@ std::string cannot_load(const std::filesystem::path& font) {
 }
 
 // The characters a label may use beyond ImGui's default (Latin-1): axis
-// titles and legends name physical quantities (γ, Ω, ω₃, 10⁻⁸, ≤, −, →).
-// Only the glyphs the font has are baked.
+// titles and legends name physical quantities (γ, Ω, Δγ, ω₃, C₀, |γ|², 10⁻⁸,
+// ≤, −, →, ∞). Only the glyphs the font has are baked; a text with one the
+// font lacks is drawn in ASCII (render/font_text.hpp).
 const ImWchar* label_glyph_ranges() {
   static const ImWchar ranges[] = {
       0x0020, 0x00FF,  // Basic Latin, Latin-1 (², ³, ·, °, ±, ×)
@@ -149,7 +151,8 @@ float ImGuiOverlay::label_font_px() const {
 }
 
 glm::vec2 ImGuiOverlay::text_size(const std::string& text) const {
-  const ImVec2 s = font_->CalcTextSizeA(label_font_px(), FLT_MAX, 0.0f, text.c_str());
+  const std::string drawn = drawable_text(*font_, text);
+  const ImVec2 s = font_->CalcTextSizeA(label_font_px(), FLT_MAX, 0.0f, drawn.c_str());
   return {s.x, s.y};
 }
 
@@ -176,7 +179,8 @@ void ImGuiOverlay::add_labels(std::span<const PlacedLabel> labels) {
   const float size = ImGui::GetFontSize();
   for (const auto& placed : labels) {
     const TextLabel& label = *placed.label;
-    const ImVec2 extent = font->CalcTextSizeA(size, FLT_MAX, 0.0f, label.text.c_str());
+    const std::string text = drawable_text(*font, label.text);
+    const ImVec2 extent = font->CalcTextSizeA(size, FLT_MAX, 0.0f, text.c_str());
     const glm::vec2 top_left = anchored_top_left(placed.pixel + label.offset_px,
                                                  glm::vec2(extent.x, extent.y), label.anchor);
     // Whole pixels keep bitmap-like glyphs crisp.
@@ -187,7 +191,7 @@ void ImGuiOverlay::add_labels(std::span<const PlacedLabel> labels) {
                           ImVec2(at.x + extent.x + pad, at.y + extent.y + pad - 1.0f),
                           to_imgui_colour(label.background), 3.0f);
     }
-    draw->AddText(font, size, at, to_imgui_colour(label.colour), label.text.c_str());
+    draw->AddText(font, size, at, to_imgui_colour(label.colour), text.c_str());
   }
 }
 

@@ -74,7 +74,7 @@ struct OverlayText {
   // Time, method and tolerance, formulation, parameters: most important first,
   // so that a small picture can show only the first few.
   std::vector<std::string> lines;
-  // Running relative drift of each invariant: (name, value) e.g. ("C1", 3e-13).
+  // Running relative drift of each invariant: (name, value) e.g. ("C₁ (energy)", 3e-13).
   std::vector<std::pair<std::string, double>> drifts;
 };
 
@@ -122,7 +122,7 @@ struct Frame {
   // space (the apex trace). `current` is the newest point.
   std::vector<TrailPoint> trail;
   Eigen::Vector3f current = Eigen::Vector3f::UnitZ();
-  std::string trail_label;  // "gamma (body axes)" or "body axis 3 (space)"
+  std::string trail_label;  // "γ (body frame)" or "body axis 3 (space frame)"
   double trail_time = 0.0;  // simulation time from age 0 to age 1 (the colour bar's span); 0: none
 
   // Riccati plane: stereographic (a, b) of gamma; the panel shows

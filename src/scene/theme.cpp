@@ -22,7 +22,6 @@ const Theme& dark_theme() {
   static const Theme t{
       .name = "dark",
       .light = false,
-      .light_gui = false,
       .colours = Colours{},
       // Muted red/green/blue, readable on screen and in print.
       .axes = {{0.86f, 0.33f, 0.30f, 1}, {0.36f, 0.74f, 0.40f, 1}, {0.36f, 0.54f, 0.92f, 1}},
@@ -37,6 +36,7 @@ const Theme& dark_theme() {
       .marker_edge = {1, 1, 1, 1},
       .trail_caption = {0.65f, 0.68f, 0.75f, 1},
       .trail_map_top = 1.0f,
+      .trail_oldest_alpha = 0.25f,
       .panel_background = {0.10f, 0.11f, 0.13f, 1.0f},
       .panel_frame = {0.45f, 0.47f, 0.52f, 1.0f},
       .panel_grid = {1.0f, 1.0f, 1.0f, 0.07f},
@@ -44,7 +44,12 @@ const Theme& dark_theme() {
       .panel_text = {0.80f, 0.82f, 0.86f, 1.0f},
       .infinity_mark = {0.95f, 0.3f, 0.3f, 1},
       .infinity_label = {0.95f, 0.35f, 0.35f, 1},
+      // ImGui's dark window colours.
+      .overlay_window = {0.06f, 0.06f, 0.06f, 0.94f},
+      .overlay_border = {0.43f, 0.43f, 0.50f, 0.50f},
       .title = {1.0f, 0.82f, 0.45f, 1.0f},
+      .overlay_text = {1.0f, 1.0f, 1.0f, 1.0f},
+      .overlay_heading = {0.50f, 0.50f, 0.50f, 1.0f},
       .overlay_alpha_in_column = 0.7f,
       .overlay_alpha_floating = 0.55f,
       .drift_ok = {0.5f, 0.85f, 0.55f, 1},
@@ -61,23 +66,26 @@ const Theme& light_theme() {
   static const Theme t{
       .name = "light",
       .light = true,
-      .light_gui = true,
       .colours = Colours{.background = {1.0f, 1.0f, 1.0f, 1.0f},
                          .body = {0.78f, 0.55f, 0.28f, 1.0f},
                          .sphere = {0.35f, 0.50f, 0.80f, 0.10f},
                          .marker = {0.85f, 0.20f, 0.12f, 1.0f}},
-      .axes = {{0.78f, 0.22f, 0.20f, 1}, {0.20f, 0.58f, 0.26f, 1}, {0.20f, 0.38f, 0.80f, 1}},
+      .axes = {{0.78f, 0.22f, 0.20f, 1}, {0.16f, 0.52f, 0.22f, 1}, {0.20f, 0.38f, 0.80f, 1}},
       .axis_label = {0.2f, 0.2f, 0.25f, 1},
       .fixed_point_fill = {0.08f, 0.08f, 0.1f, 1},
       .fixed_point_edge = {0.95f, 0.95f, 0.95f, 1},
       .centre_of_mass_fill = {0.98f, 0.80f, 0.15f, 1},
       .centre_of_mass_edge = {0.1f, 0.1f, 0.1f, 1},
       .body_edge_factor = 0.45f,
-      .sphere_grid = {0.25f, 0.3f, 0.4f, 0.22f},
+      // 3:1 against the glass where it is most opaque (the outline), as every
+      // line and text of this theme (tests/paint/light_theme_contrast_test.cpp).
+      .sphere_grid = {0.44f, 0.47f, 0.53f, 1.0f},
       .pole_label = {0.15f, 0.15f, 0.2f, 1},
       .marker_edge = {0.1f, 0.1f, 0.12f, 1},
       .trail_caption = {0.3f, 0.3f, 0.35f, 1},
-      .trail_map_top = 0.82f,  // the map's pale yellow end fades on white
+      // The map's light half (teal to yellow) and faint old points fade on white.
+      .trail_map_top = 0.45f,
+      .trail_oldest_alpha = 0.6f,
       .panel_background = {0.97f, 0.97f, 0.98f, 1},
       .panel_frame = {0.5f, 0.5f, 0.55f, 1},
       .panel_grid = {0, 0, 0, 0.08f},
@@ -85,7 +93,12 @@ const Theme& light_theme() {
       .panel_text = {0.15f, 0.15f, 0.2f, 1},
       .infinity_mark = {0.80f, 0.12f, 0.12f, 1},
       .infinity_label = {0.75f, 0.10f, 0.10f, 1},
+      // ImGui's light window, with borders and headings dark enough to print.
+      .overlay_window = {0.94f, 0.94f, 0.94f, 1.0f},
+      .overlay_border = {0.45f, 0.45f, 0.48f, 1.0f},
       .title = {0.60f, 0.36f, 0.0f, 1.0f},
+      .overlay_text = {0.0f, 0.0f, 0.0f, 1.0f},
+      .overlay_heading = {0.35f, 0.35f, 0.38f, 1.0f},
       .overlay_alpha_in_column = 0.85f,
       .overlay_alpha_floating = 0.75f,
       .drift_ok = {0.10f, 0.52f, 0.20f, 1},

@@ -21,9 +21,8 @@ DriftLevel drift_level(double relative_drift);
 
 struct Theme {
   std::string_view name;
-  bool light = false;      // drawn on a light background
-  bool light_gui = false;  // ImGui windows (the overlay) in ImGui's light colours
-  Colours colours;         // the defaults a job's "colours" override
+  bool light = false;  // drawn on a light background
+  Colours colours;     // the defaults a job's "colours" override
 
   // The body: principal axes e1, e2, e3 and their labels, the fixed point and
   // the centre of mass (fill, edge); box edges are the body colour darkened by this factor.
@@ -39,16 +38,20 @@ struct Theme {
   Rgba pole_label;
   Rgba marker_edge;
   Rgba trail_caption;
-  // Trails run along the time colour map from old (0) to new (this, at most 1).
+  // Trails run along the time colour map from old (0) to new (this, at most 1),
+  // fading from opaque (now) to this opacity (the oldest point kept).
   float trail_map_top;
+  float trail_oldest_alpha;
 
   // The Riccati plane's panel, and the mark of a pass through infinity.
   Rgba panel_background, panel_frame, panel_grid, panel_axis, panel_text;
   Rgba infinity_mark, infinity_label;
 
-  // The overlay window: the title's colour and the window's opacity in the
-  // panel's column (or without a 3D view) and floating over the 3D view.
-  Rgba title;
+  // The overlay window: its colour, border and separator, its text (the
+  // title's, the lines', the headings'), and its opacity in the panel's
+  // column (or without a 3D view) and floating over the 3D view.
+  Rgba overlay_window, overlay_border;
+  Rgba title, overlay_text, overlay_heading;
   float overlay_alpha_in_column;
   float overlay_alpha_floating;
 

@@ -139,7 +139,6 @@ TEST_P(ComparisonFigure, RunsStayApartReadAfterTheirHorizonAndTheLegendIsClear) 
     }
 
   // After its horizon each run keeps its colour, opaque, at 3:1 or more.
-  const float map_top = scene::theme(theme).trail_map_top;
   int past_horizon = 0;
   for (std::size_t r = 0; r < runs; ++r) {
     const auto& untrue = paint::run_untrue_age(f, r);
@@ -148,7 +147,7 @@ TEST_P(ComparisonFigure, RunsStayApartReadAfterTheirHorizonAndTheLegendIsClear) 
     for (const auto& p : trail)
       if (p.age < *untrue) {
         ++past_horizon;
-        const glm::vec4 drawn = paint::run_line_colour(f, r, p.age, map_top);
+        const glm::vec4 drawn = paint::run_line_colour(f, r, p.age, scene::theme(theme));
         EXPECT_EQ(drawn.a, 1.0f) << "run " << r + 1 << " fades";
         EXPECT_GE(et::contrast_ratio(drawn, background), 3.0) << "run " << r + 1;
         EXPECT_LT(et::lab_distance(drawn, c.colours[r]), 1.0) << "run " << r + 1;

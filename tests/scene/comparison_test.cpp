@@ -74,7 +74,7 @@ TEST(ComparisonFrames, IdenticalRunsCoincideAndDifferentOnesPart) {
   const auto& sep = c.others[1].separation;
   EXPECT_GT(sep.back().y(), 1e-3f);
   EXPECT_LT(sep.front().y(), sep.back().y());
-  // One drift row per run: its largest drift among |gamma|^2, C0, C1 and K, named.
+  // One drift row per run: its largest drift among |γ|², C₀, C₁ and K, named.
   EXPECT_EQ(int(f.overlay.drifts.size()), scene::overlay_drift_rows(std::vector{ref, ref, coarse}));
   ASSERT_EQ(f.overlay.drifts.size(), 3u);
   for (int i = 0; i < 3; ++i) {
@@ -82,9 +82,9 @@ TEST(ComparisonFrames, IdenticalRunsCoincideAndDifferentOnesPart) {
     const double largest = std::max({d.gamma_norm2, d.area, d.energy, d.extra.value_or(0.0)});
     const auto& [name, value] = f.overlay.drifts[std::size_t(i)];
     EXPECT_EQ(value, largest) << name;
-    const std::string expected = largest == d.gamma_norm2 ? "|gamma|^2"
-                                 : largest == d.area      ? "C0"
-                                 : largest == d.energy    ? "C1"
+    const std::string expected = largest == d.gamma_norm2 ? "|γ|²"
+                                 : largest == d.area      ? "C₀"
+                                 : largest == d.energy    ? "C₁"
                                                           : "K";
     EXPECT_EQ(name, std::to_string(i + 1) + ": " + expected);
   }
