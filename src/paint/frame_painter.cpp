@@ -302,6 +302,11 @@ const char* drift_heading(const scene::Frame& f) {
 
 const char* FramePainter::drift_table_heading(const scene::Frame& f) { return drift_heading(f); }
 
+float FramePainter::drift_table_values_x(const scene::Frame& f) {
+  render::ImGuiContextScope scope(gui().context());
+  return drift_names_width(gui(), f) + ImGui::GetStyle().ItemSpacing.x;
+}
+
 void FramePainter::draw_flat(const render::DrawList& list) {
   if (flat_sink_)
     flat_sink_(list);
@@ -394,8 +399,7 @@ void FramePainter::draw_info_window(const scene::Frame& f, const scene::FrameLay
     if (!f.overlay.drifts.empty()) {
       ImGui::Separator();
       ImGui::TextDisabled("%s", drift_heading(f));
-      const float values_x = ImGui::GetStyle().WindowPadding.x + drift_names_width(gui(), f) +
-                             ImGui::GetStyle().ItemSpacing.x;
+      const float values_x = ImGui::GetStyle().WindowPadding.x + drift_table_values_x(f);
       for (const auto& [name, value] : f.overlay.drifts) {
         const ImVec4 c = to_imgui(ink.drift_colour(value));  // traffic light: scene::drift_level
         text(name);

@@ -109,6 +109,9 @@ class FramePainter {
   // the key of its colours that fits `room` pixels (for vector stills).
   static const char* drift_table_heading(const scene::Frame& f);
   std::array<std::string, 3> drift_table_key(float room) { return drift_key(room); }
+  // Where its values start, from the left of the window's text: after the
+  // widest name (at least 12 characters of the bitmap font) and a spacing.
+  float drift_table_values_x(const scene::Frame& f);
 
  private:
   void draw_body(render::DrawList& list, const scene::Frame& f, float px);

@@ -30,28 +30,26 @@ void rounded_rectangle(cairo_t* cr, double x0, double y0, double x1, double y1, 
   cairo_close_path(cr);
 }
 
-// What the window takes from the overlay's ImGui style (a light theme lends
-// the window ImGui's light colours, as the painter does).
+// What the window takes from the overlay's ImGui style, in the theme's
+// colours (as the painter gives them to its window).
 struct WindowStyle {
   ImVec2 padding, spacing;
   float rounding = 0.0f, border = 0.0f;
   ImVec4 background, border_colour, text, text_disabled, separator;
 };
 
-WindowStyle window_style(paint::FramePainter& painter, bool light) {
+WindowStyle window_style(paint::FramePainter& painter, const scene::Theme& ink) {
   render::ImGuiContextScope scope(painter.gui().context());
   const ImGuiStyle& st = ImGui::GetStyle();
-  ImGuiStyle colours = st;
-  if (light) ImGui::StyleColorsLight(&colours);
   return {st.WindowPadding,
           st.ItemSpacing,
           st.WindowRounding,
           st.WindowBorderSize,
-          colours.Colors[ImGuiCol_WindowBg],
-          colours.Colors[ImGuiCol_Border],
-          colours.Colors[ImGuiCol_Text],
-          colours.Colors[ImGuiCol_TextDisabled],
-          colours.Colors[ImGuiCol_Separator]};
+          to_imgui(ink.overlay_window),
+          to_imgui(ink.overlay_border),
+          to_imgui(ink.overlay_text),
+          to_imgui(ink.overlay_heading),
+          to_imgui(ink.overlay_border)};
 }
 
 // Lines of text from the window's top left, as ImGui lays out one item a line.
@@ -85,7 +83,7 @@ class TextCursor {
 void draw_overlay_window(cairo_t* cr, paint::FramePainter& painter, const scene::Frame& frame,
                          const paint::Box& box, const CairoFont& font) {
   const scene::Theme& ink = paint::ink_for(frame);
-  const WindowStyle st = window_style(painter, ink.light_gui);
+  const WindowStyle st = window_style(painter, ink);
   const scene::FrameLayout layout = paint::layout_for(frame, painter.width(), painter.height());
   // ImGui puts windows on whole pixels.
   const double x0 = std::floor(box.min.x), y0 = std::floor(box.min.y);
@@ -125,13 +123,13 @@ void draw_overlay_window(cairo_t* cr, paint::FramePainter& painter, const scene:
   cairo_stroke(cr);
   line.put(paint::FramePainter::drift_table_heading(frame), st.text_disabled);
   line.next_line();
+  // The painter's columns: the names, then the values where it puts them.
+  const float values_x = painter.drift_table_values_x(frame);
   for (const auto& [name, value] : frame.overlay.drifts) {
-    // The painter's columns: the name padded to 12 characters, the value after a spacing.
-    char name_text[64], value_text[32];
-    std::snprintf(name_text, sizeof name_text, "%-12s", name.c_str());
+    char value_text[32];
     std::snprintf(value_text, sizeof value_text, "%9.1e", value);
-    const float w = line.put(name_text, st.text);
-    line.put(value_text, to_imgui(ink.drift_colour(value)), w + st.spacing.x);
+    line.put(name, st.text);
+    line.put(value_text, to_imgui(ink.drift_colour(value)), values_x);
     line.next_line();
   }
   const auto key = painter.drift_table_key(float(x1 - x0) - 2.0f * st.padding.x);

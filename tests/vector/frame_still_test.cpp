@@ -111,8 +111,8 @@ TEST_F(StillCommand, PdfIsOnePageOfTextWithTheViewAsItsOneImage) {
   // table's key), the 3D view's labels and key, the plane's panel and the legend.
   const auto text = et::run_tool("pdftotext -enc UTF-8 '" + pdf + "' -").out;
   for (const char* expected :
-       {"Kovalevskaya top: three integrators", "t = ", "bad >=", "fixed point", "e2", "equator",
-        "Riccati", "reference: dop853", "over t"})
+       {"Kovalevskaya top: three integrators", "t = ", "bad ≥", "|γ|²", "fixed point", "e2",
+        "equator", "Riccati", "reference: dop853", "over t"})
     EXPECT_NE(text.find(expected), std::string::npos) << expected << " not in:\n" << text;
   // One raster, the 3D view's pixels: pdfimages lists it after two header lines.
   const auto images = et::run_tool("pdfimages -list '" + pdf + "'").out;
