@@ -15,13 +15,44 @@ std::array<double, 3> vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z(
 // job_file_moment_test checks against the live scene's own note.
 constexpr double kLiveToleranceHorizon = 1e4;
 
+// A job's "runs" for a setup with compared runs: the first as "simulation"
+// states it, each further one with only what differs from it.
+std::vector<job::RunFields> compared_runs(const LiveSetup& setup) {
+  std::vector<job::RunFields> runs;
+  if (setup.compared.empty()) return runs;
+  const std::string from = "the live setup";
+  runs.emplace_back();
+  for (const auto& c : setup.compared) {
+    job::RunFields r;
+    r.label = compared_label(c);
+    auto& sim = r.simulation;
+    const sim::RunSpec spec = compared_spec(setup.run, c);
+    if (c.method) {
+      sim.method.set(std::string(sim::name(spec.method)), from);
+      if (sim::is_adaptive(spec.method))
+        sim.tol.set(spec.tol, from);
+      else
+        sim.step.set(spec.step, from);
+    }
+    if (c.nudge != 0.0) {
+      sim.gamma.set(vec(spec.initial.gamma), from);
+      // A nudge that breaks the case's conditions makes it a custom body, as live.
+      if (spec.case_id != setup.run.case_id) sim.case_name.set("custom", from);
+    }
+    runs.push_back(std::move(r));
+  }
+  return runs;
+}
+
 }  // namespace
 
 std::optional<double> live_tolerance(const LiveSetup& setup) {
   if (!sim::is_adaptive(setup.run.method) || !setup.scene.auto_tolerance) return std::nullopt;
-  sim::RunSpec run = setup.run;
-  run.t_end = std::max(run.t_end, kLiveToleranceHorizon);
-  return scene::plan_scene(run, setup.scene, scene::Horizon::none).run.tol;
+  // Planned with every run: the legend and the separation chart of a
+  // comparison take room from the picture, whose resolution sets the tolerance.
+  auto runs = run_requests(setup);
+  for (auto& r : runs) r.run.t_end = std::max(r.run.t_end, kLiveToleranceHorizon);
+  return scene::plan_scene(std::move(runs), setup.scene, scene::Horizon::none).run.tol;
 }
 
 job::JobDocument job_document(const LiveSetup& setup, const std::string& name,
@@ -49,6 +80,8 @@ job::JobDocument job_document(const LiveSetup& setup, const std::string& name,
   // From t = 0 to the moment shown, so that the video's last frame is the one seen.
   const double t_end = moment.time > 0 ? moment.time : setup.speed * duration_s;
   sim.t_end.set(t_end, from);
+
+  d.runs = compared_runs(setup);
 
   d.scene = setup.scene;
   if (sim::is_adaptive(run.method)) d.scene.auto_tolerance = false;  // the tol written is the one

@@ -151,8 +151,8 @@ const render::RgbaImage& LiveSession::render() {
   const int panel_px = panel_.occupied_width();
   const int reserved = panel_px > 0 && width_ - panel_px >= width_ / 2 ? panel_px : 0;
   painter_->set_reserved_left(reserved);
-  const scene::FrameLayout layout =
-      paint::layout_for(frame.layers, frame.overlay, width_, height_, reserved);
+  // The frame's own layout: a comparison's legend strip and chart take room too.
+  const scene::FrameLayout layout = paint::layout_for(frame, width_, height_, reserved);
   view_3d_ = layout.view_3d ? paint::to_viewport(*layout.view_3d)
                             : render::Viewport{reserved, 0, width_ - reserved, height_};
 
@@ -188,6 +188,7 @@ void LiveSession::apply(const PanelActions& a) {
   if (a.load_case) {
     LiveSetup s = options_.presets(*a.load_case);
     s.scene.layers = scene_.setup().scene.layers;  // the user's layers stay as chosen
+    s.compared = scene_.setup().compared;          // and the runs compared, relative to the first
     rerun(s);
   }
   if (a.save_frame) save_frame_pending_ = true;

@@ -4,7 +4,10 @@
 // A render job converts to one (epviz serve JOB) and one converts back to a
 // render job (job_file.hpp), so a setup found interactively can be rendered.
 #include <filesystem>
+#include <vector>
 
+#include "job/document.hpp"
+#include "live/compared_runs.hpp"
 #include "scene/settings.hpp"
 #include "sim/run_spec.hpp"
 
@@ -15,7 +18,12 @@ struct LiveSetup {
   scene::SceneSettings scene;
   double speed = 4.0;        // simulation time units per second of wall-clock time
   bool stay_in_case = true;  // edits keep the case's defining conditions
+  // Further runs drawn with the first, as in a render job's "runs" (compared_runs.hpp).
+  std::vector<ComparedRun> compared;
 };
+
+// Runs at most in one scene, the first included: as many as a job's "runs" may hold.
+inline constexpr int kMaxLiveRuns = job::max_runs;
 
 // Case `c`'s preset body and state with the settings of its render job in
 // render_jobs/ (body view, DOP853 with the tolerance from the resolution).
