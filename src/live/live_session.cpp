@@ -152,8 +152,8 @@ const render::RgbaImage& LiveSession::render() {
   const int reserved = panel_px > 0 && width_ - panel_px >= width_ / 2 ? panel_px : 0;
   painter_->set_reserved_left(reserved);
   // The frame's own layout: a comparison's legend strip and chart take room too.
-  const scene::FrameLayout layout = paint::layout_for(frame, width_, height_, reserved);
-  view_3d_ = layout.view_3d ? paint::to_viewport(*layout.view_3d)
+  layout_ = paint::layout_for(frame, width_, height_, reserved);
+  view_3d_ = layout_.view_3d ? paint::to_viewport(*layout_.view_3d)
                             : render::Viewport{reserved, 0, width_ - reserved, height_};
 
   PanelActions actions;

@@ -1,0 +1,123 @@
+// Runs compared in the browser: added and removed from the panel, drawn as a
+// render of a job with "runs" draws them (legend rows, |delta gamma| chart),
+// and a run that fails named in its legend row and in the report.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "scene/run_palette.hpp"
+#include "session_driver.hpp"
+
+namespace epviz::live::testing {
+namespace {
+
+constexpr double kNudge = 1e-6;  // the panel's default
+
+// Whether some pixel of `r` in the picture is within `tolerance` of `c` in every channel.
+bool has_colour(const render::RgbaImage& image, const scene::Rect& r, const scene::Rgba& c,
+                int tolerance = 12) {
+  for (int y = r.y; y < r.y + r.height; ++y)
+    for (int x = r.x; x < r.x + r.width; ++x) {
+      const std::uint8_t* p = &image.pixels[(std::size_t(y) * image.width + x) * 4];
+      bool near = true;
+      for (int k = 0; k < 3; ++k)
+        near &= std::abs(int(p[k]) - int(std::lround(c[k] * 255.0f))) <= tolerance;
+      if (near) return true;
+    }
+  return false;
+}
+
+// Opens the runs section and adds an RK4 run and a nudged one, as a user would.
+void add_two_runs(SessionDriver& d) {
+  d.click("header:runs");
+  d.click("new_method");
+  d.click("new_method:rk4");
+  d.click("add_run");
+  d.click("add_nudged");
+}
+
+TEST(LiveCompare, ThreeRunsFromThePanelAreDrawnWithTheirLegendAndSeparationChart) {
+  SessionDriver d(starting_with(physics::Case::generic), 1280, 720);
+  add_two_runs(d);
+  const LiveScene& scene = d.session->scene();
+  ASSERT_EQ(scene.run_count(), 3);
+  d.click("play");
+  d.frames(40);
+  d.click("play");
+  ASSERT_GT(scene.time(), 1.0);
+
+  // The frame carries the three runs: two beyond the first, each with its separation.
+  const auto& c = scene.frame().comparison;
+  ASSERT_TRUE(c.has_value());
+  ASSERT_EQ(c->labels.size(), 3u);
+  ASSERT_EQ(c->others.size(), 2u);
+  EXPECT_EQ(c->labels[1].rfind("rk4, step", 0), 0u) << c->labels[1];
+  EXPECT_EQ(c->labels[2].rfind("nudged 1e-06: dop853", 0), 0u) << c->labels[2];
+  for (const auto& other : c->others) EXPECT_FALSE(other.separation.empty());
+  // The nudged run starts |delta gamma| = 2 sin(nudge / 2) from the first
+  // (one sample later it has not moved away yet).
+  const auto& nudged = c->others[1].separation;
+  EXPECT_NEAR(nudged.front().y(), 2.0 * std::sin(kNudge / 2.0), 1e-2 * kNudge);
+  // The chart's time axis ends now.
+  EXPECT_DOUBLE_EQ(c->t_end, scene.time());
+
+  // The picture: a legend row per run, and each further run's line in the chart.
+  const auto& image = d.session->render();
+  int rows = 0;
+  for (const auto& l : d.session->annotations().legend)
+    for (int i = 0; i < 3; ++i)
+      rows += l.text == std::to_string(i + 1) + "  " + c->labels[std::size_t(i)];
+  EXPECT_EQ(rows, 3);
+  const auto& chart = d.session->layout().chart_area;
+  ASSERT_TRUE(chart.has_value());
+  for (int i = 1; i < 3; ++i)
+    EXPECT_TRUE(has_colour(image, *chart, scene::run_colour(i, false))) << "run " << i + 1;
+
+  // Removing a run leaves the others.
+  d.click("remove:2");
+  ASSERT_EQ(scene.run_count(), 2);
+  ASSERT_EQ(scene.setup().compared.size(), 1u);
+  EXPECT_EQ(scene.setup().compared.front().nudge, kNudge);
+}
+
+TEST(LiveCompare, NoMoreRunsThanAJobHolds) {
+  SessionDriver d(starting_with(physics::Case::lagrange), 1280, 720);
+  d.click("header:case");  // closed: room for six legend rows
+  d.click("header:runs");
+  for (int i = 0; i < kMaxLiveRuns + 2; ++i) d.click("add_nudged");
+  EXPECT_EQ(d.session->scene().run_count(), kMaxLiveRuns);
+}
+
+TEST(LiveCompare, ARunThatFailsIsNamedInItsLegendRowAndTheReport) {
+  LiveSetup s = preset_setup(physics::Case::generic);
+  s.speed = 1000.0;
+  // RK4 steps of 2 are far beyond its stability for this body (samples 1000/240 apart).
+  s.compared.push_back({sim::Method::rk4, 2.0, 0.0, 0.0});
+  LiveScene scene(s);
+  scene.set_playing(true);
+  for (int i = 0; i < 120 && !scene.failure(); ++i) scene.step();
+  ASSERT_TRUE(scene.failure().has_value()) << "still running at t = " << scene.time();
+  EXPECT_FALSE(scene.playing());
+
+  // The same RK4 run alone stops with the same report.
+  LiveSetup alone = s;
+  alone.compared.clear();
+  alone.run.method = sim::Method::rk4;
+  alone.run.step = 2.0;
+  LiveScene single(alone);
+  single.set_playing(true);
+  for (int i = 0; i < 120 && !single.failure(); ++i) single.step();
+  ASSERT_TRUE(single.failure().has_value());
+  EXPECT_EQ(*scene.failure(), "run 2: " + *single.failure());
+
+  // Its legend row says so; the first run's does not.
+  const auto& c = scene.frame().comparison;
+  ASSERT_TRUE(c.has_value());
+  EXPECT_NE(c->labels[1].find(" - failed at t = "), std::string::npos) << c->labels[1];
+  EXPECT_EQ(c->labels[0].find("failed"), std::string::npos) << c->labels[0];
+  EXPECT_TRUE(std::isfinite(c->others[0].current.norm()));
+}
+
+}  // namespace
+}  // namespace epviz::live::testing
