@@ -74,7 +74,7 @@ class ControlPanel {
   physics::Case left_case_ = physics::Case::custom;  // the last named case shown
   // The next run to compare, as chosen in the runs section (the method: the first run's when unset).
   std::optional<sim::Method> new_method_;
-  double new_step_ = 0.1, new_tol_ = 1e-8;
+  double new_step_ = 0.25, new_tol_ = 1e-8;  // a coarse step, as compare_methods.json shows RK4
   double nudge_ = 1e-6;
 };
 
