@@ -47,8 +47,8 @@ std::vector<scene::RunRequest> run_requests(const LiveSetup& setup) {
   for (const auto& c : setup.compared) {
     // Another method's accuracy is its own; a nudged run's is the first run's.
     const bool auto_tolerance = !c.method && s.auto_tolerance;
-    runs.push_back({compared_spec(setup.run, c), compared_label(c), s.formulation_given,
-                    auto_tolerance});
+    runs.push_back(
+        {compared_spec(setup.run, c), compared_label(c), s.formulation_given, auto_tolerance});
   }
   return runs;
 }

@@ -425,7 +425,8 @@ void ControlPanel::draw_runs(const LiveScene& scene, PanelActions& out) {
   if (full) ImGui::EndDisabled();
   note_item("add_nudged");
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("the first run with gamma(0) turned by the nudge: |delta gamma| starts there");
+    ImGui::SetTooltip(
+        "the first run with gamma(0) turned by the nudge: |delta gamma| starts there");
   ImGui::TextDisabled("every run starts again at t = 0");
 }
 

@@ -154,7 +154,7 @@ const render::RgbaImage& LiveSession::render() {
   // The frame's own layout: a comparison's legend strip and chart take room too.
   layout_ = paint::layout_for(frame, width_, height_, reserved);
   view_3d_ = layout_.view_3d ? paint::to_viewport(*layout_.view_3d)
-                            : render::Viewport{reserved, 0, width_ - reserved, height_};
+                             : render::Viewport{reserved, 0, width_ - reserved, height_};
 
   PanelActions actions;
   const auto draw_start = Clock::now();
