@@ -10,6 +10,20 @@
 
 namespace epviz::live {
 
+ComparedRun with_method(sim::Method method, double step, double tol) {
+  ComparedRun c;
+  c.method = method;
+  c.step = step;
+  c.tol = tol;
+  return c;
+}
+
+ComparedRun nudged_by(double angle) {
+  ComparedRun c;
+  c.nudge = angle;
+  return c;
+}
+
 Eigen::Vector3d nudged_gamma(const Eigen::Vector3d& gamma, double angle) {
   // Any axis perpendicular to gamma: across e1, or across e2 when gamma lies along e1.
   Eigen::Vector3d axis = gamma.cross(Eigen::Vector3d::UnitX());
@@ -18,6 +32,7 @@ Eigen::Vector3d nudged_gamma(const Eigen::Vector3d& gamma, double angle) {
 }
 
 sim::RunSpec compared_spec(const sim::RunSpec& first, const ComparedRun& c) {
+  if (c.given) return c.given->run;
   sim::RunSpec run = first;
   if (c.method) {
     run.method = *c.method;
@@ -35,6 +50,7 @@ sim::RunSpec compared_spec(const sim::RunSpec& first, const ComparedRun& c) {
 }
 
 std::string compared_label(const ComparedRun& c) {
+  if (c.given) return c.given->label;
   if (c.nudge == 0.0) return "";
   char text[48];
   std::snprintf(text, sizeof text, "nudged %.3g", c.nudge);
@@ -43,8 +59,13 @@ std::string compared_label(const ComparedRun& c) {
 
 std::vector<scene::RunRequest> run_requests(const LiveSetup& setup) {
   const auto& s = setup.scene;
-  std::vector<scene::RunRequest> runs{{setup.run, "", s.formulation_given, s.auto_tolerance}};
+  std::vector<scene::RunRequest> runs{
+      {setup.run, setup.label, s.formulation_given, s.auto_tolerance}};
   for (const auto& c : setup.compared) {
+    if (c.given) {
+      runs.push_back(*c.given);
+      continue;
+    }
     // Another method's accuracy is its own; a nudged run's is the first run's.
     const bool auto_tolerance = !c.method && s.auto_tolerance;
     runs.push_back(

@@ -21,7 +21,15 @@ struct ComparedRun {
   // The first run's gamma(0) turned by this angle (radians), so that the
   // runs start |delta gamma| = 2 sin(nudge / 2) apart; 0: not nudged.
   double nudge = 0.0;
+  // A run as a served job's "runs" gave it: drawn as given (the fields above
+  // unused), and edits of the first run leave it as it is.
+  std::optional<scene::RunRequest> given;
 };
+
+// The first run with another method (and the step or tolerance of its kind).
+ComparedRun with_method(sim::Method method, double step, double tol);
+// The first run with gamma(0) turned by `angle` radians.
+ComparedRun nudged_by(double angle);
 
 // gamma turned by `angle` about an axis perpendicular to it (a unit vector stays one).
 Eigen::Vector3d nudged_gamma(const Eigen::Vector3d& gamma, double angle);
@@ -31,7 +39,8 @@ Eigen::Vector3d nudged_gamma(const Eigen::Vector3d& gamma, double angle);
 sim::RunSpec compared_spec(const sim::RunSpec& first, const ComparedRun& c);
 
 // The legend's label of a compared run: "nudged 1e-06" for a nudged state,
-// empty for another method (the legend names the method and its accuracy).
+// empty for another method (the legend names the method and its accuracy),
+// the job's for a given run.
 std::string compared_label(const ComparedRun& c);
 
 // Every run of the setup for the scene's plan, the first first.

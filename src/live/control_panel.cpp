@@ -406,7 +406,7 @@ void ControlPanel::draw_runs(const LiveScene& scene, PanelActions& out) {
   if (full) ImGui::BeginDisabled();
   if (ImGui::Button("Add run")) {
     LiveSetup e = s;
-    e.compared.push_back({method, new_step_, new_tol_, 0.0});
+    e.compared.push_back(with_method(method, new_step_, new_tol_));
     out.rerun = e;
   }
   if (full) ImGui::EndDisabled();
@@ -417,9 +417,7 @@ void ControlPanel::draw_runs(const LiveScene& scene, PanelActions& out) {
   if (full) ImGui::BeginDisabled();
   if (ImGui::Button("Add nudged run")) {
     LiveSetup e = s;
-    ComparedRun c;
-    c.nudge = nudge_;
-    e.compared.push_back(c);
+    e.compared.push_back(nudged_by(nudge_));
     out.rerun = e;
   }
   if (full) ImGui::EndDisabled();

@@ -4,10 +4,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <string>
 
+#include "io/data_dir.hpp"
+#include "job/job_file.hpp"
+#include "job/job_plan.hpp"
+#include "live/job_file.hpp"
 #include "scene/run_palette.hpp"
 #include "session_driver.hpp"
+#include "support/temp_dir.hpp"
 
 namespace epviz::live::testing {
 namespace {
@@ -93,7 +99,7 @@ TEST(LiveCompare, ARunThatFailsIsNamedInItsLegendRowAndTheReport) {
   LiveSetup s = preset_setup(physics::Case::generic);
   s.speed = 1000.0;
   // RK4 steps of 2 are far beyond its stability for this body (samples 1000/240 apart).
-  s.compared.push_back({sim::Method::rk4, 2.0, 0.0, 0.0});
+  s.compared.push_back(with_method(sim::Method::rk4, 2.0, 0.0));
   LiveScene scene(s);
   scene.set_playing(true);
   for (int i = 0; i < 120 && !scene.failure(); ++i) scene.step();
@@ -117,6 +123,43 @@ TEST(LiveCompare, ARunThatFailsIsNamedInItsLegendRowAndTheReport) {
   EXPECT_NE(c->labels[1].find(" - failed at t = "), std::string::npos) << c->labels[1];
   EXPECT_EQ(c->labels[0].find("failed"), std::string::npos) << c->labels[0];
   EXPECT_TRUE(std::isfinite(c->others[0].current.norm()));
+}
+
+TEST(LiveCompare, AServedJobWithRunsIsComparedAndSavedWithItsRuns) {
+  // Three formulations, one with its chart switch: runs a job gives in full.
+  const auto file = io::find_data_path("render_jobs/compare_formulations.json");
+  ASSERT_FALSE(file.empty());
+  const LiveSetup s = setup_from_job_file(file);
+  ASSERT_EQ(s.compared.size(), 2u);
+  LiveScene scene(s);
+  scene.step();
+  const auto& c = scene.frame().comparison;
+  ASSERT_TRUE(c.has_value());
+  ASSERT_EQ(c->labels.size(), 3u);
+  EXPECT_EQ(c->labels[0].rfind("(omega, gamma): dop853", 0), 0u) << c->labels[0];
+  EXPECT_EQ(c->labels[1].rfind("(omega, a, b), chart switch: dop853", 0), 0u) << c->labels[1];
+  EXPECT_EQ(c->labels[2].rfind("(omega, spinor): dop853", 0), 0u) << c->labels[2];
+
+  // Saved, the job reads back (through the job reader) as the same runs.
+  test::TempDir dir;
+  const auto saved = dir / "saved.json";
+  std::ofstream(saved) << render_job_json(s, "saved", {scene.time(), scene.tolerance()});
+  const auto loaded = job::load_job_file(saved);
+  ASSERT_TRUE(loaded.single.has_value());
+  const auto original = job::run_requests(*job::load_job_file(file).single);
+  const auto again = job::run_requests(*loaded.single);
+  ASSERT_EQ(again.size(), original.size());
+  for (std::size_t i = 0; i < again.size(); ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(again[i].label, original[i].label);
+    EXPECT_EQ(again[i].run.formulation, original[i].run.formulation);
+    EXPECT_EQ(again[i].run.chart_switch, original[i].run.chart_switch);
+    EXPECT_EQ(again[i].run.method, original[i].run.method);
+    EXPECT_EQ(again[i].run.initial.gamma, original[i].run.initial.gamma);
+    EXPECT_EQ(again[i].run.body.inertia, original[i].run.body.inertia);
+    // The automatic tolerance as the number the live scene used.
+    EXPECT_EQ(again[i].run.tol, scene.tolerance());
+  }
 }
 
 }  // namespace

@@ -129,10 +129,8 @@ TEST(SavedJob, WithComparedRunsRendersTheSameRuns) {
   options.initial.scene.auto_tolerance = false;
   options.initial.run.tol = 1e-9;
   // Another method and a nudged state, as the panel adds them.
-  options.initial.compared.push_back({sim::Method::rk4, 0.05, 0.0, 0.0});
-  ComparedRun nudged;
-  nudged.nudge = 1e-3;
-  options.initial.compared.push_back(nudged);
+  options.initial.compared.push_back(with_method(sim::Method::rk4, 0.05, 0.0));
+  options.initial.compared.push_back(nudged_by(1e-3));
   SessionDriver d(options, kWidth, kHeight, /*builtin_font=*/false);
   ASSERT_EQ(d.session->scene().run_count(), 3);
   const auto job = expect_render_of_saved_job_matches(d);
