@@ -368,17 +368,21 @@ void ControlPanel::draw_runs(const LiveScene& scene, PanelActions& out) {
         comparison && std::size_t(i) < comparison->labels.size()
             ? comparison->labels[std::size_t(i)]
             : std::string(sim::name(s.run.method)) + ", " + scene.accuracy_note();
-    ImGui::TextColored(to_imgui(scene::run_colour(i, false)), "%d: %s", i + 1, text.c_str());
-    note_item(row_name.c_str());
-    if (i == 0) continue;
-    ImGui::SameLine();
-    const std::string remove = "remove##" + std::to_string(i + 1);
-    if (ImGui::SmallButton(remove.c_str())) {
-      LiveSetup e = s;
-      e.compared.erase(e.compared.begin() + (i - 1));
-      out.rerun = e;
+    // The button first, so that a long row never pushes it out of the panel.
+    if (i > 0) {
+      const std::string remove = "remove##" + std::to_string(i + 1);
+      if (ImGui::SmallButton(remove.c_str())) {
+        LiveSetup e = s;
+        e.compared.erase(e.compared.begin() + (i - 1));
+        out.rerun = e;
+      }
+      note_item(("remove:" + std::to_string(i + 1)).c_str());
+      ImGui::SameLine();
     }
-    note_item(("remove:" + std::to_string(i + 1)).c_str());
+    ImGui::PushStyleColor(ImGuiCol_Text, to_imgui(scene::run_colour(i, false)));
+    ImGui::TextWrapped("%d: %s", i + 1, text.c_str());
+    ImGui::PopStyleColor();
+    note_item(row_name.c_str());
   }
   const bool full = runs >= kMaxLiveRuns;
   if (full) ImGui::TextDisabled("at most %d runs", kMaxLiveRuns);

@@ -56,6 +56,9 @@ class LiveScene {
   sim::Formulation formulation() const { return source_->plan().run.formulation; }
   // The tolerance the run uses (planned when it started; a view change since does not re-plan it).
   double tolerance() const { return source_->plan().run.tol; }
+  // A comparison's separation chart keeps at most this many points a run
+  // (the samples since t = 0 grow without end).
+  static constexpr std::size_t kChartPoints = 2048;
   // The runs drawn: 1, or 1 + setup().compared.size() in a comparison.
   int run_count() const { return source_->run_count(); }
 
@@ -66,7 +69,6 @@ class LiveScene {
   void mark_failed_run();
   // Comparisons: the separation chart from t = 0 to now, in at most kChartPoints points a run.
   void show_separation_so_far();
-  static constexpr std::size_t kChartPoints = 2048;
   // The view settings live in the setup (they change without a restart).
   void show_view_settings();
 

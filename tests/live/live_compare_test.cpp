@@ -3,6 +3,7 @@
 // and a run that fails named in its legend row and in the report.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <string>
@@ -123,6 +124,30 @@ TEST(LiveCompare, ARunThatFailsIsNamedInItsLegendRowAndTheReport) {
   EXPECT_NE(c->labels[1].find(" - failed at t = "), std::string::npos) << c->labels[1];
   EXPECT_EQ(c->labels[0].find("failed"), std::string::npos) << c->labels[0];
   EXPECT_TRUE(std::isfinite(c->others[0].current.norm()));
+}
+
+TEST(LiveCompare, TheSeparationChartKeepsABoundedNumberOfPointsAndTheLargest) {
+  LiveSetup s = preset_setup(physics::Case::generic);
+  s.speed = 1000.0;  // about 8 samples a frame
+  s.compared.push_back(nudged_by(1e-3));
+  LiveScene scene(s);
+  // The largest separation so far, from each frame's newest point (never thinned).
+  float largest = 0.0f;
+  for (int i = 0; i < 400; ++i) {
+    scene.step();
+    ASSERT_FALSE(scene.failure()) << *scene.failure();
+    largest = std::max(largest, scene.frame().comparison->others[0].separation.back().y());
+  }
+  const auto& sep = scene.frame().comparison->others[0].separation;
+  EXPECT_LE(sep.size(), LiveScene::kChartPoints);
+  EXPECT_GT(sep.size(), LiveScene::kChartPoints / 2);
+  float shown = 0.0f;
+  for (std::size_t i = 1; i < sep.size(); ++i) {
+    EXPECT_GT(sep[i].x(), sep[i - 1].x()) << i;
+    shown = std::max(shown, sep[i].y());
+  }
+  EXPECT_GE(shown, largest);
+  EXPECT_NEAR(sep.back().x(), scene.time(), 0.01 * scene.time());
 }
 
 TEST(LiveCompare, AServedJobWithRunsIsComparedAndSavedWithItsRuns) {
