@@ -120,8 +120,9 @@ void LiveScene::mark_failed_run() {
 void LiveScene::show_separation_so_far() {
   if (!frame_.comparison) return;
   // The chart's time axis: from t = 0 to now, as a render of the saved job
-  // ends its own at the moment shown (a live run has no end).
-  frame_.comparison->t_end = frame_.t;
+  // ends its own at the moment shown (a live run has no end); at least one
+  // step's worth, so that the axis at t = 0 has a span to label.
+  frame_.comparison->t_end = std::max(frame_.t, kStepWallSeconds * setup_.speed);
   // The samples since t = 0 grow without end: at most kChartPoints of them
   // (the largest of each stretch, so that a jump is never lost).
   for (auto& run : frame_.comparison->others) {

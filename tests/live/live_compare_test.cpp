@@ -68,6 +68,10 @@ TEST(LiveCompare, ThreeRunsFromThePanelAreDrawnWithTheirLegendAndSeparationChart
   EXPECT_NEAR(nudged.front().y(), 2.0 * std::sin(kNudge / 2.0), 1e-2 * kNudge);
   // The chart's time axis ends now.
   EXPECT_DOUBLE_EQ(c->t_end, scene.time());
+  // ... and has a span before anything was played (a step's worth: 1/30 s at the speed).
+  const LiveScene fresh(scene.setup());
+  ASSERT_TRUE(fresh.frame().comparison.has_value());
+  EXPECT_DOUBLE_EQ(fresh.frame().comparison->t_end, fresh.setup().speed / 30.0);
 
   // The picture: a legend row per run, and each further run's line in the chart.
   const auto& image = d.session->render();
