@@ -188,7 +188,10 @@ void LiveSession::apply(const PanelActions& a) {
   if (a.load_case) {
     LiveSetup s = options_.presets(*a.load_case);
     s.scene.layers = scene_.setup().scene.layers;  // the user's layers stay as chosen
-    s.compared = scene_.setup().compared;          // and the runs compared, relative to the first
+    // The runs compared that are relative to the first stay; those a served
+    // job gave in full belong to its body and state.
+    for (const auto& c : scene_.setup().compared)
+      if (!c.given) s.compared.push_back(c);
     rerun(s);
   }
   if (a.save_frame) save_frame_pending_ = true;

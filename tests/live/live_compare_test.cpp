@@ -191,5 +191,20 @@ TEST(LiveCompare, AServedJobWithRunsIsComparedAndSavedWithItsRuns) {
   }
 }
 
+TEST(LiveCompare, AnotherCaseKeepsTheRunsRelativeToTheFirstAndDropsThoseAJobGave) {
+  SessionOptions o;
+  o.initial = setup_from_job_file(io::find_data_path("render_jobs/compare_methods.json"));
+  ASSERT_EQ(o.initial.compared.size(), 2u);
+  o.initial.compared.push_back(nudged_by(1e-3));
+  SessionDriver d(o);
+  d.click("case");
+  d.click("case:lagrange");
+  const LiveSetup& s = d.session->scene().setup();
+  ASSERT_EQ(s.run.case_id, physics::Case::lagrange);
+  ASSERT_EQ(s.compared.size(), 1u);
+  EXPECT_EQ(s.compared.front().nudge, 1e-3);
+  EXPECT_EQ(d.session->scene().run_count(), 2);
+}
+
 }  // namespace
 }  // namespace epviz::live::testing
