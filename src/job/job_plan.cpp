@@ -6,9 +6,7 @@
 #include "sim/methods.hpp"
 
 namespace epviz::job {
-namespace {
 
-// The runs a job asks for: its "simulation", or each of its "runs" over it.
 std::vector<scene::RunRequest> run_requests(const RenderJob& job) {
   std::vector<scene::RunRequest> requests;
   if (job.runs.empty()) {
@@ -36,8 +34,6 @@ std::vector<scene::RunRequest> run_requests(const RenderJob& job) {
   }
   return requests;
 }
-
-}  // namespace
 
 scene::ScenePlan plan_job(const RenderJob& job) {
   auto requests = run_requests(job);

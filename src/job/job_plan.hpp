@@ -3,11 +3,16 @@
 // for its picture (scene/plan.hpp). Shared by `epviz render`, `epviz check`
 // and the gallery's tiles.
 #include <string>
+#include <vector>
 
 #include "job/job_file.hpp"
 #include "scene/plan.hpp"
 
 namespace epviz::job {
+
+// The runs `job` asks for, resolved: its "simulation", or each of its "runs"
+// over it. Throws io::BadInput naming the field.
+std::vector<scene::RunRequest> run_requests(const RenderJob& job);
 
 // The scene plan of `job` (simulation resolved, tolerance chosen for its
 // resolution). Throws io::BadInput naming the job file when it cannot be drawn.

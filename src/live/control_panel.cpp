@@ -11,6 +11,7 @@
 #include "physics/cases.hpp"
 #include "render/font_text.hpp"
 #include "scene/frame_source.hpp"
+#include "scene/run_palette.hpp"
 #include "scene/symbols.hpp"
 #include "scene/theme.hpp"
 
@@ -123,6 +124,7 @@ PanelActions ControlPanel::draw(const LiveScene& scene, const render::Viewport& 
     };
     if (header("Case and body", "header:case", true)) draw_case_and_body(scene, out);
     if (header("Integrator", "header:integrator", false)) draw_integrator(scene, out);
+    if (header("Compare runs", "header:runs", false)) draw_runs(scene, out);
     if (header("View", "header:view", false)) draw_view(scene, out);
     if (header("Invariant drift", "header:drift", true)) draw_drift(scene);
     ImGui::PopItemWidth();
@@ -365,6 +367,84 @@ void ControlPanel::draw_drift(const LiveScene& scene) {
                      0.0f, ImVec2(0, 2.4f * ImGui::GetFontSize()));
     ImGui::PopStyleColor();
   }
+}
+
+void ControlPanel::draw_runs(const LiveScene& scene, PanelActions& out) {
+  const LiveSetup& s = scene.setup();
+  // The legend's rows as the picture shows them, each in its run's colour.
+  const auto& comparison = scene.frame().comparison;
+  const int runs = scene.run_count();
+  for (int i = 0; i < runs; ++i) {
+    const std::string row_name = "run:" + std::to_string(i + 1);
+    const std::string text =
+        comparison && std::size_t(i) < comparison->labels.size()
+            ? comparison->labels[std::size_t(i)]
+            : std::string(sim::name(s.run.method)) + ", " + scene.accuracy_note();
+    // The button first, so that a long row never pushes it out of the panel.
+    if (i > 0) {
+      const std::string remove = "remove##" + std::to_string(i + 1);
+      if (ImGui::SmallButton(remove.c_str())) {
+        LiveSetup e = s;
+        e.compared.erase(e.compared.begin() + (i - 1));
+        out.rerun = e;
+      }
+      note_item(("remove:" + std::to_string(i + 1)).c_str());
+      ImGui::SameLine();
+    }
+    ImGui::PushStyleColor(ImGuiCol_Text, to_imgui(scene::run_colour(i, false)));
+    ImGui::TextWrapped("%d: %s", i + 1, text.c_str());
+    ImGui::PopStyleColor();
+    note_item(row_name.c_str());
+  }
+  const bool full = runs >= kMaxLiveRuns;
+  if (full) ImGui::TextDisabled("at most %d runs", kMaxLiveRuns);
+  // Another method, with its own step or tolerance.
+  const sim::Method method = new_method_.value_or(s.run.method);
+  if (ImGui::BeginCombo("method##new", std::string(sim::name(method)).c_str())) {
+    note_window("list:new_method");
+    for (auto m : sim::all_methods()) {
+      const bool usable = !sim::incompatibility(m, scene.formulation());
+      if (!usable) ImGui::BeginDisabled();
+      if (ImGui::Selectable(std::string(sim::name(m)).c_str(), m == method)) new_method_ = m;
+      note_item(("new_method:" + std::string(sim::name(m))).c_str());
+      if (!usable) ImGui::EndDisabled();
+    }
+    ImGui::EndCombo();
+  }
+  note_item("new_method");
+  if (sim::is_adaptive(method)) {
+    log_slider("tolerance##new", &new_tol_, 1e-13, 1e-3, "%.1e");
+    note_item("new_tol");
+  } else {
+    log_slider("step##new", &new_step_, 1e-4, 0.5, "%.2e");
+    note_item("new_step");
+  }
+  if (full) ImGui::BeginDisabled();
+  if (ImGui::Button("Add run")) {
+    LiveSetup e = s;
+    e.compared.push_back(with_method(method, new_step_, new_tol_));
+    out.rerun = e;
+  }
+  if (full) ImGui::EndDisabled();
+  note_item("add_run");
+  // The first run's state, nudged.
+  log_slider("nudge (rad)", &nudge_, 1e-12, 1e-1, "%.1e");
+  note_item("nudge");
+  if (full) ImGui::BeginDisabled();
+  if (ImGui::Button("Add nudged run")) {
+    LiveSetup e = s;
+    e.compared.push_back(nudged_by(nudge_));
+    out.rerun = e;
+  }
+  if (full) ImGui::EndDisabled();
+  note_item("add_nudged");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "%s", render::drawable_text("the first run with " + std::string(scene::symbol::gamma) +
+                                    "(0) turned by the nudge: " +
+                                    std::string(scene::symbol::separation) + " starts there")
+                  .c_str());
+  ImGui::TextDisabled("every run starts again at t = 0");
 }
 
 void ControlPanel::draw_save() {

@@ -38,7 +38,10 @@ class ControlPanel {
   // "stay", "broken" (a broken condition's line), "I1", "I2", "I3", "weight", "formulation", "formulation:<name>",
   // "method", "method:<name>", "list:case" / "list:formulation" /
   // "list:method" (an open combo's list), "header:<section>", "file_name",
-  // "save_frame", "save_job", and "panel" (the whole window).
+  // "save_frame", "save_job", the runs section's "run:<n>" (legend rows),
+  // "remove:<n>" (n = 2, 3, ...), "new_method", "new_method:<name>",
+  // "list:new_method", "new_step" / "new_tol", "add_run", "nudge", "add_nudged",
+  // and "panel" (the whole window).
   const std::map<std::string, Rect>& controls() const { return controls_; }
   // Whether (x, y) is on the panel (a press there is the panel's, not an orbit).
   bool contains(float x, float y) const;
@@ -58,6 +61,7 @@ class ControlPanel {
   void draw_integrator(const LiveScene& scene, PanelActions& out);
   void draw_view(const LiveScene& scene, PanelActions& out);
   void draw_drift(const LiveScene& scene);
+  void draw_runs(const LiveScene& scene, PanelActions& out);
   void draw_save();
 
   std::map<std::string, Rect> controls_;
@@ -68,6 +72,10 @@ class ControlPanel {
   std::string save_name_ = "epviz_live";
   sim::Formulation shown_formulation_ = sim::Formulation::direct;
   physics::Case left_case_ = physics::Case::custom;  // the last named case shown
+  // The next run to compare, as chosen in the runs section (the method: the first run's when unset).
+  std::optional<sim::Method> new_method_;
+  double new_step_ = 0.25, new_tol_ = 1e-8;  // a coarse step, as compare_methods.json shows RK4
+  double nudge_ = 1e-6;
 };
 
 }  // namespace epviz::live

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "job/schema.hpp"
+#include "physics/cases.hpp"
 #include "scene/plan.hpp"
 
 namespace epviz::live {
@@ -15,40 +16,97 @@ std::array<double, 3> vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z(
 // job_file_moment_test checks against the live scene's own note.
 constexpr double kLiveToleranceHorizon = 1e4;
 
+const std::string kFrom = "the live setup";
+
+// A run's body, state and integrator in full; `tol` for an adaptive method
+// (a number: "auto" would be chosen again for the job's shorter run).
+void set_run_fields(job::SimulationFields& sim, const sim::RunSpec& run, double tol) {
+  sim.inertia.set(vec(run.body.inertia), kFrom);
+  sim.com.set(vec(run.body.com), kFrom);
+  sim.weight.set(run.body.weight, kFrom);
+  sim.omega.set(vec(run.initial.omega), kFrom);
+  sim.gamma.set(vec(run.initial.gamma), kFrom);
+  sim.formulation.set(std::string(sim::name(run.formulation)), kFrom);
+  sim.method.set(std::string(sim::name(run.method)), kFrom);
+  if (!sim::is_adaptive(run.method))
+    sim.step.set(run.step, kFrom);
+  else
+    sim.tol.set(tol, kFrom);
+  if (run.formulation == sim::Formulation::riccati) sim.chart_switch.set(run.chart_switch, kFrom);
+}
+
+// The live plan of the setup's runs (their formulations and automatic tolerances resolved).
+scene::ScenePlan live_plan(const LiveSetup& setup) {
+  auto runs = run_requests(setup);
+  for (auto& r : runs) r.run.t_end = std::max(r.run.t_end, kLiveToleranceHorizon);
+  return scene::plan_scene(std::move(runs), setup.scene, scene::Horizon::none);
+}
+
+// A job's "runs" for a setup with compared runs: the first as "simulation"
+// states it, each further one with only what differs from it (a run a job
+// gave in full, in full).
+std::vector<job::RunFields> compared_runs(const LiveSetup& setup, const LiveMoment& moment) {
+  std::vector<job::RunFields> runs;
+  if (setup.compared.empty()) return runs;
+  runs.emplace_back();
+  runs.front().label = setup.label;
+  std::optional<scene::ScenePlan> plan;
+  for (std::size_t i = 0; i < setup.compared.size(); ++i) {
+    const ComparedRun& c = setup.compared[i];
+    job::RunFields r;
+    r.label = compared_label(c);
+    auto& sim = r.simulation;
+    const sim::RunSpec spec = compared_spec(setup.run, c);
+    if (c.given) {
+      // As the live scene resolved it: its formulation, and an automatic
+      // tolerance as the number used (the same for every run of one picture).
+      if (!plan) plan = live_plan(setup);
+      const sim::RunSpec& planned = plan->others[i].run;
+      const double tol =
+          c.given->auto_tolerance && moment.tolerance ? *moment.tolerance : planned.tol;
+      set_run_fields(sim, planned, tol);
+      sim.case_name.set(physics::case_name(planned.case_id), kFrom);
+    }
+    if (c.method) {
+      sim.method.set(std::string(sim::name(spec.method)), kFrom);
+      if (sim::is_adaptive(spec.method))
+        sim.tol.set(spec.tol, kFrom);
+      else
+        sim.step.set(spec.step, kFrom);
+    }
+    if (c.nudge != 0.0) {
+      sim.gamma.set(vec(spec.initial.gamma), kFrom);
+      // A nudge that breaks the case's conditions makes it a custom body, as live.
+      if (spec.case_id != setup.run.case_id) sim.case_name.set("custom", kFrom);
+    }
+    runs.push_back(std::move(r));
+  }
+  return runs;
+}
+
 }  // namespace
 
 std::optional<double> live_tolerance(const LiveSetup& setup) {
   if (!sim::is_adaptive(setup.run.method) || !setup.scene.auto_tolerance) return std::nullopt;
-  sim::RunSpec run = setup.run;
-  run.t_end = std::max(run.t_end, kLiveToleranceHorizon);
-  return scene::plan_scene(run, setup.scene, scene::Horizon::none).run.tol;
+  // Planned with every run: the legend and the separation chart of a
+  // comparison take room from the picture, whose resolution sets the tolerance.
+  return live_plan(setup).run.tol;
 }
 
 job::JobDocument job_document(const LiveSetup& setup, const std::string& name,
                               const LiveMoment& moment, double duration_s) {
   const auto& run = setup.run;
-  const std::string from = "the live setup";
   job::JobDocument d;
   auto& sim = d.simulation;
   if (run.case_id != physics::Case::custom)
-    sim.case_name.set(physics::case_name(run.case_id), from);
-  sim.inertia.set(vec(run.body.inertia), from);
-  sim.com.set(vec(run.body.com), from);
-  sim.weight.set(run.body.weight, from);
-  sim.omega.set(vec(run.initial.omega), from);
-  sim.gamma.set(vec(run.initial.gamma), from);
-  sim.formulation.set(std::string(sim::name(run.formulation)), from);
-  sim.method.set(std::string(sim::name(run.method)), from);
-  // The tolerance the live run uses, as a number: "auto" would be chosen
-  // again for the job's shorter run, looser than what was seen.
-  if (!sim::is_adaptive(run.method))
-    sim.step.set(run.step, from);
-  else
-    sim.tol.set(moment.tolerance.value_or(run.tol), from);
-  if (run.formulation == sim::Formulation::riccati) sim.chart_switch.set(run.chart_switch, from);
+    sim.case_name.set(physics::case_name(run.case_id), kFrom);
+  // The tolerance the live run uses.
+  set_run_fields(sim, run, moment.tolerance.value_or(run.tol));
   // From t = 0 to the moment shown, so that the video's last frame is the one seen.
   const double t_end = moment.time > 0 ? moment.time : setup.speed * duration_s;
-  sim.t_end.set(t_end, from);
+  sim.t_end.set(t_end, kFrom);
+
+  d.runs = compared_runs(setup, moment);
 
   d.scene = setup.scene;
   if (sim::is_adaptive(run.method)) d.scene.auto_tolerance = false;  // the tol written is the one

@@ -1,6 +1,7 @@
 #include "live/live_scene.hpp"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "numerics/failure.hpp"
 #include "scene/plan.hpp"
@@ -20,19 +21,26 @@ constexpr double kToleranceHorizon = 1e4;
 }  // namespace
 
 std::unique_ptr<scene::FrameSource> LiveScene::make_source(const LiveSetup& setup) {
-  // The automatic tolerance keeps the drawn error under a pixel up to a
-  // horizon; a live run has no end, so the horizon is long (the cost of a
-  // tighter tolerance is nothing next to drawing a frame).
-  sim::RunSpec run = setup.run;
-  run.t_end = std::max(run.t_end, kToleranceHorizon);
-  // The panels have no control for the drift limit and a saved job does not
-  // carry one: the live run stops where a render of its saved job would.
-  run.max_drift = sim::kDefaultMaxDrift;
-  scene::ScenePlan plan = scene::plan_scene(run, setup.scene, scene::Horizon::none);
+  std::vector<scene::RunRequest> runs = run_requests(setup);
+  for (auto& r : runs) {
+    // The automatic tolerance keeps the drawn error under a pixel up to a
+    // horizon; a live run has no end, so the horizon is long (the cost of a
+    // tighter tolerance is nothing next to drawing a frame).
+    r.run.t_end = std::max(r.run.t_end, kToleranceHorizon);
+    // The panels have no control for the drift limit and a saved job does not
+    // carry one: the live run stops where a render of its saved job would.
+    r.run.max_drift = sim::kDefaultMaxDrift;
+  }
+  scene::ScenePlan plan = scene::plan_scene(std::move(runs), setup.scene, scene::Horizon::none);
   plan.open_ended = true;
   const double spacing = std::max(setup.speed, 1e-3) / kSamplesPerWallSecond;
-  plan.run.samples = kOpenEndedSamples;
-  plan.run.t_end = spacing * kOpenEndedSamples;
+  // Every run to the same sample times, as in a render.
+  auto open_ended = [&](sim::RunSpec& run) {
+    run.samples = kOpenEndedSamples;
+    run.t_end = spacing * kOpenEndedSamples;
+  };
+  open_ended(plan.run);
+  for (auto& other : plan.others) open_ended(other.run);
   return std::make_unique<scene::FrameSource>(plan, setup.scene);
 }
 
@@ -78,14 +86,58 @@ void LiveScene::advance_to(double t) {
   try {
     frame_ = source_->frame_at_time(t);
   } catch (const numerics::IntegrationError& e) {
-    // The last good frame stays on screen with the report; nothing after it is drawn.
+    // The last good frame stays on screen with the report; nothing after it
+    // is drawn. In a comparison the run that failed is named, in the report
+    // and in its legend row, as a render of the same runs stops there too.
     failure_ = sim::failure_line(e.failure(), sim::SettingsIn::panel);
+    mark_failed_run();
     playing_ = false;
     return;
   }
   show_view_settings();
+  show_separation_so_far();
   drift_history_.push_back({frame_.t, monitor_->relative_drift(monitor_->at(source_->latest()))});
   if (drift_history_.size() > kDriftHistory) drift_history_.pop_front();
+}
+
+void LiveScene::mark_failed_run() {
+  if (!frame_.comparison) return;
+  auto& labels = frame_.comparison->labels;
+  for (int i = 0; i < source_->run_count() && std::size_t(i) < labels.size(); ++i) {
+    const auto& failure = source_->run(i).failure();
+    if (!failure) continue;
+    char text[64];
+    std::snprintf(text, sizeof text, " - failed at t = %.4g", failure->t);
+    labels[std::size_t(i)] += text;
+    std::string run = "run ";
+    run += std::to_string(i + 1);
+    run += ": ";
+    *failure_ = run + *failure_;
+    return;
+  }
+}
+
+void LiveScene::show_separation_so_far() {
+  if (!frame_.comparison) return;
+  // The chart's time axis: from t = 0 to now, as a render of the saved job
+  // ends its own at the moment shown (a live run has no end); at least one
+  // step's worth, so that the axis at t = 0 has a span to label.
+  frame_.comparison->t_end = std::max(frame_.t, kStepWallSeconds * setup_.speed);
+  // The samples since t = 0 grow without end: at most kChartPoints of them
+  // (the largest of each stretch, so that a jump is never lost).
+  for (auto& run : frame_.comparison->others) {
+    auto& sep = run.separation;
+    if (sep.size() <= kChartPoints) continue;
+    const std::size_t stride = (sep.size() + kChartPoints - 1) / kChartPoints;
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < sep.size(); i += stride) {
+      Eigen::Vector2f top = sep[i];
+      for (std::size_t j = i + 1; j < std::min(sep.size(), i + stride); ++j)
+        if (sep[j].y() > top.y()) top.y() = sep[j].y();
+      sep[kept++] = top;
+    }
+    sep.resize(kept);
+  }
 }
 
 }  // namespace epviz::live

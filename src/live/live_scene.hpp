@@ -4,6 +4,8 @@
 // stopped (not drawn as garbage) at a numerical failure, whose report stays on
 // screen until the user restarts. A run that has lost the motion (its energy
 // or |gamma|^2 drift above the default limit, sim/drift.hpp) is such a failure.
+// With compared runs (LiveSetup::compared) it is a comparison scene, drawn as
+// a render of a job with "runs" draws it; a failure of any run stops it.
 #include <deque>
 #include <memory>
 #include <optional>
@@ -54,10 +56,19 @@ class LiveScene {
   sim::Formulation formulation() const { return source_->plan().run.formulation; }
   // The tolerance the run uses (planned when it started; a view change since does not re-plan it).
   double tolerance() const { return source_->plan().run.tol; }
+  // A comparison's separation chart keeps at most this many points a run
+  // (the samples since t = 0 grow without end).
+  static constexpr std::size_t kChartPoints = 2048;
+  // The runs drawn: 1, or 1 + setup().compared.size() in a comparison.
+  int run_count() const { return source_->run_count(); }
 
  private:
   static std::unique_ptr<scene::FrameSource> make_source(const LiveSetup& setup);
   void advance_to(double t);
+  // Comparisons: the run whose failure stopped the scene, in its legend row and the report.
+  void mark_failed_run();
+  // Comparisons: the separation chart from t = 0 to now, in at most kChartPoints points a run.
+  void show_separation_so_far();
   // The view settings live in the setup (they change without a restart).
   void show_view_settings();
 

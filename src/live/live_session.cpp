@@ -151,10 +151,10 @@ const render::RgbaImage& LiveSession::render() {
   const int panel_px = panel_.occupied_width();
   const int reserved = panel_px > 0 && width_ - panel_px >= width_ / 2 ? panel_px : 0;
   painter_->set_reserved_left(reserved);
-  const scene::FrameLayout layout =
-      paint::layout_for(frame.layers, frame.overlay, width_, height_, reserved);
-  view_3d_ = layout.view_3d ? paint::to_viewport(*layout.view_3d)
-                            : render::Viewport{reserved, 0, width_ - reserved, height_};
+  // The frame's own layout: a comparison's legend strip and chart take room too.
+  layout_ = paint::layout_for(frame, width_, height_, reserved);
+  view_3d_ = layout_.view_3d ? paint::to_viewport(*layout_.view_3d)
+                             : render::Viewport{reserved, 0, width_ - reserved, height_};
 
   PanelActions actions;
   const auto draw_start = Clock::now();
@@ -188,6 +188,10 @@ void LiveSession::apply(const PanelActions& a) {
   if (a.load_case) {
     LiveSetup s = options_.presets(*a.load_case);
     s.scene.layers = scene_.setup().scene.layers;  // the user's layers stay as chosen
+    // The runs compared that are relative to the first stay; those a served
+    // job gave in full belong to its body and state.
+    for (const auto& c : scene_.setup().compared)
+      if (!c.given) s.compared.push_back(c);
     rerun(s);
   }
   if (a.save_frame) save_frame_pending_ = true;

@@ -54,6 +54,9 @@ class LiveSession : public serve::Session {
   const LiveScene& scene() const { return scene_; }
   const ControlPanel& panel() const { return panel_; }
   const render::Viewport& view_3d() const { return view_3d_; }
+  // The last frame's layout and what the painter placed over it (legend rows, labels).
+  const scene::FrameLayout& layout() const { return layout_; }
+  const paint::PaintedAnnotations& annotations() const { return painter_->annotations(); }
   bool dragging() const { return drag_.has_value(); }
 
  private:
@@ -74,6 +77,7 @@ class LiveSession : public serve::Session {
   std::unique_ptr<paint::FramePainter> painter_;
   int width_ = 0, height_ = 0;
   render::Viewport view_3d_;
+  scene::FrameLayout layout_;
   std::optional<std::pair<float, float>> drag_;  // last pointer position of an orbit drag
   int settle_frames_ = 1;  // frames still to draw after a change (ImGui needs one or two to settle)
   // Frames still drawn without applying input, after a popup (a combo's

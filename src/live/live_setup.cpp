@@ -6,6 +6,7 @@
 #include "io/bad_input.hpp"
 #include "io/data_dir.hpp"
 #include "job/job_file.hpp"
+#include "job/job_plan.hpp"
 #include "job/resolve.hpp"
 
 namespace epviz::live {
@@ -35,7 +36,20 @@ LiveSetup setup_from_job_file(const std::filesystem::path& file) {
   if (!loaded.single)
     throw io::BadInput(file.string() + ": serve needs a single render job (this file is a " +
                        (loaded.gallery ? "gallery" : "bench figures job") + ")");
-  return setup_from_job(job::resolve(loaded.single->simulation), loaded.single->scene);
+  const job::RenderJob& job = *loaded.single;
+  if (job.runs.empty()) return setup_from_job(job::resolve(job.simulation), job.scene);
+  // A comparison: the first run is the one the panel edits, the others are drawn as given.
+  const auto runs = job::run_requests(job);
+  LiveSetup s = setup_from_job(runs.front().run, job.scene);
+  s.label = runs.front().label;
+  s.scene.formulation_given = runs.front().formulation_given;
+  s.scene.auto_tolerance = runs.front().auto_tolerance;
+  for (std::size_t i = 1; i < runs.size(); ++i) {
+    ComparedRun c;
+    c.given = runs[i];
+    s.compared.push_back(std::move(c));
+  }
+  return s;
 }
 
 LiveSetup preset_from_jobs(physics::Case c) {

@@ -4,7 +4,11 @@
 // A render job converts to one (epviz serve JOB) and one converts back to a
 // render job (job_file.hpp), so a setup found interactively can be rendered.
 #include <filesystem>
+#include <string>
+#include <vector>
 
+#include "job/document.hpp"
+#include "live/compared_runs.hpp"
 #include "scene/settings.hpp"
 #include "sim/run_spec.hpp"
 
@@ -15,7 +19,13 @@ struct LiveSetup {
   scene::SceneSettings scene;
   double speed = 4.0;        // simulation time units per second of wall-clock time
   bool stay_in_case = true;  // edits keep the case's defining conditions
+  // Further runs drawn with the first, as in a render job's "runs" (compared_runs.hpp).
+  std::vector<ComparedRun> compared;
+  std::string label;  // the first run's in a comparison's legend ("": its method names it)
 };
+
+// Runs at most in one scene, the first included: as many as a job's "runs" may hold.
+inline constexpr int kMaxLiveRuns = job::max_runs;
 
 // Case `c`'s preset body and state with the settings of its render job in
 // render_jobs/ (body view, DOP853 with the tolerance from the resolution).
@@ -25,8 +35,9 @@ LiveSetup preset_setup(physics::Case c);
 // speed that plays the job's t_end over its duration.
 LiveSetup setup_from_job(const sim::RunSpec& run, const scene::SceneSettings& scene);
 
-// The setup of the single render job in `file`. Throws io::BadInput for a
-// gallery or bench-figures job, and what reading the job throws.
+// The setup of the single render job in `file`, its "runs" (if any) as
+// compared runs given in full. Throws io::BadInput for a gallery or
+// bench-figures job, and what reading the job throws.
 LiveSetup setup_from_job_file(const std::filesystem::path& file);
 
 // The case's job from render_jobs/ when it is there (the same title, view,

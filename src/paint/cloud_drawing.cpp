@@ -46,7 +46,8 @@ void draw_cloud_plane(render::DrawList& flat, const render::Panel2D& plot,
                       const scene::CloudFrame& cloud, const glm::vec4& colour, float px) {
   std::vector<render::ColouredVertex> dots;
   dots.reserve(cloud.plane.size());
-  for (const auto& p : cloud.plane) dots.push_back({glm::vec3(plot.to_pixel({p.x(), p.y()}), 0.0f), colour});
+  for (const auto& p : cloud.plane)
+    dots.push_back({glm::vec3(plot.to_pixel({p.x(), p.y()}), 0.0f), colour});
   flat.add_dots(dots, 1.6f * px);
 }
 

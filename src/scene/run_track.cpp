@@ -26,7 +26,12 @@ Eigen::Vector3d RunTrack::on_sphere(const sim::Sample& s) const {
 }
 
 const sim::Sample& RunTrack::advance() {
-  take(trajectory_->next());
+  try {
+    take(trajectory_->next());
+  } catch (const numerics::IntegrationError& e) {
+    failure_ = e.failure();
+    throw;
+  }
   compare_with_shadow(latest_);
   return latest_;
 }

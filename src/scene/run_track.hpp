@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include "numerics/failure.hpp"
 #include "scene/frame.hpp"
 #include "scene/trail.hpp"
 #include "sim/drift.hpp"
@@ -28,6 +29,9 @@ class RunTrack {
   // Advances to the next sample time. Throws numerics::IntegrationError from
   // the run (a failing shadow only ends the error estimate).
   const sim::Sample& advance();
+  // The run's own failure, once advance() has thrown it (which run of a
+  // comparison stopped the scene).
+  const std::optional<numerics::Failure>& failure() const { return failure_; }
   void forget_before(double t) { history_.forget_before(t); }
 
   const sim::RunSpec& spec() const { return spec_; }
@@ -66,6 +70,7 @@ class RunTrack {
   sim::Sample latest_;
   std::optional<double> pixel_true_until_;
   double max_error_px_ = 0.0;
+  std::optional<numerics::Failure> failure_;
 };
 
 }  // namespace epviz::scene

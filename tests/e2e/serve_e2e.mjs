@@ -1,10 +1,16 @@
 // Browser test of `epviz serve`: the page shows frames, Play makes the
-// picture move, a drag in the 3D view turns it, the wheel zooms it.
+// picture move, a drag in the 3D view turns it, the wheel zooms it, and runs
+// added from the panel are compared (legend and |delta gamma| chart), with a
+// screenshot of the three runs saved for a person to look at.
 //
 //   node tests/e2e/serve_e2e.mjs path/to/epviz [job arguments...]
 //
+// The screenshot goes to $EPVIZ_E2E_SCREENSHOT, else e2e_serve_compare.png
+// beside the epviz binary.
+//
 // Exit 0: passed; 1: failed (the reason and the server's last lines are
 // printed); 77: skipped (no Chromium or no node_modules: see the SKIP line).
+import path from 'node:path';
 import {
   run, log, fail, sleep, canvasHash, frameRectToCss, epvizState, waitFor,
 } from './harness.mjs';
@@ -145,6 +151,46 @@ await run({
     await page.mouse.wheel(0, -300);
     const wheeled = beforeWheel ? await waitChange(page, view, beforeWheel, 2000) : null;
     log(wheeled ? 'ok: wheel up over the view changed it' : 'note: wheel over the view did not change it (not asserted)');
+
+    // 6. Compare runs: the generic (chaotic) body, then an RK4 run and a
+    // nudged one added from the panel's "Compare runs" section.
+    const clickControl = async (name) => {
+      const c = await waitFor(`the control '${name}'`, 5000, async () => {
+        const s = await epvizState(page);
+        const controls = s && s.header && s.header.controls;
+        return controls && Array.isArray(controls[name]) ? controls : null;
+      });
+      const r = await frameRectToCss(page, c[name]);
+      await page.mouse.click(r.x + r.w / 2, r.y + r.h / 2);
+      await sleep(300);  // the next frames lay out what the click opened
+    };
+    const runRows = async () => {
+      const c = (await epvizState(page)).header.controls || {};
+      return Object.keys(c).filter((k) => /^run:\d+$/.test(k)).length;
+    };
+    await clickControl('case');
+    await clickControl('case:generic');
+    await clickControl('header:case');  // closed, to make room for the runs
+    await clickControl('header:runs');
+    await clickControl('new_method');
+    await clickControl('new_method:rk4');
+    await clickControl('add_run');
+    await waitFor('a second run', 5000, async () => (await runRows()) === 2);
+    await clickControl('add_nudged');
+    await waitFor('a third run', 5000, async () => (await runRows()) === 3);
+    log('ok: an RK4 run and a nudged run added from the panel: 3 runs');
+    await clickControl('play');
+    await sleep(4000);
+    await clickControl('play');
+    controls = await currentControls();
+    await waitStill(page, controls.view3d, 500, 5000);
+    if ((await runRows()) !== 3) fail(`after playing the panel lists ${await runRows()} runs, not 3`);
+    const shot = process.env.EPVIZ_E2E_SCREENSHOT || path.join(path.dirname(path.resolve(binary)), 'e2e_serve_compare.png');
+    await page.screenshot({ path: shot });
+    log(`ok: three runs played; screenshot ${shot}`);
+    await clickControl('remove:2');
+    await waitFor('two runs after removing one', 5000, async () => (await runRows()) === 2);
+    log('ok: a run removed from the panel');
 
     const end = await epvizState(page);
     if (!end.connected) fail('the page is no longer connected');

@@ -1,5 +1,5 @@
 // What a browser tab shows, at 960x540 with ImGui's built-in font: the
-// scene with the panels, and the case combo open. Goldens in
+// scene with the panels, the case combo open, and three runs compared. Goldens in
 // tests/snapshots/live_*.png, reviewed by looking at them.
 #include <gtest/gtest.h>
 
@@ -30,6 +30,21 @@ TEST(LiveSnapshot, CaseComboOpen) {
   const auto& img = d.session->render();
   EXPECT_TRUE(
       epviz::testing::matches_snapshot("live_case_combo", img.width, img.height, img.pixels));
+}
+
+TEST(LiveSnapshot, ThreeRunsCompared) {
+  SessionOptions o;
+  o.initial = preset_setup(physics::Case::generic);
+  o.initial.compared.push_back(with_method(sim::Method::rk4, 0.25, 0.0));
+  o.initial.compared.push_back(nudged_by(1e-3));
+  SessionDriver d(o);
+  d.click("header:case");
+  d.click("header:runs");
+  d.click("play");
+  d.frames(90);
+  d.click("play");  // pause
+  const auto& img = d.session->render();
+  EXPECT_TRUE(epviz::testing::matches_snapshot("live_compare", img.width, img.height, img.pixels));
 }
 
 }  // namespace
