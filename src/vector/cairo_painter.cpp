@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include "render/gui_overlay.hpp"
 
@@ -62,8 +64,31 @@ void stroke_polylines(cairo_t* cr, const render::DrawList& list) {
   }
 }
 
+// Opaque markers without outline (a scatter's dots) of one fill and size are
+// filled as one path, consecutive ones together: the same picture as one by
+// one, since a later dot covers an earlier one of its colour just the same,
+// in a fraction of the file.
+bool joins(const render::Marker& a, const render::Marker& b) {
+  return a.outline_px <= 0.0f && a.fill.a >= 1.0f && b.outline_px <= 0.0f && a.fill == b.fill &&
+         a.radius_px == b.radius_px;
+}
+
 void draw_markers(cairo_t* cr, const render::DrawList& list) {
-  for (const auto& m : list.markers()) {
+  const auto& markers = list.markers();
+  for (std::size_t i = 0; i < markers.size();) {
+    const auto& m = markers[i];
+    if (i + 1 < markers.size() && joins(m, markers[i + 1])) {
+      cairo_new_path(cr);
+      for (; i < markers.size() && joins(m, markers[i]); ++i) {
+        const auto& at = markers[i].position;
+        cairo_new_sub_path(cr);
+        cairo_arc(cr, at.x, at.y, m.radius_px, 0.0, 2.0 * std::numbers::pi);
+      }
+      set_colour(cr, m.fill);
+      cairo_fill(cr);
+      continue;
+    }
+    ++i;
     // radius_px is the outer radius, outline included.
     const double r = m.radius_px, w = m.outline_px;
     cairo_new_path(cr);
@@ -99,7 +124,39 @@ void draw_text(cairo_t* cr, const render::TextLabel& label, const CairoFont& fon
   cairo_show_text(cr, label.text.c_str());
 }
 
+std::size_t shape_count(const render::DrawList& list) {
+  return list.markers().size() + list.triangles().size() / 3 + list.polylines().size();
+}
+
+// The list's shapes inside `box` as an image of kRasterScale pixels per unit,
+// placed over the box: what a dense layer becomes in a vector file.
+void paint_as_image(cairo_t* cr, const render::DrawList& list, const render::Viewport& box) {
+  if (box.width <= 0 || box.height <= 0) return;
+  cairo_surface_t* image = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, box.width * kRasterScale,
+                                                      box.height * kRasterScale);
+  cairo_t* ic = cairo_create(image);
+  cairo_scale(ic, kRasterScale, kRasterScale);
+  cairo_translate(ic, -box.x, -box.y);
+  paint_shapes(ic, list);
+  cairo_destroy(ic);
+  cairo_surface_flush(image);
+  if (const cairo_status_t status = cairo_surface_status(image); status != CAIRO_STATUS_SUCCESS) {
+    cairo_surface_destroy(image);
+    throw std::runtime_error(std::string("cairo: cannot draw a dense layer as an image: ") +
+                             cairo_status_to_string(status));
+  }
+  cairo_save(cr);
+  cairo_translate(cr, box.x, box.y);
+  cairo_scale(cr, 1.0 / kRasterScale, 1.0 / kRasterScale);
+  cairo_set_source_surface(cr, image, 0.0, 0.0);
+  cairo_paint(cr);
+  cairo_restore(cr);
+  cairo_surface_destroy(image);
+}
+
 }  // namespace
+
+bool drawn_as_image(const render::DrawList& list) { return shape_count(list) > kMaxVectorShapes; }
 
 void paint_drawing(cairo_t* cr, const paint::FigureDrawing& drawing, const CairoFont& font) {
   set_colour(cr, paint::kPaper);
@@ -111,7 +168,11 @@ void paint_drawing(cairo_t* cr, const paint::FigureDrawing& drawing, const Cairo
       cairo_rectangle(cr, c.x, c.y, c.width, c.height);
       cairo_clip(cr);
     }
-    paint_shapes(cr, layer.list);
+    if (drawn_as_image(layer.list))
+      paint_as_image(cr, layer.list,
+                     layer.clip.value_or(render::Viewport{0, 0, drawing.width, drawing.height}));
+    else
+      paint_shapes(cr, layer.list);
     cairo_restore(cr);
   }
   for (const auto& layer : drawing.layers) paint_labels(cr, layer.list, font);
