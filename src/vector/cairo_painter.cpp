@@ -2,10 +2,9 @@
 
 #include <cmath>
 #include <numbers>
-#include <stdexcept>
-#include <string>
 
 #include "render/gui_overlay.hpp"
+#include "vector/raster_layer.hpp"
 
 namespace epviz::vector {
 namespace {
@@ -124,39 +123,7 @@ void draw_text(cairo_t* cr, const render::TextLabel& label, const CairoFont& fon
   cairo_show_text(cr, label.text.c_str());
 }
 
-std::size_t shape_count(const render::DrawList& list) {
-  return list.markers().size() + list.triangles().size() / 3 + list.polylines().size();
-}
-
-// The list's shapes inside `box` as an image of kRasterScale pixels per unit,
-// placed over the box: what a dense layer becomes in a vector file.
-void paint_as_image(cairo_t* cr, const render::DrawList& list, const render::Viewport& box) {
-  if (box.width <= 0 || box.height <= 0) return;
-  cairo_surface_t* image = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, box.width * kRasterScale,
-                                                      box.height * kRasterScale);
-  cairo_t* ic = cairo_create(image);
-  cairo_scale(ic, kRasterScale, kRasterScale);
-  cairo_translate(ic, -box.x, -box.y);
-  paint_shapes(ic, list);
-  cairo_destroy(ic);
-  cairo_surface_flush(image);
-  if (const cairo_status_t status = cairo_surface_status(image); status != CAIRO_STATUS_SUCCESS) {
-    cairo_surface_destroy(image);
-    throw std::runtime_error(std::string("cairo: cannot draw a dense layer as an image: ") +
-                             cairo_status_to_string(status));
-  }
-  cairo_save(cr);
-  cairo_translate(cr, box.x, box.y);
-  cairo_scale(cr, 1.0 / kRasterScale, 1.0 / kRasterScale);
-  cairo_set_source_surface(cr, image, 0.0, 0.0);
-  cairo_paint(cr);
-  cairo_restore(cr);
-  cairo_surface_destroy(image);
-}
-
 }  // namespace
-
-bool drawn_as_image(const render::DrawList& list) { return shape_count(list) > kMaxVectorShapes; }
 
 void paint_drawing(cairo_t* cr, const paint::FigureDrawing& drawing, const CairoFont& font) {
   set_colour(cr, paint::kPaper);
@@ -179,9 +146,13 @@ void paint_drawing(cairo_t* cr, const paint::FigureDrawing& drawing, const Cairo
 }
 
 void paint_shapes(cairo_t* cr, const render::DrawList& list) {
+  paint_fills_and_lines(cr, list);
+  draw_markers(cr, list);
+}
+
+void paint_fills_and_lines(cairo_t* cr, const render::DrawList& list) {
   fill_triangles(cr, list);
   stroke_polylines(cr, list);
-  draw_markers(cr, list);
 }
 
 void paint_labels(cairo_t* cr, const render::DrawList& list, const CairoFont& font) {
