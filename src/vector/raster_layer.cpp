@@ -33,7 +33,9 @@ std::uint32_t channel(float v) { return std::uint32_t(std::clamp(v, 0.0f, 1.0f) 
 struct Colour8 {
   std::uint32_t r, g, b, a;
 };
-Colour8 colour8(const glm::vec4& c) { return {channel(c.r), channel(c.g), channel(c.b), channel(c.a)}; }
+Colour8 colour8(const glm::vec4& c) {
+  return {channel(c.r), channel(c.g), channel(c.b), channel(c.a)};
+}
 
 // `c` with coverage `cover` (0..255) "over" the premultiplied pixel `p`.
 std::uint32_t over(std::uint32_t p, const Colour8& c, std::uint32_t cover) {
@@ -50,7 +52,7 @@ std::uint32_t over(std::uint32_t p, const Colour8& c, std::uint32_t cover) {
 void stamp(const Pixels& img, const Tile& tile, const render::Marker& m, glm::vec2 centre,
            float scale) {
   const float r = m.radius_px * scale, w = m.outline_px * scale;
-  const float reach = r + 0.5f;                 // outer edge of the fade
+  const float reach = r + 0.5f;                       // outer edge of the fade
   const float solid = (w > 0.0f ? r - w : r) - 0.5f;  // inner edge of the fill's fade
   const Colour8 fill = colour8(m.fill);
   const std::uint32_t opaque_fill =
@@ -98,8 +100,7 @@ void stamp_markers(const Pixels& img, const std::vector<render::Marker>& markers
     const int ty1 = std::min(rows - 1, int(std::floor((c.y + reach) / kTilePx)));
     for (int ty = ty0; ty <= ty1; ++ty)
       for (int tx = tx0; tx <= tx1; ++tx)
-        bins[std::size_t(ty) * std::size_t(columns) + std::size_t(tx)].push_back(
-            std::uint32_t(i));
+        bins[std::size_t(ty) * std::size_t(columns) + std::size_t(tx)].push_back(std::uint32_t(i));
   }
   for (int ty = 0; ty < rows; ++ty)
     for (int tx = 0; tx < columns; ++tx) {
@@ -127,8 +128,8 @@ bool drawn_as_image(const render::DrawList& list) {
 
 void paint_as_image(cairo_t* cr, const render::DrawList& list, const render::Viewport& box) {
   if (box.width <= 0 || box.height <= 0) return;
-  cairo_surface_t* image = cairo_image_surface_create(
-      CAIRO_FORMAT_ARGB32, box.width * kRasterScale, box.height * kRasterScale);
+  cairo_surface_t* image = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, box.width * kRasterScale,
+                                                      box.height * kRasterScale);
   check(image);
   cairo_t* ic = cairo_create(image);
   cairo_scale(ic, kRasterScale, kRasterScale);
@@ -138,8 +139,7 @@ void paint_as_image(cairo_t* cr, const render::DrawList& list, const render::Vie
   cairo_surface_flush(image);
   check(image);
   const Pixels pixels{cairo_image_surface_get_data(image), cairo_image_surface_get_width(image),
-                      cairo_image_surface_get_height(image),
-                      cairo_image_surface_get_stride(image)};
+                      cairo_image_surface_get_height(image), cairo_image_surface_get_stride(image)};
   stamp_markers(pixels, list.markers(), glm::vec2(box.x, box.y), float(kRasterScale));
   cairo_surface_mark_dirty(image);
   cairo_save(cr);

@@ -104,10 +104,10 @@ TEST(DenseScatter, TheImageLayerLooksLikeThePng) {
   const auto svg = dir / "scatter.svg";
   vector::write_vector_figure(svg, figure, FigureFormat::svg, kSectionSize);
   ASSERT_EQ(count(test::slurp(svg), "<image"), 1u);
-  ASSERT_EQ(et::run_tool("rsvg-convert -o '" + (dir / "svg.png").string() + "' '" + svg.string() +
-                         "'")
-                .exit_code,
-            0);
+  ASSERT_EQ(
+      et::run_tool("rsvg-convert -o '" + (dir / "svg.png").string() + "' '" + svg.string() + "'")
+          .exit_code,
+      0);
   const auto raster = io::read_png_rgba(dir / "svg.png");
   ASSERT_TRUE(raster);
   ASSERT_EQ(raster->width, gl.width);
