@@ -76,7 +76,8 @@ TEST(SeriesStyle, AScatterMarksEveryPointAndJoinsNone) {
   EXPECT_EQ(markers_of(d.markers(), colour), 80u);
   EXPECT_EQ(d.lines().polylines().size(), 0u);
 
-  const auto img = paint::paint_chart(et::shared_gl_context(), spec, et::builtin_font_options(W, H));
+  const auto img =
+      paint::paint_chart(et::shared_gl_context(), spec, et::builtin_font_options(W, H));
   const auto l = paint::chart_layout(spec, W, H, et::builtin_chart_font());
   int dots = 0, gaps = 0;
   const auto& p = spec.series[0].points;
@@ -121,8 +122,8 @@ TEST(SeriesStyle, ALineHasNoMarkers) {
     const auto& p = spec.series[0].points;
     int on_line = 0;
     for (std::size_t i = 0; i + 1 < p.size(); ++i)
-      on_line += is_colour(img, (l.to_pixel(p[i].x, p[i].y) + l.to_pixel(p[i + 1].x, p[i + 1].y)) * 0.5f,
-                           colour, 1);
+      on_line += is_colour(
+          img, (l.to_pixel(p[i].x, p[i].y) + l.to_pixel(p[i + 1].x, p[i + 1].y)) * 0.5f, colour, 1);
     EXPECT_GE(on_line, int(p.size()) - 3) << n;
   }
 }
@@ -156,23 +157,21 @@ TEST(SeriesStyle, LegendRowsShowWhatIsDrawn) {
 
   // In pixels: left of the scatter's marker, where a line sample would
   // start, the legend is paper; the same place in the line's row is not.
-  const auto img = paint::paint_chart(et::shared_gl_context(), spec, et::builtin_font_options(W, H));
+  const auto img =
+      paint::paint_chart(et::shared_gl_context(), spec, et::builtin_font_options(W, H));
   const float font_px = et::builtin_chart_font().px;
   glm::vec2 scatter_marker{};
   for (const auto& v : tris)
     if (v.colour == paint::series_colour(1)) scatter_marker += glm::vec2(v.position) / 6.0f;
   EXPECT_TRUE(is_colour(img, scatter_marker, paint::series_colour(1)));
-  EXPECT_GT(et::luminance(et::pixel_colour(img, int(scatter_marker.x - font_px),
-                                           int(scatter_marker.y))),
-            0.9f);
-  const auto guide_line = legend.line_vertices()[std::find_if(legend.polylines().begin(),
-                                                              legend.polylines().end(),
-                                                              [&](const auto& p) {
-                                                                return legend.line_vertices()[p.first]
-                                                                           .colour ==
-                                                                       paint::series_colour(2);
-                                                              })
-                                                     ->first];
+  EXPECT_GT(
+      et::luminance(et::pixel_colour(img, int(scatter_marker.x - font_px), int(scatter_marker.y))),
+      0.9f);
+  const auto guide_line =
+      legend.line_vertices()
+          [std::find_if(legend.polylines().begin(), legend.polylines().end(), [&](const auto& p) {
+             return legend.line_vertices()[p.first].colour == paint::series_colour(2);
+           })->first];
   EXPECT_TRUE(is_colour(img, glm::vec2(guide_line.position) + glm::vec2(2.0f, 0.0f),
                         paint::series_colour(2), 1));
 }

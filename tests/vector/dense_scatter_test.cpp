@@ -82,9 +82,10 @@ TEST(DenseScatter, AMillionDotsAreOneImageUnderVectorText) {
   const std::string svg =
       vector::vector_figure_bytes(scatter(1024, 1000), FigureFormat::svg, kSectionSize);
   RecordProperty("svg_bytes", std::to_string(svg.size()));
-  RecordProperty("svg_seconds",
-                 std::to_string(
-                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()));
+  RecordProperty(
+      "svg_seconds",
+      std::to_string(
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()));
   EXPECT_LT(svg.size(), 12'000'000u);
   EXPECT_EQ(count(svg, "<image"), 1u);
   EXPECT_GT(count(svg, "<use"), 100u);  // the labels' glyphs
