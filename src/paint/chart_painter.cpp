@@ -115,10 +115,10 @@ bool is_drawn(const chart::ChartSeries& s, const ChartSpec& spec) {
 
 // The legend names only what the chart shows: a series without a point on
 // the axes (e.g. a method whose cost is counted in another unit) has no row,
-// nor has a colour or marker key that no drawn series uses.
-// A keyed legend's colour row shows a line where a series of that colour
-// draws one, else a marker; a marker row shows its shape where a series
-// draws it, at that series' size.
+// nor has a colour or marker key that no drawn series uses (a marker key
+// counts only where its series draw markers). A keyed legend's colour row
+// shows a line where a series of that colour draws one, else a marker; a
+// marker row shows its shape at the size of the first series that draws it.
 std::vector<LegendRow> legend_rows(const ChartSpec& spec) {
   std::vector<LegendRow> rows;
   const bool keyed = !spec.colour_legend.empty() || !spec.marker_legend.empty();

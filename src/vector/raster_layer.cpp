@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
-#include <vector>
 
 #include "vector/cairo_painter.hpp"
 
@@ -16,16 +15,6 @@ struct Pixels {
   unsigned char* data;
   int width, height, stride;
 };
-
-// A part of the image, in pixels: [x0, x1) x [y0, y1).
-struct Tile {
-  int x0, y0, x1, y1;
-};
-// The image is stamped tile by tile, each tile's markers in the list's
-// order: a tile stays in the cache while its markers are stamped, where
-// markers in the list's order (each orbit's points spread over the plot)
-// would miss it at nearly every row.
-constexpr int kTilePx = 128;
 
 std::uint32_t channel(float v) { return std::uint32_t(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); }
 
@@ -49,22 +38,21 @@ std::uint32_t over(std::uint32_t p, const Colour8& c, std::uint32_t cover) {
 // One marker "over" the image (premultiplied ARGB32, as cairo keeps it), in
 // image pixels: the colour of marker.frag at each pixel's centre. Pixels
 // wholly inside an opaque fill are set without blending.
-void stamp(const Pixels& img, const Tile& tile, const render::Marker& m, glm::vec2 centre,
-           float scale) {
+void stamp(const Pixels& img, const render::Marker& m, glm::vec2 centre, float scale) {
   const float r = m.radius_px * scale, w = m.outline_px * scale;
   const float reach = r + 0.5f;                       // outer edge of the fade
   const float solid = (w > 0.0f ? r - w : r) - 0.5f;  // inner edge of the fill's fade
   const Colour8 fill = colour8(m.fill);
   const std::uint32_t opaque_fill =
       fill.a == 255 ? 0xff000000u | fill.r << 16 | fill.g << 8 | fill.b : 0u;
-  const int y0 = std::max(tile.y0, int(std::floor(centre.y - reach)));
-  const int y1 = std::min(tile.y1 - 1, int(std::ceil(centre.y + reach)));
+  const int y0 = std::max(0, int(std::floor(centre.y - reach)));
+  const int y1 = std::min(img.height - 1, int(std::ceil(centre.y + reach)));
   for (int y = y0; y <= y1; ++y) {
     const float dy = float(y) + 0.5f - centre.y;
     if (dy * dy >= reach * reach) continue;
     const float half = std::sqrt(reach * reach - dy * dy);
-    const int x0 = std::max(tile.x0, int(std::floor(centre.x - half)));
-    const int x1 = std::min(tile.x1 - 1, int(std::ceil(centre.x + half)));
+    const int x0 = std::max(0, int(std::floor(centre.x - half)));
+    const int x1 = std::min(img.width - 1, int(std::ceil(centre.x + half)));
     auto* row = reinterpret_cast<std::uint32_t*>(img.data + std::ptrdiff_t(y) * img.stride);
     for (int x = x0; x <= x1; ++x) {
       const float dx = float(x) + 0.5f - centre.x, d2 = dx * dx + dy * dy;
@@ -80,35 +68,6 @@ void stamp(const Pixels& img, const Tile& tile, const render::Marker& m, glm::ve
       row[x] = over(row[x], c, channel(outer));
     }
   }
-}
-
-// Each marker at (position - origin) * scale, in the list's order within each tile.
-void stamp_markers(const Pixels& img, const std::vector<render::Marker>& markers, glm::vec2 origin,
-                   float scale) {
-  const int columns = (img.width + kTilePx - 1) / kTilePx;
-  const int rows = (img.height + kTilePx - 1) / kTilePx;
-  std::vector<std::vector<std::uint32_t>> bins(std::size_t(columns) * std::size_t(rows));
-  const auto centre = [&](const render::Marker& m) {
-    return (glm::vec2(m.position) - origin) * scale;
-  };
-  for (std::size_t i = 0; i < markers.size(); ++i) {
-    const glm::vec2 c = centre(markers[i]);
-    const float reach = markers[i].radius_px * scale + 1.0f;
-    const int tx0 = std::max(0, int(std::floor((c.x - reach) / kTilePx)));
-    const int tx1 = std::min(columns - 1, int(std::floor((c.x + reach) / kTilePx)));
-    const int ty0 = std::max(0, int(std::floor((c.y - reach) / kTilePx)));
-    const int ty1 = std::min(rows - 1, int(std::floor((c.y + reach) / kTilePx)));
-    for (int ty = ty0; ty <= ty1; ++ty)
-      for (int tx = tx0; tx <= tx1; ++tx)
-        bins[std::size_t(ty) * std::size_t(columns) + std::size_t(tx)].push_back(std::uint32_t(i));
-  }
-  for (int ty = 0; ty < rows; ++ty)
-    for (int tx = 0; tx < columns; ++tx) {
-      const Tile tile{tx * kTilePx, ty * kTilePx, std::min(img.width, (tx + 1) * kTilePx),
-                      std::min(img.height, (ty + 1) * kTilePx)};
-      for (const std::uint32_t i : bins[std::size_t(ty) * std::size_t(columns) + std::size_t(tx)])
-        stamp(img, tile, markers[i], centre(markers[i]), scale);
-    }
 }
 
 void check(cairo_surface_t* image) {
@@ -140,7 +99,9 @@ void paint_as_image(cairo_t* cr, const render::DrawList& list, const render::Vie
   check(image);
   const Pixels pixels{cairo_image_surface_get_data(image), cairo_image_surface_get_width(image),
                       cairo_image_surface_get_height(image), cairo_image_surface_get_stride(image)};
-  stamp_markers(pixels, list.markers(), glm::vec2(box.x, box.y), float(kRasterScale));
+  const float scale = float(kRasterScale);
+  for (const auto& m : list.markers())
+    stamp(pixels, m, (glm::vec2(m.position) - glm::vec2(box.x, box.y)) * scale, scale);
   cairo_surface_mark_dirty(image);
   cairo_save(cr);
   cairo_translate(cr, box.x, box.y);
