@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include "app/cli_values.hpp"
 #include "app/gl_option.hpp"
@@ -31,16 +32,19 @@ struct SectionOptions {
   std::string file, out, jobs, gl, shard, shard_count;  // the section file, --out, -j, --gl, ...
 };
 
-// One chart per method, side by side on the same axes when there are several.
-void draw(const section::SectionJob& job, const std::vector<chart::ChartSpec>& charts,
+// One chart per method, side by side on the same axes when there are several;
+// the charts are built only when the file asks for a picture.
+void draw(const section::SectionJob& job, const std::vector<section::OrbitResult>& results,
           const std::string& gl) {
+  if (job.png.empty() && job.svg.empty()) return;
 #ifdef EPVIZ_HAVE_RENDER
+  auto charts = section::section_charts(job, results);
   const bool one = charts.size() == 1;
   const paint::ChartOptions size{
       .width = one ? 1100 : 760, .height = one ? 1000 : 720, .font_px = one ? 15.0f : 13.0f};
   constexpr int kGap = 16;
   std::vector<chart::Figure> panels;
-  for (const auto& c : charts) panels.push_back({job.png, c});
+  for (auto& c : charts) panels.push_back({job.png, std::move(c)});
   if (!job.png.empty()) {
     const auto image =
         paint::paint_drawing(*render::GlChoice(gl).open(), size, [&](const paint::ChartFont& font) {
@@ -53,9 +57,8 @@ void draw(const section::SectionJob& job, const std::vector<chart::ChartSpec>& c
   if (!job.svg.empty())
     vector::write_vector_panels(job.svg, panels, vector::FigureFormat::svg, size, kGap);
 #else
-  if (!job.png.empty() || !job.svg.empty())
-    throw io::BadInput(job.file + ": keys 'png', 'svg': this epviz was built without the renderer");
-  (void)charts, (void)gl;
+  (void)results, (void)gl;
+  throw io::BadInput(job.file + ": keys 'png', 'svg': this epviz was built without the renderer");
 #endif
 }
 
@@ -111,7 +114,7 @@ int run_section(const SectionOptions& o) {
     done = which + done;
   } else {
     section::write_crossings_csv(job, results);
-    draw(job, section::section_charts(job, results), o.gl);
+    draw(job, results, o.gl);
   }
   std::fprintf(job.csv == "-" ? stderr : stdout, "%s: %s in %.2f s (%d threads)\n", o.file.c_str(),
                done.c_str(), seconds, threads);
@@ -122,7 +125,7 @@ int run_section(const SectionOptions& o) {
 
 void write_merged_section(const section::MergedSection& merged, const std::string& gl) {
   io::write_file_atomically(merged.job.csv, merged.csv_text);
-  draw(merged.job, section::section_charts(merged.job, merged.results), gl);
+  draw(merged.job, merged.results, gl);
   std::printf("section %s: %zu runs -> %s\n", merged.job.file.c_str(), merged.results.size(),
               merged.job.csv.c_str());
 }

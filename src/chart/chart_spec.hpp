@@ -16,6 +16,21 @@ struct ChartPoint {
   double y = 0.0;
 };
 
+// How a series is drawn.
+enum class SeriesStyle {
+  // A line through the points, with a marker at every point of a short
+  // series (up to 60 points) and at a dozen evenly spaced ones of a longer.
+  lines_and_markers,
+  // A scatter: a marker at every point, however many, and no line.
+  markers,
+  // The line alone, no marker (e.g. a guide to the eye).
+  line,
+};
+
+// The markers' size: `dot` is a small mark without outline, for scatters of
+// thousands of points, where full-size markers would merge into blots.
+enum class MarkerSize { normal, dot };
+
 struct ChartSeries {
   std::string name;
   std::vector<ChartPoint>
@@ -25,6 +40,8 @@ struct ChartSeries {
   // series' position in the chart.
   int colour_key = -1;
   int marker_key = -1;
+  SeriesStyle style = SeriesStyle::lines_and_markers;
+  MarkerSize marker_size = MarkerSize::normal;
 };
 
 // What one colour or one marker shape of a chart stands for.

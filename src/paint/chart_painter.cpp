@@ -25,7 +25,20 @@ double axis_value(double v, bool log_axis) {
   return v;
 }
 
-void add_shape(DrawList& list, glm::vec2 c, MarkerShape shape, float r, const glm::vec4& fill) {
+// A marker's radius, and whether it has a darker outline (dots have none:
+// on a dense scatter outlines would turn the points' colours dark).
+struct MarkerLook {
+  float radius = 0.0f;
+  bool outlined = true;
+};
+MarkerLook marker_look(chart::MarkerSize size, float font_px) {
+  if (size == chart::MarkerSize::dot) return {std::max(1.5f, font_px * 0.15f), false};
+  return {std::max(3.5f, font_px * 0.3f), true};
+}
+
+void add_shape(DrawList& list, glm::vec2 c, MarkerShape shape, MarkerLook look,
+               const glm::vec4& fill) {
+  const float r = look.radius;
   const glm::vec4 outline{fill.r * 0.55f, fill.g * 0.55f, fill.b * 0.55f, 1.0f};
   if (shape == MarkerShape::circle) {
     render::Marker m;
@@ -33,7 +46,7 @@ void add_shape(DrawList& list, glm::vec2 c, MarkerShape shape, float r, const gl
     m.fill = fill;
     m.outline = outline;
     m.radius_px = r;
-    m.outline_px = 1.0f;
+    m.outline_px = look.outlined ? 1.0f : 0.0f;
     list.add_marker(m);
     return;
   }
@@ -58,9 +71,9 @@ void add_shape(DrawList& list, glm::vec2 c, MarkerShape shape, float r, const gl
       break;
     case MarkerShape::cross: {
       // Two strokes, no fill: reads apart from every filled shape.
-      const float h = r * 0.9f;
-      list.add_line({c.x - h, c.y - h, 0}, {c.x + h, c.y + h, 0}, fill, std::max(2.0f, r * 0.45f));
-      list.add_line({c.x - h, c.y + h, 0}, {c.x + h, c.y - h, 0}, fill, std::max(2.0f, r * 0.45f));
+      const float h = r * 0.9f, w = look.outlined ? std::max(2.0f, r * 0.45f) : r * 0.6f;
+      list.add_line({c.x - h, c.y - h, 0}, {c.x + h, c.y + h, 0}, fill, w);
+      list.add_line({c.x - h, c.y + h, 0}, {c.x + h, c.y - h, 0}, fill, w);
       return;
     }
     case MarkerShape::circle:  // drawn above as a round marker
@@ -73,17 +86,24 @@ void add_shape(DrawList& list, glm::vec2 c, MarkerShape shape, float r, const gl
     for (const glm::vec2& p : {poly[0], poly[i], poly[i + 1]})
       tris.push_back({glm::vec3(p, 0.0f), fill});
   list.add_triangles(tris);
+  if (!look.outlined) return;
   std::vector<glm::vec3> ring;
   for (const auto& p : poly) ring.emplace_back(p, 0.0f);
   list.add_polyline(ring, outline, 1.0f, true);
 }
 
-// The legend's rows: a row per series, or (keyed legends) a row per colour,
-// then a row per marker shape. `colour` < 0: no line sample; `marker` < 0: none.
+bool draws_line(const chart::ChartSeries& s) { return s.style != chart::SeriesStyle::markers; }
+bool draws_markers(const chart::ChartSeries& s) { return s.style != chart::SeriesStyle::line; }
+
+// The legend's rows, each showing what its series draw: a row per series,
+// or (keyed legends) a row per colour, then a row per marker shape.
+// `colour` < 0: grey; `line`: a line sample; `marker` < 0: no marker.
 struct LegendRow {
   std::string name;
   int colour = -1;
+  bool line = false;
   int marker = -1;
+  chart::MarkerSize marker_size = chart::MarkerSize::normal;
   bool gap_before = false;  // half a line of space above (between the two key lists)
 };
 // Whether any point of `s` can be drawn on the chart's axes.
@@ -95,32 +115,48 @@ bool is_drawn(const chart::ChartSeries& s, const ChartSpec& spec) {
 
 // The legend names only what the chart shows: a series without a point on
 // the axes (e.g. a method whose cost is counted in another unit) has no row,
-// nor has a colour or marker key that no drawn series uses.
+// nor has a colour or marker key that no drawn series uses (a marker key
+// counts only where its series draw markers). A keyed legend's colour row
+// shows a line where a series of that colour draws one, else a marker; a
+// marker row shows its shape at the size of the first series that draws it.
 std::vector<LegendRow> legend_rows(const ChartSpec& spec) {
   std::vector<LegendRow> rows;
-  std::vector<int> colours, markers;  // the keys of the drawn series
+  const bool keyed = !spec.colour_legend.empty() || !spec.marker_legend.empty();
+  // What the drawn series use: colour key -> whether any draws a line;
+  // marker key -> the size of the first that draws that marker.
+  std::vector<std::pair<int, bool>> colours;
+  std::vector<std::pair<int, chart::MarkerSize>> markers;
   for (std::size_t i = 0; i < spec.series.size(); ++i) {
     const auto& s = spec.series[i];
     if (!is_drawn(s, spec)) continue;
     const int colour = s.colour_key >= 0 ? s.colour_key : int(i);
     const int marker = s.marker_key >= 0 ? s.marker_key : int(i);
-    colours.push_back(colour);
-    markers.push_back(marker);
-    if (spec.colour_legend.empty() && spec.marker_legend.empty())
-      rows.push_back({s.name, colour, marker});
+    if (!keyed) {
+      rows.push_back(
+          {s.name, colour, draws_line(s), draws_markers(s) ? marker : -1, s.marker_size});
+      continue;
+    }
+    const auto c = std::find_if(colours.begin(), colours.end(),
+                                [&](const auto& k) { return k.first == colour; });
+    if (c == colours.end())
+      colours.emplace_back(colour, draws_line(s));
+    else
+      c->second = c->second || draws_line(s);
+    if (draws_markers(s) && std::none_of(markers.begin(), markers.end(),
+                                         [&](const auto& k) { return k.first == marker; }))
+      markers.emplace_back(marker, s.marker_size);
   }
-  if (spec.colour_legend.empty() && spec.marker_legend.empty()) return rows;
-  const auto used = [](const std::vector<int>& keys, int key) {
-    return std::find(keys.begin(), keys.end(), key) != keys.end();
-  };
+  if (!keyed) return rows;
   for (const auto& k : spec.colour_legend)
-    if (used(colours, k.key)) rows.push_back({k.name, k.key, -1});
+    for (const auto& [key, line] : colours)
+      if (key == k.key) rows.push_back({k.name, key, line, line ? -1 : 0});
   bool first = true;
-  for (const auto& k : spec.marker_legend) {
-    if (!used(markers, k.key)) continue;
-    rows.push_back({k.name, -1, k.key, first && !rows.empty()});
-    first = false;
-  }
+  for (const auto& k : spec.marker_legend)
+    for (const auto& [key, size] : markers) {
+      if (key != k.key) continue;
+      rows.push_back({k.name, -1, false, key, size, first && !rows.empty()});
+      first = false;
+    }
   return rows;
 }
 float legend_height(const std::vector<LegendRow>& rows, float line, float font_px) {
@@ -145,7 +181,7 @@ int points_inside(const ChartSpec& spec, const ChartLayout& l, const Viewport& b
         continue;
       }
       if (in(p)) n += 4;
-      if (!std::isnan(prev.x))
+      if (!std::isnan(prev.x) && draws_line(s))
         for (int k = 1; k < 16; ++k)
           if (in(prev + (p - prev) * (float(k) / 16.0f))) ++n;
       prev = p;
@@ -338,11 +374,18 @@ FigureDrawing draw_chart(const ChartSpec& spec, const ChartOptions& requested,
 
   // Data, clipped to the plot area: lines first, then all markers on top.
   DrawList lines, markers;
-  const float marker_r = std::max(3.5f, font_px * 0.3f);
+  const float marker_r = marker_look(chart::MarkerSize::normal, font_px).radius;
   for (std::size_t i = 0; i < spec.series.size(); ++i) {
     const auto& s = spec.series[i];
     const glm::vec4 colour = colour_of(s, i);
     const MarkerShape shape = marker_of(s, i);
+    const MarkerLook look = marker_look(s.marker_size, font_px);
+    // Lines and markers at every point (a short series, a scatter), or a
+    // dozen markers, evenly spaced, along a long line (a time series).
+    const bool joined = draws_line(s);
+    const bool every_point =
+        s.style == chart::SeriesStyle::markers ||
+        (s.style == chart::SeriesStyle::lines_and_markers && s.points.size() <= 60);
     std::vector<glm::vec3> run;
     auto flush = [&] {
       if (run.size() >= 2) lines.add_polyline(run, colour, stroke);
@@ -354,16 +397,15 @@ FigureDrawing draw_chart(const ChartSpec& spec, const ChartOptions& requested,
         flush();
         continue;
       }
-      run.emplace_back(q, 0.0f);
-      if (s.points.size() <= 60) add_shape(markers, q, shape, marker_r, colour);
+      if (joined) run.emplace_back(q, 0.0f);
+      if (every_point) add_shape(markers, q, shape, look, colour);
     }
     flush();
-    // Long series (time series) get a few markers only, evenly spaced.
-    if (s.points.size() > 60) {
+    if (s.style == chart::SeriesStyle::lines_and_markers && !every_point) {
       const std::size_t every = s.points.size() / 12 + 1;
       for (std::size_t k = every / 2; k < s.points.size(); k += every) {
         const glm::vec2 q = l.to_pixel(s.points[k].x, s.points[k].y);
-        if (!std::isnan(q.x) && !std::isnan(q.y)) add_shape(markers, q, shape, marker_r, colour);
+        if (!std::isnan(q.x) && !std::isnan(q.y)) add_shape(markers, q, shape, look, colour);
       }
     }
   }
@@ -390,10 +432,10 @@ FigureDrawing draw_chart(const ChartSpec& spec, const ChartOptions& requested,
       top += line;
       const float lx0 = float(b.x) + font_px * 0.6f, lx1 = lx0 + font_px * 2.4f;
       const glm::vec4 colour = r.colour >= 0 ? series_colour(std::size_t(r.colour)) : grey;
-      if (r.colour >= 0) legend.add_line({lx0, cy, 0}, {lx1, cy, 0}, colour, stroke);
+      if (r.line) legend.add_line({lx0, cy, 0}, {lx1, cy, 0}, colour, stroke);
       if (r.marker >= 0)
-        add_shape(legend, {(lx0 + lx1) * 0.5f, cy}, series_marker(std::size_t(r.marker)), marker_r,
-                  colour);
+        add_shape(legend, {(lx0 + lx1) * 0.5f, cy}, series_marker(std::size_t(r.marker)),
+                  marker_look(r.marker_size, font_px), colour);
       legend.add_text(label({lx1 + font_px * 0.6f, cy}, r.name, TextAnchor::left));
     }
     drawing.layers.push_back({std::move(legend), std::nullopt});

@@ -1,8 +1,9 @@
 #pragma once
-// Line charts for papers, drawn with the render toolkit: series as polylines
-// with markers, optional log10 axes with decade and minor ticks, axis labels,
-// a title and a legend. Input is plain data; the painter knows nothing of what
-// the numbers mean.
+// Line charts and scatters for papers, drawn with the render toolkit: series
+// as polylines with markers, markers alone or lines alone (their style,
+// chart/chart_spec.hpp), optional log10 axes with decade and minor ticks, axis
+// labels, a title and a legend. Input is plain data; the painter knows
+// nothing of what the numbers mean.
 //
 //   auto context = render::make_gl_context("osmesa", 16, 16);  // size unused
 //   render::RgbaImage img = paint::paint_chart(*context, spec, {.width = 1280, .height = 800});

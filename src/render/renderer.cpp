@@ -288,7 +288,16 @@ void Renderer::draw_markers(const DrawList& list, const glm::mat4& view_projecti
     scratch_vertices_.insert(scratch_vertices_.end(), {m.radius_px, m.outline_px});
   }
   begin_screen_space_pass(marker_program_, markers_, view_projection, viewport_size);
-  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(list.markers().size()));
+  // A large scatter in batches, each finished before the next: llvmpipe
+  // keeps a call's geometry-shader output until the frame is read, some
+  // 500 bytes a marker (a scatter of a million: 830 MB, in batches 360 MB).
+  constexpr std::size_t kBatch = 1 << 16;
+  const std::size_t n = list.markers().size();
+  for (std::size_t first = 0; first < n; first += kBatch) {
+    if (first > 0) glFinish();
+    glDrawArrays(GL_POINTS, static_cast<GLint>(first),
+                 static_cast<GLsizei>(std::min(kBatch, n - first)));
+  }
 }
 
 void Renderer::queue_label(const TextLabel& label, const glm::vec2& pixel) {

@@ -49,21 +49,23 @@ std::vector<chart::ChartSpec> section_charts(const SectionJob& job,
   }
   // Every chart's axes take in every crossing of every method.
   std::vector<chart::ChartPoint> extent;
-  // The chart painter joins a series' points by lines and marks only short
-  // series at every point, so each crossing is a series of one point, its
-  // colour keyed by its orbit; the legend is one row for all of them.
+  // An orbit is a scatter of small dots (the painter's `markers` style:
+  // every point, no line), its colour keyed by its orbit; the legend is one
+  // row for all of them.
   for (const auto& o : orbits) {
     ++runs[o.method];
     if (o.failure) continue;
-    for (const auto& c : o.crossings) {
-      chart::ChartSeries s;
+    chart::ChartSeries s;
+    s.style = chart::SeriesStyle::markers;
+    s.marker_size = chart::MarkerSize::dot;
+    s.colour_key = o.orbit - 1;
+    s.marker_key = 0;
+    s.points.reserve(o.crossings.size());
+    for (const auto& c : o.crossings)
       s.points.push_back({sim::value_of(job.coords[0], c.omega, c.gamma),
                           sim::value_of(job.coords[1], c.omega, c.gamma)});
-      s.colour_key = o.orbit - 1;
-      s.marker_key = 0;
-      extent.push_back(s.points.back());
-      charts[o.method].series.push_back(std::move(s));
-    }
+    if (charts.size() > 1) extent.insert(extent.end(), s.points.begin(), s.points.end());
+    charts[o.method].series.push_back(std::move(s));
   }
   for (std::size_t m = 0; m < charts.size(); ++m) {
     std::string legend = "crossings, one colour per orbit (";

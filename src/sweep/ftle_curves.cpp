@@ -13,9 +13,9 @@ namespace {
 
 using Json = nlohmann::json;
 
-// The guide in grey with crosses (paint's series colours and markers), and
-// sparse enough that its markers do not hide the lines under it.
-constexpr int kGuideColour = 12, kGuideMarker = 6, kGuidePoints = 10;
+// The guide: a grey line (paint's series colour 12) without markers, dense
+// enough to look smooth on the log axes.
+constexpr int kGuideColour = 12, kGuidePoints = 40;
 
 std::string value_text(const Json& v) {
   if (v.is_string()) return v.get<std::string>();
@@ -80,7 +80,7 @@ std::optional<chart::Figure> ftle_curve_figure(const std::vector<Json>& rows,
     chart::ChartSeries guide;
     guide.name = "∝ ln T / T (regular orbit)";
     guide.colour_key = kGuideColour;
-    guide.marker_key = kGuideMarker;
+    guide.style = chart::SeriesStyle::line;
     const double scale = lowest * lowest_t / std::log(lowest_t);
     const double from = std::max(t_min, 2.0);
     for (int i = 0; i <= kGuidePoints; ++i) {

@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "render/gui_overlay.hpp"
+#include "vector/raster_layer.hpp"
 
 namespace epviz::vector {
 namespace {
@@ -62,8 +63,31 @@ void stroke_polylines(cairo_t* cr, const render::DrawList& list) {
   }
 }
 
+// Opaque markers without outline (a scatter's dots) of one fill and size are
+// filled as one path, consecutive ones together: the same picture as one by
+// one, since a later dot covers an earlier one of its colour just the same,
+// in a fraction of the file.
+bool joins(const render::Marker& a, const render::Marker& b) {
+  return a.outline_px <= 0.0f && a.fill.a >= 1.0f && b.outline_px <= 0.0f && a.fill == b.fill &&
+         a.radius_px == b.radius_px;
+}
+
 void draw_markers(cairo_t* cr, const render::DrawList& list) {
-  for (const auto& m : list.markers()) {
+  const auto& markers = list.markers();
+  for (std::size_t i = 0; i < markers.size();) {
+    const auto& m = markers[i];
+    if (i + 1 < markers.size() && joins(m, markers[i + 1])) {
+      cairo_new_path(cr);
+      for (; i < markers.size() && joins(m, markers[i]); ++i) {
+        const auto& at = markers[i].position;
+        cairo_new_sub_path(cr);
+        cairo_arc(cr, at.x, at.y, m.radius_px, 0.0, 2.0 * std::numbers::pi);
+      }
+      set_colour(cr, m.fill);
+      cairo_fill(cr);
+      continue;
+    }
+    ++i;
     // radius_px is the outer radius, outline included.
     const double r = m.radius_px, w = m.outline_px;
     cairo_new_path(cr);
@@ -111,16 +135,24 @@ void paint_drawing(cairo_t* cr, const paint::FigureDrawing& drawing, const Cairo
       cairo_rectangle(cr, c.x, c.y, c.width, c.height);
       cairo_clip(cr);
     }
-    paint_shapes(cr, layer.list);
+    if (drawn_as_image(layer.list))
+      paint_as_image(cr, layer.list,
+                     layer.clip.value_or(render::Viewport{0, 0, drawing.width, drawing.height}));
+    else
+      paint_shapes(cr, layer.list);
     cairo_restore(cr);
   }
   for (const auto& layer : drawing.layers) paint_labels(cr, layer.list, font);
 }
 
 void paint_shapes(cairo_t* cr, const render::DrawList& list) {
+  paint_fills_and_lines(cr, list);
+  draw_markers(cr, list);
+}
+
+void paint_fills_and_lines(cairo_t* cr, const render::DrawList& list) {
   fill_triangles(cr, list);
   stroke_polylines(cr, list);
-  draw_markers(cr, list);
 }
 
 void paint_labels(cairo_t* cr, const render::DrawList& list, const CairoFont& font) {

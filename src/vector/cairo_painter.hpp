@@ -10,11 +10,15 @@
 
 namespace epviz::vector {
 
+// A dense layer (a scatter of many thousand points) is painted as an image
+// (vector/raster_layer.hpp).
 void paint_drawing(cairo_t* cr, const paint::FigureDrawing& drawing, const CairoFont& font);
 
 // One list's fills, lines and markers, in that order (as the GL renderer
 // draws a 2D list); and its text, which the renderer draws after all shapes.
 void paint_shapes(cairo_t* cr, const render::DrawList& list);
+// paint_shapes without the markers.
+void paint_fills_and_lines(cairo_t* cr, const render::DrawList& list);
 void paint_labels(cairo_t* cr, const render::DrawList& list, const CairoFont& font);
 
 }  // namespace epviz::vector

@@ -1,5 +1,6 @@
 // The section's chart: one point per crossing at the chosen coordinates,
-// coloured by its orbit, never joined to another by a line.
+// coloured by its orbit, never joined to another by a line: one scatter
+// series of small dots per orbit.
 #include <gtest/gtest.h>
 
 #include "section/section_chart.hpp"
@@ -7,7 +8,7 @@
 namespace epviz::section {
 namespace {
 
-TEST(SectionChart, EachCrossingIsOnePointColouredByItsOrbit) {
+TEST(SectionChart, EachOrbitIsAScatterColouredByItsOrbit) {
   SectionJob job;
   job.case_id = physics::Case::generic;
   job.coords = {sim::StateComponent::omega2, sim::StateComponent::gamma1};
@@ -22,14 +23,23 @@ TEST(SectionChart, EachCrossingIsOnePointColouredByItsOrbit) {
   const auto spec = section_charts(job, orbits).at(0);
   EXPECT_EQ(spec.x_label, "Ω₂");  // symbols, as the atlases write them
   EXPECT_EQ(spec.y_label, "γ₁");
-  ASSERT_EQ(spec.series.size(), 4u);
-  const std::vector<std::pair<double, double>> expected{{1, -1}, {2, -2}, {21, -3}, {22, -4}};
-  for (std::size_t s = 0; s < 4; ++s) {
-    ASSERT_EQ(spec.series[s].points.size(), 1u);  // a series of one point draws no line
-    EXPECT_EQ(spec.series[s].points[0].x, expected[s].first);
-    EXPECT_EQ(spec.series[s].points[0].y, expected[s].second);
-    EXPECT_EQ(spec.series[s].colour_key, s < 2 ? 0 : 2);
+  ASSERT_EQ(spec.series.size(), 2u);  // orbits 1 and 3
+  const std::vector<std::vector<std::pair<double, double>>> expected{{{1, -1}, {2, -2}},
+                                                                     {{21, -3}, {22, -4}}};
+  for (std::size_t s = 0; s < 2; ++s) {
+    const auto& series = spec.series[s];
+    EXPECT_EQ(series.style, chart::SeriesStyle::markers);  // a marker at each point, no line
+    EXPECT_EQ(series.marker_size, chart::MarkerSize::dot);
+    EXPECT_EQ(series.colour_key, s == 0 ? 0 : 2);
+    ASSERT_EQ(series.points.size(), 2u);
+    for (std::size_t k = 0; k < 2; ++k) {
+      EXPECT_EQ(series.points[k].x, expected[s][k].first);
+      EXPECT_EQ(series.points[k].y, expected[s][k].second);
+    }
   }
+  // One legend row for all orbits.
+  ASSERT_EQ(spec.marker_legend.size(), 1u);
+  EXPECT_NE(spec.marker_legend[0].name.find("(3 orbits)"), std::string::npos);
 }
 
 TEST(SectionChart, TheTitleNamesTheSettingTheMethodUses) {
@@ -68,7 +78,7 @@ TEST(SectionChart, EachMethodHasItsChartOnSharedAxes) {
   EXPECT_NE(charts[0].title.find("rk4, step 0.1"), std::string::npos) << charts[0].title;
   EXPECT_NE(charts[1].title.find("dop853, tol 1e-10"), std::string::npos) << charts[1].title;
   for (std::size_t m = 0; m < 2; ++m) {
-    ASSERT_EQ(charts[m].series.size(), 2u);
+    ASSERT_EQ(charts[m].series.size(), 2u);  // a series per orbit
     for (const auto& s : charts[m].series) EXPECT_EQ(s.points[0].x > 0.0, m == 0);
     ASSERT_EQ(charts[m].axis_extent.size(), 4u);  // every crossing of both
     EXPECT_NE(charts[m].marker_legend.at(0).name.find("(2 orbits)"), std::string::npos);

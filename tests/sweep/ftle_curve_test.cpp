@@ -96,6 +96,10 @@ TEST(FtleCurve, TheChartHasALinePerPointAndTheGuide) {
   const double scale = 0.02 * 8 / std::log(8.0);
   for (const auto& p : guide.points) EXPECT_NEAR(p.y, scale * std::log(p.x) / p.x, 1e-15);
   EXPECT_NEAR(guide.points.back().x, 8.0, 1e-12);
+  // A line without markers (the curves have theirs), smooth on the log axes.
+  EXPECT_EQ(guide.style, chart::SeriesStyle::line);
+  EXPECT_EQ(chart.series[0].style, chart::SeriesStyle::lines_and_markers);
+  EXPECT_GE(guide.points.size(), 40u);
   EXPECT_FALSE(ftle_curve_figure({c}, std::nullopt));
 }
 

@@ -1,0 +1,133 @@
+// Scatters in vector files: a few thousand dots stay vectors, one path per
+// colour; a million (a Poincaré section of 1,024 orbits x 1,000 crossings)
+// become one image under vector axes and text, so the file stays small, and
+// rasterised it is still the GL painter's picture.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include "check/ssim.hpp"
+#include "io/png_reader.hpp"
+#include "paint/figure_painter.hpp"
+#include "render/render_test_support.hpp"
+#include "support/temp_dir.hpp"
+#include "vector/cairo_painter.hpp"
+#include "vector/vector_figure.hpp"
+#include "vector/vector_fixtures.hpp"
+
+namespace epviz {
+namespace {
+
+namespace et = epviz::testing;
+using vector::FigureFormat;
+
+// `orbits` scatter series of `points` dots each, in the section's style:
+// half of them filling a disc at random (a chaotic sea), half on circles
+// (invariant curves), one colour per series.
+chart::Figure scatter(int orbits, int points, std::uint64_t seed = 88172645463325252ull) {
+  chart::ChartSpec c;
+  c.title = "Poincaré section (test)";
+  c.x_label = "γ₁";
+  c.y_label = "Ω₃";
+  std::uint64_t state = seed;
+  const auto uniform = [&] {  // xorshift64: the same points on every machine
+    state ^= state << 13;
+    state ^= state >> 7;
+    state ^= state << 17;
+    return double(state >> 11) * 0x1.0p-53;
+  };
+  for (int o = 0; o < orbits; ++o) {
+    chart::ChartSeries s;
+    s.style = chart::SeriesStyle::markers;
+    s.marker_size = chart::MarkerSize::dot;
+    s.colour_key = o;
+    s.marker_key = 0;
+    const double radius = 0.2 + 0.8 * double(o) / orbits;
+    for (int k = 0; k < points; ++k) {
+      const double a = 2.0 * M_PI * uniform(), r = o % 2 == 0 ? std::sqrt(uniform()) : radius;
+      s.points.push_back({r * std::cos(a), r * std::sin(a)});
+    }
+    c.series.push_back(std::move(s));
+  }
+  c.marker_legend = {{"crossings, one colour per orbit", 0}};
+  return {"scatter.png", c};
+}
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+const paint::ChartOptions kSectionSize{.width = 1100, .height = 1000, .font_px = 15.0f};
+
+// 16 x 500 dots: below the image threshold, the dots of each series are one
+// path, so the file holds tens of paths, not thousands.
+TEST(DenseScatter, ThousandsOfDotsAreAPathPerColour) {
+  const std::string svg = vector::vector_figure_bytes(scatter(16, 500), FigureFormat::svg);
+  EXPECT_EQ(count(svg, "<image"), 0u);
+  EXPECT_LT(count(svg, "<path"), 200u);
+  EXPECT_LT(svg.size(), 2'000'000u);
+}
+
+// The size of a section of 1,024 orbits x 1,000 crossings: one image, the
+// axes and text still vectors, in a few MB. Measured 6.2 MB (the image is
+// 2078 x 1792 pixels of dots in random colours); a path per dot made 390 MB,
+// and paths alone, however compact, would cost some 160 MB.
+TEST(DenseScatter, AMillionDotsAreOneImageUnderVectorText) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string svg =
+      vector::vector_figure_bytes(scatter(1024, 1000), FigureFormat::svg, kSectionSize);
+  RecordProperty("svg_bytes", std::to_string(svg.size()));
+  RecordProperty(
+      "svg_seconds",
+      std::to_string(
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()));
+  EXPECT_LT(svg.size(), 12'000'000u);
+  EXPECT_EQ(count(svg, "<image"), 1u);
+  EXPECT_GT(count(svg, "<use"), 100u);  // the labels' glyphs
+}
+
+// Past the threshold the layer is an image; rasterised, the SVG is the GL
+// painter's picture (the dots where the PNG has them).
+TEST(DenseScatter, TheImageLayerLooksLikeThePng) {
+  if (!et::have_tool("rsvg-convert")) GTEST_SKIP() << "rsvg-convert is not installed";
+  const chart::Figure figure = scatter(32, 1000);
+  const auto gl = paint::paint_figure(et::shared_gl_context(), figure, kSectionSize);
+  test::TempDir dir;
+  const auto svg = dir / "scatter.svg";
+  vector::write_vector_figure(svg, figure, FigureFormat::svg, kSectionSize);
+  ASSERT_EQ(count(test::slurp(svg), "<image"), 1u);
+  ASSERT_EQ(
+      et::run_tool("rsvg-convert -o '" + (dir / "svg.png").string() + "' '" + svg.string() + "'")
+          .exit_code,
+      0);
+  const auto raster = io::read_png_rgba(dir / "svg.png");
+  ASSERT_TRUE(raster);
+  ASSERT_EQ(raster->width, gl.width);
+  ASSERT_EQ(raster->height, gl.height);
+  EXPECT_GE(check::ssim(gl.width, gl.height, gl.pixels, raster->rgba), 0.9);
+  // The PDF holds the same one image, and its labels as text.
+  if (et::have_tool("pdfimages") && et::have_tool("pdftotext")) {
+    const auto pdf = dir / "scatter.pdf";
+    vector::write_vector_figure(pdf, figure, FigureFormat::pdf, kSectionSize);
+    const auto images = et::run_tool("pdfimages -list '" + pdf.string() + "'");
+    ASSERT_EQ(images.exit_code, 0) << images.out;
+    // Two header lines, the image and its alpha (a "smask").
+    EXPECT_EQ(count(images.out, "\n"), 4u) << images.out;
+    EXPECT_EQ(count(images.out, " smask "), 1u) << images.out;
+    const auto text = et::run_tool("pdftotext -enc UTF-8 '" + pdf.string() + "' -");
+    for (const char* label : {"Poincaré section (test)", "γ₁", "Ω₃", "crossings"})
+      EXPECT_NE(text.out.find(label), std::string::npos) << label << " not in\n" << text.out;
+  }
+  // And the oracle tells scatters apart: the PNG of other random dots does not pass.
+  const auto other =
+      paint::paint_figure(et::shared_gl_context(), scatter(32, 1000, 12345), kSectionSize);
+  EXPECT_LT(check::ssim(gl.width, gl.height, other.pixels, raster->rgba), 0.9);
+}
+
+}  // namespace
+}  // namespace epviz
