@@ -43,6 +43,24 @@ void fill_triangles(cairo_t* cr, const render::DrawList& list) {
   }
 }
 
+// Square dots (the renderer's GL points), consecutive ones of one colour as
+// one path, after the triangles as the renderer draws them.
+void fill_dots(cairo_t* cr, const render::DrawList& list) {
+  const auto& v = list.dot_vertices();
+  for (const auto& range : list.dots()) {
+    const double half = 0.5 * double(range.size_px);
+    for (std::size_t i = range.first, end = range.first + range.count; i < end;) {
+      const glm::vec4 colour = v[i].colour;
+      cairo_new_path(cr);
+      for (; i < end && v[i].colour == colour; ++i)
+        cairo_rectangle(cr, v[i].position.x - half, v[i].position.y - half, range.size_px,
+                        range.size_px);
+      set_colour(cr, colour);
+      cairo_fill(cr);
+    }
+  }
+}
+
 void stroke_polylines(cairo_t* cr, const render::DrawList& list) {
   const auto& v = list.line_vertices();
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
@@ -152,6 +170,7 @@ void paint_shapes(cairo_t* cr, const render::DrawList& list) {
 
 void paint_fills_and_lines(cairo_t* cr, const render::DrawList& list) {
   fill_triangles(cr, list);
+  fill_dots(cr, list);
   stroke_polylines(cr, list);
 }
 

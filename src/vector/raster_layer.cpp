@@ -81,7 +81,8 @@ void check(cairo_surface_t* image) {
 }  // namespace
 
 bool drawn_as_image(const render::DrawList& list) {
-  return list.markers().size() + list.triangles().size() / 3 + list.polylines().size() >
+  return list.markers().size() + list.triangles().size() / 3 + list.dot_vertices().size() +
+             list.polylines().size() >
          kMaxVectorShapes;
 }
 

@@ -129,5 +129,36 @@ TEST(DenseScatter, TheImageLayerLooksLikeThePng) {
   EXPECT_LT(check::ssim(gl.width, gl.height, other.pixels, raster->rgba), 0.9);
 }
 
+// The renderer's square dots (a cloud of states in the (a, b) panel) are
+// squares of their size in a vector figure too, in their colour.
+TEST(VectorDots, SquaresOfTheirSizeWhereTheRendererPutsThem) {
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 40, 30);
+  cairo_t* cr = cairo_create(surface);
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  cairo_paint(cr);
+  render::DrawList list;
+  const render::ColouredVertex dots[] = {{{10.0f, 10.0f, 0.0f}, {1, 0, 0, 1}},
+                                         {{30.0f, 20.0f, 0.0f}, {0, 0, 1, 1}}};
+  list.add_dots(dots, 4.0f);
+  vector::paint_shapes(cr, list);
+  cairo_surface_flush(surface);
+  const unsigned char* data = cairo_image_surface_get_data(surface);
+  const int stride = cairo_image_surface_get_stride(surface);
+  // ARGB32 in native byte order: blue, green, red, alpha on this machine.
+  const auto channel = [&](int x, int y, int c) { return int(data[y * stride + 4 * x + c]); };
+  int red = 0, blue = 0;
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 40; ++x) {
+      red += channel(x, y, 2) > 200;
+      blue += channel(x, y, 0) > 200;
+    }
+  EXPECT_EQ(red, 16);
+  EXPECT_EQ(blue, 16);
+  EXPECT_GT(channel(9, 9, 2), 200);
+  EXPECT_GT(channel(29, 19, 0), 200);
+  cairo_destroy(cr);
+  cairo_surface_destroy(surface);
+}
+
 }  // namespace
 }  // namespace epviz
