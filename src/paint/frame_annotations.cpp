@@ -144,8 +144,17 @@ std::optional<Box> FramePainter::draw_marks_key(DrawList& flat, const scene::Fra
   float widest = 0.0f;
   for (const auto& r : rows) widest = std::max(widest, gui().text_size(r).x);
   const float sym = std::max(line, 14 * px);  // the column of symbols
-  const float right = float(view.x + view.width) - 8 * px, top = float(view.y) + 8 * px;
+  const float right = float(view.x + view.width) - 8 * px;
   const float x_sym = right - widest - 4 * px - sym * 0.5f, x_text = right - widest;
+  // At the view's top right; below the overlay where it floats over that
+  // corner (small pictures), and left out where it would then not fit.
+  float top = float(view.y) + 8 * px;
+  const float height = line * float(rows.size());
+  const Box at_top{{x_sym - sym * 0.5f - 2 * px, top}, {right, top + height}};
+  if (floating_overlay_ && floating_overlay_->intersects(at_top)) {
+    top = floating_overlay_->max.y + 8 * px;
+    if (top + height > float(view.y + view.height) * 0.5f) return std::nullopt;
+  }
   float y = top + line * 0.5f;
   for (const auto& r : rows) {
     if (r == "gravity") {
@@ -166,7 +175,7 @@ std::optional<Box> FramePainter::draw_marks_key(DrawList& flat, const scene::Fra
     flat.add_text({{x_text, y, 0}, r, text, TextAnchor::left});
     y += line;
   }
-  return Box{{x_sym - sym * 0.5f - 2 * px, top}, {right, top + line * float(rows.size())}};
+  return Box{{x_sym - sym * 0.5f - 2 * px, top}, {right, top + height}};
 }
 
 void FramePainter::draw_view_annotations(const scene::Frame& f, const render::Camera& camera,

@@ -134,6 +134,8 @@ TEST(FrameAnnotations, AGalleryTilesCaptionHasItsOwnLineAndTheSphereFitsTheTile)
                          Job{physics::Case::generic, scene::View::body, 3.4, 3}}) {
     auto f = frame_of(job.c, job.view, 640, 360, job.distance, job.trace_axis);
     f.caption = "goryachev-chaplygin: dop853, tol 2.6e-05 (auto, tightened)";
+    // A shipped job's long title widens the overlay that floats over the view.
+    f.overlay.title = "Generic heavy top: the same cloud of 10,000 states smears";
     tile.paint(f);
     const auto& a = tile.annotations();
     const auto layout = paint::layout_for(f, 640, 360);
@@ -146,6 +148,9 @@ TEST(FrameAnnotations, AGalleryTilesCaptionHasItsOwnLineAndTheSphereFitsTheTile)
     EXPECT_FALSE(caption_line.intersects(view));
     if (a.marks_key) {
       EXPECT_FALSE(caption->box.intersects(*a.marks_key));
+      // The overlay floats over a tile's view: the key keeps out of it.
+      ASSERT_TRUE(a.overlay_window);
+      EXPECT_FALSE(a.overlay_window->intersects(*a.marks_key));
     }
     for (const auto& l : a.labels) EXPECT_FALSE(caption->box.intersects(l.box)) << l.text;
     // The whole sphere inside its view, with the pole labels inside the picture.
