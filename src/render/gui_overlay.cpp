@@ -93,7 +93,12 @@ glm::vec2 anchored_top_left(const glm::vec2& point, const glm::vec2& size, TextA
 
 ImGuiOverlay::ImGuiOverlay(const OverlayOptions& options) : options_(options) {
   IMGUI_CHECKVERSION();
+  // CreateContext leaves the new context current when none was; this one is
+  // made current only in scopes, so that none outlives it as ImGui's current
+  // context (a later ImGui allocation would count itself in the freed one).
+  ImGuiContext* const previous = ImGui::GetCurrentContext();
   context_ = ImGui::CreateContext();
+  ImGui::SetCurrentContext(previous);
   ImGuiContextScope scope(context_);
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // no imgui.ini: a render must not depend on or leave state
@@ -140,8 +145,12 @@ ImGuiOverlay::ImGuiOverlay(const OverlayOptions& options) : options_(options) {
 }
 
 ImGuiOverlay::~ImGuiOverlay() {
-  ImGuiContextScope scope(context_);
-  gl_renderer_.reset();  // needs the ImGui context alive
+  {
+    ImGuiContextScope scope(context_);
+    gl_renderer_.reset();  // needs the ImGui context alive
+  }
+  // Outside the scope, which would make the freed context current again on
+  // leaving: DestroyContext keeps the current context, or none if it was this one.
   ImGui::DestroyContext(context_);
 }
 
