@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 #include <utility>
 
@@ -11,6 +12,7 @@
 #include "numerics/rk4.hpp"
 #include "numerics/splitting.hpp"
 #include "physics/direct.hpp"
+#include "physics/direct_batch.hpp"
 #include "physics/free_rigid_body_flow.hpp"
 #include "sim/drift.hpp"
 
@@ -95,21 +97,24 @@ class FixedSteps {
   mutable bool have_derivatives_ = false;
 };
 
+// A step's dense output: the state at a time within the step.
+using DenseOutput = std::function<State(double t)>;
+
 // The root of the section function on [t0, t1] (g0 = g(t0) and g1 = g(t1) of
-// opposite signs, or g1 = 0) along the stepper's dense output: regula falsi
-// with the Illinois modification, which keeps the bracket and converges
-// superlinearly where plain regula falsi stalls on one end.
-template <class Stepper>
-std::pair<double, State> locate(const Stepper& stepper, const SectionSurface& s, double t0,
-                                double g0, double t1, double g1) {
-  State x = stepper.state();
+// opposite signs, or g1 = 0; x1 the state at t1) along the step's dense
+// output: regula falsi with the Illinois modification, which keeps the
+// bracket and converges superlinearly where plain regula falsi stalls on one
+// end.
+std::pair<double, State> locate(const DenseOutput& dense, const SectionSurface& s, double t0,
+                                double g0, double t1, double g1, const State& x1) {
+  State x = x1;
   double t = t1;
   if (g1 == 0.0) return {t, x};
   int kept_side = 0;  // which end the last iteration kept: +1 t1, -1 t0
   for (int i = 0; i < 200; ++i) {
     t = (t0 * g1 - t1 * g0) / (g1 - g0);
     if (!(t > t0 && t < t1)) t = 0.5 * (t0 + t1);
-    x = stepper.dense(t);
+    x = dense(t);
     const double g = level_of(s, x);
     if (std::abs(g) <= 0.25 * kSectionResidual || std::nextafter(t0, t1) >= t1) break;
     if ((g < 0.0) == (g0 < 0.0)) {
@@ -127,38 +132,117 @@ std::pair<double, State> locate(const Stepper& stepper, const SectionSurface& s,
   return {t, x};
 }
 
-template <class Stepper>
-std::vector<Crossing> run_section(Stepper stepper, const RunSpec& run,
-                                  const SectionSurface& surface, int max_crossings) {
-  // The stepper refuses non-finite states itself; the drift limit is checked
-  // on what the section keeps, every crossing, and on the last step's end
-  // (a check at every step end made sections about 15 % slower).
-  const MotionCheck check(run.body, run.initial, run.max_drift);
-  const std::string method(name(run.method));
-  auto keep_motion = [&](double t, const State& x) {
+// One orbit's section, shown its steps in turn by either integration path
+// (the scalar stepper here, the batch's step hook below), so that both find
+// the same crossings from the same steps. The drift limit is checked on what
+// the section keeps, every crossing, and on the last step's end (a check at
+// every step end made sections about 15 % slower).
+class OrbitSection {
+ public:
+  OrbitSection(const RunSpec& run, const SectionSurface& surface, int max_crossings)
+      : surface_(surface),
+        check_(run.body, run.initial, run.max_drift),
+        method_(name(run.method)),
+        t_end_(run.t_end),
+        max_crossings_(max_crossings) {}
+
+  double level(const State& x) const { return level_of(surface_, x); }
+  bool crosses(double g0, double g1) const { return sim::crosses(surface_.direction, g0, g1); }
+  // Enough crossings, or one past t_end: the orbit goes no further.
+  bool done() const { return done_ || int(found_.size()) >= max_crossings_; }
+
+  // The crossing in the step from (t0, g0) to (t1, g1) (crosses(g0, g1)),
+  // located on its dense output, checked and kept; its failure, if any.
+  std::optional<numerics::Failure> take(double t0, double g0, double t1, double g1, const State& x1,
+                                        const DenseOutput& dense) {
+    const auto [t, x] = locate(dense, surface_, t0, g0, t1, g1, x1);
+    if (t > t_end_) {
+      done_ = true;
+      return std::nullopt;
+    }
+    if (auto failure = motion_failure(t, x)) return failure;
+    found_.push_back({int(found_.size()) + 1, t, x.template head<3>(), x.template tail<3>()});
+    return std::nullopt;
+  }
+
+  // The check of the last step's end.
+  std::optional<numerics::Failure> motion_failure(double t, const State& x) const {
     Sample s;
     s.t = t;
     s.omega = x.head<3>();
     s.gamma = x.tail<3>();
-    if (auto failure = check.failure(s, method)) throw numerics::IntegrationError(*failure);
+    return check_.failure(s, method_);
+  }
+
+  std::vector<Crossing>& crossings() { return found_; }
+
+ private:
+  SectionSurface surface_;
+  MotionCheck check_;
+  std::string method_;
+  double t_end_;
+  int max_crossings_;
+  bool done_ = false;
+  std::vector<Crossing> found_;
+};
+
+template <class Stepper>
+std::vector<Crossing> run_section(Stepper stepper, const RunSpec& run,
+                                  const SectionSurface& surface, int max_crossings) {
+  OrbitSection section(run, surface, max_crossings);
+  const auto fail_on = [](std::optional<numerics::Failure> failure) {
+    if (failure) throw numerics::IntegrationError(*failure);
   };
-  std::vector<Crossing> found;
+  const DenseOutput dense = [&stepper](double t) { return State(stepper.dense(t)); };
   stepper.init(0.0, physics::DirectSystem::pack(run.initial));
-  double g_prev = level_of(surface, stepper.state());
-  while (int(found.size()) < max_crossings && stepper.t() < run.t_end) {
+  double g_prev = section.level(stepper.state());
+  while (!section.done() && stepper.t() < run.t_end) {
     const double t0 = stepper.t();
     stepper.step();
-    const double g1 = level_of(surface, stepper.state());
-    if (crosses(surface.direction, g_prev, g1)) {
-      const auto [t, x] = locate(stepper, surface, t0, g_prev, stepper.t(), g1);
-      if (t > run.t_end) break;
-      keep_motion(t, x);
-      found.push_back({int(found.size()) + 1, t, x.template head<3>(), x.template tail<3>()});
-    }
+    const double g1 = section.level(stepper.state());
+    if (section.crosses(g_prev, g1))
+      fail_on(section.take(t0, g_prev, stepper.t(), g1, stepper.state(), dense));
     g_prev = g1;
   }
-  keep_motion(stepper.t(), stepper.state());
-  return found;
+  fail_on(section.motion_failure(stepper.t(), stepper.state()));
+  return std::move(section.crossings());
+}
+
+State state_of(const std::array<double, 6>& x) {
+  State s;
+  for (int i = 0; i < 6; ++i) s[i] = x[std::size_t(i)];
+  return s;
+}
+
+// The step hook that shows every orbit's steps to its OrbitSection (sections
+// indexed by the task's id), as run_section's loop does: the dense output is
+// asked for where a step holds a crossing, and at the last step, whose end
+// is checked.
+numerics::BatchStepHook<6> section_hook(std::vector<OrbitSection>& sections,
+                                        const std::vector<RunSpec>& runs) {
+  numerics::BatchStepHook<6> hook;
+  hook.wants_dense = [&](const numerics::BatchStep<6>& step) {
+    const OrbitSection& section = sections[std::size_t(step.id)];
+    return section.crosses(section.level(state_of(step.x_prev)), section.level(state_of(step.x))) ||
+           step.t >= runs[std::size_t(step.id)].t_end;
+  };
+  hook.look = [&](const numerics::BatchStep<6>& step, const numerics::BatchDense<6>& dense) {
+    OrbitSection& section = sections[std::size_t(step.id)];
+    const State x1 = state_of(step.x);
+    const double g0 = section.level(state_of(step.x_prev)), g1 = section.level(x1);
+    numerics::BatchStepVerdict verdict;
+    if (section.crosses(g0, g1)) {
+      const DenseOutput at = [&dense](double t) { return state_of(dense(t)); };
+      verdict.failure = section.take(step.t_prev, g0, step.t, g1, x1, at);
+      if (verdict.failure) return verdict;
+    }
+    if (section.done() || step.t >= runs[std::size_t(step.id)].t_end) {
+      verdict.failure = section.motion_failure(step.t, x1);
+      verdict.stop = true;
+    }
+    return verdict;
+  };
+  return hook;
 }
 
 }  // namespace
@@ -226,6 +310,47 @@ std::vector<Crossing> section_crossings(const RunSpec& run, const SectionSurface
           numerics::Composition4<ExactSplitSystem>(ExactSplitSystem(run.body), "exact-split4"));
   }
   throw std::invalid_argument("unknown method");
+}
+
+}  // namespace epviz::sim
+
+namespace epviz::sim {
+
+bool sections_batched(const RunSpec& run) { return run.method == Method::dop853; }
+
+std::vector<OrbitCrossings> section_crossings_batched(const std::vector<RunSpec>& runs,
+                                                      const SectionSurface& surface,
+                                                      int max_crossings, int threads) {
+  std::vector<OrbitCrossings> out(runs.size());
+  if (runs.empty()) return out;
+  const RunSpec& first = runs.front();
+  std::vector<OrbitSection> sections;
+  std::vector<physics::DirectBatchTask> tasks;
+  sections.reserve(runs.size());
+  tasks.reserve(runs.size());
+  for (const RunSpec& run : runs) {
+    if (!sections_batched(run) || run.tol != first.tol || run.max_steps != first.max_steps ||
+        run.body.inertia != first.body.inertia || run.body.com != first.body.com ||
+        run.body.weight != first.body.weight)
+      throw std::invalid_argument(
+          "section_crossings_batched: every run dop853 with one body, tolerance and step budget");
+    sections.emplace_back(run, surface, max_crossings);
+    tasks.push_back(physics::direct_batch_task(run.initial, run.t_end));
+    tasks.back().id = long(tasks.size()) - 1;
+  }
+  // section_crossings's dop853 options.
+  physics::DirectBatchSettings settings;
+  settings.method = physics::BatchMethod::dop853;
+  settings.adaptive.rtol = first.tol;
+  settings.adaptive.atol = first.tol;
+  settings.adaptive.max_steps = first.max_steps;
+  settings.step_hook = section_hook(sections, runs);
+  auto results = physics::integrate_direct_batch_parallel(first.body, tasks, settings, threads);
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    out[i].failure = std::move(results[i].failure);
+    if (!out[i].failure) out[i].crossings = std::move(sections[i].crossings());
+  }
+  return out;
 }
 
 }  // namespace epviz::sim
