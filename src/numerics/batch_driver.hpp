@@ -77,9 +77,17 @@ struct BatchStep {
 };
 
 // The dense output of the step being looked at, at a time within [t_prev, t]:
-// bitwise what the scalar stepper's dense(t) gives after the same step.
+// bitwise what the scalar stepper's dense(t) gives after the same step, the
+// whole state or one component (for a search that needs only one).
 template <int D>
-using BatchDense = std::function<std::array<double, D>(double t)>;
+class BatchDense {
+ public:
+  virtual std::array<double, D> operator()(double t) const = 0;
+  virtual double component(int i, double t) const = 0;
+
+ protected:
+  ~BatchDense() = default;
+};
 
 // What a step hook makes of the step it looked at.
 struct BatchStepVerdict {
@@ -260,18 +268,38 @@ class BatchEmbedded {
   bool emit_outputs(int l);  // false when the output check failed the trajectory
   bool hook_asks(int l);     // fills step_[l]; whether the hook wants its dense output
   bool hook_looks(int l);    // false when the hook ended the trajectory
-  double dense_used(int l, int i, double t);
+  std::array<double, D> dense_used(int l, double t);
+  void count_dense(int l);
   void finish(int l, std::optional<Failure> failure);
   void fail(int l, FailureKind kind, std::string detail) {
     finish(l, Failure{L_->t[l], name, kind, std::move(detail)});
   }
-  double dense(int l, int i, double t) const {
-    const double s = (t - L_->t_prev[l]) / L_->h_last[l];
+  double dense(int l, int i, double s) const {  // s: (t - t_prev) / h_last
     const double s1 = 1.0 - s;
     double r = L_->cont[M - 1][i][l];
     for (int j = M - 2; j >= 0; --j) r = L_->cont[j][i][l] + ((j % 2 == 0) ? s : s1) * r;
     return r;
   }
+  std::array<double, D> dense(int l, double t) const {
+    const double s = (t - L_->t_prev[l]) / L_->h_last[l];
+    std::array<double, D> x;
+    for (int i = 0; i < D; ++i) x[std::size_t(i)] = dense(l, i, s);
+    return x;
+  }
+  // Lane l's dense output, for a step hook (counted as used, as dense_used).
+  class LaneDense final : public BatchDense<D> {
+   public:
+    LaneDense(BatchEmbedded& b, int l) : b_(b), l_(l) {}
+    std::array<double, D> operator()(double t) const override { return b_.dense_used(l_, t); }
+    double component(int i, double t) const override {
+      b_.count_dense(l_);
+      return b_.dense(l_, i, (t - b_.L_->t_prev[l_]) / b_.L_->h_last[l_]);
+    }
+
+   private:
+    BatchEmbedded& b_;
+    int l_;
+  };
   double err_power(double err) const {
     if (expo_ == 0.125) return 1.0 / std::sqrt(std::sqrt(std::sqrt(err)));
     return std::exp(-expo_ * std::log(err));
@@ -366,6 +394,9 @@ bool BatchEmbedded<Sys, W, Tableau>::start(int l) {
   if (events_.started) events_.started(task.id);
   L_->t[l] = L_->t_prev[l] = task.t0;
   for (int i = 0; i < D; ++i) L_->x[i][l] = L_->x_prev[i][l] = task.x0[std::size_t(i)];
+  step_[l].id = task.id;
+  step_[l].t = task.t0;
+  step_[l].x = task.x0;  // the first step's start
   h_next_[l] = opts_.h_init > 0 ? std::min(opts_.h_init, opts_.h_max) : 0.0;
   log_err_old_[l] = kLogErrFloor;
   attempts_[l] = 0;
@@ -495,17 +526,21 @@ bool BatchEmbedded<Sys, W, Tableau>::decide(int l) {
   return false;
 }
 
-// Component i at t of lane l's last step (its dense output), counting the
+// The state at t on lane l's last step (its dense output), counting the
 // evaluations of the continuous extension once per step, as EmbeddedRk's
 // lazy dense output does; x itself before the first step.
 template <BatchSystem Sys, int W, class Tableau>
-double BatchEmbedded<Sys, W, Tableau>::dense_used(int l, int i, double t) {
-  if (!stepped_[l]) return L_->x[i][l];
-  if (!dense_counted_[l]) {
-    queue_->result(task_[l]).rhs_evals += N - Tableau::stages - 1;
-    dense_counted_[l] = true;
-  }
-  return dense(l, i, t);
+auto BatchEmbedded<Sys, W, Tableau>::dense_used(int l, double t) -> std::array<double, D> {
+  if (!stepped_[l]) return batch::lane(L_->x, l);
+  count_dense(l);
+  return dense(l, t);
+}
+
+template <BatchSystem Sys, int W, class Tableau>
+void BatchEmbedded<Sys, W, Tableau>::count_dense(int l) {
+  if (dense_counted_[l]) return;
+  queue_->result(task_[l]).rhs_evals += N - Tableau::stages - 1;
+  dense_counted_[l] = true;
 }
 
 template <BatchSystem Sys, int W, class Tableau>
@@ -515,8 +550,7 @@ bool BatchEmbedded<Sys, W, Tableau>::emit_outputs(int l) {
   for (; next_out_[l] < task.out_times.size(); ++next_out_[l]) {
     const double t = task.out_times[next_out_[l]];
     if (!(t <= L_->t[l])) break;
-    std::array<double, D> x;
-    for (int i = 0; i < D; ++i) x[std::size_t(i)] = dense_used(l, i, t);
+    const std::array<double, D> x = dense_used(l, t);
     if (check_) {
       if (auto failure = check_(task.id, t, x)) {
         finish(l, std::move(*failure));
@@ -530,23 +564,18 @@ bool BatchEmbedded<Sys, W, Tableau>::emit_outputs(int l) {
 
 template <BatchSystem Sys, int W, class Tableau>
 bool BatchEmbedded<Sys, W, Tableau>::hook_asks(int l) {
+  // The step starts where the lane's last one ended (or at the start).
   BatchStep<D>& step = step_[l];
-  step.id = queue_->task(task_[l]).id;
-  step.t_prev = L_->t_prev[l];
+  step.t_prev = step.t;
+  step.x_prev = step.x;
   step.t = L_->t[l];
-  step.x_prev = batch::lane(L_->x_prev, l);
   step.x = batch::lane(L_->x, l);
   return hook_.wants_dense(step);
 }
 
 template <BatchSystem Sys, int W, class Tableau>
 bool BatchEmbedded<Sys, W, Tableau>::hook_looks(int l) {
-  const BatchDense<D> dense = [this, l](double t) {
-    std::array<double, D> x;
-    for (int i = 0; i < D; ++i) x[std::size_t(i)] = dense_used(l, i, t);
-    return x;
-  };
-  BatchStepVerdict verdict = hook_.look(step_[l], dense);
+  BatchStepVerdict verdict = hook_.look(step_[l], LaneDense(*this, l));
   if (!verdict.failure && !verdict.stop) return true;
   if (!verdict.failure) queue_->result(task_[l]).stopped = true;
   finish(l, std::move(verdict.failure));
@@ -562,7 +591,7 @@ void BatchEmbedded<Sys, W, Tableau>::finish(int l, std::optional<Failure> failur
     result.x = batch::lane(L_->x, l);
   } else {
     result.t = task.t_end;
-    for (int i = 0; i < D; ++i) result.x[std::size_t(i)] = dense_used(l, i, task.t_end);
+    result.x = dense_used(l, task.t_end);
   }
   result.failure = std::move(failure);
   if (events_.ended) events_.ended(task.id, result);

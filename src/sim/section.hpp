@@ -75,7 +75,8 @@ struct OrbitCrossings {
 // the same crossing search, which locates a crossing on the lane's dense
 // output, bitwise the scalar stepper's. So the crossings and failures are
 // bitwise those of section_crossings. The runs must all be sections_batched
-// with one body, tolerance and step budget (std::invalid_argument otherwise);
+// with one body, tolerance, step budget and t_end (std::invalid_argument
+// otherwise);
 // an orbit's failure ends that orbit only.
 std::vector<OrbitCrossings> section_crossings_batched(const std::vector<RunSpec>& runs,
                                                       const SectionSurface& surface,

@@ -364,7 +364,7 @@ DirectBatchResult hooked_alone(const DirectBatchTask& task, const numerics::Adap
 
 // A step hook sees every step of every lane, bitwise the scalar stepper's,
 // reads the dense output of the steps it asks for as the scalar stepper's
-// dense(t), and ends a trajectory (stopped or failed) alone; the work counted
+// dense(t) (whole, or a component at a time), and ends a trajectory (stopped or failed) alone; the work counted
 // is the scalar run's, dense stages included where they were used.
 TEST(DirectBatch, AStepHookSeesEachLanesStepsAndDenseOutputAsAlone) {
   auto tasks = mixed_tasks(13);
@@ -389,7 +389,11 @@ TEST(DirectBatch, AStepHookSeesEachLanesStepsAndDenseOutputAsAlone) {
   };
   settings.step_hook.look = [&](const numerics::BatchStep<6>& step,
                                 const numerics::BatchDense<6>& dense) {
-    logs[std::size_t(step.id)].middles.push_back(dense(0.5 * (step.t_prev + step.t)));
+    const double middle = 0.5 * (step.t_prev + step.t);
+    const auto x = dense(middle);
+    logs[std::size_t(step.id)].middles.push_back(x);
+    for (int i = 0; i < 6; ++i)  // one component alone is the state's
+      EXPECT_EQ(test::bits(dense.component(i, middle)), test::bits(x[std::size_t(i)]));
     numerics::BatchStepVerdict verdict;
     const long n = seen[std::size_t(step.id)];
     verdict.stop = step.id == kStopped && n == kStopAt;

@@ -112,8 +112,7 @@ TEST(SectionBatch, OnlyDopOrbitsOfOneBodyAndToleranceShareABatch) {
   EXPECT_FALSE(sim::sections_batched(rk4));
   const sim::SectionSurface surface;
   EXPECT_THROW(sim::section_crossings_batched({run, rk4}, surface, 5, 1), std::invalid_argument);
-  EXPECT_THROW(sim::section_crossings_batched({run, loose}, surface, 5, 1),
-               std::invalid_argument);
+  EXPECT_THROW(sim::section_crossings_batched({run, loose}, surface, 5, 1), std::invalid_argument);
 }
 
 }  // namespace
