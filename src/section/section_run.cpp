@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <atomic>
+#include <stdexcept>
 #include <thread>
 
+#include "io/bad_input.hpp"
+#include "numerics/simd_path.hpp"
 #include "physics/format.hpp"
 
 namespace epviz::section {
@@ -49,6 +52,16 @@ std::vector<OrbitResult> run_section(const SectionJob& job,
   }
   const int n = std::max(1, std::min<int>(threads, int(results.size())));
   const auto on_batch = [&](std::size_t i) { return batched && sim::sections_batched(specs[i]); };
+  // EPVIZ_SIMD is input: refused as bad input before any orbit runs.
+  for (std::size_t i = 0; i < results.size(); ++i)
+    if (on_batch(i)) {
+      try {
+        numerics::chosen_simd_path();
+      } catch (const std::invalid_argument& e) {
+        throw io::BadInput(e.what());
+      }
+      break;
+    }
 
   // The batched orbits first, method by method (one body, tolerance and step
   // budget each), every thread running batches of them.

@@ -32,7 +32,8 @@ long run_count(const SectionJob& job, std::size_t starts);
 // failure ends that orbit only. The crossings are bitwise those of
 // sim::section_crossings run on each orbit alone, whichever path takes it.
 // With `batched` false every orbit takes the scalar path (for comparisons).
-// Throws std::invalid_argument for an EPVIZ_SIMD naming no path of this CPU.
+// Throws io::BadInput, before any orbit runs, for an EPVIZ_SIMD naming no
+// path of this CPU when some orbit would take the batch.
 std::vector<OrbitResult> run_section(const SectionJob& job,
                                      const std::vector<physics::InitialState>& starts, int threads,
                                      std::optional<shard::ItemRange> runs = std::nullopt,

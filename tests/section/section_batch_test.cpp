@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "io/bad_input.hpp"
 #include "numerics/simd_path.hpp"
 #include "section/section_csv.hpp"
 #include "section/section_job.hpp"
@@ -100,6 +101,18 @@ TEST(SectionBatch, AShardsRunsAreTheWholeSectionsOnes) {
   ASSERT_EQ(part.size(), 9u);
   const std::vector<OrbitResult> expected(whole.begin() + 5, whole.begin() + 14);
   EXPECT_EQ(crossings_csv(job, part), crossings_csv(job, expected));
+}
+
+// EPVIZ_SIMD naming no path is bad input, refused before any orbit runs;
+// a section with no orbit for the batch does not read it.
+TEST(SectionBatch, ABadSimdVariableIsBadInput) {
+  SectionJob job = mixed_job();
+  job.orbits = 2;
+  const auto starts = section_starts(job);
+  const test::ScopedSimdEnv env("avx1024");
+  EXPECT_THROW(run_section(job, starts, 1), io::BadInput);
+  job.methods = {SectionMethod{sim::Method::rk4, 1e-10, 0.01}};
+  EXPECT_EQ(run_section(job, starts, 1).size(), starts.size());
 }
 
 TEST(SectionBatch, OnlyDopOrbitsOfOneBodyAndToleranceShareABatch) {
