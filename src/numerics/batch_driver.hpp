@@ -110,7 +110,7 @@ struct BatchStepHook {
 };
 
 // Told, with the task's id, when a trajectory takes a lane and when it ends
-// (reached t_end or failed; its result complete), from the thread running the
+// (reached t_end, failed or stopped; its result complete), from the thread running the
 // batch: so that a caller can use each result as soon as it is there.
 template <int D>
 struct BatchEvents {
