@@ -1,14 +1,18 @@
 // What a Poincaré section costs against the integration under it, in one run:
 // the orbits of the shipped generic section's level (render_jobs/
 // generic.section.json: its level, surface, method and tolerance), each run
-// three ways on the same threads —
+// four ways on the same threads —
 //   bare       the DOP853 stepper stepping to the orbit's last crossing and
 //              no further: the integration alone
-//   section    section::run_section, as `epviz section` runs it: every step
-//              checked for a sign change, each crossing located on the dense
-//              output, checked and kept
-//   batch      for comparison, the same bare integration by the SIMD batch
-//              integrator (physics/direct_batch.hpp), which sweeps use
+//   section    section::run_section on the scalar path: every step checked
+//              for a sign change, each crossing located on the dense output,
+//              checked and kept
+//   batch      the same bare integration by the SIMD batch integrator
+//              (physics/direct_batch.hpp)
+//   section on the batch
+//              section::run_section as `epviz section` runs it: the same
+//              section, its orbits in the batch integrator's lanes (checked
+//              to give the scalar section's crossings)
 // Each is timed twice, in turn, and the round with less CPU time is kept
 // (other load on the machine only slows a round). Then `epviz section` runs
 // the same section once as a process, writing the CSV of every crossing (its
@@ -37,6 +41,7 @@
 
 #include "io/subprocess.hpp"
 #include "numerics/embedded_rk.hpp"
+#include "numerics/simd_path.hpp"
 #include "physics/direct.hpp"
 #include "physics/direct_batch.hpp"
 #include "section/section_job.hpp"
@@ -181,8 +186,11 @@ int main(int argc, char** argv) {
   const auto starts = section::section_starts(job);
   const std::string load_before = load_average();
 
-  std::vector<section::OrbitResult> results;
-  auto run_section = [&] { results = section::run_section(job, starts, threads); };
+  std::vector<section::OrbitResult> results, batch_results;
+  auto run_section = [&] {
+    results = section::run_section(job, starts, threads, std::nullopt, false);
+  };
+  auto run_batch_section = [&] { batch_results = section::run_section(job, starts, threads); };
   // The orbits' last crossings, known after a first section: the bare
   // integration runs to the same times.
   run_section();
@@ -201,11 +209,23 @@ int main(int argc, char** argv) {
   const Timing bare1 = timed([&] { steps = bare_integration(job, starts, t_end, threads); });
   const Timing sec1 = timed(run_section);
   const Timing batch1 = timed([&] { batch_integration(job, starts, t_end, threads); });
+  const Timing bsec1 = timed(run_batch_section);
   const Timing bare2 = timed([&] { bare_integration(job, starts, t_end, threads); });
   const Timing sec2 = timed(run_section);
   const Timing batch2 = timed([&] { batch_integration(job, starts, t_end, threads); });
+  const Timing bsec2 = timed(run_batch_section);
   const Timing bare = better(bare1, bare2), sec = better(sec1, sec2),
-               batch = better(batch1, batch2);
+               batch = better(batch1, batch2), bsec = better(bsec1, bsec2);
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const auto &a = results[i].crossings, &b = batch_results[i].crossings;
+    bool same = a.size() == b.size() && !batch_results[i].failure;
+    for (std::size_t k = 0; same && k < a.size(); ++k)
+      same = a[k].t == b[k].t && a[k].omega == b[k].omega && a[k].gamma == b[k].gamma;
+    if (!same) {
+      std::fprintf(stderr, "epviz_section_bench: orbit %zu differs on the batch\n", i + 1);
+      return 1;
+    }
+  }
   const Timing command = section_command(orbits, crossings, threads);
 
   double time_sum = 0.0;
@@ -225,11 +245,17 @@ int main(int argc, char** argv) {
   line("bare", bare);
   line("section", sec);
   line("batch (SIMD), bare", batch);
+  line("section on the batch", bsec);
   line("epviz section, CSV", command);
   std::printf(
       "section / bare: %.3f (cpu), %.3f (wall); cpu of the rounds: bare %.2f, %.2f s, "
       "section %.2f, %.2f s\n",
       sec.cpu / bare.cpu, sec.wall / bare.wall, bare1.cpu, bare2.cpu, sec1.cpu, sec2.cpu);
+  std::printf(
+      "section on the batch: %.3f of the bare batch, %.3f of the scalar section (cpu); "
+      "cpu of the rounds: batch %.2f, %.2f s, section on the batch %.2f, %.2f s; path %s\n",
+      bsec.cpu / batch.cpu, bsec.cpu / sec.cpu, batch1.cpu, batch2.cpu, bsec1.cpu, bsec2.cpu,
+      numerics::simd_path_report().c_str());
   std::printf("load average before: %s, after: %s\n", load_before.c_str(), load_average().c_str());
   return 0;
 }

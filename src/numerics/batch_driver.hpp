@@ -16,7 +16,8 @@
 //
 // Output: DOP853 interpolates its dense output at the requested times (the
 // scalar pattern `while (s.t() < t_out) s.step(); s.dense(t_out)`); RK4 steps
-// exactly to them (rk4_step_towards).
+// exactly to them (rk4_step_towards). A step hook (DOP853) sees every accepted
+// step and may look into its dense output, e.g. to locate events in it.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -47,9 +48,10 @@ struct BatchTask {
 template <int D>
 struct BatchResult {
   std::vector<std::array<double, D>> outputs;  // at out_times (those reached when failed)
-  std::array<double, D> x{};                   // at t_end, or the last accepted state when failed
-  double t = 0;  // t_end, or the time of the last accepted state when failed
+  std::array<double, D> x{};  // at t_end, or the last accepted state when failed or stopped
+  double t = 0;  // t_end, or the time of the last accepted state when failed or stopped
   long steps = 0, rejected_steps = 0;
+  bool stopped = false;  // a step hook ended it before t_end (t, x: that step's end)
   // Right-hand side evaluations the scalar stepper makes for this trajectory
   // (DOP853: its dense output's extra stages once per step that served an
   // output or t_end); the batch evaluates more for lanes that need none.
@@ -65,8 +67,50 @@ template <int D>
 using BatchOutputCheck =
     std::function<std::optional<Failure>(long id, double t, const std::array<double, D>& x)>;
 
+// One accepted step of a trajectory (the task's id), from (t_prev, x_prev)
+// to (t, x), as a step hook sees it.
+template <int D>
+struct BatchStep {
+  long id = 0;
+  double t_prev = 0, t = 0;
+  std::array<double, D> x_prev{}, x{};
+};
+
+// The dense output of the step being looked at, at a time within [t_prev, t]:
+// bitwise what the scalar stepper's dense(t) gives after the same step, the
+// whole state or one component (for a search that needs only one).
+template <int D>
+class BatchDense {
+ public:
+  virtual std::array<double, D> operator()(double t) const = 0;
+  virtual double component(int i, double t) const = 0;
+
+ protected:
+  ~BatchDense() = default;
+};
+
+// What a step hook makes of the step it looked at.
+struct BatchStepVerdict {
+  bool stop = false;               // end the trajectory at this step's end
+  std::optional<Failure> failure;  // end it here, failed
+};
+
+// Sees every accepted step (after the step's outputs): `wants_dense` says
+// whether this step's dense output is needed, and for the steps that need it
+// `look` is handed the step and its dense output. The dense coefficients of
+// all lanes are computed once per attempt, and only when some lane needs them
+// (an output, t_end or the hook), so a hook that asks on few steps costs
+// little. Both are called from the thread running the batch, with the task's
+// id in the step.
+template <int D>
+struct BatchStepHook {
+  std::function<bool(const BatchStep<D>& step)> wants_dense;
+  std::function<BatchStepVerdict(const BatchStep<D>& step, const BatchDense<D>& dense)> look;
+  explicit operator bool() const { return bool(wants_dense); }
+};
+
 // Told, with the task's id, when a trajectory takes a lane and when it ends
-// (reached t_end or failed; its result complete), from the thread running the
+// (reached t_end, failed or stopped; its result complete), from the thread running the
 // batch: so that a caller can use each result as soon as it is there.
 template <int D>
 struct BatchEvents {
@@ -182,12 +226,16 @@ class BatchEmbedded {
 
   // Throws std::invalid_argument for the options EmbeddedRk refuses.
   BatchEmbedded(Sys sys, const Kernels& kernels, AdaptiveOptions opts = {},
-                BatchOutputCheck<D> check = {}, BatchEvents<D> events = {})
+                BatchOutputCheck<D> check = {}, BatchEvents<D> events = {},
+                BatchStepHook<D> hook = {})
       : sys_(std::move(sys)),
         kernels_(kernels),
         opts_(opts),
         check_(std::move(check)),
-        events_(std::move(events)) {
+        events_(std::move(events)),
+        hook_(std::move(hook)) {
+    if (hook_ && !hook_.look)
+      throw std::invalid_argument("batch step hook: wants_dense without look");
     EmbeddedRk<Probe, Tableau> validate(Probe{}, opts_);  // the very checks of the scalar stepper
     fac_min_ = opts_.fac_min < 0 ? Tableau::default_fac_min : opts_.fac_min;
     fac_max_ = opts_.fac_max < 0 ? Tableau::default_fac_max : opts_.fac_max;
@@ -218,18 +266,40 @@ class BatchEmbedded {
   bool decide(int l);  // true when accepted
   double initial_step(int l) const;
   bool emit_outputs(int l);  // false when the output check failed the trajectory
-  double dense_used(int l, int i, double t);
+  bool hook_asks(int l);     // fills step_[l]; whether the hook wants its dense output
+  bool hook_looks(int l);    // false when the hook ended the trajectory
+  std::array<double, D> dense_used(int l, double t);
+  void count_dense(int l);
   void finish(int l, std::optional<Failure> failure);
   void fail(int l, FailureKind kind, std::string detail) {
     finish(l, Failure{L_->t[l], name, kind, std::move(detail)});
   }
-  double dense(int l, int i, double t) const {
-    const double s = (t - L_->t_prev[l]) / L_->h_last[l];
+  double dense(int l, int i, double s) const {  // s: (t - t_prev) / h_last
     const double s1 = 1.0 - s;
     double r = L_->cont[M - 1][i][l];
     for (int j = M - 2; j >= 0; --j) r = L_->cont[j][i][l] + ((j % 2 == 0) ? s : s1) * r;
     return r;
   }
+  std::array<double, D> dense(int l, double t) const {
+    const double s = (t - L_->t_prev[l]) / L_->h_last[l];
+    std::array<double, D> x;
+    for (int i = 0; i < D; ++i) x[std::size_t(i)] = dense(l, i, s);
+    return x;
+  }
+  // Lane l's dense output, for a step hook (counted as used, as dense_used).
+  class LaneDense final : public BatchDense<D> {
+   public:
+    LaneDense(BatchEmbedded& b, int l) : b_(b), l_(l) {}
+    std::array<double, D> operator()(double t) const override { return b_.dense_used(l_, t); }
+    double component(int i, double t) const override {
+      b_.count_dense(l_);
+      return b_.dense(l_, i, (t - b_.L_->t_prev[l_]) / b_.L_->h_last[l_]);
+    }
+
+   private:
+    BatchEmbedded& b_;
+    int l_;
+  };
   double err_power(double err) const {
     if (expo_ == 0.125) return 1.0 / std::sqrt(std::sqrt(std::sqrt(err)));
     return std::exp(-expo_ * std::log(err));
@@ -240,6 +310,7 @@ class BatchEmbedded {
   AdaptiveOptions opts_;
   BatchOutputCheck<D> check_;
   BatchEvents<D> events_;
+  BatchStepHook<D> hook_;
   double fac_min_, fac_max_, beta_, expo_;
 
   std::unique_ptr<Lanes> L_;
@@ -251,6 +322,8 @@ class BatchEmbedded {
   long attempts_[W];
   int consecutive_rejects_[W], nonfinite_trials_[W];
   bool last_rejected_[W], accepted_[W], stepped_[W];
+  bool hook_dense_[W];     // the hook asked for this step's dense output
+  BatchStep<D> step_[W];   // the step the hook is shown
   bool dense_counted_[W];  // this step's dense output evaluations are counted
   double err_pow_[W];      // err_power of the attempt's error
 };
@@ -275,14 +348,15 @@ auto BatchEmbedded<Sys, W, Tableau>::run(const std::vector<BatchTask<D>>& tasks)
       accepted_[l] = task_[l] >= 0 && decide(l);
       if (!accepted_[l]) continue;
       const auto& task = queue_->task(task_[l]);
+      hook_dense_[l] = hook_ && hook_asks(l);
       need_dense =
-          need_dense || L_->t[l] >= task.t_end ||
+          need_dense || hook_dense_[l] || L_->t[l] >= task.t_end ||
           (next_out_[l] < task.out_times.size() && task.out_times[next_out_[l]] <= L_->t[l]);
     }
     if (need_dense) kernels_.dense(*L_, sys_);
     for (int l = 0; l < W; ++l) {
       if (!accepted_[l]) continue;
-      if (!emit_outputs(l)) {
+      if (!emit_outputs(l) || (hook_dense_[l] && !hook_looks(l))) {
         load(l);
         continue;
       }
@@ -320,6 +394,9 @@ bool BatchEmbedded<Sys, W, Tableau>::start(int l) {
   if (events_.started) events_.started(task.id);
   L_->t[l] = L_->t_prev[l] = task.t0;
   for (int i = 0; i < D; ++i) L_->x[i][l] = L_->x_prev[i][l] = task.x0[std::size_t(i)];
+  step_[l].id = task.id;
+  step_[l].t = task.t0;
+  step_[l].x = task.x0;  // the first step's start
   h_next_[l] = opts_.h_init > 0 ? std::min(opts_.h_init, opts_.h_max) : 0.0;
   log_err_old_[l] = kLogErrFloor;
   attempts_[l] = 0;
@@ -449,17 +526,21 @@ bool BatchEmbedded<Sys, W, Tableau>::decide(int l) {
   return false;
 }
 
-// Component i at t of lane l's last step (its dense output), counting the
+// The state at t on lane l's last step (its dense output), counting the
 // evaluations of the continuous extension once per step, as EmbeddedRk's
 // lazy dense output does; x itself before the first step.
 template <BatchSystem Sys, int W, class Tableau>
-double BatchEmbedded<Sys, W, Tableau>::dense_used(int l, int i, double t) {
-  if (!stepped_[l]) return L_->x[i][l];
-  if (!dense_counted_[l]) {
-    queue_->result(task_[l]).rhs_evals += N - Tableau::stages - 1;
-    dense_counted_[l] = true;
-  }
-  return dense(l, i, t);
+auto BatchEmbedded<Sys, W, Tableau>::dense_used(int l, double t) -> std::array<double, D> {
+  if (!stepped_[l]) return batch::lane(L_->x, l);
+  count_dense(l);
+  return dense(l, t);
+}
+
+template <BatchSystem Sys, int W, class Tableau>
+void BatchEmbedded<Sys, W, Tableau>::count_dense(int l) {
+  if (dense_counted_[l]) return;
+  queue_->result(task_[l]).rhs_evals += N - Tableau::stages - 1;
+  dense_counted_[l] = true;
 }
 
 template <BatchSystem Sys, int W, class Tableau>
@@ -469,8 +550,7 @@ bool BatchEmbedded<Sys, W, Tableau>::emit_outputs(int l) {
   for (; next_out_[l] < task.out_times.size(); ++next_out_[l]) {
     const double t = task.out_times[next_out_[l]];
     if (!(t <= L_->t[l])) break;
-    std::array<double, D> x;
-    for (int i = 0; i < D; ++i) x[std::size_t(i)] = dense_used(l, i, t);
+    const std::array<double, D> x = dense_used(l, t);
     if (check_) {
       if (auto failure = check_(task.id, t, x)) {
         finish(l, std::move(*failure));
@@ -483,15 +563,35 @@ bool BatchEmbedded<Sys, W, Tableau>::emit_outputs(int l) {
 }
 
 template <BatchSystem Sys, int W, class Tableau>
+bool BatchEmbedded<Sys, W, Tableau>::hook_asks(int l) {
+  // The step starts where the lane's last one ended (or at the start).
+  BatchStep<D>& step = step_[l];
+  step.t_prev = step.t;
+  step.x_prev = step.x;
+  step.t = L_->t[l];
+  step.x = batch::lane(L_->x, l);
+  return hook_.wants_dense(step);
+}
+
+template <BatchSystem Sys, int W, class Tableau>
+bool BatchEmbedded<Sys, W, Tableau>::hook_looks(int l) {
+  BatchStepVerdict verdict = hook_.look(step_[l], LaneDense(*this, l));
+  if (!verdict.failure && !verdict.stop) return true;
+  if (!verdict.failure) queue_->result(task_[l]).stopped = true;
+  finish(l, std::move(verdict.failure));
+  return false;
+}
+
+template <BatchSystem Sys, int W, class Tableau>
 void BatchEmbedded<Sys, W, Tableau>::finish(int l, std::optional<Failure> failure) {
   const auto& task = queue_->task(task_[l]);
   auto& result = queue_->result(task_[l]);
-  if (failure) {
+  if (failure || result.stopped) {
     result.t = L_->t[l];
     result.x = batch::lane(L_->x, l);
   } else {
     result.t = task.t_end;
-    for (int i = 0; i < D; ++i) result.x[std::size_t(i)] = dense_used(l, i, task.t_end);
+    result.x = dense_used(l, task.t_end);
   }
   result.failure = std::move(failure);
   if (events_.ended) events_.ended(task.id, result);

@@ -61,12 +61,13 @@ std::vector<DirectBatchResult> run(const DirectBatchSystem& sys,
                                    const std::vector<DirectBatchTask>& tasks,
                                    const DirectBatchSettings& settings) {
   if (settings.method == BatchMethod::rk4) {
-    if (settings.check || settings.events.started || settings.events.ended)
-      throw std::invalid_argument("batch rk4: no output check or events (dop853 only)");
+    if (settings.check || settings.events.started || settings.events.ended || settings.step_hook)
+      throw std::invalid_argument("batch rk4: no output check, events or step hook (dop853 only)");
     return numerics::BatchRk4<DirectBatchSystem, W>(sys, kernels.rk4, settings.rk4).run(tasks);
   }
   return numerics::BatchEmbedded<DirectBatchSystem, W, numerics::Dop853Tableau>(
-             sys, kernels.dop853, settings.adaptive, settings.check, settings.events)
+             sys, kernels.dop853, settings.adaptive, settings.check, settings.events,
+             settings.step_hook)
       .run(tasks);
 }
 

@@ -28,6 +28,9 @@ struct DirectBatchSettings {
   // integrating it.
   numerics::BatchOutputCheck<6> check;
   numerics::BatchEvents<6> events;
+  // dop853 only: sees every accepted step and may look into its dense output
+  // (numerics/batch_driver.hpp), from the thread integrating it.
+  numerics::BatchStepHook<6> step_hook;
 };
 
 using DirectBatchTask = numerics::BatchTask<6>;

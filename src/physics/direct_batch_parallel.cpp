@@ -23,8 +23,11 @@ std::vector<DirectBatchResult> integrate_direct_batch_parallel(
   integrate_direct_batch(body, {}, fixed);
 
   // Chunks small enough to balance the threads, large enough that each batch
-  // keeps its lanes busy most of the time.
-  const std::size_t chunk = std::max<std::size_t>(64, tasks.size() / (8 * std::size_t(threads)));
+  // keeps its lanes busy most of the time; with few tasks (a section's
+  // orbits), an equal share for each thread, so that every thread has some.
+  const std::size_t share = (tasks.size() + std::size_t(threads) - 1) / std::size_t(threads);
+  const std::size_t chunk = std::max<std::size_t>(
+      {1, std::min<std::size_t>(64, share), tasks.size() / (8 * std::size_t(threads))});
   std::vector<DirectBatchResult> results(tasks.size());
   std::atomic<std::size_t> next{0};
   std::exception_ptr error;

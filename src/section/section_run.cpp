@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <atomic>
+#include <stdexcept>
 #include <thread>
 
+#include "io/bad_input.hpp"
+#include "numerics/simd_path.hpp"
 #include "physics/format.hpp"
 
 namespace epviz::section {
@@ -35,31 +38,69 @@ long run_count(const SectionJob& job, std::size_t starts) {
 
 std::vector<OrbitResult> run_section(const SectionJob& job,
                                      const std::vector<physics::InitialState>& starts, int threads,
-                                     std::optional<shard::ItemRange> runs) {
+                                     std::optional<shard::ItemRange> runs, bool batched) {
   const shard::ItemRange range = runs.value_or(shard::ItemRange{0, run_count(job, starts.size())});
   std::vector<OrbitResult> results(std::size_t(range.size()));
-  // Orbits differ in cost (a slow crossing rate means a long run), so each
-  // thread takes the next orbit not yet taken rather than a fixed share.
+  std::vector<sim::RunSpec> specs(results.size());
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const SectionRun run = section_run_of(range.first + long(i), starts.size());
+    OrbitResult& r = results[i];
+    r.orbit = int(run.start) + 1;
+    r.method = run.method;
+    r.start = starts[run.start];
+    specs[i] = orbit_run(job, job.methods[run.method], r.start);
+  }
+  const int n = std::max(1, std::min<int>(threads, int(results.size())));
+  const auto on_batch = [&](std::size_t i) { return batched && sim::sections_batched(specs[i]); };
+  // EPVIZ_SIMD is input: refused as bad input before any orbit runs.
+  for (std::size_t i = 0; i < results.size(); ++i)
+    if (on_batch(i)) {
+      try {
+        numerics::chosen_simd_path();
+      } catch (const std::invalid_argument& e) {
+        throw io::BadInput(e.what());
+      }
+      break;
+    }
+
+  // The batched orbits first, method by method (one body, tolerance and step
+  // budget each), every thread running batches of them.
+  for (std::size_t m = 0; m < job.methods.size(); ++m) {
+    std::vector<std::size_t> mine;
+    std::vector<sim::RunSpec> batch;
+    for (std::size_t i = 0; i < results.size(); ++i)
+      if (results[i].method == m && on_batch(i)) {
+        mine.push_back(i);
+        batch.push_back(specs[i]);
+      }
+    if (batch.empty()) continue;
+    auto found = sim::section_crossings_batched(batch, job.surface, job.crossings, n);
+    for (std::size_t k = 0; k < mine.size(); ++k) {
+      results[mine[k]].crossings = std::move(found[k].crossings);
+      results[mine[k]].failure = std::move(found[k].failure);
+    }
+  }
+
+  // Then the others, one orbit at a time. Orbits differ in cost (a slow
+  // crossing rate means a long run), so each thread takes the next orbit not
+  // yet taken rather than a fixed share.
+  std::vector<std::size_t> scalar;
+  for (std::size_t i = 0; i < results.size(); ++i)
+    if (!on_batch(i)) scalar.push_back(i);
   std::atomic<std::size_t> next{0};
   auto work = [&] {
-    for (std::size_t i = next++; i < results.size(); i = next++) {
-      const SectionRun run = section_run_of(range.first + long(i), starts.size());
-      OrbitResult& r = results[i];
-      r.orbit = int(run.start) + 1;
-      r.method = run.method;
-      r.start = starts[run.start];
+    for (std::size_t k = next++; k < scalar.size(); k = next++) {
+      OrbitResult& r = results[scalar[k]];
       try {
-        r.crossings = sim::section_crossings(orbit_run(job, job.methods[run.method], r.start),
-                                             job.surface, job.crossings);
+        r.crossings = sim::section_crossings(specs[scalar[k]], job.surface, job.crossings);
       } catch (const numerics::IntegrationError& e) {
         r.failure = e.failure();
         r.crossings.clear();
       }
     }
   };
-  const int n = std::max(1, std::min<int>(threads, int(results.size())));
   std::vector<std::thread> pool;
-  for (int t = 1; t < n; ++t) pool.emplace_back(work);
+  for (int t = 1; t < std::min<int>(n, int(scalar.size())); ++t) pool.emplace_back(work);
   work();
   for (auto& t : pool) t.join();
   return results;

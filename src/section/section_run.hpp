@@ -1,5 +1,7 @@
 #pragma once
-// A Poincaré section's orbits, run independently on a pool of threads.
+// A Poincaré section's orbits, run independently on a pool of threads: the
+// dop853 orbits side by side in the lanes of the batch integrator
+// (sim::section_crossings_batched), the others one at a time.
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,10 +29,15 @@ long run_count(const SectionJob& job, std::size_t starts);
 
 // One result per run (section_run_of) of `runs` (default: all), in their
 // order, computed by `threads` threads (at least 1); an orbit's numerical
-// failure ends that orbit only.
+// failure ends that orbit only. The crossings are bitwise those of
+// sim::section_crossings run on each orbit alone, whichever path takes it.
+// With `batched` false every orbit takes the scalar path (for comparisons).
+// Throws io::BadInput, before any orbit runs, for an EPVIZ_SIMD naming no
+// path of this CPU when some orbit would take the batch.
 std::vector<OrbitResult> run_section(const SectionJob& job,
                                      const std::vector<physics::InitialState>& starts, int threads,
-                                     std::optional<shard::ItemRange> runs = std::nullopt);
+                                     std::optional<shard::ItemRange> runs = std::nullopt,
+                                     bool batched = true);
 
 // The failed orbits, one line: how many, and the first one's orbit number,
 // start (and method, when there are several) and failure ("orbit 3 from omega

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
@@ -11,6 +12,7 @@
 #include "numerics/rk4.hpp"
 #include "numerics/splitting.hpp"
 #include "physics/direct.hpp"
+#include "physics/direct_batch.hpp"
 #include "physics/free_rigid_body_flow.hpp"
 #include "sim/drift.hpp"
 
@@ -36,7 +38,11 @@ constexpr std::array<std::pair<CrossingDirection, std::string_view>, 3> kDirecti
 
 using State = physics::DirectSystem::State;
 
-double level_of(const SectionSurface& s, const State& x) { return x[int(s.function)] - s.value; }
+// The section function of a state (State, or a batch lane's std::array).
+template <class X>
+double level_of(const SectionSurface& s, const X& x) {
+  return x[std::size_t(s.function)] - s.value;
+}
 
 bool crosses(CrossingDirection d, double before, double after) {
   const bool up = before < 0.0 && after >= 0.0;
@@ -95,22 +101,53 @@ class FixedSteps {
   mutable bool have_derivatives_ = false;
 };
 
-// The root of the section function on [t0, t1] (g0 = g(t0) and g1 = g(t1) of
-// opposite signs, or g1 = 0) along the stepper's dense output: regula falsi
-// with the Illinois modification, which keeps the bracket and converges
-// superlinearly where plain regula falsi stalls on one end.
+// A step's dense output as the crossing search reads it, at times within the
+// step: the section function (all the search needs while it iterates) and
+// the state.
+class DenseOutput {
+ public:
+  virtual double level(double t) = 0;
+  virtual State state(double t) = 0;
+
+ protected:
+  ~DenseOutput() = default;
+};
+
+// A scalar stepper's: its dense output gives the whole state, which is kept
+// for the state asked at the same time.
 template <class Stepper>
-std::pair<double, State> locate(const Stepper& stepper, const SectionSurface& s, double t0,
-                                double g0, double t1, double g1) {
-  State x = stepper.state();
+class StepperDense final : public DenseOutput {
+ public:
+  StepperDense(const Stepper& stepper, const SectionSurface& surface)
+      : stepper_(stepper), surface_(surface) {}
+  double level(double t) override {
+    t_ = t;
+    x_ = stepper_.dense(t);
+    return level_of(surface_, x_);
+  }
+  State state(double t) override { return t == t_ ? x_ : State(stepper_.dense(t)); }
+
+ private:
+  const Stepper& stepper_;
+  const SectionSurface& surface_;
+  double t_ = std::numeric_limits<double>::quiet_NaN();
+  State x_;
+};
+
+// The root of the section function on [t0, t1] (g0 = g(t0) and g1 = g(t1) of
+// opposite signs, or g1 = 0; x1 the state at t1) along the step's dense
+// output: regula falsi with the Illinois modification, which keeps the
+// bracket and converges superlinearly where plain regula falsi stalls on one
+// end.
+std::pair<double, State> locate(DenseOutput& dense, double t0, double g0, double t1, double g1,
+                                const State& x1) {
   double t = t1;
-  if (g1 == 0.0) return {t, x};
+  if (g1 == 0.0) return {t, x1};
   int kept_side = 0;  // which end the last iteration kept: +1 t1, -1 t0
   for (int i = 0; i < 200; ++i) {
     t = (t0 * g1 - t1 * g0) / (g1 - g0);
     if (!(t > t0 && t < t1)) t = 0.5 * (t0 + t1);
-    x = stepper.dense(t);
-    const double g = level_of(s, x);
+    const double g = dense.level(t);
     if (std::abs(g) <= 0.25 * kSectionResidual || std::nextafter(t0, t1) >= t1) break;
     if ((g < 0.0) == (g0 < 0.0)) {
       t0 = t;
@@ -124,41 +161,142 @@ std::pair<double, State> locate(const Stepper& stepper, const SectionSurface& s,
       kept_side = -1;
     }
   }
-  return {t, x};
+  return {t, dense.state(t)};
 }
 
-template <class Stepper>
-std::vector<Crossing> run_section(Stepper stepper, const RunSpec& run,
-                                  const SectionSurface& surface, int max_crossings) {
-  // The stepper refuses non-finite states itself; the drift limit is checked
-  // on what the section keeps, every crossing, and on the last step's end
-  // (a check at every step end made sections about 15 % slower).
-  const MotionCheck check(run.body, run.initial, run.max_drift);
-  const std::string method(name(run.method));
-  auto keep_motion = [&](double t, const State& x) {
+// One orbit's section, shown its steps in turn by either integration path
+// (the scalar stepper here, the batch's step hook below), so that both find
+// the same crossings from the same steps. The drift limit is checked on what
+// the section keeps, every crossing, and on the last step's end (a check at
+// every step end made sections about 15 % slower).
+class OrbitSection {
+ public:
+  OrbitSection(const RunSpec& run, const SectionSurface& surface, int max_crossings)
+      : surface_(surface),
+        check_(run.body, run.initial, run.max_drift),
+        method_(name(run.method)),
+        t_end_(run.t_end),
+        max_crossings_(max_crossings) {}
+
+  double level(const State& x) const { return level_of(surface_, x); }
+  bool crosses(double g0, double g1) const { return sim::crosses(surface_.direction, g0, g1); }
+  // Enough crossings, or one past t_end: the orbit goes no further.
+  bool done() const { return done_ || int(found_.size()) >= max_crossings_; }
+
+  // The crossing in the step from (t0, g0) to (t1, g1) (crosses(g0, g1)),
+  // located on its dense output, checked and kept; its failure, if any.
+  std::optional<numerics::Failure> take(double t0, double g0, double t1, double g1, const State& x1,
+                                        DenseOutput& dense) {
+    const auto [t, x] = locate(dense, t0, g0, t1, g1, x1);
+    if (t > t_end_) {
+      done_ = true;
+      return std::nullopt;
+    }
+    if (auto failure = motion_failure(t, x)) return failure;
+    found_.push_back({int(found_.size()) + 1, t, x.template head<3>(), x.template tail<3>()});
+    return std::nullopt;
+  }
+
+  // The check of the last step's end.
+  std::optional<numerics::Failure> motion_failure(double t, const State& x) const {
     Sample s;
     s.t = t;
     s.omega = x.head<3>();
     s.gamma = x.tail<3>();
-    if (auto failure = check.failure(s, method)) throw numerics::IntegrationError(*failure);
+    return check_.failure(s, method_);
+  }
+
+  std::vector<Crossing>& crossings() { return found_; }
+
+ private:
+  SectionSurface surface_;
+  MotionCheck check_;
+  std::string method_;
+  double t_end_;
+  int max_crossings_;
+  bool done_ = false;
+  std::vector<Crossing> found_;
+};
+
+template <class Stepper>
+std::vector<Crossing> run_section(Stepper stepper, const RunSpec& run,
+                                  const SectionSurface& surface, int max_crossings) {
+  OrbitSection section(run, surface, max_crossings);
+  const auto fail_on = [](std::optional<numerics::Failure> failure) {
+    if (failure) throw numerics::IntegrationError(*failure);
   };
-  std::vector<Crossing> found;
+  StepperDense<Stepper> dense(stepper, surface);
   stepper.init(0.0, physics::DirectSystem::pack(run.initial));
-  double g_prev = level_of(surface, stepper.state());
-  while (int(found.size()) < max_crossings && stepper.t() < run.t_end) {
+  double g_prev = section.level(stepper.state());
+  while (!section.done() && stepper.t() < run.t_end) {
     const double t0 = stepper.t();
     stepper.step();
-    const double g1 = level_of(surface, stepper.state());
-    if (crosses(surface.direction, g_prev, g1)) {
-      const auto [t, x] = locate(stepper, surface, t0, g_prev, stepper.t(), g1);
-      if (t > run.t_end) break;
-      keep_motion(t, x);
-      found.push_back({int(found.size()) + 1, t, x.template head<3>(), x.template tail<3>()});
-    }
+    const double g1 = section.level(stepper.state());
+    if (section.crosses(g_prev, g1))
+      fail_on(section.take(t0, g_prev, stepper.t(), g1, stepper.state(), dense));
     g_prev = g1;
   }
-  keep_motion(stepper.t(), stepper.state());
-  return found;
+  fail_on(section.motion_failure(stepper.t(), stepper.state()));
+  return std::move(section.crossings());
+}
+
+State state_of(const std::array<double, 6>& x) {
+  State s;
+  for (int i = 0; i < 6; ++i) s[i] = x[std::size_t(i)];
+  return s;
+}
+
+// A batch lane's: the section function from the one component it is of.
+class LaneDense final : public DenseOutput {
+ public:
+  LaneDense(const numerics::BatchDense<6>& dense, const SectionSurface& surface)
+      : dense_(dense), surface_(surface) {}
+  double level(double t) override {
+    return level_of(surface_, Component{dense_.component(int(surface_.function), t)});
+  }
+  State state(double t) override { return state_of(dense_(t)); }
+
+ private:
+  // One component standing for the state it is of, for level_of.
+  struct Component {
+    double value;
+    double operator[](std::size_t) const { return value; }
+  };
+  const numerics::BatchDense<6>& dense_;
+  const SectionSurface& surface_;
+};
+
+// The step hook that shows every orbit's steps to its OrbitSection (sections
+// indexed by the task's id), as run_section's loop does: the dense output is
+// asked for where a step holds a crossing, and at the last step, whose end
+// is checked. The sign test of every step is made on the lane's numbers
+// (OrbitSection::level's arithmetic on the same values), without touching
+// the orbit's section.
+numerics::BatchStepHook<6> section_hook(std::vector<OrbitSection>& sections,
+                                        const std::vector<RunSpec>& runs,
+                                        const SectionSurface& surface) {
+  numerics::BatchStepHook<6> hook;
+  hook.wants_dense = [&surface, t_end = runs.front().t_end](const numerics::BatchStep<6>& step) {
+    return crosses(surface.direction, level_of(surface, step.x_prev), level_of(surface, step.x)) ||
+           step.t >= t_end;
+  };
+  hook.look = [&](const numerics::BatchStep<6>& step, const numerics::BatchDense<6>& dense) {
+    OrbitSection& section = sections[std::size_t(step.id)];
+    const State x1 = state_of(step.x);
+    const double g0 = section.level(state_of(step.x_prev)), g1 = section.level(x1);
+    numerics::BatchStepVerdict verdict;
+    if (section.crosses(g0, g1)) {
+      LaneDense at(dense, surface);
+      verdict.failure = section.take(step.t_prev, g0, step.t, g1, x1, at);
+      if (verdict.failure) return verdict;
+    }
+    if (section.done() || step.t >= runs.front().t_end) {
+      verdict.failure = section.motion_failure(step.t, x1);
+      verdict.stop = true;
+    }
+    return verdict;
+  };
+  return hook;
 }
 
 }  // namespace
@@ -226,6 +364,48 @@ std::vector<Crossing> section_crossings(const RunSpec& run, const SectionSurface
           numerics::Composition4<ExactSplitSystem>(ExactSplitSystem(run.body), "exact-split4"));
   }
   throw std::invalid_argument("unknown method");
+}
+
+}  // namespace epviz::sim
+
+namespace epviz::sim {
+
+bool sections_batched(const RunSpec& run) { return run.method == Method::dop853; }
+
+std::vector<OrbitCrossings> section_crossings_batched(const std::vector<RunSpec>& runs,
+                                                      const SectionSurface& surface,
+                                                      int max_crossings, int threads) {
+  std::vector<OrbitCrossings> out(runs.size());
+  if (runs.empty()) return out;
+  const RunSpec& first = runs.front();
+  std::vector<OrbitSection> sections;
+  std::vector<physics::DirectBatchTask> tasks;
+  sections.reserve(runs.size());
+  tasks.reserve(runs.size());
+  for (const RunSpec& run : runs) {
+    if (!sections_batched(run) || run.tol != first.tol || run.max_steps != first.max_steps ||
+        run.t_end != first.t_end || run.body.inertia != first.body.inertia ||
+        run.body.com != first.body.com || run.body.weight != first.body.weight)
+      throw std::invalid_argument(
+          "section_crossings_batched: every run dop853 with one body, tolerance, step budget and "
+          "t_end");
+    sections.emplace_back(run, surface, max_crossings);
+    tasks.push_back(physics::direct_batch_task(run.initial, run.t_end));
+    tasks.back().id = long(tasks.size()) - 1;
+  }
+  // section_crossings's dop853 options.
+  physics::DirectBatchSettings settings;
+  settings.method = physics::BatchMethod::dop853;
+  settings.adaptive.rtol = first.tol;
+  settings.adaptive.atol = first.tol;
+  settings.adaptive.max_steps = first.max_steps;
+  settings.step_hook = section_hook(sections, runs, surface);
+  auto results = physics::integrate_direct_batch_parallel(first.body, tasks, settings, threads);
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    out[i].failure = std::move(results[i].failure);
+    if (!out[i].failure) out[i].crossings = std::move(sections[i].crossings());
+  }
+  return out;
 }
 
 }  // namespace epviz::sim

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "numerics/failure.hpp"
 #include "physics/body.hpp"
 #include "sim/run_spec.hpp"
 
@@ -56,5 +57,29 @@ struct Crossing {
 // (a failed step, a non-finite state, drift past the limit).
 std::vector<Crossing> section_crossings(const RunSpec& run, const SectionSurface& surface,
                                         int max_crossings);
+
+// Whether section_crossings_batched gives `run` the crossings
+// section_crossings gives it: dop853 (the batch integrator's method). Other
+// methods keep the scalar path.
+bool sections_batched(const RunSpec& run);
+
+// One orbit's crossings, or its failure (then its crossings are no result).
+struct OrbitCrossings {
+  std::vector<Crossing> crossings;
+  std::optional<numerics::Failure> failure;
+};
+
+// section_crossings of every run, integrated side by side by the batch
+// integrator (physics/direct_batch.hpp, on the path EPVIZ_SIMD or the CPU
+// chooses) on `threads` threads: each orbit a lane, every step of it shown to
+// the same crossing search, which locates a crossing on the lane's dense
+// output, bitwise the scalar stepper's. So the crossings and failures are
+// bitwise those of section_crossings. The runs must all be sections_batched
+// with one body, tolerance, step budget and t_end (std::invalid_argument
+// otherwise);
+// an orbit's failure ends that orbit only.
+std::vector<OrbitCrossings> section_crossings_batched(const std::vector<RunSpec>& runs,
+                                                      const SectionSurface& surface,
+                                                      int max_crossings, int threads);
 
 }  // namespace epviz::sim

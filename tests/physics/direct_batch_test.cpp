@@ -315,6 +315,112 @@ TEST(DirectBatch, InvariantsAreConserved) {
   }
 }
 
+// What a step hook saw of one trajectory: every step's ends, and the dense
+// output at the middle of the steps it looked into.
+struct HookLog {
+  std::vector<std::array<double, 6>> ends;  // x_prev, x of each step
+  std::vector<double> times;                // t_prev, t of each step
+  std::vector<std::array<double, 6>> middles;
+  bool operator==(const HookLog&) const = default;
+};
+
+constexpr int kLookEvery = 3;  // the hook asks for the dense output of every third step
+constexpr long kStopped = 4, kStopAt = 9, kFailed = 8, kFailAt = 6;
+
+numerics::Failure hook_failure(double t) {
+  return numerics::Failure{t, "dop853", numerics::FailureKind::lost_motion, "hook"};
+}
+
+// The hook's trajectories driven by the scalar DOP853 alone: step after step
+// until t_end, the dense output of every third step read at its middle,
+// trajectory kStopped stopped and kFailed failed at their kStopAt-th and
+// kFailAt-th steps.
+DirectBatchResult hooked_alone(const DirectBatchTask& task, const numerics::AdaptiveOptions& opts,
+                               HookLog& log) {
+  numerics::Dop853<DirectSystem> s(DirectSystem(generic_body()), opts);
+  s.init(task.t0, test::to_state(task.x0));
+  DirectBatchResult r;
+  for (long n = 1; s.t() < task.t_end; ++n) {
+    log.times.push_back(s.t());
+    log.ends.push_back(test::to_array(s.state()));
+    s.step();
+    log.times.push_back(s.t());
+    log.ends.push_back(test::to_array(s.state()));
+    if (n % kLookEvery != 0) continue;
+    log.middles.push_back(test::to_array(s.dense(0.5 * (s.t_prev() + s.t()))));
+    if ((task.id == kStopped && n == kStopAt) || (task.id == kFailed && n == kFailAt)) {
+      r.stopped = task.id == kStopped;
+      if (task.id == kFailed) r.failure = hook_failure(s.t());
+      break;
+    }
+  }
+  r.t = r.stopped || r.failure ? s.t() : task.t_end;
+  r.x = test::to_array(r.stopped || r.failure ? s.state() : s.dense(task.t_end));
+  r.steps = s.stats().steps;
+  r.rejected_steps = s.stats().rejected_steps;
+  r.rhs_evals = s.stats().rhs_evals;
+  return r;
+}
+
+// A step hook sees every step of every lane, bitwise the scalar stepper's,
+// reads the dense output of the steps it asks for as the scalar stepper's
+// dense(t) (whole, or a component at a time), and ends a trajectory (stopped or failed) alone; the work counted
+// is the scalar run's, dense stages included where they were used.
+TEST(DirectBatch, AStepHookSeesEachLanesStepsAndDenseOutputAsAlone) {
+  auto tasks = mixed_tasks(13);
+  for (std::size_t i = 0; i < tasks.size(); ++i) {
+    tasks[i].id = long(i);
+    tasks[i].out_times.clear();
+  }
+  DirectBatchSettings settings;
+  settings.adaptive = tolerance(1e-9);
+  std::vector<HookLog> expected_logs(tasks.size()), logs;
+  std::vector<DirectBatchResult> expected;
+  for (std::size_t i = 0; i < tasks.size(); ++i)
+    expected.push_back(hooked_alone(tasks[i], settings.adaptive, expected_logs[i]));
+  ASSERT_TRUE(expected[kStopped].stopped);
+  ASSERT_TRUE(expected[kFailed].failure);
+  std::vector<long> seen;
+  settings.step_hook.wants_dense = [&](const numerics::BatchStep<6>& step) {
+    HookLog& log = logs[std::size_t(step.id)];
+    log.times.insert(log.times.end(), {step.t_prev, step.t});
+    log.ends.insert(log.ends.end(), {step.x_prev, step.x});
+    return ++seen[std::size_t(step.id)] % kLookEvery == 0;
+  };
+  settings.step_hook.look = [&](const numerics::BatchStep<6>& step,
+                                const numerics::BatchDense<6>& dense) {
+    const double middle = 0.5 * (step.t_prev + step.t);
+    const auto x = dense(middle);
+    logs[std::size_t(step.id)].middles.push_back(x);
+    for (int i = 0; i < 6; ++i)  // one component alone is the state's
+      EXPECT_EQ(test::bits(dense.component(i, middle)), test::bits(x[std::size_t(i)]));
+    numerics::BatchStepVerdict verdict;
+    const long n = seen[std::size_t(step.id)];
+    verdict.stop = step.id == kStopped && n == kStopAt;
+    if (step.id == kFailed && n == kFailAt) verdict.failure = hook_failure(step.t);
+    return verdict;
+  };
+  for (SimdPath path : paths_of_this_cpu()) {
+    for (int width : {1, 2, 4, 8}) {
+      settings.path = path;
+      settings.width = width;
+      logs.assign(tasks.size(), {});
+      seen.assign(tasks.size(), 0);
+      const auto batch = integrate_direct_batch(generic_body(), tasks, settings);
+      for (std::size_t i = 0; i < tasks.size(); ++i) {
+        EXPECT_TRUE(identical(batch[i], expected[i]))
+            << "trajectory " << i << ", path " << numerics::name(path) << ", " << width << " lanes";
+        EXPECT_EQ(batch[i].stopped, expected[i].stopped) << i;
+        EXPECT_TRUE(logs[i] == expected_logs[i])
+            << "what the hook saw of trajectory " << i << ", path " << numerics::name(path) << ", "
+            << width << " lanes";
+      }
+    }
+  }
+  settings.method = BatchMethod::rk4;  // which has no step hook
+  EXPECT_THROW(integrate_direct_batch(generic_body(), tasks, settings), std::invalid_argument);
+}
+
 // Two threads of W lanes each, taking chunks in turn: the same results, bit
 // for bit, as one batch (and so as each trajectory alone).
 TEST(DirectBatch, ParallelOverThreadsGivesTheSameResults) {
