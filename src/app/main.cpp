@@ -72,6 +72,13 @@ int main(int argc, char** argv) {
   epviz::render::set_gl_verbose(verbose);
 #endif
   try {
+    // EPVIZ_SIMD is input to every command that integrates in batches
+    // (sweep, section, render's clouds): checked before any of them starts.
+    try {
+      (void)epviz::numerics::chosen_simd_path();
+    } catch (const std::invalid_argument& e) {
+      throw epviz::io::BadInput(e.what());
+    }
     for (auto* sub : app.get_subcommands()) return commands.at(sub->get_name())();
   } catch (const epviz::io::BadInput& e) {
     std::fprintf(stderr, "epviz: error: %s\n", e.what());
