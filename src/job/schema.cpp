@@ -12,6 +12,8 @@
 #include "io/printable.hpp"
 #include "job/schema_entries.hpp"
 #include "scene/layers.hpp"
+#include "section/section_job.hpp"
+#include "sim/section.hpp"
 #include "scene/theme.hpp"
 
 namespace epviz::job {
@@ -172,6 +174,17 @@ void read_runs(io::ObjectReader& r, JobDocument& d) {
     o.finish();
     d.runs.push_back(std::move(run));
   }
+}
+
+// The section panel's keys for help: as a section file's (docs/sections.md).
+std::string section_keys_allowed() {
+  std::string s = "{\"function\": ";
+  for (auto c : sim::all_state_components()) {
+    if (c != sim::all_state_components().front()) s += "|";
+    s += sim::name(c);
+  }
+  s += ", \"value\", \"direction\": upward|downward|both, \"coords\": [two components]}";
+  return s;
 }
 
 std::string cloud_members_allowed() {
@@ -358,6 +371,28 @@ const std::vector<Job>& job_entries() {
             [](const JobDocument& d, Json& j) {
               if (d.scene.cloud.enabled()) j["radius"] = d.scene.cloud.radius;
             }},
+       }},
+      {{"section", ValueType::object, "", section_keys_allowed(),
+        "a Poincaré section panel beside the plane, filling as the run goes: a dot per "
+        "crossing of the surface \"function\" = \"value\" in \"direction\", at "
+        "\"coords\"; the keys, defaults and checks of a section file (docs/sections.md; "
+        "absent: no panel)"},
+       [](io::ObjectReader& r, JobDocument& d) {
+         if (auto o = r.object("section")) {
+           scene::SectionPanelSettings p;
+           section::read_surface(*o, p.surface);
+           p.coords = section::read_coords(*o, p.surface.function);
+           o->finish();
+           d.scene.section = p;
+         }
+       },
+       [](const JobDocument& d, Json& j) {
+         if (!d.scene.section) return;
+         const auto& p = *d.scene.section;
+         j["section"] = {{"function", sim::name(p.surface.function)},
+                         {"value", p.surface.value},
+                         {"direction", sim::name(p.surface.direction)},
+                         {"coords", {sim::name(p.coords[0]), sim::name(p.coords[1])}}};
        }},
       {{"plane", ValueType::object, "", "", "the Riccati (a, b) panel"},
        {},

@@ -88,6 +88,13 @@ FrameSource::FrameSource(const ScenePlan& plan, const SceneSettings& settings)
     for (int i = 0; i < plan.frames; ++i) times.push_back(plan.frame_time(i));
     cloud_ = std::make_unique<CloudRun>(plan.run, settings.cloud, times);
   }
+  // The section's crossings: found once, to each run's end, with its own
+  // method and tolerance (renders only, as the cloud).
+  if (settings.section && !plan.open_ended) {
+    std::vector<sim::RunSpec> runs{plan.run};
+    for (const auto& other : plan.others) runs.push_back(other.run);
+    section_ = std::make_unique<SectionCrossings>(*settings.section, runs);
+  }
 }
 
 void FrameSource::advance() {
@@ -161,6 +168,13 @@ Frame FrameSource::compose(int index) const {
   if (cloud_ && index < cloud_->frame_count()) {
     f.cloud = cloud_->frame(index, f.plane_extent);
     if (settings_.view == View::space) f.cloud->sphere.clear();  // its points are body-frame gamma
+  }
+
+  if (section_) {
+    const bool light = is_light(settings_.colours.background);
+    std::vector<Rgba> colours;
+    for (int i = 0; i < run_count(); ++i) colours.push_back(run_colour(i, light));
+    f.section = section_->panel_at(last.t, colours);
   }
 
   const auto& run = plan_.run;

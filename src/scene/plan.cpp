@@ -31,6 +31,7 @@ FrameLayout planned_layout(const SceneSettings& s, const std::vector<sim::RunSpe
   q.plane_extent = s.plane_extent;
   q.chart_height = runs.size() > 1 ? comparison_chart_height(s.height) : 0;
   q.legend_rows = runs.size() > 1 ? comparison_legend_rows(int(runs.size())) : 0;
+  q.section_panel = s.section.has_value();
   return frame_layout(q);
 }
 

@@ -12,6 +12,7 @@
 
 #include "physics/body.hpp"
 #include "physics/cases.hpp"
+#include "io/json_reader.hpp"
 #include "physics/level_set.hpp"
 #include "sim/section.hpp"
 
@@ -53,6 +54,16 @@ struct SectionJob {
   std::string png, svg;  // optional pictures of the crossings
   std::string hash;      // of the file's parsed content: the shards of one section share it
 };
+
+// The keys a section surface and its plot are given by, wherever one is read
+// (a section file; a render job's "section"), so that each has one name,
+// default and check. "function", "value", "direction" of `r`'s object into
+// `s` (the missing ones left as they are); the caller finishes `r`.
+void read_surface(io::ObjectReader& r, sim::SectionSurface& s);
+// The plot's axes where none are given (see SectionJob::coords).
+std::array<sim::StateComponent, 2> default_coords(sim::StateComponent surface);
+// "coords" of `r`'s object: two state components, default_coords(surface) when absent.
+std::array<sim::StateComponent, 2> read_coords(io::ObjectReader& r, sim::StateComponent surface);
 
 // Throws io::BadInput.
 SectionJob read_section_job(const std::filesystem::path& file);

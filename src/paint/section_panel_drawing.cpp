@@ -1,0 +1,74 @@
+#include "paint/section_panel_drawing.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include "paint/painter_common.hpp"
+
+namespace epviz::paint {
+
+render::PanelStyle column_panel_style(const scene::Theme& ink, float px) {
+  render::PanelStyle style;
+  style.background = to_glm(ink.panel_background);
+  style.frame = to_glm(ink.panel_frame);
+  style.grid = to_glm(ink.panel_grid);
+  style.axis = to_glm(ink.panel_axis);
+  style.text = to_glm(ink.panel_text);
+  style.tick_length = 4.0f * px;
+  style.frame_width = style.axis_width = 1.0f * px;
+  style.min_tick_spacing_px = 34.0f * px;
+  return style;
+}
+
+void draw_section_panel(render::DrawList& flat, const scene::SectionPanel& panel,
+                        const render::Viewport& area,
+                        const scene::Theme& ink, float px,
+                        const std::function<glm::vec2(const std::string&)>& measure) {
+  const auto& r = panel.range;
+  // Each axis its own scale: the coordinates may be of different kinds (an
+  // angular velocity against a component of gamma).
+  const render::Panel2D plot(area, {r[0], r[1], r[2], r[3]}, false);
+  render::PanelStyle style = column_panel_style(ink, px);
+  style.axis = {0, 0, 0, 0};  // the lines through 0 mean nothing special here
+  plot.draw_axes(flat, style);
+
+  // The dots, oldest first and run by run, so that the first run's newest lie on top.
+  auto colour_of = [&](std::size_t run) {
+    return panel.colours.empty() ? glm::vec4(1.0f)
+                                 : to_glm(panel.colours[std::min(run, panel.colours.size() - 1)]);
+  };
+  const float dot = 2.0f * px;
+  std::vector<render::ColouredVertex> dots;
+  for (std::size_t i = panel.runs.size(); i-- > 0;) {
+    const glm::vec4 colour = colour_of(i);
+    for (const auto& p : panel.runs[i])
+      dots.push_back({glm::vec3(plot.to_pixel({p.x(), p.y()}), 0.0f), colour});
+  }
+  if (!dots.empty()) flat.add_dots(dots, dot);
+  // The newest crossing of each run: a ringed marker in its colour.
+  for (std::size_t i = panel.runs.size(); i-- > 0;) {
+    if (panel.runs[i].empty()) continue;
+    const auto& p = panel.runs[i].back();
+    plot.draw_marker(flat, {p.x(), p.y()},
+                     {{}, colour_of(i), to_glm(ink.marker_edge), 4.0f * px, 1.2f * px});
+  }
+
+  // Above: what the section is, shortened to fit over the plot.
+  for (const std::string& title : {"Poincaré section " + panel.title, "section " + panel.title,
+                                   panel.title})
+    if (measure(title).x <= float(area.width) + 24.0f * px) {
+      plot.draw_text(flat, {0.5 * (r[0] + r[1]), r[3]},
+                     {{}, title, style.text, render::TextAnchor::bottom, {0, -6 * px}});
+      break;
+    }
+  // The axes' titles: x centred under the tick labels, y at the top left
+  // inside the plot, on the panel's background so that no dot hides it.
+  const float font = measure(panel.axes[0]).y;
+  flat.add_text({glm::vec3(float(area.x) + 0.5f * float(area.width),
+                           float(area.y + area.height) + style.tick_length + font + 4.0f * px, 0),
+                 panel.axes[0], style.text, render::TextAnchor::top});
+  flat.add_text({glm::vec3(float(area.x) + 3.0f * px, float(area.y) + 2.0f * px, 0), panel.axes[1],
+                 style.text, render::TextAnchor::top_left, {0, 0}, style.background});
+}
+
+}  // namespace epviz::paint
