@@ -12,9 +12,9 @@
 #include "io/printable.hpp"
 #include "job/schema_entries.hpp"
 #include "scene/layers.hpp"
+#include "scene/theme.hpp"
 #include "section/section_job.hpp"
 #include "sim/section.hpp"
-#include "scene/theme.hpp"
 
 namespace epviz::job {
 

@@ -21,8 +21,7 @@ render::PanelStyle column_panel_style(const scene::Theme& ink, float px) {
 }
 
 void draw_section_panel(render::DrawList& flat, const scene::SectionPanel& panel,
-                        const render::Viewport& area,
-                        const scene::Theme& ink, float px,
+                        const render::Viewport& area, const scene::Theme& ink, float px,
                         const std::function<glm::vec2(const std::string&)>& measure) {
   const auto& r = panel.range;
   // Each axis its own scale: the coordinates may be of different kinds (an
@@ -54,8 +53,8 @@ void draw_section_panel(render::DrawList& flat, const scene::SectionPanel& panel
   }
 
   // Above: what the section is, shortened to fit over the plot.
-  for (const std::string& title : {"Poincaré section " + panel.title, "section " + panel.title,
-                                   panel.title})
+  for (const std::string& title :
+       {"Poincaré section " + panel.title, "section " + panel.title, panel.title})
     if (measure(title).x <= float(area.width) + 24.0f * px) {
       plot.draw_text(flat, {0.5 * (r[0] + r[1]), r[3]},
                      {{}, title, style.text, render::TextAnchor::bottom, {0, -6 * px}});
@@ -67,8 +66,12 @@ void draw_section_panel(render::DrawList& flat, const scene::SectionPanel& panel
   flat.add_text({glm::vec3(float(area.x) + 0.5f * float(area.width),
                            float(area.y + area.height) + style.tick_length + font + 4.0f * px, 0),
                  panel.axes[0], style.text, render::TextAnchor::top});
-  flat.add_text({glm::vec3(float(area.x) + 3.0f * px, float(area.y) + 2.0f * px, 0), panel.axes[1],
-                 style.text, render::TextAnchor::top_left, {0, 0}, style.background});
+  flat.add_text({glm::vec3(float(area.x) + 3.0f * px, float(area.y) + 2.0f * px, 0),
+                 panel.axes[1],
+                 style.text,
+                 render::TextAnchor::top_left,
+                 {0, 0},
+                 style.background});
 }
 
 }  // namespace epviz::paint

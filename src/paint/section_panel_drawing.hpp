@@ -22,8 +22,7 @@ render::PanelStyle column_panel_style(const scene::Theme& ink, float px);
 // The panel into `area` (layout.section_area), its title above and its tick
 // labels and x title below. `measure` gives a text's size in pixels.
 void draw_section_panel(render::DrawList& flat, const scene::SectionPanel& panel,
-                        const render::Viewport& area,
-                        const scene::Theme& ink, float px,
+                        const render::Viewport& area, const scene::Theme& ink, float px,
                         const std::function<glm::vec2(const std::string&)>& measure);
 
 }  // namespace epviz::paint

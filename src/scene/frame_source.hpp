@@ -58,7 +58,7 @@ class FrameSource {
   long sample_index_ = 0;
   int frames_composed_ = 0;
   BodyShape shape_;
-  std::unique_ptr<CloudRun> cloud_;  // renders of jobs with a "cloud" only
+  std::unique_ptr<CloudRun> cloud_;            // renders of jobs with a "cloud" only
   std::unique_ptr<SectionCrossings> section_;  // renders of jobs with a "section" only
 };
 

@@ -62,7 +62,8 @@ FrameLayout layout_in_width(const LayoutRequest& q, int width) {
     const int margin_left = std::max(30, slot_width / 8),
               margin_right = std::max(10, slot_width / 20);
     auto side_for = [&](int margin_top) {
-      return std::min(slot_width - margin_left - margin_right, c.height - margin_top - margin_bottom);
+      return std::min(slot_width - margin_left - margin_right,
+                      c.height - margin_top - margin_bottom);
     };
     // The overlay takes the top of the panel's column when the plot keeps at
     // least 35 % of the height there (a quarter beside a section panel), so
@@ -151,9 +152,8 @@ FrameLayout frame_layout(const LayoutRequest& q) {
   const int reserved_left = std::clamp(q.reserved_left, 0, q.width - 16);
   FrameLayout l = layout_in_width(q, q.width - reserved_left);
   if (reserved_left == 0) return l;
-  for (auto* r :
-       {&l.view_3d, &l.panel_column, &l.plot_area, &l.chart_area, &l.legend_area, &l.caption_area,
-        &l.section_area})
+  for (auto* r : {&l.view_3d, &l.panel_column, &l.plot_area, &l.chart_area, &l.legend_area,
+                  &l.caption_area, &l.section_area})
     if (*r) (*r)->x += reserved_left;
   return l;
 }

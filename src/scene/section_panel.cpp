@@ -9,8 +9,7 @@
 namespace epviz::scene {
 namespace {
 
-Eigen::Vector2d plotted(const sim::Crossing& c,
-                        const std::array<sim::StateComponent, 2>& coords) {
+Eigen::Vector2d plotted(const sim::Crossing& c, const std::array<sim::StateComponent, 2>& coords) {
   return {sim::value_of(coords[0], c.omega, c.gamma), sim::value_of(coords[1], c.omega, c.gamma)};
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // What a render job asks of the picture, independent of the physics.
-#include "scene/cloud.hpp"  // the cloud
 #include <optional>
+#include "scene/cloud.hpp"  // the cloud
 
 #include "scene/frame.hpp"
 #include "scene/section_panel.hpp"

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "io/json_reader.hpp"
 #include "physics/body.hpp"
 #include "physics/cases.hpp"
-#include "io/json_reader.hpp"
 #include "physics/level_set.hpp"
 #include "sim/section.hpp"
 
