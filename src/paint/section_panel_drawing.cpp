@@ -55,17 +55,21 @@ void draw_section_panel(render::DrawList& flat, const scene::SectionPanel& panel
   // Above: what the section is, shortened to fit over the plot.
   for (const std::string& title :
        {"Poincaré section " + panel.title, "section " + panel.title, panel.title})
-    if (measure(title).x <= float(area.width) + 24.0f * px) {
+    if (measure(title).x <= float(area.width)) {
       plot.draw_text(flat, {0.5 * (r[0] + r[1]), r[3]},
                      {{}, title, style.text, render::TextAnchor::bottom, {0, -6 * px}});
       break;
     }
-  // The axes' titles: x centred under the tick labels, y at the top left
-  // inside the plot, on the panel's background so that no dot hides it.
-  const float font = measure(panel.axes[0]).y;
-  flat.add_text({glm::vec3(float(area.x) + 0.5f * float(area.width),
-                           float(area.y + area.height) + style.tick_length + font + 4.0f * px, 0),
-                 panel.axes[0], style.text, render::TextAnchor::top});
+  // The axes' titles inside the plot's corners, x at the bottom right and y
+  // at the top left, on the panel's background so that no dot hides them
+  // (under the plot the plane's caption may run across).
+  flat.add_text({glm::vec3(float(area.x + area.width) - 3.0f * px,
+                           float(area.y + area.height) - 2.0f * px, 0),
+                 panel.axes[0],
+                 style.text,
+                 render::TextAnchor::bottom_right,
+                 {0, 0},
+                 style.background});
   flat.add_text({glm::vec3(float(area.x) + 3.0f * px, float(area.y) + 2.0f * px, 0),
                  panel.axes[1],
                  style.text,
