@@ -52,14 +52,16 @@ void draw_section_panel(render::DrawList& flat, const scene::SectionPanel& panel
                      {{}, colour_of(i), to_glm(ink.marker_edge), 4.0f * px, 1.2f * px});
   }
 
-  // Above: what the section is, shortened to fit over the plot.
-  for (const std::string& title :
-       {"Poincaré section " + panel.title, "section " + panel.title, panel.title})
-    if (measure(title).x <= float(area.width)) {
-      plot.draw_text(flat, {0.5 * (r[0] + r[1]), r[3]},
-                     {{}, title, style.text, render::TextAnchor::bottom, {0, -6 * px}});
+  // Above: the longest wording that fits over the plot (the surface alone
+  // at the least; it may then reach into the margins beside the plot).
+  std::string title = panel.title;
+  for (const std::string& longer : {"Poincaré section " + panel.title, "section " + panel.title})
+    if (measure(longer).x <= float(area.width)) {
+      title = longer;
       break;
     }
+  plot.draw_text(flat, {0.5 * (r[0] + r[1]), r[3]},
+                 {{}, title, style.text, render::TextAnchor::bottom, {0, -6 * px}});
   // The axes' titles inside the plot's corners, x at the bottom right and y
   // at the top left, on the panel's background so that no dot hides them
   // (under the plot the plane's caption may run across).

@@ -48,10 +48,11 @@ TEST(SectionPanelKey, ReadsTheSectionFilesKeysAndDefaultsAndWritesThemBack) {
   EXPECT_EQ(d.scene.section->surface.function, StateComponent::gamma3);
   EXPECT_EQ(d.scene.section->surface.direction, sim::CrossingDirection::upward);
   EXPECT_EQ(d.scene.section->coords, section::default_coords(StateComponent::gamma3));
-  const auto given = job::read_job(
-      kovalevskaya_job(
-          {{"function", "omega3"}, {"value", 0.5}, {"direction", "both"}, {"coords", {"gamma1", "gamma2"}}}),
-      "job.json");
+  const auto given = job::read_job(kovalevskaya_job({{"function", "omega3"},
+                                                     {"value", 0.5},
+                                                     {"direction", "both"},
+                                                     {"coords", {"gamma1", "gamma2"}}}),
+                                   "job.json");
   const auto back = job::read_job(nlohmann::json::parse(job::write_job(given).dump()), "job.json");
   for (const auto* doc : {&given, &back}) {
     ASSERT_TRUE(doc->scene.section);
@@ -159,7 +160,8 @@ TEST(SectionPanel, ComparisonScenesShowEachRunsCrossingsInItsColour) {
   EXPECT_EQ(f.section->colours, f.comparison->colours);
   const auto rk4 = section_code_crossings(plan.others.front().run, job.scene.section->surface);
   ASSERT_EQ(f.section->runs[1].size(), rk4.size());
-  for (std::size_t k = 0; k < rk4.size(); ++k) EXPECT_EQ(f.section->runs[1][k].x(), rk4[k].gamma.x());
+  for (std::size_t k = 0; k < rk4.size(); ++k)
+    EXPECT_EQ(f.section->runs[1][k].x(), rk4[k].gamma.x());
 }
 
 }  // namespace
