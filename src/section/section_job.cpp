@@ -144,12 +144,29 @@ std::array<sim::StateComponent, 2> default_coords(sim::StateComponent surface) {
   return c;
 }
 
-void read_surface(io::ObjectReader& r, sim::SectionSurface& s) {
+std::vector<std::string> state_function_names() { return function_names(); }
+
+std::string surface_value_range() { return "-1e6 to 1e6"; }  // kSurfaceValueLimit
+
+void read_surface_function(io::ObjectReader& r, sim::SectionSurface& s) {
   if (auto f = r.choice("function", function_names()))
     s.function = *sim::state_component_from_name(*f);
-  if (auto v = r.number_in("value", -1e6, 1e6, "-1e6 to 1e6")) s.value = *v;
+}
+
+void read_surface_value(io::ObjectReader& r, sim::SectionSurface& s) {
+  if (auto v = r.number_in("value", -kSurfaceValueLimit, kSurfaceValueLimit, surface_value_range()))
+    s.value = *v;
+}
+
+void read_surface_direction(io::ObjectReader& r, sim::SectionSurface& s) {
   if (auto d = r.choice("direction", {"upward", "downward", "both"}))
     s.direction = *sim::crossing_direction_from_name(*d);
+}
+
+void read_surface(io::ObjectReader& r, sim::SectionSurface& s) {
+  read_surface_function(r, s);
+  read_surface_value(r, s);
+  read_surface_direction(r, s);
 }
 
 std::array<sim::StateComponent, 2> read_coords(io::ObjectReader& r, sim::StateComponent surface) {
