@@ -49,7 +49,8 @@ scene::Frame frame_with_dots(int n) {
 
 render::Panel2D section_plot(const scene::Frame& f) {
   const auto& r = f.section->range;
-  return {paint::to_viewport(*paint::layout_for(f, W, H).section_area), {r[0], r[1], r[2], r[3]},
+  return {paint::to_viewport(*paint::layout_for(f, W, H).section_area),
+          {r[0], r[1], r[2], r[3]},
           false};
 }
 

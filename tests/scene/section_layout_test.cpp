@@ -77,5 +77,16 @@ TEST(SectionLayout, PlanAndFrameAskForTheSameLayout) {
   EXPECT_EQ(drawn.plane_px_per_unit, planned.plane_px_per_unit);
 }
 
+TEST(SectionLayout, InteractiveScenesLayNoPanelOut) {
+  // Their frames carry none (no end to find crossings to), so their plan has none.
+  scene::SceneSettings s;
+  s.section = scene::SectionPanelSettings{};
+  auto run = sim::preset_run(physics::Case::kovalevskaya, sim::Method::dop853,
+                             sim::Formulation::direct, 10.0, 10);
+  run.tol = 1e-10;
+  EXPECT_TRUE(scene::plan_scene(run, s, scene::Horizon::search).layout.section_area);
+  EXPECT_FALSE(scene::plan_scene(run, s, scene::Horizon::none).layout.section_area);
+}
+
 }  // namespace
 }  // namespace epviz
