@@ -180,8 +180,8 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
   }
 
   // The title above the plot says whose coordinates these are; the caption
-  // under it, how they are made.
-  // Beside a section panel the plane has half the column.
+  // under it, how they are made. Beside a section panel the plane has half
+  // the column.
   const float title_room = float(f.section ? column.width / 2 : column.width) - 8 * px;
   const std::string of_gamma = "Riccati plane (a, b) of " + std::string(scene::symbol::gamma);
   for (const std::string& title :

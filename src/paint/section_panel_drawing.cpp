@@ -31,7 +31,8 @@ void draw_section_panel(render::DrawList& flat, const scene::SectionPanel& panel
   style.axis = {0, 0, 0, 0};  // the lines through 0 mean nothing special here
   plot.draw_axes(flat, style);
 
-  // The dots, oldest first and run by run, so that the first run's newest lie on top.
+  // The dots, each run's oldest first and the runs from the last to the
+  // first, so that the first run's lie on top.
   auto colour_of = [&](std::size_t run) {
     return panel.colours.empty() ? glm::vec4(1.0f)
                                  : to_glm(panel.colours[std::min(run, panel.colours.size() - 1)]);
