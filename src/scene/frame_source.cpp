@@ -88,13 +88,12 @@ FrameSource::FrameSource(const ScenePlan& plan, const SceneSettings& settings)
     for (int i = 0; i < plan.frames; ++i) times.push_back(plan.frame_time(i));
     cloud_ = std::make_unique<CloudRun>(plan.run, settings.cloud, times);
   }
-  // The section's crossings: found once, to each run's end, with its own
-  // method and tolerance (renders only, as the cloud).
-  if (settings.section && !plan.open_ended) {
-    std::vector<sim::RunSpec> runs{plan.run};
-    for (const auto& other : plan.others) runs.push_back(other.run);
-    section_ = std::make_unique<SectionCrossings>(*settings.section, runs);
-  }
+}
+
+void FrameSource::find_crossings() {
+  std::vector<sim::RunSpec> runs{plan_.run};
+  for (const auto& other : plan_.others) runs.push_back(other.run);
+  section_ = std::make_unique<SectionCrossings>(*settings_.section, runs);
 }
 
 void FrameSource::advance() {
@@ -108,6 +107,10 @@ void FrameSource::advance() {
 }
 
 Frame FrameSource::frame(int index) {
+  // The section's crossings: found once, to each run's end, with its own
+  // method and tolerance (renders only, as the cloud), at the first frame, so
+  // that a section run that loses the motion is a numerical failure there.
+  if (settings_.section && !section_ && !plan_.open_ended) find_crossings();
   const long target = long(index) * plan_.samples_per_frame;
   while (sample_index_ < target) advance();
   for (auto& track : tracks_) track->forget_before(time() - trail_window());

@@ -46,6 +46,7 @@ class FrameSource {
 
  private:
   void advance();
+  void find_crossings();  // section_, for a job with a "section"
   Frame compose(int index) const;
   void compose_comparison(Frame& f) const;
   double trail_window() const;  // simulation time the trail covers

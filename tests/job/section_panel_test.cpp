@@ -164,5 +164,19 @@ TEST(SectionPanel, ComparisonScenesShowEachRunsCrossingsInItsColour) {
     EXPECT_EQ(f.section->runs[1][k].x(), rk4[k].gamma.x());
 }
 
+TEST(SectionPanel, ASectionRunThatLosesTheMotionIsANumericalFailure) {
+  // RK4 at a coarse step drifts past the limit: exit 3 with the advice, as
+  // when the drawn run loses it, not an error of another kind.
+  TempDir dir;
+  std::string job = R"({"simulation": {"case": "generic", "t_end": 200, "method": "rk4", )";
+  job += R"("step": 0.3, "max_drift": 1e-3}, "section": {}, "width": 64, "height": 48, )";
+  job += R"("fps": 2, "duration": 1, "output": {"dir": ")" + (dir / "out").string();
+  job += R"(", "format": "png"}})";
+  const auto file = dir.write("job.json", job);
+  const auto r = test::run_epviz("render " + file.string() + " --quiet", dir);
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("numerical failure"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace epviz
