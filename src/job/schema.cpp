@@ -13,6 +13,8 @@
 #include "job/schema_entries.hpp"
 #include "scene/layers.hpp"
 #include "scene/theme.hpp"
+#include "section/section_job.hpp"
+#include "sim/section.hpp"
 
 namespace epviz::job {
 
@@ -172,6 +174,23 @@ void read_runs(io::ObjectReader& r, JobDocument& d) {
     o.finish();
     d.runs.push_back(std::move(run));
   }
+}
+
+// A key of the "section" object: read by the section file's own reader
+// (section/section_job.hpp) into the job's panel, which the object's being
+// given creates (an empty object asks for every default).
+using SectionRead = void (*)(io::ObjectReader&, scene::SectionPanelSettings&);
+using SectionWrite = void (*)(const scene::SectionPanelSettings&, Json&);
+Entry<JobDocument> section_key(const char* key, ValueType type, std::string default_value,
+                               std::string allowed, const char* help, SectionRead read,
+                               SectionWrite write) {
+  return {{key, type, std::move(default_value), std::move(allowed), help},
+          [read](io::ObjectReader& r, JobDocument& d) {
+            read(r, d.scene.section ? *d.scene.section : d.scene.section.emplace());
+          },
+          [write](const JobDocument& d, Json& j) {
+            if (d.scene.section) write(*d.scene.section, j);
+          }};
 }
 
 std::string cloud_members_allowed() {
@@ -358,6 +377,52 @@ const std::vector<Job>& job_entries() {
             [](const JobDocument& d, Json& j) {
               if (d.scene.cloud.enabled()) j["radius"] = d.scene.cloud.radius;
             }},
+       }},
+      {{"section", ValueType::object, "", "",
+        "a Poincaré section panel beside the plane, filling as the run goes: a dot per "
+        "crossing of the surface function = value in its direction, at coords; a section "
+        "file's keys, defaults and checks (docs/sections.md; absent: no panel)"},
+       {},
+       {},
+       {
+           section_key(
+               "function", ValueType::choice,
+               std::string(sim::name(sim::SectionSurface{}.function)),
+               joined(section::state_function_names()), "the state function cut",
+               [](io::ObjectReader& r, scene::SectionPanelSettings& p) {
+                 section::read_surface_function(r, p.surface);
+               },
+               [](const scene::SectionPanelSettings& p, Json& j) {
+                 j["function"] = sim::name(p.surface.function);
+               }),
+           section_key(
+               "value", ValueType::number, format_number(sim::SectionSurface{}.value),
+               section::surface_value_range(), "the level of the function",
+               [](io::ObjectReader& r, scene::SectionPanelSettings& p) {
+                 section::read_surface_value(r, p.surface);
+               },
+               [](const scene::SectionPanelSettings& p, Json& j) { j["value"] = p.surface.value; }),
+           section_key(
+               "direction", ValueType::choice,
+               std::string(sim::name(sim::SectionSurface{}.direction)), "upward, downward, both",
+               "which sign change of function - value counts",
+               [](io::ObjectReader& r, scene::SectionPanelSettings& p) {
+                 section::read_surface_direction(r, p.surface);
+               },
+               [](const scene::SectionPanelSettings& p, Json& j) {
+                 j["direction"] = sim::name(p.surface.direction);
+               }),
+           // After the surface's keys: the axes' default follows the function.
+           section_key(
+               "coords", ValueType::text, "gamma1, omega3 for a gamma3 surface",
+               "an array of two of " + joined(section::state_function_names()),
+               "the two state components plotted",
+               [](io::ObjectReader& r, scene::SectionPanelSettings& p) {
+                 p.coords = section::read_coords(r, p.surface.function);
+               },
+               [](const scene::SectionPanelSettings& p, Json& j) {
+                 j["coords"] = {sim::name(p.coords[0]), sim::name(p.coords[1])};
+               }),
        }},
       {{"plane", ValueType::object, "", "", "the Riccati (a, b) panel"},
        {},

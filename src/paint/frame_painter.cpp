@@ -17,6 +17,7 @@
 #include "paint/cloud_drawing.hpp"
 #include "paint/comparison_painter.hpp"
 #include "paint/painter_common.hpp"
+#include "paint/section_panel_drawing.hpp"
 #include "render/colour_map.hpp"
 #include "render/font_text.hpp"
 #include "render/imgui_context_scope.hpp"
@@ -159,15 +160,7 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
   const double e = f.plane_extent;
   const render::Panel2D plot(area, {-e, e, -e, e}, true);
   const scene::Theme& ink = ink_for(f);
-  render::PanelStyle style;
-  style.background = to_glm(ink.panel_background);
-  style.frame = to_glm(ink.panel_frame);
-  style.grid = to_glm(ink.panel_grid);
-  style.axis = to_glm(ink.panel_axis);
-  style.text = to_glm(ink.panel_text);
-  style.tick_length = 4.0f * px;
-  style.frame_width = style.axis_width = 1.0f * px;
-  style.min_tick_spacing_px = 34.0f * px;
+  const render::PanelStyle style = column_panel_style(ink, px);
   DrawList flat;
   plot.draw_axes(flat, style);
   plot.draw_circle(flat, {0.0, 0.0}, 1.0, {style.text.r, style.text.g, style.text.b, 0.85f},
@@ -187,11 +180,13 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
   }
 
   // The title above the plot says whose coordinates these are; the caption
-  // under it, how they are made.
+  // under it, how they are made. Beside a section panel the plane has half
+  // the column.
+  const float title_room = float(f.section ? column.width / 2 : column.width) - 8 * px;
   const std::string of_gamma = "Riccati plane (a, b) of " + std::string(scene::symbol::gamma);
   for (const std::string& title :
        {of_gamma + " (body axes)", of_gamma, std::string("(a, b) plane")})
-    if (gui().text_size(title).x <= float(column.width) - 8 * px) {
+    if (gui().text_size(title).x <= title_room) {
       plot.draw_text(flat, {0.0, e}, {{}, title, style.text, TextAnchor::bottom, {0, -6 * px}});
       break;
     }
@@ -449,6 +444,12 @@ const render::RgbaImage& FramePainter::paint(const scene::Frame& f,
   if (layout.panel_column && f.layers.riccati)
     draw_plane(f, to_viewport(*layout.panel_column), to_viewport(*layout.plot_area),
                layout.chart_area ? std::optional<int>(layout.chart_area->y) : std::nullopt, px);
+  if (layout.section_area && f.section) {
+    DrawList section;
+    draw_section_panel(section, *f.section, to_viewport(*layout.section_area), ink_for(f), px,
+                       [&](const std::string& text) { return gui().text_size(text); });
+    draw_flat(section);
+  }
   {
     DrawList notes;
     const auto drawn = draw_run_annotations(

@@ -104,6 +104,19 @@ struct Comparison {
   double t_end = 0.0;            // the separation chart's time axis
 };
 
+// A Poincaré section panel (a job's "section"): every crossing of the
+// section surface up to the frame's time, a dot per crossing in its run's
+// colour. Plain values: scene/section_panel.hpp finds the crossings.
+struct SectionPanel {
+  std::string title;                // the surface: "γ₃ = 0, upward"
+  std::array<std::string, 2> axes;  // the coordinates' symbols: "γ₁", "Ω₃"
+  // The plot's range, x then y: every crossing of the whole run with a
+  // margin, the same in every frame so that the dots stay put as it fills.
+  std::array<double, 4> range{-1.0, 1.0, -1.0, 1.0};
+  std::vector<std::vector<Eigen::Vector2d>> runs;  // per run, first run first, oldest first
+  std::vector<Rgba> colours;                       // one per run
+};
+
 struct Frame {
   int index = 0;
   double t = 0.0;
@@ -146,6 +159,7 @@ struct Frame {
 
   std::optional<Comparison> comparison;  // comparison scenes only
   std::optional<CloudFrame> cloud;       // jobs with a "cloud" only
+  std::optional<SectionPanel> section;   // jobs with a "section" only
 
   // A line under the picture naming what it shows (gallery tiles); empty: none.
   std::string caption;

@@ -90,6 +90,12 @@ FrameSource::FrameSource(const ScenePlan& plan, const SceneSettings& settings)
   }
 }
 
+void FrameSource::find_crossings() {
+  std::vector<sim::RunSpec> runs{plan_.run};
+  for (const auto& other : plan_.others) runs.push_back(other.run);
+  section_ = std::make_unique<SectionCrossings>(*settings_.section, runs);
+}
+
 void FrameSource::advance() {
   for (auto& track : tracks_) track->advance();
   ++sample_index_;
@@ -101,6 +107,10 @@ void FrameSource::advance() {
 }
 
 Frame FrameSource::frame(int index) {
+  // The section's crossings: found once, to each run's end, with its own
+  // method and tolerance (renders only, as the cloud), at the first frame, so
+  // that a section run that loses the motion is a numerical failure there.
+  if (settings_.section && !section_ && !plan_.open_ended) find_crossings();
   const long target = long(index) * plan_.samples_per_frame;
   while (sample_index_ < target) advance();
   for (auto& track : tracks_) track->forget_before(time() - trail_window());
@@ -161,6 +171,13 @@ Frame FrameSource::compose(int index) const {
   if (cloud_ && index < cloud_->frame_count()) {
     f.cloud = cloud_->frame(index, f.plane_extent);
     if (settings_.view == View::space) f.cloud->sphere.clear();  // its points are body-frame gamma
+  }
+
+  if (section_) {
+    const bool light = is_light(settings_.colours.background);
+    std::vector<Rgba> colours;
+    for (int i = 0; i < run_count(); ++i) colours.push_back(run_colour(i, light));
+    f.section = section_->panel_at(last.t, colours);
   }
 
   const auto& run = plan_.run;

@@ -10,6 +10,7 @@
 #include "scene/frame.hpp"
 #include "scene/plan.hpp"
 #include "scene/run_track.hpp"
+#include "scene/section_panel.hpp"
 #include "sim/drift.hpp"
 #include "sim/trajectory.hpp"
 
@@ -40,9 +41,12 @@ class FrameSource {
   // Every run: the first, then plan().others in order.
   int run_count() const { return int(tracks_.size()); }
   const RunTrack& run(int i) const { return *tracks_[std::size_t(i)]; }
+  // Each run's crossings of the job's section surface (nullptr without a "section").
+  const SectionCrossings* section() const { return section_.get(); }
 
  private:
   void advance();
+  void find_crossings();  // section_, for a job with a "section"
   Frame compose(int index) const;
   void compose_comparison(Frame& f) const;
   double trail_window() const;  // simulation time the trail covers
@@ -55,7 +59,8 @@ class FrameSource {
   long sample_index_ = 0;
   int frames_composed_ = 0;
   BodyShape shape_;
-  std::unique_ptr<CloudRun> cloud_;  // renders of jobs with a "cloud" only
+  std::unique_ptr<CloudRun> cloud_;            // renders of jobs with a "cloud" only
+  std::unique_ptr<SectionCrossings> section_;  // renders of jobs with a "section" only
 };
 
 // The overlay a FrameSource composes has this many text lines, and a drift row

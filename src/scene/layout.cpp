@@ -26,14 +26,16 @@ FrameLayout layout_in_width(const LayoutRequest& q, int width) {
   if (q.caption) l.caption_area = Rect{0, 0, width, top};
   const int h = height - top;
   const bool three_d = q.layers.body || q.layers.sphere;
-  // The 3D view takes the left 60 % when the panel is shown.
-  if (three_d && q.layers.riccati) {
-    const int w3 = width * 3 / 5;
+  const bool column = q.layers.riccati || q.section_panel;
+  // The 3D view takes the left 60 % when the panel is shown, half the width
+  // when the column holds a section panel beside it.
+  if (three_d && column) {
+    const int w3 = q.section_panel ? width / 2 : width * 3 / 5;
     l.view_3d = Rect{0, top, w3, h};
     l.panel_column = Rect{w3, top, width - w3, h};
   } else if (three_d) {
     l.view_3d = Rect{0, top, width, h};
-  } else if (q.layers.riccati) {
+  } else if (column) {
     l.panel_column = Rect{0, top, width, h};
   }
   // The legend of a comparison: a strip under the 3D view (under the panel
@@ -47,34 +49,49 @@ FrameLayout layout_in_width(const LayoutRequest& q, int width) {
   }
   if (l.panel_column) {
     const auto& c = *l.panel_column;
+    // The column's plots side by side, each in a slot of its own: the
+    // Riccati plane, then the section.
+    const int slots = (q.layers.riccati ? 1 : 0) + (q.section_panel ? 1 : 0);
+    const int slot_width = c.width / slots;
     // Room for the title above and the tick labels and legend below.
     // Below the plot: the tick labels and the projection's caption, two lines
     // at least, and the separation chart of a comparison scene.
     const int margin_bottom =
         std::max(int(std::ceil(overlay_font_px(height) * 2.9f)), height / 9) + q.chart_height;
     const int margin_top_base = std::max(22, height / 14);
-    const int margin_left = std::max(30, c.width / 8), margin_right = std::max(10, c.width / 20);
+    const int margin_left = std::max(30, slot_width / 8),
+              margin_right = std::max(10, slot_width / 20);
     auto side_for = [&](int margin_top) {
-      return std::min(c.width - margin_left - margin_right, c.height - margin_top - margin_bottom);
+      return std::min(slot_width - margin_left - margin_right,
+                      c.height - margin_top - margin_bottom);
     };
     // The overlay takes the top of the panel's column when the plot keeps at
-    // least 35 % of the height there, so that it does not cover the sphere;
-    // otherwise (small pictures) it floats over the 3D view's corner.
+    // least 35 % of the height there (a quarter beside a section panel), so
+    // that it does not cover the sphere; otherwise (small pictures) it floats
+    // over the 3D view's corner.
     const int overlay_px =
         l.view_3d && q.layers.overlay
             ? overlay_height(height, q.legend_rows > 0 ? comparison_runs(q.legend_rows) : 0)
             : 0;
-    l.overlay_in_column =
-        overlay_px > 0 && side_for(margin_top_base + overlay_px) >= height * 35 / 100;
+    const int least_side = height * (slots > 1 ? 25 : 35) / 100;
+    l.overlay_in_column = overlay_px > 0 && side_for(margin_top_base + overlay_px) >= least_side;
     const int margin_top = margin_top_base + (l.overlay_in_column ? overlay_px : 0);
     const int side = std::max(16, side_for(margin_top));
-    const int x = c.x + margin_left + (c.width - margin_left - margin_right - side) / 2;
     const int y = c.y + margin_top + (c.height - margin_top - margin_bottom - side) / 2;
-    l.plot_area = Rect{x, y, side, side};
-    if (q.chart_height > 0)  // below the plot's tick labels
-      l.chart_area =
-          Rect{x, y + side + margin_bottom - q.chart_height, side, q.chart_height * 4 / 5};
-    l.plane_px_per_unit = double(side) / (2.0 * double(q.plane_extent));
+    auto plot_in_slot = [&](int slot) {
+      const int x0 = c.x + slot * slot_width;
+      return Rect{x0 + margin_left + (slot_width - margin_left - margin_right - side) / 2, y, side,
+                  side};
+    };
+    if (q.layers.riccati) {
+      l.plot_area = plot_in_slot(0);
+      const int x = l.plot_area->x;
+      if (q.chart_height > 0)  // below the plot's tick labels
+        l.chart_area =
+            Rect{x, y + side + margin_bottom - q.chart_height, side, q.chart_height * 4 / 5};
+      l.plane_px_per_unit = double(side) / (2.0 * double(q.plane_extent));
+    }
+    if (q.section_panel) l.section_area = plot_in_slot(slots - 1);
   }
   if (l.view_3d) {
     // The perspective scale at the sphere's centre: half the view's height
@@ -127,15 +144,16 @@ LayoutRequest layout_request(const Frame& f, int width, int height, int reserved
           reserved_left,
           f.comparison ? comparison_chart_height(height) : 0,
           f.comparison ? comparison_legend_rows(int(f.comparison->labels.size())) : 0,
-          !f.caption.empty()};
+          !f.caption.empty(),
+          f.section.has_value()};
 }
 
 FrameLayout frame_layout(const LayoutRequest& q) {
   const int reserved_left = std::clamp(q.reserved_left, 0, q.width - 16);
   FrameLayout l = layout_in_width(q, q.width - reserved_left);
   if (reserved_left == 0) return l;
-  for (auto* r :
-       {&l.view_3d, &l.panel_column, &l.plot_area, &l.chart_area, &l.legend_area, &l.caption_area})
+  for (auto* r : {&l.view_3d, &l.panel_column, &l.plot_area, &l.chart_area, &l.legend_area,
+                  &l.caption_area, &l.section_area})
     if (*r) (*r)->x += reserved_left;
   return l;
 }

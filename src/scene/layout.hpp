@@ -38,6 +38,9 @@ struct LayoutRequest {
   int chart_height = 0;          // comparison scenes: the separation chart under the plot
   int legend_rows = 0;           // comparison scenes: the legend's rows (comparison_legend_rows)
   bool caption = false;          // a caption line across the top (gallery tiles)
+  // A section panel (Frame::section) beside the Riccati plane: the column
+  // takes half the width, and its plots sit side by side.
+  bool section_panel = false;
 };
 
 struct FrameLayout {
@@ -49,6 +52,7 @@ struct FrameLayout {
   // panel without one), clear of the sphere and of every mark.
   std::optional<Rect> legend_area;
   std::optional<Rect> caption_area;  // the caption's line across the top
+  std::optional<Rect> section_area;  // the section panel's square plot, right of the plane's
   bool overlay_in_column = false;    // the overlay sits above the plot (else over the 3D view)
   // Pixels per unit of gamma at the sphere's centre, and per unit of a or b in
   // the plot; 0 where the picture has no such part.

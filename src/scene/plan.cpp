@@ -31,6 +31,7 @@ FrameLayout planned_layout(const SceneSettings& s, const std::vector<sim::RunSpe
   q.plane_extent = s.plane_extent;
   q.chart_height = runs.size() > 1 ? comparison_chart_height(s.height) : 0;
   q.legend_rows = runs.size() > 1 ? comparison_legend_rows(int(runs.size())) : 0;
+  q.section_panel = s.section.has_value();
   return frame_layout(q);
 }
 
@@ -160,7 +161,12 @@ ScenePlan plan_scene(std::vector<RunRequest> runs, const SceneSettings& s, Horiz
     r.run.samples = samples;
     specs.push_back(r.run);
   }
-  plan.layout = planned_layout(s, specs);
+  // An interactive scene (no horizon: its run has no end) draws no section
+  // panel, whose crossings FrameSource finds to a render's end: its frames
+  // are laid out without one, and so is its plan.
+  SceneSettings laid = s;
+  if (h == Horizon::none) laid.section.reset();
+  plan.layout = planned_layout(laid, specs);
   trail_pixel_scales(s, plan.trail_sphere_px, plan.trail_plane_px);
   for (std::size_t i = 0; i < runs.size(); ++i) {
     std::string note;

@@ -1,7 +1,10 @@
 #pragma once
 // What a render job asks of the picture, independent of the physics.
+#include <optional>
 #include "scene/cloud.hpp"  // the cloud
+
 #include "scene/frame.hpp"
+#include "scene/section_panel.hpp"
 
 namespace epviz::scene {
 
@@ -22,6 +25,7 @@ struct SceneSettings {
   std::string title;               // overrides the case's title when not empty
   int trace_axis = 3;              // space view: the body axis (1, 2 or 3) the trail follows
   CloudSettings cloud;             // an ensemble launched with the first run (scene/cloud.hpp)
+  std::optional<SectionPanelSettings> section;  // a section panel beside the plane
 
   int frame_count() const;  // round(fps * duration), at least 1
 };

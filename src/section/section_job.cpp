@@ -45,28 +45,6 @@ std::string join(const std::vector<std::string>& names) {
   return s;
 }
 
-// Where the surface is gamma3 = c the plot shows gamma1 against omega3 (the
-// angle of gamma about the third axis, and the spin about it); for another
-// surface, the first two components other than its own.
-std::array<sim::StateComponent, 2> default_coords(sim::StateComponent surface) {
-  if (surface == sim::StateComponent::gamma3)
-    return {sim::StateComponent::gamma1, sim::StateComponent::omega3};
-  std::array<sim::StateComponent, 2> c{};
-  std::size_t n = 0;
-  for (auto f : sim::all_state_components())
-    if (f != surface && n < 2) c[n++] = f;
-  return c;
-}
-
-void read_surface(io::ObjectReader r, sim::SectionSurface& s) {
-  if (auto f = r.choice("function", function_names()))
-    s.function = *sim::state_component_from_name(*f);
-  if (auto v = r.number_in("value", -1e6, 1e6, "-1e6 to 1e6")) s.value = *v;
-  if (auto d = r.choice("direction", {"upward", "downward", "both"}))
-    s.direction = *sim::crossing_direction_from_name(*d);
-  r.finish();
-}
-
 std::vector<physics::InitialState> read_states(const io::ObjectReader& root,
                                                const std::string& file,
                                                const nlohmann::json& array) {
@@ -153,6 +131,60 @@ std::string method_label(const SectionMethod& m) {
   return s;
 }
 
+// Where the surface is gamma3 = c the plot shows gamma1 against omega3 (the
+// angle of gamma about the third axis, and the spin about it); for another
+// surface, the first two components other than its own.
+std::array<sim::StateComponent, 2> default_coords(sim::StateComponent surface) {
+  if (surface == sim::StateComponent::gamma3)
+    return {sim::StateComponent::gamma1, sim::StateComponent::omega3};
+  std::array<sim::StateComponent, 2> c{};
+  std::size_t n = 0;
+  for (auto f : sim::all_state_components())
+    if (f != surface && n < 2) c[n++] = f;
+  return c;
+}
+
+std::vector<std::string> state_function_names() { return function_names(); }
+
+std::string surface_value_range() { return "-1e6 to 1e6"; }  // kSurfaceValueLimit
+
+void read_surface_function(io::ObjectReader& r, sim::SectionSurface& s) {
+  if (auto f = r.choice("function", function_names()))
+    s.function = *sim::state_component_from_name(*f);
+}
+
+void read_surface_value(io::ObjectReader& r, sim::SectionSurface& s) {
+  if (auto v = r.number_in("value", -kSurfaceValueLimit, kSurfaceValueLimit, surface_value_range()))
+    s.value = *v;
+}
+
+void read_surface_direction(io::ObjectReader& r, sim::SectionSurface& s) {
+  if (auto d = r.choice("direction", {"upward", "downward", "both"}))
+    s.direction = *sim::crossing_direction_from_name(*d);
+}
+
+void read_surface(io::ObjectReader& r, sim::SectionSurface& s) {
+  read_surface_function(r, s);
+  read_surface_value(r, s);
+  read_surface_direction(r, s);
+}
+
+std::array<sim::StateComponent, 2> read_coords(io::ObjectReader& r, sim::StateComponent surface) {
+  std::array<sim::StateComponent, 2> coords = default_coords(surface);
+  if (const auto* given = r.raw("coords")) {
+    const std::string allowed = "two of " + join(function_names());
+    if (!given->is_array() || given->size() != 2) r.fail("coords", "must be " + allowed);
+    for (std::size_t i = 0; i < 2; ++i) {
+      const auto c = (*given)[i].is_string()
+                         ? sim::state_component_from_name((*given)[i].get<std::string>())
+                         : std::nullopt;
+      if (!c) r.fail("coords", "must be " + allowed + ", got " + io::describe(*given));
+      coords[i] = *c;
+    }
+  }
+  return coords;
+}
+
 SectionRun section_run_of(long run, std::size_t starts) {
   return {std::size_t(run) / starts, std::size_t(run) % starts};
 }
@@ -185,7 +217,10 @@ SectionJob read_section_job(const std::filesystem::path& file) {
 
   if (auto k = r.integer("crossings", 1, 1000000)) job.crossings = int(*k);
   if (auto t = r.number_in("t_end", 1e-6, 1e9, "1e-6 to 1e9")) job.t_end = *t;
-  if (auto s = r.object("section")) read_surface(*s, job.surface);
+  if (auto s = r.object("section")) {
+    read_surface(*s, job.surface);
+    s->finish();
+  }
   read_methods(r, job);
   // The crossings are kept until the CSV is written: about 300 bytes each.
   if (double(job.orbits) * job.crossings * double(job.methods.size()) > kMaxCrossings) {
@@ -200,18 +235,7 @@ SectionJob read_section_job(const std::filesystem::path& file) {
     r.fail("crossings", got);
   }
   if (auto d = r.number_in("max_drift", 1e-14, 1.0, "1e-14 to 1")) job.max_drift = *d;
-  job.coords = default_coords(job.surface.function);
-  if (const auto* coords = r.raw("coords")) {
-    const std::string allowed = "two of " + join(function_names());
-    if (!coords->is_array() || coords->size() != 2) r.fail("coords", "must be " + allowed);
-    for (std::size_t i = 0; i < 2; ++i) {
-      const auto c = (*coords)[i].is_string()
-                         ? sim::state_component_from_name((*coords)[i].get<std::string>())
-                         : std::nullopt;
-      if (!c) r.fail("coords", "must be " + allowed + ", got " + io::describe(*coords));
-      job.coords[i] = *c;
-    }
-  }
+  job.coords = read_coords(r, job.surface.function);
   for (const char* key : {"png", "svg"})
     if (auto path = r.string(key)) (key[0] == 'p' ? job.png : job.svg) = *path;
   const auto csv = r.string("csv");

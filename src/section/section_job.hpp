@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "io/json_reader.hpp"
 #include "physics/body.hpp"
 #include "physics/cases.hpp"
 #include "physics/level_set.hpp"
@@ -53,6 +54,24 @@ struct SectionJob {
   std::string png, svg;  // optional pictures of the crossings
   std::string hash;      // of the file's parsed content: the shards of one section share it
 };
+
+// The keys a section surface and its plot are given by, wherever one is read
+// (a section file; a render job's "section"), so that each has one name,
+// default and check. Each reads its key of `r`'s object into `s`, left as it
+// is when the key is absent; the caller finishes `r`.
+void read_surface_function(io::ObjectReader& r, sim::SectionSurface& s);   // "function"
+void read_surface_value(io::ObjectReader& r, sim::SectionSurface& s);      // "value"
+void read_surface_direction(io::ObjectReader& r, sim::SectionSurface& s);  // "direction"
+void read_surface(io::ObjectReader& r, sim::SectionSurface& s);            // all three
+// The plot's axes where none are given (see SectionJob::coords).
+std::array<sim::StateComponent, 2> default_coords(sim::StateComponent surface);
+// "coords" of `r`'s object: two state components, default_coords(surface) when absent.
+std::array<sim::StateComponent, 2> read_coords(io::ObjectReader& r, sim::StateComponent surface);
+// For help: the state functions' names ("omega1" ... "gamma3") and the
+// surface value's range ("-1e6 to 1e6").
+inline constexpr double kSurfaceValueLimit = 1e6;
+std::vector<std::string> state_function_names();
+std::string surface_value_range();
 
 // Throws io::BadInput.
 SectionJob read_section_job(const std::filesystem::path& file);

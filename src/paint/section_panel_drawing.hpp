@@ -1,0 +1,28 @@
+#pragma once
+// Draws a frame's section panel (scene::SectionPanel): a square plot of the
+// crossings so far, a dot each in its run's colour, the newest of each run
+// marked, the surface in the title and the coordinates' symbols on the axes.
+// Plain values in, a 2D draw list out: no physics here.
+#include <functional>
+#include <string>
+
+#include <glm/vec2.hpp>
+
+#include "render/draw_list.hpp"
+#include "render/panel_2d.hpp"
+#include "scene/frame.hpp"
+#include "scene/theme.hpp"
+
+namespace epviz::paint {
+
+// The square plots' look in a frame's column (the Riccati plane's and the
+// section's): the theme's panel colours, lines and ticks at the picture's scale `px`.
+render::PanelStyle column_panel_style(const scene::Theme& ink, float px);
+
+// The panel into `area` (layout.section_area), its title above and its tick
+// labels and x title below. `measure` gives a text's size in pixels.
+void draw_section_panel(render::DrawList& flat, const scene::SectionPanel& panel,
+                        const render::Viewport& area, const scene::Theme& ink, float px,
+                        const std::function<glm::vec2(const std::string&)>& measure);
+
+}  // namespace epviz::paint

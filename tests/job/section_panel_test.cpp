@@ -1,0 +1,182 @@
+// A render job's "section": read with a section file's names, defaults and
+// checks, refused with one line naming the key; the panel's dots at the last
+// frame are the crossings `epviz section` finds for the same run, and they
+// come in frame by frame.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "job/job_plan.hpp"
+#include "job/schema.hpp"
+#include "scene/frame_source.hpp"
+#include "section/section_job.hpp"
+#include "section/section_run.hpp"
+#include "sim/section.hpp"
+#include "support/cli.hpp"
+
+namespace epviz {
+namespace {
+
+using sim::StateComponent;
+using test::TempDir;
+
+job::RenderJob render_job(const nlohmann::json& j) {
+  const auto d = job::read_job(j, "job.json");
+  return {"job.json", d.simulation, d.runs, d.scene, d.output};
+}
+
+nlohmann::json kovalevskaya_job(const nlohmann::json& section) {
+  return {{"simulation",
+           {{"case", "kovalevskaya"},
+            {"t_end", 120},
+            {"method", "dop853"},
+            {"tol", 1e-10},
+            {"omega", {1.0, 0.8, 0.6}},
+            {"gamma", {0.6, 0.0, 0.8}}}},
+          {"section", section},
+          {"width", 320},
+          {"height", 180},
+          {"fps", 10},
+          {"duration", 3}};
+}
+
+TEST(SectionPanelKey, ReadsTheSectionFilesKeysAndDefaultsAndWritesThemBack) {
+  const auto d = job::read_job(kovalevskaya_job(nlohmann::json::object()), "job.json");
+  ASSERT_TRUE(d.scene.section);
+  // The section file's defaults: gamma3 = 0 upward, plotted at (gamma1, omega3).
+  EXPECT_EQ(d.scene.section->surface.function, StateComponent::gamma3);
+  EXPECT_EQ(d.scene.section->surface.direction, sim::CrossingDirection::upward);
+  EXPECT_EQ(d.scene.section->coords, section::default_coords(StateComponent::gamma3));
+  const auto given = job::read_job(kovalevskaya_job({{"function", "omega3"},
+                                                     {"value", 0.5},
+                                                     {"direction", "both"},
+                                                     {"coords", {"gamma1", "gamma2"}}}),
+                                   "job.json");
+  const auto back = job::read_job(nlohmann::json::parse(job::write_job(given).dump()), "job.json");
+  for (const auto* doc : {&given, &back}) {
+    ASSERT_TRUE(doc->scene.section);
+    EXPECT_EQ(doc->scene.section->surface.function, StateComponent::omega3);
+    EXPECT_EQ(doc->scene.section->surface.value, 0.5);
+    EXPECT_EQ(doc->scene.section->surface.direction, sim::CrossingDirection::both);
+    EXPECT_EQ(doc->scene.section->coords[1], StateComponent::gamma2);
+  }
+  // Another surface's default axes are the first two components it leaves free.
+  const auto other = job::read_job(kovalevskaya_job({{"function", "omega1"}}), "job.json");
+  EXPECT_EQ(other.scene.section->coords[0], StateComponent::omega2);
+  EXPECT_FALSE(job::read_job({{"simulation", {{"case", "euler"}}}}, "job.json").scene.section);
+}
+
+TEST(SectionPanelKey, BadValuesExitTwoNamingTheKey) {
+  const std::pair<const char*, const char*> cases[] = {
+      {R"({"function": "gamma4"})", "key 'section.function'"},
+      {R"({"value": "zero"})", "key 'section.value'"},
+      {R"({"direction": "up"})", "key 'section.direction'"},
+      {R"({"coords": ["gamma1"]})", "key 'section.coords'"},
+      {R"({"coords": ["gamma1", "theta"]})", "key 'section.coords'"},
+      {R"({"surface": "gamma3"})", "section.surface"},
+      {R"(3)", "key 'section'"},
+  };
+  for (const auto& [section, named] : cases) {
+    SCOPED_TRACE(section);
+    TempDir dir;
+    std::string job = R"({"simulation": {"case": "kovalevskaya", "t_end": 2}, "section": )";
+    job += section;
+    job += R"(, "width": 64, "height": 48, "fps": 2, "duration": 1, "output": {"dir": ")";
+    job += (dir / "out").string();
+    job += R"(", "format": "png"}})";
+    test::expect_render_refused(dir, job, "--quiet", dir / "out", named);
+  }
+}
+
+// The same run through `epviz section`'s code: one orbit from the job's
+// start, with its body, method, tolerance and surface.
+std::vector<sim::Crossing> section_code_crossings(const sim::RunSpec& run,
+                                                  const sim::SectionSurface& surface) {
+  section::SectionJob s;
+  s.case_id = run.case_id;
+  s.body = run.body;
+  s.states = {run.initial};
+  s.orbits = 1;
+  s.crossings = 1000000;
+  s.t_end = run.t_end;
+  s.surface = surface;
+  s.methods = {{run.method, run.tol, run.step}};
+  s.max_drift = run.max_drift;
+  const auto results = section::run_section(s, s.states, 1);
+  EXPECT_EQ(results.size(), 1u);
+  EXPECT_FALSE(results.front().failure);
+  return results.front().crossings;
+}
+
+TEST(SectionPanel, LastFrameShowsTheCrossingsOfEpvizSectionAndFillsFrameByFrame) {
+  const auto job = render_job(kovalevskaya_job({{"coords", {"gamma1", "omega3"}}}));
+  const auto plan = job::plan_job(job);
+  scene::FrameSource source(plan, job.scene);
+  std::size_t previous = 0, grew = 0;
+  scene::Frame last;
+  for (int i = 0; i < source.frame_count(); ++i) {
+    last = source.frame(i);
+    ASSERT_TRUE(last.section);
+    ASSERT_EQ(last.section->runs.size(), 1u);
+    const std::size_t n = last.section->runs.front().size();
+    EXPECT_GE(n, previous) << "frame " << i;
+    grew += n > previous ? 1 : 0;
+    previous = n;
+  }
+  // Filling as the orbit runs: new dots in many frames, not all at once.
+  EXPECT_GT(grew, 5u);
+  const auto expected = section_code_crossings(plan.run, job.scene.section->surface);
+  ASSERT_GT(expected.size(), 10u);
+  const auto& dots = last.section->runs.front();
+  ASSERT_EQ(dots.size(), expected.size());
+  for (std::size_t k = 0; k < dots.size(); ++k) {
+    SCOPED_TRACE(k);
+    const auto& c = expected[k];
+    // On the surface to 1e-12, as `epviz section` promises.
+    EXPECT_LE(std::abs(c.gamma.z()), sim::kSectionResidual);
+    EXPECT_EQ(dots[k].x(), c.gamma.x());
+    EXPECT_EQ(dots[k].y(), c.omega.z());
+  }
+  EXPECT_EQ(last.section->axes[0], "γ₁");
+  EXPECT_EQ(last.section->axes[1], "Ω₃");
+  // The range takes in every dot.
+  const auto& r = last.section->range;
+  for (const auto& p : dots) {
+    EXPECT_TRUE(p.x() > r[0] && p.x() < r[1] && p.y() > r[2] && p.y() < r[3]);
+  }
+}
+
+TEST(SectionPanel, ComparisonScenesShowEachRunsCrossingsInItsColour) {
+  auto j = kovalevskaya_job(nlohmann::json::object());
+  j["runs"] = {{{"label", "fine"}}, {{"label", "rk4"}, {"method", "rk4"}, {"step", 0.05}}};
+  const auto job = render_job(j);
+  const auto plan = job::plan_job(job);
+  ASSERT_EQ(plan.others.size(), 1u);
+  scene::FrameSource source(plan, job.scene);
+  const auto f = source.frame(source.frame_count() - 1);
+  ASSERT_TRUE(f.section && f.comparison);
+  ASSERT_EQ(f.section->runs.size(), 2u);
+  EXPECT_EQ(f.section->colours, f.comparison->colours);
+  const auto rk4 = section_code_crossings(plan.others.front().run, job.scene.section->surface);
+  ASSERT_EQ(f.section->runs[1].size(), rk4.size());
+  for (std::size_t k = 0; k < rk4.size(); ++k)
+    EXPECT_EQ(f.section->runs[1][k].x(), rk4[k].gamma.x());
+}
+
+TEST(SectionPanel, ASectionRunThatLosesTheMotionIsANumericalFailure) {
+  // RK4 at a coarse step drifts past the limit: exit 3 with the advice, as
+  // when the drawn run loses it, not an error of another kind.
+  TempDir dir;
+  std::string job = R"({"simulation": {"case": "generic", "t_end": 200, "method": "rk4", )";
+  job += R"("step": 0.3, "max_drift": 1e-3}, "section": {}, "width": 64, "height": 48, )";
+  job += R"("fps": 2, "duration": 1, "output": {"dir": ")" + (dir / "out").string();
+  job += R"(", "format": "png"}})";
+  const auto file = dir.write("job.json", job);
+  const auto r = test::run_epviz("render " + file.string() + " --quiet", dir);
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("numerical failure"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace epviz
