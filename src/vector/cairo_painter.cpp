@@ -1,5 +1,6 @@
 #include "vector/cairo_painter.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -61,11 +62,37 @@ void fill_dots(cairo_t* cr, const render::DrawList& list) {
   }
 }
 
+// A segment whose ends differ in colour, as the GL line shader blends them:
+// a linear gradient from one end's colour to the other's.
+void stroke_blended_segment(cairo_t* cr, const render::LineVertex& a, const render::LineVertex& b) {
+  cairo_pattern_t* gradient =
+      cairo_pattern_create_linear(a.position.x, a.position.y, b.position.x, b.position.y);
+  cairo_pattern_add_color_stop_rgba(gradient, 0.0, a.colour.r, a.colour.g, a.colour.b, a.colour.a);
+  cairo_pattern_add_color_stop_rgba(gradient, 1.0, b.colour.r, b.colour.g, b.colour.b, b.colour.a);
+  cairo_new_path(cr);
+  cairo_move_to(cr, a.position.x, a.position.y);
+  cairo_line_to(cr, b.position.x, b.position.y);
+  cairo_set_source(cr, gradient);
+  cairo_stroke(cr);
+  cairo_pattern_destroy(gradient);
+}
+
 void stroke_polylines(cairo_t* cr, const render::DrawList& list) {
   const auto& v = list.line_vertices();
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
   for (const auto& p : list.polylines()) {
+    const bool one_colour =
+        std::all_of(v.begin() + long(p.first), v.begin() + long(p.first + p.count),
+                    [&](const render::LineVertex& x) { return x.colour == v[p.first].colour; });
+    if (!one_colour) {
+      // A path coloured along its length (a trail by time): segment by segment.
+      cairo_set_line_width(cr, p.width_px);
+      for (std::size_t k = 0; k + 1 < p.count; ++k)
+        stroke_blended_segment(cr, v[p.first + k], v[p.first + k + 1]);
+      if (p.closed && p.count > 2) stroke_blended_segment(cr, v[p.first + p.count - 1], v[p.first]);
+      continue;
+    }
     cairo_new_path(cr);
     for (std::size_t k = 0; k < p.count; ++k) {
       const glm::vec3& at = v[p.first + k].position;

@@ -160,5 +160,35 @@ TEST(VectorDots, SquaresOfTheirSizeWhereTheRendererPutsThem) {
   cairo_surface_destroy(surface);
 }
 
+// A path coloured along its length (the (a, b) plane's trail, by time) keeps
+// its colours in a vector figure: each segment blends its ends' colours, as
+// the GL line shader does, rather than taking the first vertex's colour.
+TEST(VectorLines, AColourAlongAPathIsBlendedAsGlDoes) {
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 100, 20);
+  cairo_t* cr = cairo_create(surface);
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  cairo_paint(cr);
+  render::DrawList list;
+  const render::LineVertex path[] = {{{0.0f, 10.0f, 0.0f}, {1, 0, 0, 1}},
+                                     {{50.0f, 10.0f, 0.0f}, {1, 0, 0, 1}},
+                                     {{100.0f, 10.0f, 0.0f}, {0, 0, 1, 1}}};
+  list.add_polyline(path, 4.0f);
+  vector::paint_shapes(cr, list);
+  cairo_surface_flush(surface);
+  const unsigned char* data = cairo_image_surface_get_data(surface);
+  const int stride = cairo_image_surface_get_stride(surface);
+  // ARGB32 in native byte order: blue, green, red, alpha on this machine.
+  const auto red = [&](int x) { return int(data[10 * stride + 4 * x + 2]); };
+  const auto blue = [&](int x) { return int(data[10 * stride + 4 * x + 0]); };
+  EXPECT_GT(red(10), 240);
+  EXPECT_LT(blue(10), 15);
+  EXPECT_GT(blue(95), 220) << "the end of the path keeps its own colour";
+  EXPECT_LT(red(95), 35);
+  EXPECT_NEAR(red(75), 128, 20) << "half way along the last segment";
+  EXPECT_NEAR(blue(75), 128, 20);
+  cairo_destroy(cr);
+  cairo_surface_destroy(surface);
+}
+
 }  // namespace
 }  // namespace epviz
