@@ -79,6 +79,12 @@ if [ "$which" != tsan ]; then
     # the takeover and resume code runs under ASan in the lock and resume
     # tests of test_shard and test_app.
     '^ShardOwnership\.AShardKilledMidwayIsTakenOverAndResumedToTheUnshardedRows$'
+    # The whole gallery checked through each GL driver against the other's
+    # goldens (30 s), and the quick bench's every chart as SVG (19 s): the
+    # check run, the painters and the vector figures run under ASan in
+    # test_check, test_paint and test_vector.
+    '^GlBackends\.GalleryGoldensFromEachBackendPassOnTheOther$'
+    '^FigureFormatOption\.BenchWritesEveryChartAsSvg$'
     # The GL tests' second pass on OSMesa: the same code of ours on another driver
     # (the driver is not instrumented); gl_context_test still makes an OSMesa
     # context and draws with it in the first pass.
