@@ -129,65 +129,69 @@ TEST(DenseScatter, TheImageLayerLooksLikeThePng) {
   EXPECT_LT(check::ssim(gl.width, gl.height, other.pixels, raster->rgba), 0.9);
 }
 
+// `list` painted by cairo on black, `width` x `height`: its pixels' red and blue.
+class CairoPixels {
+ public:
+  CairoPixels(const render::DrawList& list, int width, int height)
+      : surface_(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height)) {
+    cairo_t* cr = cairo_create(surface_);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_paint(cr);
+    vector::paint_shapes(cr, list);
+    cairo_destroy(cr);
+    cairo_surface_flush(surface_);
+  }
+  ~CairoPixels() { cairo_surface_destroy(surface_); }
+  CairoPixels(const CairoPixels&) = delete;
+  CairoPixels& operator=(const CairoPixels&) = delete;
+  // ARGB32 in native byte order: blue, green, red, alpha on this machine.
+  int red(int x, int y) const { return channel(x, y, 2); }
+  int blue(int x, int y) const { return channel(x, y, 0); }
+
+ private:
+  int channel(int x, int y, int c) const {
+    const unsigned char* data = cairo_image_surface_get_data(surface_);
+    return int(data[y * cairo_image_surface_get_stride(surface_) + 4 * x + c]);
+  }
+  cairo_surface_t* surface_;
+};
+
 // The renderer's square dots (a cloud of states in the (a, b) panel) are
 // squares of their size in a vector figure too, in their colour.
 TEST(VectorDots, SquaresOfTheirSizeWhereTheRendererPutsThem) {
-  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 40, 30);
-  cairo_t* cr = cairo_create(surface);
-  cairo_set_source_rgb(cr, 0, 0, 0);
-  cairo_paint(cr);
   render::DrawList list;
   const render::ColouredVertex dots[] = {{{10.0f, 10.0f, 0.0f}, {1, 0, 0, 1}},
                                          {{30.0f, 20.0f, 0.0f}, {0, 0, 1, 1}}};
   list.add_dots(dots, 4.0f);
-  vector::paint_shapes(cr, list);
-  cairo_surface_flush(surface);
-  const unsigned char* data = cairo_image_surface_get_data(surface);
-  const int stride = cairo_image_surface_get_stride(surface);
-  // ARGB32 in native byte order: blue, green, red, alpha on this machine.
-  const auto channel = [&](int x, int y, int c) { return int(data[y * stride + 4 * x + c]); };
+  const CairoPixels p(list, 40, 30);
   int red = 0, blue = 0;
   for (int y = 0; y < 30; ++y)
     for (int x = 0; x < 40; ++x) {
-      red += channel(x, y, 2) > 200;
-      blue += channel(x, y, 0) > 200;
+      red += p.red(x, y) > 200;
+      blue += p.blue(x, y) > 200;
     }
   EXPECT_EQ(red, 16);
   EXPECT_EQ(blue, 16);
-  EXPECT_GT(channel(9, 9, 2), 200);
-  EXPECT_GT(channel(29, 19, 0), 200);
-  cairo_destroy(cr);
-  cairo_surface_destroy(surface);
+  EXPECT_GT(p.red(9, 9), 200);
+  EXPECT_GT(p.blue(29, 19), 200);
 }
 
 // A path coloured along its length (the (a, b) plane's trail, by time) keeps
 // its colours in a vector figure: each segment blends its ends' colours, as
 // the GL line shader does, rather than taking the first vertex's colour.
 TEST(VectorLines, AColourAlongAPathIsBlendedAsGlDoes) {
-  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 100, 20);
-  cairo_t* cr = cairo_create(surface);
-  cairo_set_source_rgb(cr, 0, 0, 0);
-  cairo_paint(cr);
   render::DrawList list;
   const render::LineVertex path[] = {{{0.0f, 10.0f, 0.0f}, {1, 0, 0, 1}},
                                      {{50.0f, 10.0f, 0.0f}, {1, 0, 0, 1}},
                                      {{100.0f, 10.0f, 0.0f}, {0, 0, 1, 1}}};
   list.add_polyline(path, 4.0f);
-  vector::paint_shapes(cr, list);
-  cairo_surface_flush(surface);
-  const unsigned char* data = cairo_image_surface_get_data(surface);
-  const int stride = cairo_image_surface_get_stride(surface);
-  // ARGB32 in native byte order: blue, green, red, alpha on this machine.
-  const auto red = [&](int x) { return int(data[10 * stride + 4 * x + 2]); };
-  const auto blue = [&](int x) { return int(data[10 * stride + 4 * x + 0]); };
-  EXPECT_GT(red(10), 240);
-  EXPECT_LT(blue(10), 15);
-  EXPECT_GT(blue(95), 220) << "the end of the path keeps its own colour";
-  EXPECT_LT(red(95), 35);
-  EXPECT_NEAR(red(75), 128, 20) << "half way along the last segment";
-  EXPECT_NEAR(blue(75), 128, 20);
-  cairo_destroy(cr);
-  cairo_surface_destroy(surface);
+  const CairoPixels p(list, 100, 20);
+  EXPECT_GT(p.red(10, 10), 240);
+  EXPECT_LT(p.blue(10, 10), 15);
+  EXPECT_GT(p.blue(95, 10), 220) << "the end of the path keeps its own colour";
+  EXPECT_LT(p.red(95, 10), 35);
+  EXPECT_NEAR(p.red(75, 10), 128, 20) << "half way along the last segment";
+  EXPECT_NEAR(p.blue(75, 10), 128, 20);
 }
 
 }  // namespace
