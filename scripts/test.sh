@@ -29,10 +29,10 @@ bash tests/sanitizers/run.sh "$sanitizers"
 stage_done "sanitizer passes"
 # libFuzzer on the job reader, simulate's options, the page protocol, the
 # sweep reader, shard manifests, golden PNGs and section files, from the
-# committed corpora, 20 s each, two at a time (a longer search is
+# committed corpora, 10 s each, two at a time (a longer search is
 # `scripts/fuzz.sh 600`, docs/architecture.md); in the ASan tree when the
 # sanitizer pass built it, else in build-fuzz/.
 fuzz_build=build-fuzz
 case "$sanitizers" in all | asan) fuzz_build=build-asan ;; esac
-EPVIZ_FUZZ_BUILD=$fuzz_build bash scripts/fuzz.sh 20
+EPVIZ_FUZZ_BUILD=$fuzz_build bash scripts/fuzz.sh 10
 stage_done "fuzzing"
