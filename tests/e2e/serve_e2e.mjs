@@ -161,8 +161,11 @@ await run({
         return controls && Array.isArray(controls[name]) ? controls : null;
       });
       const r = await frameRectToCss(page, c[name]);
+      const shown = (await epvizState(page)).framesShown;
       await page.mouse.click(r.x + r.w / 2, r.y + r.h / 2);
-      await sleep(300);  // the next frames lay out what the click opened
+      // Two frames later the panel has laid out what the click opened.
+      await waitFor(`frames after clicking '${name}'`, 5000,
+                    async () => (await epvizState(page)).framesShown >= shown + 2);
     };
     const runRows = async () => {
       const c = (await epvizState(page)).header.controls || {};
@@ -180,7 +183,9 @@ await run({
     await waitFor('a third run', 5000, async () => (await runRows()) === 3);
     log('ok: an RK4 run and a nudged run added from the panel: 3 runs');
     await clickControl('play');
-    await sleep(4000);
+    const playing = (await epvizState(page)).framesShown;
+    await waitFor('60 frames of the three runs playing', 20000,
+                  async () => (await epvizState(page)).framesShown >= playing + 60);
     await clickControl('play');
     controls = await currentControls();
     await waitStill(page, controls.view3d, 500, 5000);
