@@ -260,49 +260,70 @@ class BatchEmbedded {
     void rhs(double, const State&, State& dx) const { dx[0] = 0; }
   };
 
+  // A trajectory's last step and its bookkeeping for the output: in a lane
+  // (L_), or in a slot of the steps whose dense output waits (pending_).
+  struct Slot {
+    Lanes* L;
+    int l;
+    long task;
+    std::size_t* next_out;
+    bool stepped;
+    bool* dense_counted;
+  };
+  Slot lane(int l) {
+    return {L_.get(), l, task_[l], &next_out_[l], stepped_[l], &dense_counted_[l]};
+  }
+
   void load(int l);
   bool start(int l);  // false when the trajectory ended or failed at its start
   bool prepare(int l);
   bool decide(int l);  // true when accepted
   double initial_step(int l) const;
-  bool emit_outputs(int l);  // false when the output check failed the trajectory
-  bool hook_asks(int l);     // fills step_[l]; whether the hook wants its dense output
-  bool hook_looks(int l);    // false when the hook ended the trajectory
-  std::array<double, D> dense_used(int l, double t);
-  void count_dense(int l);
-  void finish(int l, std::optional<Failure> failure);
+  bool emit_outputs(const Slot& s);  // false when the output check failed the trajectory
+  bool hook_asks(int l);             // fills step_[l]; whether the hook wants its dense output
+  bool hook_looks(int l);            // false when the hook ended the trajectory
+  void defer(int l);
+  void flush_pending();
+  std::array<double, D> dense_used(const Slot& s, double t);
+  void count_dense(const Slot& s);
+  void finish(const Slot& s, std::optional<Failure> failure);
   void fail(int l, FailureKind kind, std::string detail) {
-    finish(l, Failure{L_->t[l], name, kind, std::move(detail)});
+    finish(lane(l), Failure{L_->t[l], name, kind, std::move(detail)});
   }
-  double dense(int l, int i, double s) const {  // s: (t - t_prev) / h_last
-    const double s1 = 1.0 - s;
-    double r = L_->cont[M - 1][i][l];
-    for (int j = M - 2; j >= 0; --j) r = L_->cont[j][i][l] + ((j % 2 == 0) ? s : s1) * r;
+  static double dense(const Slot& s, int i, double u) {  // u: (t - t_prev) / h_last
+    const double u1 = 1.0 - u;
+    const auto& c = s.L->cont;
+    double r = c[M - 1][i][s.l];
+    for (int j = M - 2; j >= 0; --j) r = c[j][i][s.l] + ((j % 2 == 0) ? u : u1) * r;
     return r;
   }
-  std::array<double, D> dense(int l, double t) const {
-    const double s = (t - L_->t_prev[l]) / L_->h_last[l];
+  static double dense_position(const Slot& s, double t) {
+    return (t - s.L->t_prev[s.l]) / s.L->h_last[s.l];
+  }
+  static std::array<double, D> dense(const Slot& s, double t) {
+    const double u = dense_position(s, t);
     std::array<double, D> x;
-    for (int i = 0; i < D; ++i) x[std::size_t(i)] = dense(l, i, s);
+    for (int i = 0; i < D; ++i) x[std::size_t(i)] = dense(s, i, u);
     return x;
   }
   // Lane l's dense output, for a step hook (counted as used, as dense_used).
   class LaneDense final : public BatchDense<D> {
    public:
-    LaneDense(BatchEmbedded& b, int l) : b_(b), l_(l) {}
-    std::array<double, D> operator()(double t) const override { return b_.dense_used(l_, t); }
+    LaneDense(BatchEmbedded& b, const Slot& s) : b_(b), s_(s) {}
+    std::array<double, D> operator()(double t) const override { return b_.dense_used(s_, t); }
     double component(int i, double t) const override {
-      b_.count_dense(l_);
-      return b_.dense(l_, i, (t - b_.L_->t_prev[l_]) / b_.L_->h_last[l_]);
+      b_.count_dense(s_);
+      return dense(s_, i, dense_position(s_, t));
     }
 
    private:
     BatchEmbedded& b_;
-    int l_;
+    Slot s_;
   };
-  double err_power(double err) const {
-    if (expo_ == 0.125) return 1.0 / std::sqrt(std::sqrt(std::sqrt(err)));
-    return std::exp(-expo_ * std::log(err));
+  // err^-expo of lane l's attempt (EmbeddedRk's power of the error).
+  double err_power(int l) const {
+    if (expo_ == 0.125) return L_->err_root8[l];
+    return std::exp(-expo_ * std::log(L_->err[l]));
   }
 
   Sys sys_;
@@ -325,7 +346,16 @@ class BatchEmbedded {
   bool hook_dense_[W];     // the hook asked for this step's dense output
   BatchStep<D> step_[W];   // the step the hook is shown
   bool dense_counted_[W];  // this step's dense output evaluations are counted
-  double err_pow_[W];      // err_power of the attempt's error
+  bool deferred_[W];       // the lane's trajectory ended; its last step waits in pending_
+
+  // Steps that end their trajectories and need their dense output for nothing
+  // else: their lanes take new trajectories at once, and their dense outputs
+  // are computed W at a time (the kernel's cost is the same for one lane or W).
+  std::unique_ptr<Lanes> pending_;
+  int pending_count_ = 0;
+  long pending_task_[W];
+  std::size_t pending_next_out_[W];
+  bool pending_dense_counted_[W];
 };
 
 template <BatchSystem Sys, int W, class Tableau>
@@ -333,6 +363,8 @@ auto BatchEmbedded<Sys, W, Tableau>::run(const std::vector<BatchTask<D>>& tasks)
     -> std::vector<BatchResult<D>> {
   queue_ = std::make_unique<batch::TaskQueue<D>>(tasks);
   L_ = std::make_unique<Lanes>();
+  pending_ = std::make_unique<Lanes>();
+  pending_count_ = 0;
   L_->atol = opts_.atol;
   L_->rtol = opts_.rtol;
   for (int l = 0; l < W; ++l) load(l);
@@ -340,34 +372,47 @@ auto BatchEmbedded<Sys, W, Tableau>::run(const std::vector<BatchTask<D>>& tasks)
   const auto load_lane = [this](int l) { load(l); };
   while (batch::ready_lanes(task_, prepare_lane, load_lane)) {
     kernels_.attempt(*L_, sys_);
-    // The controller's power of every lane's error in one loop, where the
-    // lanes' chains of square roots overlap (decide uses it lane by lane).
-    for (int l = 0; l < W; ++l) err_pow_[l] = err_power(L_->err[l]);
-    bool need_dense = false;
+    // Each lane decides on its own; what is done to the accepted lanes' state
+    // is done to all of them at once in the kernels (commit, dense, fsal).
     for (int l = 0; l < W; ++l) {
       accepted_[l] = task_[l] >= 0 && decide(l);
+      L_->accept[l] = accepted_[l] ? ~0LL : 0LL;
+    }
+    kernels_.commit(*L_);
+    // The dense output is computed now when a trajectory goes on after an
+    // output or a look of the hook; steps that only end their trajectories
+    // wait in pending_ unless it is computed anyway.
+    bool need_dense = false, ending = false;
+    for (int l = 0; l < W; ++l) {
+      deferred_[l] = false;
       if (!accepted_[l]) continue;
       const auto& task = queue_->task(task_[l]);
       hook_dense_[l] = hook_ && hook_asks(l);
-      need_dense =
-          need_dense || hook_dense_[l] || L_->t[l] >= task.t_end ||
-          (next_out_[l] < task.out_times.size() && task.out_times[next_out_[l]] <= L_->t[l]);
+      const bool ends = L_->t[l] >= task.t_end;
+      ending = ending || ends;
+      need_dense = need_dense || hook_dense_[l] ||
+                   (!ends && next_out_[l] < task.out_times.size() &&
+                    task.out_times[next_out_[l]] <= L_->t[l]);
     }
-    if (need_dense) kernels_.dense(*L_, sys_);
+    if (need_dense) {
+      kernels_.dense(*L_, sys_);
+    } else if (ending) {
+      for (int l = 0; l < W; ++l)
+        if (accepted_[l] && L_->t[l] >= queue_->task(task_[l]).t_end) defer(l);
+    }
+    kernels_.fsal(*L_);
     for (int l = 0; l < W; ++l) {
       if (!accepted_[l]) continue;
-      if (!emit_outputs(l) || (hook_dense_[l] && !hook_looks(l))) {
+      if (deferred_[l] || !emit_outputs(lane(l)) || (hook_dense_[l] && !hook_looks(l))) {
         load(l);
-        continue;
-      }
-      if (L_->t[l] >= queue_->task(task_[l]).t_end) {
-        finish(l, std::nullopt);
+      } else if (L_->t[l] >= queue_->task(task_[l]).t_end) {
+        finish(lane(l), std::nullopt);
         load(l);
-      } else {
-        batch::copy_lane(L_->k[0], L_->k[S], l);  // FSAL
       }
     }
   }
+  flush_pending();
+  pending_.reset();
   L_.reset();
   auto results = queue_->release();
   queue_.reset();
@@ -404,9 +449,9 @@ bool BatchEmbedded<Sys, W, Tableau>::start(int l) {
   last_rejected_[l] = false;
   stepped_[l] = false;
   next_out_[l] = 0;
-  if (!emit_outputs(l)) return false;  // those at t0: x0, as EmbeddedRk::dense before a step
+  if (!emit_outputs(lane(l))) return false;  // those at t0: x0, as EmbeddedRk::dense before a step
   if (task.t_end <= task.t0) {
-    finish(l, std::nullopt);
+    finish(lane(l), std::nullopt);
     return false;
   }
   double x[D], k0[D];
@@ -477,11 +522,11 @@ template <BatchSystem Sys, int W, class Tableau>
 bool BatchEmbedded<Sys, W, Tableau>::decide(int l) {
   auto& result = queue_->result(task_[l]);
   const double h = L_->h[l], err = L_->err[l];
-  const bool finite = std::isfinite(err) && batch::lane_finite(L_->xnew, l);
+  const bool finite = L_->trial_finite[l] != 0;
   if (finite && err <= 1.0) {
     double fac;
     if (beta_ == 0.0) {
-      fac = opts_.safety * err_pow_[l];
+      fac = opts_.safety * err_power(l);
     } else {
       const double log_err = std::log(err);
       fac = opts_.safety * std::exp(beta_ * log_err_old_[l] - expo_ * log_err);
@@ -489,12 +534,7 @@ bool BatchEmbedded<Sys, W, Tableau>::decide(int l) {
     }
     fac = std::clamp(fac, fac_min_, fac_max_);
     if (last_rejected_[l]) fac = std::min(fac, 1.0);
-    L_->t_prev[l] = L_->t[l];
-    batch::copy_lane(L_->x_prev, L_->x, l);
-    L_->t[l] += h;
-    batch::copy_lane(L_->x, L_->xnew, l);
-    L_->h_last[l] = h;
-    h_next_[l] = h * fac;
+    h_next_[l] = h * fac;  // the state moves on in the commit kernel
     last_rejected_[l] = false;
     consecutive_rejects_[l] = nonfinite_trials_[l] = 0;
     stepped_[l] = true;
@@ -507,7 +547,7 @@ bool BatchEmbedded<Sys, W, Tableau>::decide(int l) {
   last_rejected_[l] = true;
   double fac = fac_min_;
   if (finite) {
-    fac = std::max(fac_min_, opts_.safety * err_pow_[l]);
+    fac = std::max(fac_min_, opts_.safety * err_power(l));
   } else {
     ++nonfinite_trials_[l];
   }
@@ -526,40 +566,75 @@ bool BatchEmbedded<Sys, W, Tableau>::decide(int l) {
   return false;
 }
 
-// The state at t on lane l's last step (its dense output), counting the
+// The state at t on the slot's last step (its dense output), counting the
 // evaluations of the continuous extension once per step, as EmbeddedRk's
 // lazy dense output does; x itself before the first step.
 template <BatchSystem Sys, int W, class Tableau>
-auto BatchEmbedded<Sys, W, Tableau>::dense_used(int l, double t) -> std::array<double, D> {
-  if (!stepped_[l]) return batch::lane(L_->x, l);
-  count_dense(l);
-  return dense(l, t);
+auto BatchEmbedded<Sys, W, Tableau>::dense_used(const Slot& s, double t) -> std::array<double, D> {
+  if (!s.stepped) return batch::lane(s.L->x, s.l);
+  count_dense(s);
+  return dense(s, t);
 }
 
 template <BatchSystem Sys, int W, class Tableau>
-void BatchEmbedded<Sys, W, Tableau>::count_dense(int l) {
-  if (dense_counted_[l]) return;
-  queue_->result(task_[l]).rhs_evals += N - Tableau::stages - 1;
-  dense_counted_[l] = true;
+void BatchEmbedded<Sys, W, Tableau>::count_dense(const Slot& s) {
+  if (*s.dense_counted) return;
+  queue_->result(s.task).rhs_evals += N - Tableau::stages - 1;
+  *s.dense_counted = true;
 }
 
 template <BatchSystem Sys, int W, class Tableau>
-bool BatchEmbedded<Sys, W, Tableau>::emit_outputs(int l) {
-  const auto& task = queue_->task(task_[l]);
-  auto& result = queue_->result(task_[l]);
-  for (; next_out_[l] < task.out_times.size(); ++next_out_[l]) {
-    const double t = task.out_times[next_out_[l]];
-    if (!(t <= L_->t[l])) break;
-    const std::array<double, D> x = dense_used(l, t);
+bool BatchEmbedded<Sys, W, Tableau>::emit_outputs(const Slot& s) {
+  const auto& task = queue_->task(s.task);
+  auto& result = queue_->result(s.task);
+  for (std::size_t& next = *s.next_out; next < task.out_times.size(); ++next) {
+    const double t = task.out_times[next];
+    if (!(t <= s.L->t[s.l])) break;
+    const std::array<double, D> x = dense_used(s, t);
     if (check_) {
       if (auto failure = check_(task.id, t, x)) {
-        finish(l, std::move(*failure));
+        finish(s, std::move(*failure));
         return false;
       }
     }
     result.outputs.push_back(x);
   }
   return true;
+}
+
+// Lane l's last step, which ends its trajectory, to a slot of pending_ (the
+// dense output reads x_prev, x, k[0 .. S], t_prev and h_last).
+template <BatchSystem Sys, int W, class Tableau>
+void BatchEmbedded<Sys, W, Tableau>::defer(int l) {
+  if (pending_count_ == W) flush_pending();
+  const int j = pending_count_++;
+  Lanes& P = *pending_;
+  for (int i = 0; i < D; ++i) {
+    P.x_prev[i][j] = L_->x_prev[i][l];
+    P.x[i][j] = L_->x[i][l];
+    for (int r = 0; r <= S; ++r) P.k[r][i][j] = L_->k[r][i][l];
+  }
+  P.t[j] = L_->t[l];
+  P.t_prev[j] = L_->t_prev[l];
+  P.h_last[j] = L_->h_last[l];
+  pending_task_[j] = task_[l];
+  pending_next_out_[j] = next_out_[l];
+  pending_dense_counted_[j] = dense_counted_[l];
+  deferred_[l] = true;
+}
+
+// The dense outputs of the pending steps, then their trajectories' outputs
+// and ends.
+template <BatchSystem Sys, int W, class Tableau>
+void BatchEmbedded<Sys, W, Tableau>::flush_pending() {
+  if (pending_count_ == 0) return;
+  kernels_.dense(*pending_, sys_);
+  for (int j = 0; j < pending_count_; ++j) {
+    const Slot s{pending_.get(),        j,    pending_task_[j],
+                 &pending_next_out_[j], true, &pending_dense_counted_[j]};
+    if (emit_outputs(s)) finish(s, std::nullopt);
+  }
+  pending_count_ = 0;
 }
 
 template <BatchSystem Sys, int W, class Tableau>
@@ -575,23 +650,23 @@ bool BatchEmbedded<Sys, W, Tableau>::hook_asks(int l) {
 
 template <BatchSystem Sys, int W, class Tableau>
 bool BatchEmbedded<Sys, W, Tableau>::hook_looks(int l) {
-  BatchStepVerdict verdict = hook_.look(step_[l], LaneDense(*this, l));
+  BatchStepVerdict verdict = hook_.look(step_[l], LaneDense(*this, lane(l)));
   if (!verdict.failure && !verdict.stop) return true;
   if (!verdict.failure) queue_->result(task_[l]).stopped = true;
-  finish(l, std::move(verdict.failure));
+  finish(lane(l), std::move(verdict.failure));
   return false;
 }
 
 template <BatchSystem Sys, int W, class Tableau>
-void BatchEmbedded<Sys, W, Tableau>::finish(int l, std::optional<Failure> failure) {
-  const auto& task = queue_->task(task_[l]);
-  auto& result = queue_->result(task_[l]);
+void BatchEmbedded<Sys, W, Tableau>::finish(const Slot& s, std::optional<Failure> failure) {
+  const auto& task = queue_->task(s.task);
+  auto& result = queue_->result(s.task);
   if (failure || result.stopped) {
-    result.t = L_->t[l];
-    result.x = batch::lane(L_->x, l);
+    result.t = s.L->t[s.l];
+    result.x = batch::lane(s.L->x, s.l);
   } else {
     result.t = task.t_end;
-    result.x = dense_used(l, task.t_end);
+    result.x = dense_used(s, task.t_end);
   }
   result.failure = std::move(failure);
   if (events_.ended) events_.ended(task.id, result);

@@ -96,8 +96,44 @@ struct Lanewise {
     if constexpr (W == 1) {
       return a < b ? b : a;
     } else {
-      const Mask m = a < b;
-      return (V)((m & (Mask)b) | (~m & (Mask)a));
+      return select(a < b, b, a);
+    }
+  }
+  // a where m is set (all ones), b elsewhere.
+  [[gnu::always_inline]] static inline V select(Mask m, V a, V b) {
+    if constexpr (W == 1) {
+      return m ? a : b;
+    } else {
+      return (V)((m & (Mask)a) | (~m & (Mask)b));
+    }
+  }
+  [[gnu::always_inline]] static inline Mask load_mask(const long long (&row)[W]) {
+    Mask m;
+    __builtin_memcpy(&m, row, sizeof m);
+    return m;
+  }
+  [[gnu::always_inline]] static inline void store_mask(long long (&row)[W], Mask m) {
+    __builtin_memcpy(row, &m, sizeof m);
+  }
+  // All ones where a is NaN or infinite: a - a is NaN there and 0 elsewhere.
+  [[gnu::always_inline]] static inline Mask not_finite(V a) {
+    if constexpr (W == 1) {
+      return __builtin_isfinite(a) ? 0 : -1;
+    } else {
+      const V z = a - a;
+      return z != z;
+    }
+  }
+  // The correctly rounded square root lane by lane, as a loop the compiler
+  // makes one vector instruction (the units have -fno-math-errno).
+  [[gnu::always_inline]] static inline V sqrt(V a) {
+    if constexpr (W == 1) {
+      return __builtin_sqrt(a);
+    } else {
+      double r[W];
+      store(r, a);
+      for (int l = 0; l < W; ++l) r[l] = __builtin_sqrt(r[l]);
+      return load(r);
     }
   }
 };
@@ -105,7 +141,9 @@ struct Lanewise {
 template <class Sys, int W, class Tableau, class Tag>
 struct EmbeddedKernel : Lanewise<W, Tag> {
   using Base = Lanewise<W, Tag>;
-  using Base::abs, Base::load, Base::max, Base::store;
+  using Base::abs, Base::load, Base::load_mask, Base::max, Base::not_finite, Base::select,
+      Base::sqrt, Base::store, Base::store_mask;
+  using typename Base::Mask;
   using typename Base::V;
   static constexpr int D = Sys::dim;
   static constexpr int S = Tableau::stages;
@@ -185,9 +223,12 @@ struct EmbeddedKernel : Lanewise<W, Tag> {
     error_norm(L);
   }
 
-  // Hairer's error norm, as EmbeddedRk::error_norm computes it.
+  // Hairer's error norm, as EmbeddedRk::error_norm computes it, then what the
+  // driver's decision needs of it (EmbeddedLanes).
   [[gnu::always_inline]] static inline void error_norm(Lanes& L) {
     constexpr double n = double(D);
+    const V h = load(L.h);
+    V err;
     if constexpr (Tableau::two_estimators) {
       V q3[D], q5[D];
       for (int i = 0; i < D; ++i) {
@@ -197,14 +238,10 @@ struct EmbeddedKernel : Lanewise<W, Tag> {
         q3[i] = e3 * e3;
         q5[i] = e5 * e5;
       }
-      double e3[W], e5[W];
-      store(e3, eigen_order_sum(q3));
-      store(e5, eigen_order_sum(q5));
-      for (int l = 0; l < W; ++l) {
-        double deno = e5[l] + 0.01 * e3[l];
-        if (deno <= 0.0) deno = 1.0;
-        L.err[l] = __builtin_fabs(L.h[l]) * e5[l] / __builtin_sqrt(n * deno);
-      }
+      const V e3 = eigen_order_sum(q3), e5 = eigen_order_sum(q5);
+      V deno = e5 + 0.01 * e3;
+      deno = select(deno <= 0.0, V{} + 1.0, deno);
+      err = abs(h) * e5 / sqrt(n * deno);
     } else {
       V q[D];
       for (int i = 0; i < D; ++i) {
@@ -212,10 +249,31 @@ struct EmbeddedKernel : Lanewise<W, Tag> {
         const V e = dot<RowRef<Tableau::e>, error_terms>(L.k, i) * inv_sk;
         q[i] = e * e;
       }
-      double sum[W];
-      store(sum, eigen_order_sum(q));
-      for (int l = 0; l < W; ++l) L.err[l] = __builtin_fabs(L.h[l]) * __builtin_sqrt(sum[l] / n);
+      err = abs(h) * sqrt(eigen_order_sum(q) / n);
     }
+    store(L.err, err);
+    store(L.err_root8, 1.0 / sqrt(sqrt(sqrt(err))));
+    Mask bad = not_finite(err);
+    for (int i = 0; i < D; ++i) bad |= not_finite(load(L.xnew[i]));
+    store_mask(L.trial_finite, ~bad);
+  }
+
+  static void commit(Lanes& L) {
+    const Mask m = load_mask(L.accept);
+    const V t = load(L.t), h = load(L.h);
+    store(L.t_prev, select(m, t, load(L.t_prev)));
+    store(L.t, select(m, t + h, t));
+    store(L.h_last, select(m, h, load(L.h_last)));
+    for (int i = 0; i < D; ++i) {
+      const V x = load(L.x[i]);
+      store(L.x_prev[i], select(m, x, load(L.x_prev[i])));
+      store(L.x[i], select(m, load(L.xnew[i]), x));
+    }
+  }
+
+  static void fsal(Lanes& L) {
+    const Mask m = load_mask(L.accept);
+    for (int i = 0; i < D; ++i) store(L.k[0][i], select(m, load(L.k[S][i]), load(L.k[0][i])));
   }
 
   // As EmbeddedRk::prepare_dense.
@@ -242,7 +300,7 @@ struct EmbeddedKernel : Lanewise<W, Tag> {
         ...);
   }
 
-  static constexpr EmbeddedKernels<Sys, W, Tableau> table{&attempt, &dense};
+  static constexpr EmbeddedKernels<Sys, W, Tableau> table{&attempt, &commit, &dense, &fsal};
 };
 
 // As Rk4::step, lane by lane.

@@ -53,6 +53,11 @@ struct EmbeddedLanes {
   alignas(64) double h[W];       // size of the trial step
   alignas(64) double h_last[W];  // size of the last accepted step
   alignas(64) double err[W];     // error norm of the trial step (<= 1: accepted)
+  // 1 / err^(1/8): the step-size factor of an eighth-order controller without
+  // beta (the driver's err_power), for every lane in one vector.
+  alignas(64) double err_root8[W];
+  alignas(64) long long trial_finite[W];  // nonzero when err and xnew are all finite
+  alignas(64) long long accept[W];        // set by the driver: ~0 for each lane accepted
   double atol = 0, rtol = 0;
 };
 
@@ -61,11 +66,17 @@ template <class Sys, int W, class Tableau>
 struct EmbeddedKernels {
   using Lanes = EmbeddedLanes<Sys::dim, W, Tableau>;
   // Stages 1 .. S-1 from (t, x) with k[0] set and step h, then xnew, acc,
-  // k[S] = f(t + h, xnew) and err; every lane, whether it will be accepted or not.
+  // k[S] = f(t + h, xnew), err, err_root8 and trial_finite; every lane,
+  // whether it will be accepted or not.
   void (*attempt)(Lanes&, const Sys&);
+  // The accepted lanes (accept) move on: t_prev, x_prev = t, x; t, x =
+  // t + h, xnew; h_last = h. The others are left as they are.
+  void (*commit)(Lanes&);
   // cont from x_prev, x, k[0 .. S] and h_last of every lane (the extra stages
   // of the continuous extension are evaluated into k[S+1 ..]).
   void (*dense)(Lanes&, const Sys&);
+  // First same as last: k[0] = k[S] in the accepted lanes.
+  void (*fsal)(Lanes&);
 };
 
 // Lanes of the classical fourth-order Runge–Kutta method.

@@ -201,6 +201,75 @@ TEST(DirectBatch, AnOutputCheckFailsItsLaneAlone) {
 
 // The step budget is per trajectory: the long ones fail in the middle of the
 // batch (step_budget), the short ones finish, each as alone.
+// Trajectories whose last step holds their only output: the steps that end
+// trajectories wait for their dense output to be computed several at a time
+// while their lanes go on with new ones. Each still ends as alone, once, its
+// result complete when it is told ended; a check that refuses the output in
+// that last step fails it there.
+TEST(DirectBatch, TrajectoriesEndingInTheirLastStepEndAsAlone) {
+  auto tasks = mixed_tasks(29);
+  for (std::size_t i = 0; i < tasks.size(); ++i) {
+    tasks[i].id = long(i);
+    tasks[i].out_times = {tasks[i].t_end * (1.0 - 1e-9)};
+  }
+  const auto refused = [](long id) { return id % 4 == 1; };
+  const auto refusal = [](double t) {
+    return numerics::Failure{t, "dop853", numerics::FailureKind::lost_motion, "refused"};
+  };
+  DirectBatchSettings settings;
+  settings.adaptive = tolerance(1e-9);
+  settings.check = [&](long id, double t,
+                       const std::array<double, 6>&) -> std::optional<numerics::Failure> {
+    if (refused(id)) return refusal(t);
+    return std::nullopt;
+  };
+  std::vector<DirectBatchResult> expected;
+  for (const auto& task : tasks) {
+    if (!refused(task.id)) {
+      expected.push_back(test::dop853_alone(generic_body(), task, settings.adaptive));
+      continue;
+    }
+    numerics::Dop853<DirectSystem> s(DirectSystem(generic_body()), settings.adaptive);
+    s.init(task.t0, test::to_state(task.x0));
+    while (s.t() < task.out_times[0]) s.step();
+    (void)s.dense(task.out_times[0]);
+    ASSERT_GE(s.t(), task.t_end) << "the output must lie in the last step";
+    DirectBatchResult r;
+    r.t = s.t();
+    r.x = test::to_array(s.state());
+    r.steps = s.stats().steps;
+    r.rejected_steps = s.stats().rejected_steps;
+    r.rhs_evals = s.stats().rhs_evals;
+    r.failure = refusal(task.out_times[0]);
+    expected.push_back(r);
+  }
+  for (SimdPath path : paths_of_this_cpu()) {
+    for (int width : {1, 2, 4, 8}) {
+      settings.path = path;
+      settings.width = width;
+      std::vector<int> ended(tasks.size(), 0);
+      std::vector<DirectBatchResult> told(tasks.size());
+      settings.events.ended = [&](long id, const DirectBatchResult& r) {
+        ++ended[std::size_t(id)];
+        told[std::size_t(id)] = r;
+      };
+      const auto batch = integrate_direct_batch(generic_body(), tasks, settings);
+      for (std::size_t i = 0; i < tasks.size(); ++i) {
+        std::string where = "trajectory ";
+        where += std::to_string(i);
+        where += ", path ";
+        where += numerics::name(path);
+        where += ", ";
+        where += std::to_string(width);
+        where += " lanes";
+        EXPECT_TRUE(identical(batch[i], expected[i])) << where;
+        EXPECT_EQ(ended[i], 1) << where;
+        EXPECT_TRUE(identical(told[i], expected[i])) << where;
+      }
+    }
+  }
+}
+
 TEST(DirectBatch, StepBudgetStopsTheLongTrajectoriesOnly) {
   DirectBatchSettings settings;
   settings.adaptive = tolerance(1e-10);
