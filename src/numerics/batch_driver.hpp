@@ -168,6 +168,7 @@ class TaskQueue {
   }
   // The index of the next trajectory, or -1 when none is left.
   long take() { return next_ < tasks_.size() ? long(next_++) : -1; }
+  long size() const { return long(tasks_.size()); }
   const BatchTask<D>& task(long i) const { return tasks_[std::size_t(i)]; }
   BatchResult<D>& result(long i) { return results_[std::size_t(i)]; }
   std::vector<BatchResult<D>> release() { return std::move(results_); }
@@ -277,8 +278,8 @@ class BatchEmbedded {
   void load(int l);
   bool start(int l);  // false when the trajectory ended or failed at its start
   bool prepare(int l);
-  bool decide(int l);  // true when accepted
-  double initial_step(int l) const;
+  bool decide(int l);                // true when accepted
+  int start_slot(long task);         // where the task's k0 and h0 are in starts_
   bool emit_outputs(const Slot& s);  // false when the output check failed the trajectory
   bool hook_asks(int l);             // fills step_[l]; whether the hook wants its dense output
   bool hook_looks(int l);            // false when the hook ended the trajectory
@@ -356,6 +357,9 @@ class BatchEmbedded {
   long pending_task_[W];
   std::size_t pending_next_out_[W];
   bool pending_dense_counted_[W];
+
+  std::unique_ptr<typename Kernels::Starts> starts_;
+  long start_first_ = 0;  // the task in starts_' first slot
 };
 
 template <BatchSystem Sys, int W, class Tableau>
@@ -365,6 +369,11 @@ auto BatchEmbedded<Sys, W, Tableau>::run(const std::vector<BatchTask<D>>& tasks)
   L_ = std::make_unique<Lanes>();
   pending_ = std::make_unique<Lanes>();
   pending_count_ = 0;
+  starts_ = std::make_unique<typename Kernels::Starts>();
+  starts_->atol = opts_.atol;
+  starts_->rtol = opts_.rtol;
+  starts_->h_max = opts_.h_max;
+  start_first_ = -W;
   L_->atol = opts_.atol;
   L_->rtol = opts_.rtol;
   for (int l = 0; l < W; ++l) load(l);
@@ -413,6 +422,7 @@ auto BatchEmbedded<Sys, W, Tableau>::run(const std::vector<BatchTask<D>>& tasks)
   }
   flush_pending();
   pending_.reset();
+  starts_.reset();
   L_.reset();
   auto results = queue_->release();
   queue_.reset();
@@ -454,47 +464,36 @@ bool BatchEmbedded<Sys, W, Tableau>::start(int l) {
     finish(lane(l), std::nullopt);
     return false;
   }
-  double x[D], k0[D];
-  for (int i = 0; i < D; ++i) x[i] = L_->x[i][l];
-  sys_.rhs(task.t0, x, k0);
+  const int j = start_slot(task_[l]);
+  for (int i = 0; i < D; ++i) L_->k[0][i][l] = starts_->k0[i][j];
   ++queue_->result(task_[l]).rhs_evals;
-  for (int i = 0; i < D; ++i) L_->k[0][i][l] = k0[i];
   if (!batch::lane_finite(L_->k[0], l) || !batch::lane_finite(L_->x, l)) {
     fail(l, FailureKind::non_finite, "state or derivative not finite (NaN or Inf)");
     return false;
   }
   if (h_next_[l] <= 0.0) {
-    h_next_[l] = initial_step(l);
+    h_next_[l] = starts_->h0[j];  // as EmbeddedRk::initial_step, with its evaluation
     ++queue_->result(task_[l]).rhs_evals;
   }
   return true;
 }
 
-// As EmbeddedRk::initial_step (Hairer's HINIT), for lane l.
+// The slot of starts_ that holds the task's first derivative and initial step:
+// the tasks are taken in order, so a group of the next W is computed at once
+// when the task is not in the last.
 template <BatchSystem Sys, int W, class Tableau>
-double BatchEmbedded<Sys, W, Tableau>::initial_step(int l) const {
-  double sk[D], q[D], x1[D], k1[D];
-  for (int i = 0; i < D; ++i) sk[i] = opts_.atol + opts_.rtol * std::abs(L_->x[i][l]);
-  for (int i = 0; i < D; ++i) q[i] = (L_->k[0][i][l] / sk[i]) * (L_->k[0][i][l] / sk[i]);
-  const double dnf = eigen_order_sum(q);
-  for (int i = 0; i < D; ++i) q[i] = (L_->x[i][l] / sk[i]) * (L_->x[i][l] / sk[i]);
-  const double dny = eigen_order_sum(q);
-  double h = (dnf <= 1e-10 || dny <= 1e-10) ? 1e-6 : 0.01 * std::sqrt(dny / dnf);
-  h = std::min(h, opts_.h_max);
-  for (int i = 0; i < D; ++i) x1[i] = L_->x[i][l] + h * L_->k[0][i][l];
-  sys_.rhs(L_->t[l] + h, x1, k1);
-  for (int i = 0; i < D; ++i) {
-    const double d = (k1[i] - L_->k[0][i][l]) / sk[i];
-    q[i] = d * d;
+int BatchEmbedded<Sys, W, Tableau>::start_slot(long task) {
+  if (task >= start_first_ && task < start_first_ + W) return int(task - start_first_);
+  start_first_ = task;
+  auto& S0 = *starts_;
+  for (int j = 0; j < W; ++j) {
+    const long i = task + j;
+    const bool real = i < queue_->size();
+    for (int c = 0; c < D; ++c) S0.x[c][j] = real ? queue_->task(i).x0[std::size_t(c)] : 0.0;
+    S0.t[j] = real ? queue_->task(i).t0 : 0.0;
   }
-  const double der2 = std::sqrt(eigen_order_sum(q)) / h;
-  const double der12 = std::max(std::abs(der2), std::sqrt(dnf));
-  if (!std::isfinite(der12)) return h * 1e-2;
-  const double x = 0.01 / der12;
-  const double root = Tableau::order == 8 ? std::sqrt(std::sqrt(std::sqrt(x)))
-                                          : std::exp(std::log(x) / double(Tableau::order));
-  const double h1 = der12 <= 1e-15 ? std::max(1e-6, h * 1e-3) : root;
-  return std::min({100.0 * h, h1, opts_.h_max});
+  kernels_.start(S0, sys_);
+  return 0;
 }
 
 // The checks at the top of EmbeddedRk::step's loop; sets the trial step size.

@@ -91,6 +91,14 @@ struct Lanewise {
       return (V)((Mask)a & (Mask{} + 0x7fffffffffffffffLL));
     }
   }
+  // std::min's choice, lane by lane: b only where b < a.
+  [[gnu::always_inline]] static inline V min(V a, V b) {
+    if constexpr (W == 1) {
+      return b < a ? b : a;
+    } else {
+      return select(b < a, b, a);
+    }
+  }
   // std::max's choice, lane by lane: b only where a < b.
   [[gnu::always_inline]] static inline V max(V a, V b) {
     if constexpr (W == 1) {
@@ -141,8 +149,8 @@ struct Lanewise {
 template <class Sys, int W, class Tableau, class Tag>
 struct EmbeddedKernel : Lanewise<W, Tag> {
   using Base = Lanewise<W, Tag>;
-  using Base::abs, Base::load, Base::load_mask, Base::max, Base::not_finite, Base::select,
-      Base::sqrt, Base::store, Base::store_mask;
+  using Base::abs, Base::load, Base::load_mask, Base::max, Base::min, Base::not_finite,
+      Base::select, Base::sqrt, Base::store, Base::store_mask;
   using typename Base::Mask;
   using typename Base::V;
   static constexpr int D = Sys::dim;
@@ -223,6 +231,42 @@ struct EmbeddedKernel : Lanewise<W, Tag> {
     error_norm(L);
   }
 
+  // As EmbeddedRk::init's first derivative and initial_step (HINIT), whose
+  // sums, branches and std::min / std::max choices it follows lane by lane.
+  static void start(StartLanes<D, W>& S0, const Sys& sys) {
+    static_assert(Tableau::order == 8, "the initial step's root is the eighth root");
+    const V t = load(S0.t);
+    V x[D], k0[D], x1[D], k1[D], sk[D], q[D];
+    for (int i = 0; i < D; ++i) x[i] = load(S0.x[i]);
+    sys.rhs(t, x, k0);
+    for (int i = 0; i < D; ++i) store(S0.k0[i], k0[i]);
+    for (int i = 0; i < D; ++i) sk[i] = S0.atol + S0.rtol * abs(x[i]);
+    for (int i = 0; i < D; ++i) {
+      const V d = k0[i] / sk[i];
+      q[i] = d * d;
+    }
+    const V dnf = eigen_order_sum(q);
+    for (int i = 0; i < D; ++i) {
+      const V d = x[i] / sk[i];
+      q[i] = d * d;
+    }
+    const V dny = eigen_order_sum(q);
+    const V h_max = V{} + S0.h_max;
+    V h = select((dnf <= 1e-10) | (dny <= 1e-10), V{} + 1e-6, 0.01 * sqrt(dny / dnf));
+    h = min(h, h_max);
+    for (int i = 0; i < D; ++i) x1[i] = x[i] + h * k0[i];
+    sys.rhs(t + h, x1, k1);
+    for (int i = 0; i < D; ++i) {
+      const V d = (k1[i] - k0[i]) / sk[i];
+      q[i] = d * d;
+    }
+    const V der2 = sqrt(eigen_order_sum(q)) / h;
+    const V der12 = max(abs(der2), sqrt(dnf));
+    const V h1 = select(der12 <= 1e-15, max(V{} + 1e-6, h * 1e-3), sqrt(sqrt(sqrt(0.01 / der12))));
+    const V h0 = min(min(100.0 * h, h1), h_max);
+    store(S0.h0, select(not_finite(der12), h * 1e-2, h0));
+  }
+
   // Hairer's error norm, as EmbeddedRk::error_norm computes it, then what the
   // driver's decision needs of it (EmbeddedLanes).
   [[gnu::always_inline]] static inline void error_norm(Lanes& L) {
@@ -300,7 +344,7 @@ struct EmbeddedKernel : Lanewise<W, Tag> {
         ...);
   }
 
-  static constexpr EmbeddedKernels<Sys, W, Tableau> table{&attempt, &commit, &dense, &fsal};
+  static constexpr EmbeddedKernels<Sys, W, Tableau> table{&start, &attempt, &commit, &dense, &fsal};
 };
 
 // As Rk4::step, lane by lane.

@@ -61,10 +61,25 @@ struct EmbeddedLanes {
   double atol = 0, rtol = 0;
 };
 
+// W trajectories about to start: their first derivative and initial step
+// size, computed together before their lanes take them.
+template <int D, int W>
+struct StartLanes {
+  alignas(64) double x[D][W];   // x0
+  alignas(64) double t[W];      // t0
+  alignas(64) double k0[D][W];  // f(t0, x0)
+  alignas(64) double h0[W];     // the initial step size guess
+  double atol = 0, rtol = 0, h_max = 0;
+};
+
 // What one instruction set's kernel does to embedded-method lanes.
 template <class Sys, int W, class Tableau>
 struct EmbeddedKernels {
   using Lanes = EmbeddedLanes<Sys::dim, W, Tableau>;
+  using Starts = StartLanes<Sys::dim, W>;
+  // k0 and h0 from x and t, h0 as EmbeddedRk::initial_step (Hairer's HINIT);
+  // each lane's inputs may be anything, NaN included.
+  void (*start)(Starts&, const Sys&);
   // Stages 1 .. S-1 from (t, x) with k[0] set and step h, then xnew, acc,
   // k[S] = f(t + h, xnew), err, err_root8 and trial_finite; every lane,
   // whether it will be accepted or not.
