@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -144,47 +145,60 @@ TEST(DirectBatch, AFailingLaneFailsAloneAndTheOthersFinishAsAlone) {
   }
 }
 
+numerics::Failure output_refused(double t) {
+  return numerics::Failure{t, "dop853", numerics::FailureKind::lost_motion, "refused"};
+}
+
+// An output check that refuses the outputs `refused` names.
+numerics::BatchOutputCheck<6> refusing(std::function<bool(long id, double t)> refused) {
+  return [refused](long id, double t,
+                   const std::array<double, 6>&) -> std::optional<numerics::Failure> {
+    if (refused(id, t)) return output_refused(t);
+    return std::nullopt;
+  };
+}
+
+// The task alone with its output k refused: the outputs before it, and the
+// work done up to making it (as a consumer of the scalar run that refuses the
+// sample there).
+DirectBatchResult refused_alone(const DirectBatchTask& task, const numerics::AdaptiveOptions& o,
+                                std::size_t k) {
+  numerics::Dop853<DirectSystem> s(DirectSystem(generic_body()), o);
+  s.init(task.t0, test::to_state(task.x0));
+  DirectBatchResult r;
+  for (std::size_t j = 0; j <= k; ++j) {
+    while (s.t() < task.out_times[j]) s.step();
+    const auto x = test::to_array(s.dense(task.out_times[j]));
+    if (j < k) r.outputs.push_back(x);
+  }
+  r.t = s.t();
+  r.x = test::to_array(s.state());
+  r.steps = s.stats().steps;
+  r.rejected_steps = s.stats().rejected_steps;
+  r.rhs_evals = s.stats().rhs_evals;
+  r.failure = output_refused(task.out_times[k]);
+  return r;
+}
+
 // An output check ends its trajectory at the output it refuses, without that
-// output, with the work done to make it (as a consumer of the scalar run that
-// refuses the sample there); the other lanes go on as alone.
+// output, with the work done to make it; the other lanes go on as alone.
 TEST(DirectBatch, AnOutputCheckFailsItsLaneAlone) {
   auto tasks = mixed_tasks(13);
   for (std::size_t i = 0; i < tasks.size(); ++i) tasks[i].id = long(i);
   const double refused = tasks[5].out_times[2];
-  const auto refusal = [](double t) {
-    return numerics::Failure{t, "dop853", numerics::FailureKind::lost_motion, "refused"};
-  };
   DirectBatchSettings settings;
   settings.adaptive = tolerance(1e-9);
-  settings.check = [&](long id, double t,
-                       const std::array<double, 6>&) -> std::optional<numerics::Failure> {
-    if ((id == 5 && t == refused) || (id == 9 && t == tasks[9].t0)) return refusal(t);
-    return std::nullopt;
-  };
+  settings.check = refusing([&](long id, double t) {
+    return (id == 5 && t == refused) || (id == 9 && t == tasks[9].t0);
+  });
   std::vector<DirectBatchResult> expected;
   for (const auto& task : tasks)
     expected.push_back(test::dop853_alone(generic_body(), task, settings.adaptive));
-  {  // Task 5 alone up to its third output, refused.
-    numerics::Dop853<DirectSystem> s(DirectSystem(generic_body()), settings.adaptive);
-    s.init(tasks[5].t0, test::to_state(tasks[5].x0));
-    DirectBatchResult& r = expected[5];
-    r.outputs.clear();
-    for (std::size_t k = 0; k < 3; ++k) {
-      while (s.t() < tasks[5].out_times[k]) s.step();
-      const auto x = test::to_array(s.dense(tasks[5].out_times[k]));
-      if (k < 2) r.outputs.push_back(x);
-    }
-    r.t = s.t();
-    r.x = test::to_array(s.state());
-    r.steps = s.stats().steps;
-    r.rejected_steps = s.stats().rejected_steps;
-    r.rhs_evals = s.stats().rhs_evals;
-    r.failure = refusal(refused);
-  }
+  expected[5] = refused_alone(tasks[5], settings.adaptive, 2);
   expected[9] = DirectBatchResult{};  // refused at its first output, t0, before any work
   expected[9].t = tasks[9].t0;
   expected[9].x = tasks[9].x0;
-  expected[9].failure = refusal(tasks[9].t0);
+  expected[9].failure = output_refused(tasks[9].t0);
   for (SimdPath path : paths_of_this_cpu()) {
     for (int width : {1, 2, 4, 8}) {
       settings.path = path;
@@ -213,35 +227,19 @@ TEST(DirectBatch, TrajectoriesEndingInTheirLastStepEndAsAlone) {
     tasks[i].out_times = {tasks[i].t_end * (1.0 - 1e-9)};
   }
   const auto refused = [](long id) { return id % 4 == 1; };
-  const auto refusal = [](double t) {
-    return numerics::Failure{t, "dop853", numerics::FailureKind::lost_motion, "refused"};
-  };
   DirectBatchSettings settings;
   settings.adaptive = tolerance(1e-9);
-  settings.check = [&](long id, double t,
-                       const std::array<double, 6>&) -> std::optional<numerics::Failure> {
-    if (refused(id)) return refusal(t);
-    return std::nullopt;
-  };
+  settings.check = refusing([&](long id, double) { return refused(id); });
   std::vector<DirectBatchResult> expected;
   for (const auto& task : tasks) {
-    if (!refused(task.id)) {
-      expected.push_back(test::dop853_alone(generic_body(), task, settings.adaptive));
-      continue;
-    }
+    expected.push_back(refused(task.id)
+                           ? refused_alone(task, settings.adaptive, 0)
+                           : test::dop853_alone(generic_body(), task, settings.adaptive));
+    // The output lies in the last step: the step that reaches it passes t_end.
     numerics::Dop853<DirectSystem> s(DirectSystem(generic_body()), settings.adaptive);
     s.init(task.t0, test::to_state(task.x0));
     while (s.t() < task.out_times[0]) s.step();
-    (void)s.dense(task.out_times[0]);
-    ASSERT_GE(s.t(), task.t_end) << "the output must lie in the last step";
-    DirectBatchResult r;
-    r.t = s.t();
-    r.x = test::to_array(s.state());
-    r.steps = s.stats().steps;
-    r.rejected_steps = s.stats().rejected_steps;
-    r.rhs_evals = s.stats().rhs_evals;
-    r.failure = refusal(task.out_times[0]);
-    expected.push_back(r);
+    ASSERT_GE(s.t(), task.t_end) << "trajectory " << task.id;
   }
   for (SimdPath path : paths_of_this_cpu()) {
     for (int width : {1, 2, 4, 8}) {
