@@ -1,18 +1,22 @@
 // Ensembles: ns per trajectory-step of 4,096 trajectories of the direct
 // system by DOP853 at one tolerance, the scalar stepper one trajectory at a
 // time against the batch stepper on each instruction set of this CPU and lane
-// count (docs/ensembles.md has the figures).
+// count (docs/ensembles.md has the figures). And the step attempt's arithmetic
+// alone (ensemble_attempt_only): what the batch would cost per step if its
+// control, output and queue were free, the ceiling of its speed-up.
 //
 //   build/bench/epviz_bench --benchmark_filter=ensemble
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "numerics/embedded_rk.hpp"
 #include "physics/direct.hpp"
 #include "physics/direct_batch.hpp"
+#include "physics/direct_batch_isa.hpp"
 
 namespace {
 
@@ -85,6 +89,50 @@ void ensemble_batch_dop853(benchmark::State& state, numerics::SimdPath path, int
       benchmark::Counter(double(steps), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
+const physics::batch_isa::DirectKernels& kernels_of(numerics::SimdPath path) {
+  switch (path) {
+    case numerics::SimdPath::sse2: return physics::batch_isa::kSse2;
+    case numerics::SimdPath::avx2: return physics::batch_isa::kAvx2;
+    case numerics::SimdPath::avx512: return physics::batch_isa::kAvx512;
+    case numerics::SimdPath::scalar: break;
+  }
+  return physics::batch_isa::kScalar;
+}
+
+// The attempt kernel over and over on W lanes of the ensemble's first states
+// with a step of 0.05 (each attempt from the same state: no control at all).
+template <int W>
+void ensemble_attempt_only(benchmark::State& state, numerics::SimdPath path) {
+  const auto& kernels = [&]() -> const auto& {
+    const auto& k = kernels_of(path);
+    if constexpr (W == 1) return k.w1.dop853;
+    if constexpr (W == 2) return k.w2.dop853;
+    if constexpr (W == 4) return k.w4.dop853;
+    if constexpr (W == 8) return k.w8.dop853;
+  }
+  ();
+  const auto sys = physics::DirectBatchSystem::of(ensemble_body());
+  auto lanes = std::make_unique<numerics::EmbeddedLanes<6, W, numerics::Dop853Tableau>>();
+  lanes->atol = lanes->rtol = kTolerance;
+  for (int l = 0; l < W; ++l) {
+    double x[6], k0[6];
+    for (int i = 0; i < 6; ++i)
+      x[i] = lanes->x[i][l] = ensemble()[std::size_t(l)].x0[std::size_t(i)];
+    sys.rhs(0.0, x, k0);
+    for (int i = 0; i < 6; ++i) lanes->k[0][i][l] = k0[i];
+    lanes->t[l] = 0.0;
+    lanes->h[l] = 0.05;
+  }
+  long attempts = 0;
+  for (auto _ : state) {
+    kernels.attempt(*lanes, sys);
+    benchmark::DoNotOptimize(lanes->err[0]);
+    attempts += W;
+  }
+  state.counters["per_step"] = benchmark::Counter(
+      double(attempts), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
 // One benchmark per path this CPU has and lane count.
 const bool registered = [] {
   for (numerics::SimdPath path : numerics::kSimdPaths) {
@@ -94,6 +142,17 @@ const bool registered = [] {
                                std::to_string(width);
       benchmark::RegisterBenchmark(name.c_str(), ensemble_batch_dop853, path, width)
           ->Unit(benchmark::kMillisecond);
+    }
+    const std::string only = "ensemble_attempt_only/" + std::string(numerics::name(path)) + "/W";
+    const int lanes = physics::default_batch_width(path);
+    const auto add = [&](auto fn) {
+      benchmark::RegisterBenchmark((only + std::to_string(lanes)).c_str(), fn, path);
+    };
+    switch (lanes) {
+      case 1: add(ensemble_attempt_only<1>); break;
+      case 2: add(ensemble_attempt_only<2>); break;
+      case 4: add(ensemble_attempt_only<4>); break;
+      default: add(ensemble_attempt_only<8>); break;
     }
   }
   return true;
