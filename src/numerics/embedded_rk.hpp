@@ -346,38 +346,38 @@ class EmbeddedRk {
     (stage<I>(t, x, h, k, tmp), ...);
   }
   // Stages 1 .. S-1 and x_new (into xnew_) from (t, x) with k_[0] set; leaves
-  // acc_ = sum_j b_j k_j, or with latency_ordered the last stage in `fresh` and
-  // x_new in `xnew` as well.
-  [[gnu::always_inline]] inline void stages_and_solution(double t, const State& x, double h,
-                                                         [[maybe_unused]] State& xnew,
-                                                         [[maybe_unused]] State& fresh) {
-    if constexpr (Tableau::latency_ordered) {
-      fresh = k_[0];
-      stages_fresh(t, x, h, k_, fresh, detail::index_range<1, S>{});
-      advance_fresh<RowIs<Tableau::b>, S>(xnew, x, h, k_, fresh);
-      // One component at a time: a copy by pairs read xnew back from memory
-      // as pairs it had just stored one by one, and a store is not forwarded
-      // to a wider load (the load waits for the stores to complete).
-      for (int i = 0; i < D; ++i) xnew_.coeffRef(i) = xnew.coeff(i);
-    } else {
-      stages_from(t, x, h, k_, tmp_, detail::index_range<1, S>{});
-      advance<RowIs<Tableau::b>, S>(xnew_, x, h, k_, &acc_);
-    }
+  // acc_ = sum_j b_j k_j.
+  [[gnu::always_inline]] inline void stages_and_solution(double t, const State& x, double h) {
+    stages_from(t, x, h, k_, tmp_, detail::index_range<1, S>{});
+    advance<RowIs<Tableau::b>, S>(xnew_, x, h, k_, &acc_);
+  }
+  // The same ordered for latency: leaves the last stage in `fresh` and x_new
+  // in `xnew` as well, both locals.
+  [[gnu::always_inline]] inline void stages_and_solution_fresh(double t, const State& x, double h,
+                                                               State& xnew, State& fresh) {
+    fresh = k_[0];
+    stages_fresh(t, x, h, k_, fresh, detail::index_range<1, S>{});
+    advance_fresh<RowIs<Tableau::b>, S>(xnew, x, h, k_, fresh);
+    // One component at a time: a copy by pairs read xnew back from memory as
+    // pairs it had just stored one by one, and a store is not forwarded to a
+    // wider load (the load waits for the stores to complete).
+    for (int i = 0; i < D; ++i) xnew_.coeffRef(i) = xnew.coeff(i);
   }
 
   // One attempted step of size h from (t_, x_) with k_[0] set: the stages,
   // x_new (into xnew_), f(t_ + h, x_new) when the error estimate needs it,
   // and the error: error_norm(h), or its square with latency_ordered.
   [[gnu::always_inline]] inline double attempt(double h) {
-    State xnew, fresh;
-    stages_and_solution(t_, x_, h, xnew, fresh);
     if constexpr (Tableau::latency_ordered) {
       static_assert(error_needs_fsal && !Tableau::two_estimators);
+      State xnew, fresh;
+      stages_and_solution_fresh(t_, x_, h, xnew, fresh);
       sys_.rhs(t_ + h, xnew, fresh);
       k_[S] = fresh;
       stats_.rhs_evals += S;
       return error_norm_squared(h, xnew, fresh);
     } else {
+      stages_and_solution(t_, x_, h);
       if constexpr (error_needs_fsal) {
         sys_.rhs(t_ + h, xnew_, k_[S]);
         stats_.rhs_evals += S;
@@ -676,8 +676,12 @@ void EmbeddedRk<Sys, Tableau>::step(State& x, double t, double h) {
   dense_ = DenseState::none;
   detail::regularize(sys_, x);
   sys_.rhs(t, x, k_[0]);
-  State xnew, fresh;
-  stages_and_solution(t, x, h, xnew, fresh);
+  if constexpr (Tableau::latency_ordered) {
+    State xnew, fresh;
+    stages_and_solution_fresh(t, x, h, xnew, fresh);
+  } else {
+    stages_and_solution(t, x, h);
+  }
   stats_.rhs_evals += S;
   detail::check_accepted(sys_, xnew_, t + h, name);
   x = xnew_;
