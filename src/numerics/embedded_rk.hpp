@@ -14,13 +14,13 @@
 //
 // The error norm is Hairer's: the RMS over components of
 // err_i / (atol + rtol max(|x_i|, |x_new_i|)); a step is accepted when it is <= 1.
+// Only forward integration (h > 0) is supported: integrate the time-reversed
+// system to go backwards.
 //
 // Dopri5 orders its sums and error norm for latency (Tableau::latency_ordered):
 // a step waits on its stages one after the other and the next step on the
 // error, so what shortens those chains shortens the step. DOP853 keeps the
 // plain order, which the batch integrator (batch_*.hpp) reproduces bit for bit.
-// Only forward integration (h > 0) is supported: integrate the time-reversed
-// system to go backwards.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -409,6 +409,7 @@ class EmbeddedRk {
                                                           const State& fsal) const {
     using W = RowIs<Tableau::e>;
     using T = Terms<W, error_terms>;
+    static_assert(T::idx[T::count - 1] == S, "the estimate must weigh f(t + h, x_new)");
     double older[D], q[D], inv_sk[D];
     sums<W, error_terms, T::count - 1>(older, k_);
     for (int i = 0; i < D; ++i)
@@ -583,7 +584,8 @@ void EmbeddedRk<Sys, Tableau>::step() {
       } else {
         // err^-expo * err_old^beta as one exp of logs, the old error's log
         // kept from the previous step: two pow calls cost a fifth of a
-        // dopri5 step on the 6-dimensional system.
+        // dopri5 step on the 6-dimensional system. (Latency-ordered steppers
+        // take this way whatever beta: they have the log of err^2 at hand.)
         const double log_err = log_error(err);
         const double y = beta_ * log_err_old_ - expo_ * log_err;
         fac = opts_.safety * std::exp(y);
