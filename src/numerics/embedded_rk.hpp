@@ -16,6 +16,11 @@
 // err_i / (atol + rtol max(|x_i|, |x_new_i|)); a step is accepted when it is <= 1.
 // Only forward integration (h > 0) is supported: integrate the time-reversed
 // system to go backwards.
+//
+// Dopri5 orders its sums and error norm for latency (Tableau::latency_ordered):
+// a step waits on its stages one after the other and the next step on the
+// error, so what shortens those chains shortens the step. DOP853 keeps the
+// plain order, which the batch integrator (batch_*.hpp) reproduces bit for bit.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -212,6 +217,11 @@ class EmbeddedRk {
   [[gnu::always_inline]] static inline double dot(const Stages& k, int i) noexcept {
     return dot_impl<W, Nterms>(k, i, std::make_index_sequence<Terms<W, Nterms>::count - 1>{});
   }
+  // The same over the first M nonzero weights only.
+  template <class W, std::size_t Nterms, std::size_t M>
+  [[gnu::always_inline]] static inline double dot_first(const Stages& k, int i) noexcept {
+    return dot_impl<W, Nterms>(k, i, std::make_index_sequence<M - 1>{});
+  }
 
 #if defined(__GNUC__)
   // Even dimensions: the same sums two components at a time (GCC's vector
@@ -232,6 +242,7 @@ class EmbeddedRk {
     constexpr double w = W::w[J];
     for (int p = 0; p < D / 2; ++p) v[p] += w * load2(kj.data() + 2 * p);
   }
+  // Over the first J... + 1 nonzero weights.
   template <class W, std::size_t Nterms, std::size_t... J>
   [[gnu::always_inline]] static inline void sums_packed(double* s, const Stages& k,
                                                         std::index_sequence<J...>) noexcept {
@@ -245,16 +256,17 @@ class EmbeddedRk {
   static constexpr bool packed = false;
 #endif
 
-  // s[i] = sum_{j < Nterms} W[j] k[j][i] for every component i.
-  template <class W, std::size_t Nterms>
+  // s[i] = sum_{j < Nterms} W[j] k[j][i] for every component i, over the
+  // first M nonzero weights (all by default).
+  template <class W, std::size_t Nterms, std::size_t M = Terms<W, Nterms>::count>
   [[gnu::always_inline]] static inline void sums(double* s, const Stages& k) noexcept {
 #if defined(__GNUC__)
     if constexpr (packed) {
-      sums_packed<W, Nterms>(s, k, std::make_index_sequence<Terms<W, Nterms>::count - 1>{});
+      sums_packed<W, Nterms>(s, k, std::make_index_sequence<M - 1>{});
       return;
     }
 #endif
-    for (int i = 0; i < D; ++i) s[i] = dot<W, Nterms>(k, i);
+    for (int i = 0; i < D; ++i) s[i] = dot_first<W, Nterms, M>(k, i);
   }
 
   // acc = sum_{j < Nterms} W[j] k[j].
@@ -279,6 +291,45 @@ class EmbeddedRk {
     }
   }
 
+  // The sums ordered for latency (Tableau::latency_ordered): out = (x0 + h sum
+  // over the older stages) + (h w_last) k_last, with the newest stage k_last
+  // (index Nterms - 1) passed in `fresh`, a local. The newest stage, which
+  // everything else waits for, then reaches the next right-hand side through
+  // one multiplication and one addition (the plain order takes four: the
+  // sum's last term, h times the sum, x0 plus it), and from registers.
+  template <class W, std::size_t Nterms>
+  [[gnu::always_inline]] static inline void advance_fresh(State& out, const State& x0, double h,
+                                                          const Stages& k,
+                                                          const State& fresh) noexcept {
+    using T = Terms<W, Nterms>;
+    static_assert(T::idx[T::count - 1] == Nterms - 1, "the newest stage must have a weight");
+    const double hw = h * W::w[Nterms - 1];
+    double base[D];
+    if constexpr (T::count > 1) {
+      sums<W, Nterms, T::count - 1>(base, k);
+      for (int i = 0; i < D; ++i) base[i] = x0.coeff(i) + h * base[i];
+    } else {
+      for (int i = 0; i < D; ++i) base[i] = x0.coeff(i);
+    }
+    for (int i = 0; i < D; ++i) out.coeffRef(i) = base[i] + hw * fresh.coeff(i);
+  }
+
+  // Stage I as `stage` computes it, with the sums ordered for latency: fresh
+  // holds k[I - 1] on entry and k[I] on return.
+  template <std::size_t I>
+  [[gnu::always_inline]] inline void stage_fresh(double t0, const State& x0, double h, Stages& k,
+                                                 State& fresh) const {
+    State in;
+    advance_fresh<RowOf<Tableau::a, I>, I>(in, x0, h, k, fresh);
+    sys_.rhs(t0 + Tableau::c[I] * h, in, fresh);
+    k[I] = fresh;
+  }
+  template <std::size_t... I>
+  [[gnu::always_inline]] inline void stages_fresh(double t, const State& x, double h, Stages& k,
+                                                  State& fresh, std::index_sequence<I...>) const {
+    (stage_fresh<I>(t, x, h, k, fresh), ...);
+  }
+
   // Stage I from base point (t0, x0) with step h: k[I] = f(t0 + c_I h, x0 + h sum a_Ij k_j).
   template <std::size_t I>
   [[gnu::always_inline]] inline void stage(double t0, const State& x0, double h, Stages& k,
@@ -299,6 +350,93 @@ class EmbeddedRk {
   [[gnu::always_inline]] inline void stages_and_solution(double t, const State& x, double h) {
     stages_from(t, x, h, k_, tmp_, detail::index_range<1, S>{});
     advance<RowIs<Tableau::b>, S>(xnew_, x, h, k_, &acc_);
+  }
+  // The same ordered for latency: leaves the last stage in `fresh` and x_new
+  // in `xnew` as well, both locals.
+  [[gnu::always_inline]] inline void stages_and_solution_fresh(double t, const State& x, double h,
+                                                               State& xnew, State& fresh) {
+    fresh = k_[0];
+    stages_fresh(t, x, h, k_, fresh, detail::index_range<1, S>{});
+    advance_fresh<RowIs<Tableau::b>, S>(xnew, x, h, k_, fresh);
+    // One component at a time: a copy by pairs read xnew back from memory as
+    // pairs it had just stored one by one, and a store is not forwarded to a
+    // wider load (the load waits for the stores to complete).
+    for (int i = 0; i < D; ++i) xnew_.coeffRef(i) = xnew.coeff(i);
+  }
+
+  // One attempted step of size h from (t_, x_) with k_[0] set: the stages,
+  // x_new (into xnew_), f(t_ + h, x_new) when the error estimate needs it,
+  // and the error: error_norm(h), or its square with latency_ordered.
+  [[gnu::always_inline]] inline double attempt(double h) {
+    if constexpr (Tableau::latency_ordered) {
+      static_assert(error_needs_fsal && !Tableau::two_estimators);
+      State xnew, fresh;
+      stages_and_solution_fresh(t_, x_, h, xnew, fresh);
+      sys_.rhs(t_ + h, xnew, fresh);
+      k_[S] = fresh;
+      stats_.rhs_evals += S;
+      return error_norm_squared(h, xnew, fresh);
+    } else {
+      stages_and_solution(t_, x_, h);
+      if constexpr (error_needs_fsal) {
+        sys_.rhs(t_ + h, xnew_, k_[S]);
+        stats_.rhs_evals += S;
+      } else {
+        stats_.rhs_evals += S - 1;
+      }
+      return error_norm(h);
+    }
+  }
+
+  // q[Lo] + ... + q[Hi - 1], summed as a balanced tree (a short chain).
+  template <int Lo, int Hi>
+  [[gnu::always_inline]] static inline double tree_sum(const double* q) noexcept {
+    if constexpr (Hi - Lo == 1) {
+      return q[Lo];
+    } else {
+      constexpr int mid = Lo + (Hi - Lo) / 2;
+      return tree_sum<Lo, mid>(q) + tree_sum<mid, Hi>(q);
+    }
+  }
+
+  // The square of Hairer's error norm for one estimator (latency_ordered),
+  // from x_new and its derivative `fsal` held in locals. The square root and
+  // the division by the dimension are left off the chain the next step size
+  // waits for (the control takes log(err) as log(err^2) / 2), the squares
+  // are summed as a tree, and the reciprocal scales, which wait only for
+  // x_new, are divided two at a time.
+  [[gnu::always_inline]] inline double error_norm_squared(double h, const State& xnew,
+                                                          const State& fsal) const {
+    using W = RowIs<Tableau::e>;
+    using T = Terms<W, error_terms>;
+    static_assert(T::idx[T::count - 1] == S, "the estimate must weigh f(t + h, x_new)");
+    double older[D], q[D], inv_sk[D];
+    sums<W, error_terms, T::count - 1>(older, k_);
+    for (int i = 0; i < D; ++i)
+      inv_sk[i] =
+          opts_.atol + opts_.rtol * std::max(std::abs(x_.coeff(i)), std::abs(xnew.coeff(i)));
+#if defined(__GNUC__)
+    if constexpr (packed) {
+      for (int p = 0; p < D / 2; ++p) {
+        const V2 r = V2{1.0, 1.0} / V2{inv_sk[2 * p], inv_sk[2 * p + 1]};
+        inv_sk[2 * p] = r[0];
+        inv_sk[2 * p + 1] = r[1];
+      }
+    } else
+#endif
+    {
+      for (int i = 0; i < D; ++i) inv_sk[i] = 1.0 / inv_sk[i];
+    }
+    for (int i = 0; i < D; ++i) {
+      const double e = (older[i] + W::w[S] * fsal.coeff(i)) * inv_sk[i];
+      q[i] = e * e;
+    }
+    return tree_sum<0, D>(q) * (h * h * (1.0 / double(D)));
+  }
+  // log(err) from what attempt() returned.
+  static double log_error(double measure) {
+    if constexpr (Tableau::latency_ordered) return 0.5 * std::log(measure);
+    return std::log(measure);
   }
 
   // Hairer's error norm of the step from x_ to xnew_ (needs acc_ as left by
@@ -434,26 +572,23 @@ void EmbeddedRk<Sys, Tableau>::step() {
       fail(FailureKind::step_underflow, fmt("step size %.3g below the round-off limit", h));
     ++attempts_;
 
-    stages_and_solution(t_, x_, h);
-    if constexpr (error_needs_fsal) {
-      sys_.rhs(t_ + h, xnew_, k_[S]);
-      stats_.rhs_evals += S;
-    } else {
-      stats_.rhs_evals += S - 1;
-    }
-    const double err = error_norm(h);
+    // err: the error norm, or its square with latency_ordered (<= 1 either way
+    // when the step is accepted).
+    const double err = attempt(h);
     const bool finite = std::isfinite(err) && xnew_.allFinite();
 
     if (finite && err <= 1.0) [[likely]] {
       double fac;
-      if (beta_ == 0.0) {
+      if (beta_ == 0.0 && !Tableau::latency_ordered) {
         fac = opts_.safety * err_power(err);
       } else {
         // err^-expo * err_old^beta as one exp of logs, the old error's log
         // kept from the previous step: two pow calls cost a fifth of a
-        // dopri5 step on the 6-dimensional system.
-        const double log_err = std::log(err);
-        fac = opts_.safety * std::exp(beta_ * log_err_old_ - expo_ * log_err);
+        // dopri5 step on the 6-dimensional system. (Latency-ordered steppers
+        // take this way whatever beta: they have the log of err^2 at hand.)
+        const double log_err = log_error(err);
+        const double y = beta_ * log_err_old_ - expo_ * log_err;
+        fac = opts_.safety * std::exp(y);
         log_err_old_ = std::max(log_err, kLogErrFloor);
       }
       fac = std::clamp(fac, fac_min_, fac_max_);  // err == 0 gives +inf: clamped
@@ -483,7 +618,9 @@ void EmbeddedRk<Sys, Tableau>::step() {
     last_rejected_ = true;
     double fac = fac_min_;
     if (finite) {
-      fac = std::max(fac_min_, opts_.safety * err_power(err));
+      const double power =
+          Tableau::latency_ordered ? std::exp(-expo_ * log_error(err)) : err_power(err);
+      fac = std::max(fac_min_, opts_.safety * power);
     } else {
       ++nonfinite_trials;
     }
@@ -541,7 +678,12 @@ void EmbeddedRk<Sys, Tableau>::step(State& x, double t, double h) {
   dense_ = DenseState::none;
   detail::regularize(sys_, x);
   sys_.rhs(t, x, k_[0]);
-  stages_and_solution(t, x, h);
+  if constexpr (Tableau::latency_ordered) {
+    State xnew, fresh;
+    stages_and_solution_fresh(t, x, h, xnew, fresh);
+  } else {
+    stages_and_solution(t, x, h);
+  }
   stats_.rhs_evals += S;
   detail::check_accepted(sys_, xnew_, t + h, name);
   x = xnew_;

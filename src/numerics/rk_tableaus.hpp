@@ -15,6 +15,10 @@
 //                       cont0 + s (cont1 + s1 (cont2 + s (cont3 + s1 (cont4 + s (...)))))
 //                       with cont0 = x, cont1 = x_new - x, cont2 = h k[0] - cont1,
 //                       cont3 = cont1 - h k[stages] - cont2 (Hairer's form).
+//   latency_ordered     whether EmbeddedRk orders the stage sums and the
+//                       error norm for latency (embedded_rk.hpp; other
+//                       roundings, the same method); false keeps the plain
+//                       order, which the batch integrator reproduces bit for bit
 #include <array>
 
 namespace epviz::numerics {
@@ -29,6 +33,7 @@ struct Dopri5Tableau {
   static constexpr int extra_stages = 0;
   static constexpr int total = stages + 1 + extra_stages;
   static constexpr bool two_estimators = false;
+  static constexpr bool latency_ordered = true;
   static constexpr double error_exponent = 1.0 / 5.0;  // 1 / (estimator order + 1)
   static constexpr double default_beta = 0.04;         // PI control (Hairer's dopri5)
   static constexpr double beta_coupling = 0.75;        // exponent 1/5 - 0.75 beta
@@ -88,6 +93,7 @@ struct Dop853Tableau {
   static constexpr int extra_stages = 3;
   static constexpr int total = stages + 1 + extra_stages;  // 16
   static constexpr bool two_estimators = true;
+  static constexpr bool latency_ordered = false;  // the batch DOP853 reproduces its order
   static constexpr double error_exponent = 1.0 / 8.0;
   static constexpr double default_beta = 0.0;   // Hairer's dop853 default: no PI term
   static constexpr double beta_coupling = 0.2;  // exponent 1/8 - 0.2 beta (as in DOP853)

@@ -57,11 +57,13 @@ TEST(Convergence, Rk4) {
 
 // The 5th-order error constant of dopri5 is small, so the asymptotic regime
 // starts late: the ranges below were chosen where it has begun and round-off
-// has not.
+// has not. (On Kepler, 640 steps leave an error of 3e-14 of which round-off
+// is a fifth, enough to move the observed order by 0.2 with the order of the
+// sums: the study stops at 480.)
 TEST(Convergence, Dopri5FixedStep) {
   const Kepler k{0.2};
   expect_order(
-      Dopri5<Kepler>(k), [&](double t) { return k.exact(t); }, 3.0, 80, 3, "kepler");
+      Dopri5<Kepler>(k), [&](double t) { return k.exact(t); }, 3.0, 60, 3, "kepler");
   expect_order(
       Dopri5<ExpSin>({}), [](double t) { return ExpSin::exact(t); }, 10.0, 200, 3, "exp(sin)");
 }
