@@ -60,12 +60,11 @@ render::GlContext& context(const std::string& backend = render::gl_backend_from_
   return *c;
 }
 
-void paint_frames(benchmark::State& state, const std::string& backend) {
-  const int w = 1280, h = 720;
-  static const auto fs = frames(w, h, 64);
-  auto& gl = context(backend);
+// Paints `fs` in turn at 1280x720, one a benchmark iteration.
+void paint_in_turn(benchmark::State& state, const std::vector<scene::Frame>& fs,
+                   render::GlContext& gl, paint::PainterOptions options = {}) {
   state.SetLabel(gl.describe());
-  paint::FramePainter painter(gl, w, h, {.msaa_samples = int(state.range(0))});
+  paint::FramePainter painter(gl, 1280, 720, options);
   std::size_t i = 0;
   for (auto _ : state) {
     const auto& img = painter.paint(fs[i++ % fs.size()]);
@@ -75,22 +74,16 @@ void paint_frames(benchmark::State& state, const std::string& backend) {
       benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
 }
 
+void paint_frames(benchmark::State& state, const std::string& backend) {
+  static const auto fs = frames(1280, 720, 64);
+  paint_in_turn(state, fs, context(backend), {.msaa_samples = int(state.range(0))});
+}
+
 // The cloud job's frames painted (drawn and read back, nothing encoded).
 void paint_cloud_frames(benchmark::State& state) {
-  const bool with_cloud = state.range(0) != 0;
   static const auto clouded = cloud_job_frames(true, 48);
   static const auto bare = cloud_job_frames(false, 48);
-  const auto& fs = with_cloud ? clouded : bare;
-  auto& gl = context();
-  state.SetLabel(gl.describe());
-  paint::FramePainter painter(gl, 1280, 720);  // the job's size
-  std::size_t i = 0;
-  for (auto _ : state) {
-    const auto& img = painter.paint(fs[i++ % fs.size()]);
-    benchmark::DoNotOptimize(img.pixels.data());
-  }
-  state.counters["frames/s"] =
-      benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+  paint_in_turn(state, state.range(0) != 0 ? clouded : bare, context());
 }
 
 // One rendered frame, for the encoders.

@@ -28,8 +28,7 @@ void QueuedVideoWriter::rethrow_error_locked() {
 }
 
 void QueuedVideoWriter::write_frame(std::span<const std::uint8_t> rgba) {
-  const std::size_t bytes =
-      std::size_t(writer_->width()) * std::size_t(writer_->height()) * 4;
+  const std::size_t bytes = std::size_t(writer_->width()) * std::size_t(writer_->height()) * 4;
   if (rgba.size() != bytes) {
     std::string what = "video '";
     what += writer_->target().string();

@@ -1,9 +1,9 @@
 #pragma once
 // A VideoWriter fed from a thread of its own, so that the caller draws the
-// next frame while ffmpeg takes this one. ffmpeg reads a frame, converts it
-// to YUV on one thread and only then reads the next, and the pipe holds
-// 64 kB of the 3.7 MB of a 1280x720 frame: a plain write_frame waits for
-// that conversion (3-5 ms a frame on the 2-core machine).
+// next frame while ffmpeg takes this one. The pipe holds 64 kB of the 3.7 MB
+// of a 1280x720 frame, so a plain write_frame lasts until ffmpeg has read
+// nearly all of it (3-5 ms a frame of `epviz render`'s main thread, measured
+// on the 2-core machine; docs/ensembles.md, The cloud).
 //
 // write_frame copies the frame into a slot and returns, waiting only while
 // the previous frame is still in the slot. The first error of the writing
