@@ -18,7 +18,7 @@ here=$(cd "$(dirname "$0")/../.." && pwd)
 epviz=${1:-$here/build/epviz}
 [[ -x $epviz ]] || { echo "cloud_fps.sh: $epviz: no epviz executable (build it first)" >&2; exit 2; }
 reps=${REPS:-3}
-[[ $reps =~ ^[1-9][0-9]*$ ]] || { echo "cloud_fps.sh: REPS=$reps: a positive whole number" >&2; exit 2; }
+[[ $reps =~ ^[1-9][0-9]*$ ]] || { echo "cloud_fps.sh: REPS=$reps: not a positive whole number" >&2; exit 2; }
 formats=${FORMATS:-mp4 png}
 for f in $formats; do
   [[ $f == mp4 || $f == png ]] || { echo "cloud_fps.sh: FORMATS: '$f' is not mp4 or png" >&2; exit 2; }
