@@ -2,7 +2,9 @@
 // job's frames (prebuilt, so that only the measured stage is timed): painting
 // (GL to pixels), PNG encoding per zlib level and row filter, and MP4 encoding
 // through the ffmpeg pipe. Painting is measured on each GL backend (EGL and
-// OSMesa); the encoders use the EPVIZ_GL backend's frame.
+// OSMesa); the encoders use the EPVIZ_GL backend's frame. The cloud's cost:
+// the frames of the shipped render_jobs/cloud_generic.json (10,000 members)
+// painted with and without their cloud, and those frames through the MP4 pipe.
 //
 //   LP_NUM_THREADS=2 build/bench/epviz_render_bench
 #include <benchmark/benchmark.h>
@@ -14,6 +16,8 @@
 
 #include "io/png_writer.hpp"
 #include "io/video_writer.hpp"
+#include "job/job_file.hpp"
+#include "job/job_plan.hpp"
 #include "paint/frame_painter.hpp"
 #include "physics/cases.hpp"
 #include "scene/frame_source.hpp"
@@ -36,6 +40,17 @@ std::vector<scene::Frame> frames(int width, int height, int count) {
   return out;
 }
 
+// Frames spread over the shipped cloud job, with its cloud or without it.
+std::vector<scene::Frame> cloud_job_frames(bool with_cloud, int count) {
+  const auto loaded = job::load_job_file(EPVIZ_SOURCE_DIR "/render_jobs/cloud_generic.json");
+  auto job = *loaded.single;
+  if (!with_cloud) job.scene.cloud = {};
+  scene::FrameSource source(job::plan_job(job), job.scene);
+  std::vector<scene::Frame> out;
+  for (int i = 0; i < count; ++i) out.push_back(source.frame(i * source.frame_count() / count));
+  return out;
+}
+
 // One context per backend name, made on first use.
 render::GlContext& context(const std::string& backend = render::gl_backend_from_environment()) {
   static std::map<std::string, std::unique_ptr<render::GlContext>> contexts;
@@ -45,12 +60,11 @@ render::GlContext& context(const std::string& backend = render::gl_backend_from_
   return *c;
 }
 
-void paint_frames(benchmark::State& state, const std::string& backend) {
-  const int w = 1280, h = 720;
-  static const auto fs = frames(w, h, 64);
-  auto& gl = context(backend);
+// Paints `fs` in turn at 1280x720, one a benchmark iteration.
+void paint_in_turn(benchmark::State& state, const std::vector<scene::Frame>& fs,
+                   render::GlContext& gl, paint::PainterOptions options = {}) {
   state.SetLabel(gl.describe());
-  paint::FramePainter painter(gl, w, h, {.msaa_samples = int(state.range(0))});
+  paint::FramePainter painter(gl, 1280, 720, options);
   std::size_t i = 0;
   for (auto _ : state) {
     const auto& img = painter.paint(fs[i++ % fs.size()]);
@@ -58,6 +72,18 @@ void paint_frames(benchmark::State& state, const std::string& backend) {
   }
   state.counters["frames/s"] =
       benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+void paint_frames(benchmark::State& state, const std::string& backend) {
+  static const auto fs = frames(1280, 720, 64);
+  paint_in_turn(state, fs, context(backend), {.msaa_samples = int(state.range(0))});
+}
+
+// The cloud job's frames painted (drawn and read back, nothing encoded).
+void paint_cloud_frames(benchmark::State& state) {
+  static const auto clouded = cloud_job_frames(true, 48);
+  static const auto bare = cloud_job_frames(false, 48);
+  paint_in_turn(state, state.range(0) != 0 ? clouded : bare, context());
 }
 
 // One rendered frame, for the encoders.
@@ -98,6 +124,14 @@ BENCHMARK(mp4_encode)
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond)
     ->MinTime(2.0);
+
+BENCHMARK(paint_cloud_frames)
+    ->Name("render_only_cloud_job/with_cloud")
+    ->Arg(1)
+    ->Arg(0)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 
 BENCHMARK_CAPTURE(paint_frames, egl, std::string("egl"))
     ->Name("render_only_1280x720_egl/msaa")

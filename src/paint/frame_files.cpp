@@ -5,8 +5,8 @@
 
 #include "io/frame_names.hpp"
 #include "io/png_writer.hpp"
+#include "io/queued_video_writer.hpp"
 #include "io/temp_name.hpp"
-#include "io/video_writer.hpp"
 
 namespace epviz::paint {
 
@@ -17,7 +17,7 @@ FramesWritten write_frames(FrameDrawer& drawer, FramePainter& painter, const io:
                            const io::ProgressOptions& progress_options) {
   FramesWritten out;
   std::unique_ptr<io::AsyncPngWriter> pngs;
-  std::unique_ptr<io::VideoWriter> video;
+  std::unique_ptr<io::QueuedVideoWriter> video;
   if (files) {
     fs::create_directories(files->dir);
     // Temporaries of runs killed before they could clean up (SIGKILL).
@@ -26,9 +26,10 @@ FramesWritten write_frames(FrameDrawer& drawer, FramePainter& painter, const io:
       pngs = std::make_unique<io::AsyncPngWriter>();
     } else {
       const auto format = *files->video;
-      video = std::make_unique<io::VideoWriter>(
+      // On a thread of its own: the next frame is drawn while ffmpeg takes this one.
+      video = std::make_unique<io::QueuedVideoWriter>(std::make_unique<io::VideoWriter>(
           files->dir / (files->name + std::string(io::video_format_extension(format))), format,
-          painter.width(), painter.height(), files->fps);
+          painter.width(), painter.height(), files->fps));
     }
   }
   const int frame_count = drawer.source().plan().frames;
@@ -49,7 +50,7 @@ FramesWritten write_frames(FrameDrawer& drawer, FramePainter& painter, const io:
         pngs->submit(png_path, image.width, image.height, image.pixels);
       } else {
         const render::RgbaImage& image = drawer.draw(i, painter);
-        if (video) video->write_frame(image.pixels.data());
+        if (video) video->write_frame(image.pixels);
         if (!files) out.kept = image;
       }
       ++out.drawn;

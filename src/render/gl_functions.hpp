@@ -38,6 +38,7 @@
   X(PFNGLENABLEPROC, glEnable)                                                 \
   X(PFNGLENABLEVERTEXATTRIBARRAYPROC, glEnableVertexAttribArray)               \
   X(PFNGLFINISHPROC, glFinish)                                                 \
+  X(PFNGLFLUSHPROC, glFlush)                                                   \
   X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, glFramebufferRenderbuffer)               \
   X(PFNGLGENBUFFERSPROC, glGenBuffers)                                         \
   X(PFNGLGENFRAMEBUFFERSPROC, glGenFramebuffers)                               \
@@ -112,6 +113,7 @@
 #define glEnable epviz_glEnable
 #define glEnableVertexAttribArray epviz_glEnableVertexAttribArray
 #define glFinish epviz_glFinish
+#define glFlush epviz_glFlush
 #define glFramebufferRenderbuffer epviz_glFramebufferRenderbuffer
 #define glGenBuffers epviz_glGenBuffers
 #define glGenFramebuffers epviz_glGenFramebuffers

@@ -341,6 +341,10 @@ void Renderer::draw_3d(const DrawList& list, const Camera& camera, const Viewpor
   for (const auto& label : list.labels())
     if (auto pixel = project_to_pixel(camera, viewport, label.position))
       queue_label(label, glm::vec2(*pixel));
+  // Hand the view to the rasteriser now: llvmpipe draws nothing before a
+  // flush, so its threads would otherwise wait idle while the caller builds
+  // the 2D panels and the overlay on one core.
+  glFlush();
   check_gl_error("drawing a 3D view");
 }
 

@@ -11,9 +11,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
+#include "io/queued_video_writer.hpp"
 #include "io/video_writer.hpp"
 #include "support/errors.hpp"
 #include "support/temp_dir.hpp"
@@ -261,6 +264,71 @@ TEST_F(VideoTest, FfmpegErrorIsReportedWithItsStderrAndLeavesNothing) {
   });
   EXPECT_NE(message.find("cannot write video"), std::string::npos) << message;
   EXPECT_NE(message.find("ffmpeg"), std::string::npos) << message;
+  EXPECT_NE(message.find("preset"), std::string::npos) << "ffmpeg's stderr is quoted: " << message;
+  EXPECT_TRUE(entries().empty());
+}
+
+// The queued writer (io/queued_video_writer.hpp): its thread writes the very
+// frames it was given, in order, so the video is the plain writer's byte for
+// byte (x264 is deterministic). One buffer is overwritten with each next
+// frame as soon as write_frame returns, as the painter does.
+std::vector<char> file_bytes(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST_F(VideoTest, QueuedWriterMakesThePlainWritersVideo) {
+  const fs::path plain = dir_ / "plain.mp4", queued = dir_ / "queued.mp4";
+  {
+    VideoWriter writer(plain, VideoFormat::mp4, 64, 48, 24);
+    for (int f = 0; f < 30; ++f) writer.write_frame(gradient_frame(64, 48, f).data());
+    writer.finish();
+  }
+  {
+    QueuedVideoWriter writer(std::make_unique<VideoWriter>(queued, VideoFormat::mp4, 64, 48, 24));
+    std::vector<std::uint8_t> frame;
+    for (int f = 0; f < 30; ++f) {
+      frame = gradient_frame(64, 48, f);
+      writer.write_frame(frame);
+    }
+    EXPECT_FALSE(fs::exists(queued)) << "the real name appears only on finish()";
+    writer.finish();
+    EXPECT_EQ(writer.frames_written(), 30u);
+    writer.finish();  // idempotent
+  }
+  EXPECT_EQ(ffprobe(queued).frames, 30);
+  const auto a = file_bytes(plain), b = file_bytes(queued);
+  EXPECT_GT(a.size(), 0u);
+  EXPECT_TRUE(a == b) << "the videos differ (" << a.size() << " and " << b.size() << " bytes)";
+}
+
+TEST_F(VideoTest, QueuedWriterDestroyedWithoutFinishLeavesNothing) {
+  {
+    QueuedVideoWriter writer(
+        std::make_unique<VideoWriter>(dir_ / "a.mp4", VideoFormat::mp4, 64, 48, 24));
+    for (int f = 0; f < 5; ++f) writer.write_frame(gradient_frame(64, 48, f));
+  }
+  EXPECT_TRUE(entries().empty());
+}
+
+TEST_F(VideoTest, QueuedWriterRejectsAFrameOfTheWrongSize) {
+  QueuedVideoWriter writer(
+      std::make_unique<VideoWriter>(dir_ / "a.mp4", VideoFormat::mp4, 64, 48, 24));
+  const std::string message =
+      error_of<std::invalid_argument>([&] { writer.write_frame(gradient_frame(64, 46, 0)); });
+  EXPECT_NE(message.find("expected 12288"), std::string::npos) << message;
+}
+
+TEST_F(VideoTest, QueuedWriterReportsFfmpegsErrorAndLeavesNothing) {
+  VideoOptions options;
+  options.x264_preset = "no-such-preset";
+  const std::string message = error_of([&] {
+    QueuedVideoWriter writer(
+        std::make_unique<VideoWriter>(dir_ / "a.mp4", VideoFormat::mp4, 64, 48, 24, options));
+    for (int f = 0; f < 200; ++f) writer.write_frame(gradient_frame(64, 48, f % 12));
+    writer.finish();
+  });
+  EXPECT_NE(message.find("cannot write video"), std::string::npos) << message;
   EXPECT_NE(message.find("preset"), std::string::npos) << "ffmpeg's stderr is quoted: " << message;
   EXPECT_TRUE(entries().empty());
 }
