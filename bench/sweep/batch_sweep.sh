@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # `epviz sweep` points per second on the shipped chaos map cut to 32 x 32 =
-# 1,024 points (T = 200, FTLE in windows of 0.5), on each instruction set of
+# 1,024 points (T = 100, FTLE in windows of 0.5), on each instruction set of
 # this CPU (EPVIZ_SIMD) with 1 and 2 threads, and, when BASELINE names an
 # epviz built before sweeps used the batch path, that binary too. Every run's
 # rows must equal the first's but for the CPU time; the figures go to

@@ -109,7 +109,7 @@ TEST(BatchSweep, EveryInstructionSetWritesTheSameRows) {
   }
 }
 
-// The shipped chaos map (T = 200, FTLE in windows of 0.5), its first points.
+// The shipped chaos map (T = 100, FTLE in windows of 0.5), its first points.
 TEST(BatchSweep, TheChaosMapsFirstPointsAsOnTheScalarPath) {
   const test::TempDir dir;
   const SweepSpec spec =
