@@ -9,10 +9,10 @@
 
 #include "live/case_constraints.hpp"
 #include "physics/cases.hpp"
+#include "physics/notation.hpp"
 #include "render/font_text.hpp"
 #include "scene/frame_source.hpp"
 #include "scene/run_palette.hpp"
-#include "scene/symbols.hpp"
 #include "scene/theme.hpp"
 
 namespace epviz::live {
@@ -243,8 +243,8 @@ void ControlPanel::draw_case_and_body(const LiveScene& scene, PanelActions& out)
     edited(Edited::weight);
   note_item("weight");
   // The initial state by its symbols, as the font can draw them.
-  const std::string omega0 = render::drawable_text(std::string(scene::symbol::omega) + "(0)");
-  const std::string gamma0 = render::drawable_text(std::string(scene::symbol::gamma) + "(0)");
+  const std::string omega0 = render::drawable_text(std::string(physics::symbol::omega) + "(0)");
+  const std::string gamma0 = render::drawable_text(std::string(physics::symbol::gamma) + "(0)");
   if (ImGui::DragScalarN(omega0.c_str(), ImGuiDataType_Double, e.run.initial.omega.data(), 3, 0.01f,
                          nullptr, nullptr, "%.4g"))
     edited(Edited::omega);
@@ -345,9 +345,9 @@ void ControlPanel::draw_drift(const LiveScene& scene) {
   if (history.empty()) return;
   const sim::Drifts& now = history.back().drift;
   const sim::Drifts& worst = scene.max_drift();
-  const std::string names[] = {std::string(scene::symbol::gamma_norm2),
-                               std::string(scene::symbol::area) + " (area)",
-                               std::string(scene::symbol::energy) + " (energy)"};
+  const std::string names[] = {std::string(physics::symbol::gamma_norm2),
+                               std::string(physics::symbol::area) + " (area)",
+                               std::string(physics::symbol::energy) + " (energy)"};
   const double values[] = {now.gamma_norm2, now.area, now.energy};
   const double maxima[] = {worst.gamma_norm2, worst.area, worst.energy};
   const std::string extra_name = scene::extra_integral_symbol(scene.setup().run.case_id);
@@ -440,9 +440,9 @@ void ControlPanel::draw_runs(const LiveScene& scene, PanelActions& out) {
   note_item("add_nudged");
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
-        "%s", render::drawable_text("the first run with " + std::string(scene::symbol::gamma) +
+        "%s", render::drawable_text("the first run with " + std::string(physics::symbol::gamma) +
                                     "(0) turned by the nudge: " +
-                                    std::string(scene::symbol::separation) + " starts there")
+                                    std::string(physics::symbol::separation) + " starts there")
                   .c_str());
   ImGui::TextDisabled("every run starts again at t = 0");
 }

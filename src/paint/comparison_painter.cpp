@@ -10,7 +10,7 @@
 #include "paint/painter_common.hpp"
 #include "paint/separation_chart.hpp"
 #include "paint/trail_colours.hpp"
-#include "scene/symbols.hpp"
+#include "physics/notation.hpp"
 
 namespace epviz::paint {
 namespace {
@@ -233,7 +233,7 @@ PlaneMarksDrawn draw_paths_plane(render::DrawList& flat, const render::Panel2D& 
                              {{}, {0, 0, 0, 0}, to_glm(ink.infinity_mark), 6.0f * px, 2.0f * px});
             plot.draw_text(flat, at,
                            {{},
-                            std::string(scene::symbol::infinity),
+                            std::string(physics::symbol::infinity),
                             to_glm(ink.infinity_label),
                             TextAnchor::centre,
                             {0.0f, -11.0f * px}});

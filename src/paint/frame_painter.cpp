@@ -18,12 +18,12 @@
 #include "paint/comparison_painter.hpp"
 #include "paint/painter_common.hpp"
 #include "paint/section_panel_drawing.hpp"
+#include "physics/notation.hpp"
 #include "render/colour_map.hpp"
 #include "render/font_text.hpp"
 #include "render/imgui_context_scope.hpp"
 #include "render/mesh_data.hpp"
 #include "scene/layout.hpp"
-#include "scene/symbols.hpp"
 #include "scene/theme.hpp"
 
 namespace epviz::paint {
@@ -183,7 +183,7 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
   // under it, how they are made. Beside a section panel the plane has half
   // the column.
   const float title_room = float(f.section ? column.width / 2 : column.width) - 8 * px;
-  const std::string of_gamma = "Riccati plane (a, b) of " + std::string(scene::symbol::gamma);
+  const std::string of_gamma = "Riccati plane (a, b) of " + std::string(physics::symbol::gamma);
   for (const std::string& title :
        {of_gamma + " (body axes)", of_gamma, std::string("(a, b) plane")})
     if (gui().text_size(title).x <= title_room) {
@@ -241,7 +241,7 @@ void FramePainter::draw_plane_captions(render::DrawList& flat, const render::Vie
   if (any_exit) legend += "hollow: leaves, dot: re-enters";
   if (any_infinity) {
     if (!legend.empty()) legend += "   ";
-    legend += std::string(scene::symbol::infinity) + ": through the south pole";
+    legend += std::string(physics::symbol::infinity) + ": through the south pole";
   }
   // Each line only where it stays below the plot's tick labels (and above a chart).
   const float lowest_top = ticks_top + font + 4.0f;
@@ -252,7 +252,7 @@ void FramePainter::draw_plane_captions(render::DrawList& flat, const render::Vie
     flat.add_text({{centre, y, 0}, legend, text, TextAnchor::bottom});
     y -= font * 1.25f;
   }
-  const std::string projection(scene::symbol::riccati_projection);
+  const std::string projection(physics::symbol::riccati_projection);
   for (const std::string& convention : {"projected from the south pole: " + projection, projection})
     if (gui().text_size(convention).x <= float(column.width) - 8 * px && y - font >= lowest_top) {
       flat.add_text({{centre, y, 0}, convention, text, TextAnchor::bottom});

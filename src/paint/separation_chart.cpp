@@ -7,8 +7,8 @@
 
 #include "paint/dash_pattern.hpp"
 #include "paint/painter_common.hpp"
+#include "physics/notation.hpp"
 #include "render/panel_2d.hpp"
-#include "scene/symbols.hpp"
 
 namespace epviz::paint {
 namespace {
@@ -66,8 +66,8 @@ void draw_separation_chart(render::DrawList& flat, const scene::Comparison& c,
     }
   }
   // |Δγ|, the distance of a run's γ from run 1's, on a log scale; what Δγ is where there is room.
-  const std::string title = "log₁₀ " + std::string(scene::symbol::separation) + " over t";
-  const std::string gamma(scene::symbol::gamma);
+  const std::string title = "log₁₀ " + std::string(physics::symbol::separation) + " over t";
+  const std::string gamma(physics::symbol::gamma);
   const std::string defined = title + ",  Δ" + gamma + " = " + gamma + " − " + gamma + " of run 1";
   flat.add_text({{float(area.x), float(area.y), 0.0f},
                  measure(defined).x <= float(area.width) ? defined : title,

@@ -8,6 +8,7 @@
 #include "physics/case_rules.hpp"
 #include "physics/cases.hpp"
 #include "physics/format.hpp"
+#include "physics/notation.hpp"
 
 namespace epviz::physics {
 namespace {
@@ -46,7 +47,7 @@ CasePreset lagrange() {
   p.id = Case::lagrange;
   p.name = "lagrange";
   p.title = "Lagrange top";
-  p.integral_symbol = "Ω₃";
+  p.integral_symbol = symbol::omega_component[2];
   p.summary = "symmetric spinning top tilted 30 degrees: slow precession with cusped nutation";
   p.conditions = "I1 = I2, a0 = b0 = 0";
   p.panel_conditions = "I1 = I2, centre of mass on axis 3";

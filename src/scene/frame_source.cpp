@@ -7,10 +7,10 @@
 #include <string>
 
 #include "physics/format.hpp"
+#include "physics/notation.hpp"
 #include "scene/body_shape.hpp"
 #include "scene/plane_path.hpp"
 #include "scene/run_palette.hpp"
-#include "scene/symbols.hpp"
 #include "scene/theme.hpp"
 
 namespace epviz::scene {
@@ -38,14 +38,14 @@ int overlay_drift_rows(const std::vector<sim::RunSpec>& runs) {
 }
 
 std::pair<std::string, double> largest_drift(const sim::Drifts& d, physics::Case c) {
-  std::pair<std::string, double> worst{std::string(symbol::gamma_norm2), d.gamma_norm2};
+  std::pair<std::string, double> worst{std::string(physics::symbol::gamma_norm2), d.gamma_norm2};
   auto consider = [&](std::string name, double value) {
     // A drift that is not a number is the worst there is.
     if (std::isnan(worst.second)) return;
     if (std::isnan(value) || value > worst.second) worst = {std::move(name), value};
   };
-  consider(std::string(symbol::area), d.area);
-  consider(std::string(symbol::energy), d.energy);
+  consider(std::string(physics::symbol::area), d.area);
+  consider(std::string(physics::symbol::energy), d.energy);
   if (d.extra) consider(extra_integral_symbol(c), *d.extra);
   return worst;
 }
@@ -151,7 +151,7 @@ Frame FrameSource::compose(int index) const {
     f.trail_label = "body axis " + std::to_string(settings_.trace_axis) + " (space frame)";
   } else {
     f.current = last.gamma.cast<float>();
-    f.trail_label = std::string(symbol::gamma) + " (body frame)";
+    f.trail_label = std::string(physics::symbol::gamma) + " (body frame)";
   }
   f.trail_time = window;
   const auto& pts = tracks_.front()->history().points();
@@ -207,9 +207,9 @@ Frame FrameSource::compose(int index) const {
     compose_comparison(f);
     return f;
   }
-  f.overlay.drifts = {{std::string(symbol::gamma_norm2), drift.gamma_norm2},
-                      {std::string(symbol::area) + " (area)", drift.area},
-                      {std::string(symbol::energy) + " (energy)", drift.energy}};
+  f.overlay.drifts = {{std::string(physics::symbol::gamma_norm2), drift.gamma_norm2},
+                      {std::string(physics::symbol::area) + " (area)", drift.area},
+                      {std::string(physics::symbol::energy) + " (energy)", drift.energy}};
   if (drift.extra) f.overlay.drifts.emplace_back(extra_integral_symbol(run.case_id), *drift.extra);
   return f;
 }

@@ -70,7 +70,7 @@ constexpr int kOverlayLines = 5;
 int overlay_drift_rows(const sim::RunSpec& run);
 int overlay_drift_rows(const std::vector<sim::RunSpec>& runs);
 // The largest relative drift among |γ|², C₀, C₁ and the case's fourth
-// integral, with the invariant's overlay name (scene/symbols.hpp, "K", ...).
+// integral, with the invariant's overlay name (physics/notation.hpp, "K", ...).
 std::pair<std::string, double> largest_drift(const sim::Drifts& drifts, physics::Case c);
 // The legend's name of a comparison run: "label: method, accuracy" (the
 // formulation added where the runs differ in it).

@@ -3,6 +3,7 @@
 #include <charconv>
 
 #include "physics/cases.hpp"
+#include "physics/notation.hpp"
 
 namespace epviz::section {
 namespace {
@@ -23,9 +24,13 @@ std::string title(const SectionJob& job, const SectionMethod& m) {
   t += " ";
   t += sim::name(job.surface.direction);
   if (job.level) {
-    t += ", C₁ = ";
+    t += ", ";
+    t += physics::symbol::energy;
+    t += " = ";
     t += short_number(job.level->energy);
-    t += ", C₀ = ";
+    t += ", ";
+    t += physics::symbol::area;
+    t += " = ";
     t += short_number(job.level->area);
   }
   t += " (";

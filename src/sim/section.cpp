@@ -14,6 +14,7 @@
 #include "physics/direct.hpp"
 #include "physics/direct_batch.hpp"
 #include "physics/free_rigid_body_flow.hpp"
+#include "physics/notation.hpp"
 #include "sim/drift.hpp"
 
 namespace epviz::sim {
@@ -27,8 +28,6 @@ constexpr std::array<std::pair<StateComponent, std::string_view>, 6> kComponents
     {StateComponent::gamma2, "gamma2"},
     {StateComponent::gamma3, "gamma3"},
 }};
-
-constexpr std::array<std::string_view, 6> kSymbols{"Ω₁", "Ω₂", "Ω₃", "γ₁", "γ₂", "γ₃"};
 
 constexpr std::array<std::pair<CrossingDirection, std::string_view>, 3> kDirections{{
     {CrossingDirection::upward, "upward"},
@@ -312,7 +311,10 @@ const std::vector<StateComponent>& all_state_components() {
 
 std::string_view name(StateComponent c) { return kComponents[std::size_t(c)].second; }
 
-std::string_view symbol(StateComponent c) { return kSymbols[std::size_t(c)]; }
+std::string_view symbol(StateComponent c) {
+  const auto i = std::size_t(c);  // Ω₁, Ω₂, Ω₃, then γ₁, γ₂, γ₃
+  return i < 3 ? physics::symbol::omega_component[i] : physics::symbol::gamma_component[i - 3];
+}
 
 std::optional<StateComponent> state_component_from_name(std::string_view s) {
   for (const auto& [c, n] : kComponents)

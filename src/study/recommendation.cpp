@@ -5,6 +5,7 @@
 #include <exception>
 
 #include "io/number_text.hpp"
+#include "physics/notation.hpp"
 #include "sim/drift.hpp"
 #include "sim/trajectory.hpp"
 #include "study/work_precision.hpp"
@@ -75,9 +76,9 @@ std::string setting(const RunRecord& r) {
 }
 
 std::string invariant_label(const std::string& key) {
-  if (key == "gamma_norm2") return "|γ|²";
-  if (key == "C0") return "C₀";
-  if (key == "C1") return "C₁";
+  if (key == "gamma_norm2") return std::string(physics::symbol::gamma_norm2);
+  if (key == "C0") return std::string(physics::symbol::area);
+  if (key == "C1") return std::string(physics::symbol::energy);
   return "the fourth integral";
 }
 

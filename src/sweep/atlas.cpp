@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "physics/notation.hpp"
 #include "sweep/atlas_labels.hpp"
 
 namespace epviz::sweep {
@@ -205,7 +206,8 @@ std::vector<AtlasFigure> atlas_figures(const std::vector<Json>& rows, const Atla
         if (h.undecided.empty())
           h.undecided.assign(h.rows.size(), std::vector<bool>(h.columns.size(), false));
         h.undecided[row][i] = true;
-        h.undecided_label = "inadmissible: below the least energy at this C₀";
+        h.undecided_label = "inadmissible: below the least energy at this ";
+        h.undecided_label += physics::symbol::area;
         continue;
       }
       if (!reduced.empty()) {

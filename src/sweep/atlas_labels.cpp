@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "io/number_text.hpp"
+#include "physics/notation.hpp"
 #include "sim/section.hpp"
 #include "sweep/level_point.hpp"
 
@@ -40,14 +41,14 @@ std::string axis_symbol(const std::string& field) {
   if (const int k = component(field, "gamma"); k >= 0)
     return std::string(sim::symbol(sim::StateComponent(int(sim::StateComponent::gamma1) + k)));
   if (field == "energy") return "E";
-  if (field == "area_constant") return "C₀";
+  if (field == "area_constant") return std::string(physics::symbol::area);
   if (field == "t_end") return "T";
   return field;
 }
 
 std::string axis_title(const std::string& field, const std::vector<const Json*>& rows) {
   if (field == "energy") return "energy E";
-  if (field == "area_constant") return "area constant C₀";
+  if (field == "area_constant") return "area constant " + std::string(physics::symbol::area);
   if (field == "t_end") return "end time T";
   const int k = component(field, "gamma");
   if (k < 0) return axis_symbol(field);
@@ -73,8 +74,8 @@ std::string metric_label(const std::string& metric) {
   if (metric.starts_with(drift)) {
     const std::string of = metric.substr(drift.size());
     const std::string symbol = of == "energy"        ? "E"
-                               : of == "area"        ? "C₀"
-                               : of == "gamma_norm2" ? "|γ|²"
+                               : of == "area"        ? std::string(physics::symbol::area)
+                               : of == "gamma_norm2" ? std::string(physics::symbol::gamma_norm2)
                                                      : of;
     return "largest relative drift of " + symbol;
   }

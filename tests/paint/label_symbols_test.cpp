@@ -1,5 +1,5 @@
-// Labels name quantities by their symbols (scene/symbols.hpp): γ, Ω, |γ|², C₀,
-// C₁, Δγ, the plane's caption a = −γ₁/(1+γ₃). The overlay's font (DejaVu Sans)
+// Labels name quantities by their symbols (physics/notation.hpp): γ, Ω, |γ|², C₀,
+// C₁, Δγ, the components γ₁ ... Ω₃, the plane's caption a = −γ₁/(1+γ₃). The overlay's font (DejaVu Sans)
 // has a glyph for each, so they are drawn as they are; ImGui's bitmap font has
 // none of them, so there every such text is spelled in ASCII as a whole, and
 // no character is drawn as the font's '?'.
@@ -13,11 +13,11 @@
 #include "paint/frame_painter.hpp"
 #include "paint/preset_frame.hpp"
 #include "physics/cases.hpp"
+#include "physics/notation.hpp"
 #include "render/font_text.hpp"
 #include "render/gui_overlay.hpp"
 #include "render/render_test_support.hpp"
 #include "scene/frame_source.hpp"
-#include "scene/symbols.hpp"
 
 namespace epviz {
 namespace {
@@ -27,10 +27,12 @@ namespace et = epviz::testing;
 // Every symbol text the pictures use, and the operators the keys use.
 std::vector<std::string> symbol_texts() {
   std::vector<std::string> texts;
-  for (const auto s : {scene::symbol::gamma, scene::symbol::omega, scene::symbol::gamma_norm2,
-                       scene::symbol::area, scene::symbol::energy, scene::symbol::separation,
-                       scene::symbol::riccati_projection, scene::symbol::infinity})
+  for (const auto s : {physics::symbol::gamma, physics::symbol::omega, physics::symbol::gamma_norm2,
+                       physics::symbol::area, physics::symbol::energy, physics::symbol::separation,
+                       physics::symbol::riccati_projection, physics::symbol::infinity})
     texts.emplace_back(s);
+  for (const auto s : physics::symbol::omega_component) texts.emplace_back(s);
+  for (const auto s : physics::symbol::gamma_component) texts.emplace_back(s);
   for (const auto& p : physics::case_presets())
     if (const auto symbol = scene::extra_integral_symbol(p.id); !symbol.empty())
       texts.push_back(symbol);
@@ -82,7 +84,7 @@ TEST(LabelSymbols, TheBitmapFontDrawsThemInAscii) {
     EXPECT_TRUE(render::font_has_glyphs(font, drawn)) << drawn;
   }
   // Measured as drawn: the ASCII spelling's width, not the symbols'.
-  EXPECT_EQ(painter.gui().text_size(std::string(scene::symbol::riccati_projection)).x,
+  EXPECT_EQ(painter.gui().text_size(std::string(physics::symbol::riccati_projection)).x,
             painter.gui().text_size("a = -gamma1/(1+gamma3), b = -gamma2/(1+gamma3)").x);
 }
 
