@@ -76,6 +76,12 @@ const std::optional<double>& pixel_true_until_of(const scene::Frame& f, std::siz
   return run == 0 ? f.pixel_true_until : f.comparison->others[run - 1].pixel_true_until;
 }
 
+// The age on run `run`'s trail after which its line is drawn thin and open:
+// none while the frame has not passed the run's pixel-true time.
+std::optional<float> thin_after(const scene::Frame& f, std::size_t run) {
+  return run_past_pixel_true(f, run) ? run_untrue_age(f, run) : std::nullopt;
+}
+
 // A 2D sample of a run's line, `length` pixels from `from`, in its style.
 void add_line_sample(render::DrawList& flat, glm::vec2 from, float length, scene::LineStyle style,
                      float width, bool open, const glm::vec4& colour) {
@@ -138,14 +144,6 @@ bool any_run_past_pixel_true(const scene::Frame& f) {
     if (run_past_pixel_true(f, r)) return true;
   return false;
 }
-
-namespace {
-// The age on run `run`'s trail after which its line is drawn thin and open:
-// none while the frame has not passed the run's pixel-true time.
-std::optional<float> thin_after(const scene::Frame& f, std::size_t run) {
-  return run_past_pixel_true(f, run) ? run_untrue_age(f, run) : std::nullopt;
-}
-}  // namespace
 
 void draw_trails_3d(render::DrawList& list, const scene::Frame& f, const scene::Theme& ink,
                     float px, const std::function<glm::vec2(const glm::vec3&)>& to_pixel) {
