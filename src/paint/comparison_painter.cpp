@@ -76,6 +76,12 @@ const std::optional<double>& pixel_true_until_of(const scene::Frame& f, std::siz
   return run == 0 ? f.pixel_true_until : f.comparison->others[run - 1].pixel_true_until;
 }
 
+// The age on run `run`'s trail after which its line is drawn thin and open:
+// none while the frame has not passed the run's pixel-true time.
+std::optional<float> thin_after(const scene::Frame& f, std::size_t run) {
+  return run_past_pixel_true(f, run) ? run_untrue_age(f, run) : std::nullopt;
+}
+
 // A 2D sample of a run's line, `length` pixels from `from`, in its style.
 void add_line_sample(render::DrawList& flat, glm::vec2 from, float length, scene::LineStyle style,
                      float width, bool open, const glm::vec4& colour) {
@@ -128,6 +134,17 @@ const std::optional<float>& run_untrue_age(const scene::Frame& f, std::size_t ru
   return run == 0 ? f.untrue_age : f.comparison->others[run - 1].untrue_age;
 }
 
+bool run_past_pixel_true(const scene::Frame& f, std::size_t run) {
+  const auto& until = pixel_true_until_of(f, run);
+  return until && *until < f.t;
+}
+
+bool any_run_past_pixel_true(const scene::Frame& f) {
+  for (std::size_t r = 0; r < run_count(f); ++r)
+    if (run_past_pixel_true(f, r)) return true;
+  return false;
+}
+
 void draw_trails_3d(render::DrawList& list, const scene::Frame& f, const scene::Theme& ink,
                     float px, const std::function<glm::vec2(const glm::vec3&)>& to_pixel) {
   for (std::size_t r = 0; r < run_count(f); ++r) {
@@ -140,9 +157,8 @@ void draw_trails_3d(render::DrawList& list, const scene::Frame& f, const scene::
       pixels.push_back(to_pixel(to_glm(p.p)));
       ages.push_back(p.age);
     }
-    draw_styled<render::LineVertex>(vertices, pixels, ages, run_untrue_age(f, r),
-                                    run_line_style(f, r), run_line_width(r, kSphereTrailWidth * px),
-                                    lerp_3d,
+    draw_styled<render::LineVertex>(vertices, pixels, ages, thin_after(f, r), run_line_style(f, r),
+                                    run_line_width(r, kSphereTrailWidth * px), lerp_3d,
                                     [&](const std::vector<render::LineVertex>& piece, float w) {
                                       list.add_polyline(piece, w);
                                     });
@@ -186,7 +202,7 @@ PlaneMarksDrawn draw_paths_plane(render::DrawList& flat, const render::Panel2D& 
     std::vector<glm::vec2> pixels;
     std::vector<float> ages;
     auto flush = [&] {
-      draw_styled<PlaneVertex>(vertices, pixels, ages, run_untrue_age(f, r), run_line_style(f, r),
+      draw_styled<PlaneVertex>(vertices, pixels, ages, thin_after(f, r), run_line_style(f, r),
                                width, lerp_plane,
                                [&](const std::vector<PlaneVertex>& piece, float w) {
                                  std::vector<glm::dvec2> points;
@@ -309,16 +325,23 @@ std::vector<AnnotationBox> draw_run_annotations(render::DrawList& flat, const sc
       drawn.push_back({text, box});
     }
     const glm::vec4 grey = to_glm(ink.trail_caption);
-    add_line_sample(flat, {x0, y}, sample, scene::LineStyle::solid, kSphereTrailWidth * px, true,
-                    grey);
-    std::string text = fitted("thin, open line: after the run's pixel-true time", room, measure);
-    Box box = add_text({text_x, y}, text, grey);
-    box.min.x = x0;
-    drawn.push_back({text, box});
-    y += line;
+    // The key of the thin, open line only where some run is drawn so: a
+    // picture that is pixel-true throughout (or a run with no measured
+    // horizon) does not send the reader looking for it. Its room stays
+    // reserved (the layout is the same in every frame), the caption moves up.
+    if (any_run_past_pixel_true(f)) {
+      add_line_sample(flat, {x0, y}, sample, scene::LineStyle::solid, kSphereTrailWidth * px, true,
+                      grey);
+      const std::string key =
+          fitted("thin, open line: after the run's pixel-true time", room, measure);
+      Box box = add_text({text_x, y}, key, grey);
+      box.min.x = x0;
+      drawn.push_back({key, box});
+      y += line;
+    }
     // The trail's caption, shorter where the strip is narrow.
     const float wide = float(a.right()) - 6.0f * px - x0;
-    text = "trail: " + f.trail_label + ", one colour and line per run";
+    std::string text = "trail: " + f.trail_label + ", one colour and line per run";
     if (measure(text).x > wide) text = fitted("trail: " + f.trail_label, wide, measure);
     drawn.push_back({text, add_text({x0, y}, text, grey)});
   }

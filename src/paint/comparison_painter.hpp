@@ -40,6 +40,11 @@ glm::vec4 run_line_colour(const scene::Frame& f, std::size_t run, float age,
                           const scene::Theme& ink);
 // Where run `run`'s pixel-true time falls on its trail (trail points newer than this age lie after it).
 const std::optional<float>& run_untrue_age(const scene::Frame& f, std::size_t run);
+// Whether the frame is past run `run`'s pixel-true time (known, and earlier
+// than the frame's): only then is its line drawn thin and open after it, and
+// only then (for any run) does the legend show that line's key.
+bool run_past_pixel_true(const scene::Frame& f, std::size_t run);
+bool any_run_past_pixel_true(const scene::Frame& f);
 
 // Every run's trail on the sphere, into the 3D list; `to_pixel` says where a
 // point lands on screen (the dashes are measured there).
