@@ -108,6 +108,28 @@ TEST(DirectBatch, Dop853LanesAreTheScalarStepperAloneBitwise) {
   expect_each_lane_alone(generic_body(), mixed_tasks(19), settings);
 }
 
+// Hairer's initial step guess has branches for a vanishing derivative and a
+// vanishing second derivative. Bodies at rest with gamma along r (no torque),
+// and nearly at rest, among moving ones, start as alone: the generic body,
+// whose derivative there is round-off (about 1e-17), and one with r on the
+// third axis, whose derivative is exactly zero.
+TEST(DirectBatch, StatesAtRestAndNearItStartAsAlone) {
+  Body on_axis = generic_body();
+  on_axis.com = {0.0, 0.0, 0.5};
+  for (const Body& body : {generic_body(), on_axis}) {
+    auto tasks = mixed_tasks(6);
+    for (double spin : {0.0, 1e-13, 1e-7}) {
+      InitialState s;
+      s.omega = {spin, -spin, 0.5 * spin};
+      s.gamma = body.com.normalized();
+      tasks.push_back(direct_batch_task(s, 3.0, {1.0, 2.0}));
+    }
+    DirectBatchSettings settings;
+    settings.adaptive = tolerance(1e-9);
+    expect_each_lane_alone(body, tasks, settings);
+  }
+}
+
 TEST(DirectBatch, Dop853WithGivenInitialStepAndPiControl) {
   DirectBatchSettings settings;
   settings.adaptive = tolerance(1e-7);
