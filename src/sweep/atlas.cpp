@@ -169,10 +169,10 @@ std::vector<AtlasFigure> atlas_figures(const std::vector<Json>& rows, const Atla
       for (const auto& r : h.rows) h.row_values.push_back(number[q.y][r]);
     h.x_label = axis_title(q.x, members);
     h.y_label = axis_title(q.y, members);
-    h.value_label = metric_label(q.metric);
+    h.value_label = metric_label(q.metric, members);
     const std::string over = axis_symbol(q.x) + " and " + axis_symbol(q.y);
     h.title = reduced.empty()
-                  ? metric_label(q.metric) + " over " + over
+                  ? h.value_label + " over " + over
                   : "largest " + axis_symbol(reduced) + " without a failure, by " + over;
     std::string fixed;  // axes with one value: named in the title only
     for (const auto& n : names)

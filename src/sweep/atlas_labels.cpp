@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "io/number_text.hpp"
+#include "physics/cases.hpp"
 #include "physics/notation.hpp"
 #include "sim/section.hpp"
 #include "sweep/level_point.hpp"
@@ -33,6 +34,18 @@ std::optional<Json> shared(const std::vector<const Json*>& rows, const std::stri
   return v;
 }
 
+// The fourth integral's symbol from the case table when every row ran the same
+// case and that case has one ("K", "Ω₃"); words that name no case when the
+// rows do not say it, ran several, or ran one without a fourth integral.
+std::string fourth_integral(const std::vector<const Json*>& rows) {
+  if (const auto name = shared(rows, "case"); name && name->is_string())
+    if (const auto c = physics::case_from_name(name->get<std::string>());
+        c && *c != physics::Case::custom)
+      if (const std::string_view s = physics::preset(*c).integral_symbol; !s.empty())
+        return std::string(s);
+  return "the case's fourth integral";
+}
+
 }  // namespace
 
 std::string axis_symbol(const std::string& field) {
@@ -40,14 +53,14 @@ std::string axis_symbol(const std::string& field) {
     return std::string(sim::symbol(sim::StateComponent(int(sim::StateComponent::omega1) + k)));
   if (const int k = component(field, "gamma"); k >= 0)
     return std::string(sim::symbol(sim::StateComponent(int(sim::StateComponent::gamma1) + k)));
-  if (field == "energy") return "E";
+  if (field == "energy") return std::string(physics::symbol::energy);
   if (field == "area_constant") return std::string(physics::symbol::area);
   if (field == "t_end") return "T";
   return field;
 }
 
 std::string axis_title(const std::string& field, const std::vector<const Json*>& rows) {
-  if (field == "energy") return "energy E";
+  if (field == "energy") return "energy " + std::string(physics::symbol::energy);
   if (field == "area_constant") return "area constant " + std::string(physics::symbol::area);
   if (field == "t_end") return "end time T";
   const int k = component(field, "gamma");
@@ -62,18 +75,19 @@ std::string axis_title(const std::string& field, const std::vector<const Json*>&
   return axis_symbol(field);
 }
 
-std::string metric_label(const std::string& metric) {
+std::string metric_label(const std::string& metric, const std::vector<const Json*>& rows) {
   if (metric == "ftle") return "largest FTLE λ (1/time)";
   if (metric == "time_to_failure") return "time to failure (time)";
   if (metric == "cpu_seconds") return "CPU time (s)";
   if (metric == "chaotic_share")
     return "share of chaotic orbits (FTLE > " + io::number_text(kChaoticFtle, 4) + ")";
-  if (metric == "extra_integral_range") return "largest relative range of K over an orbit";
+  if (metric == "extra_integral_range")
+    return "largest relative range of " + fourth_integral(rows) + " over an orbit";
   if (metric == "reference_error") return "largest distance from the reference run";
   const std::string drift = "max_relative_drift.";
   if (metric.starts_with(drift)) {
     const std::string of = metric.substr(drift.size());
-    const std::string symbol = of == "energy"        ? "E"
+    const std::string symbol = of == "energy"        ? std::string(physics::symbol::energy)
                                : of == "area"        ? std::string(physics::symbol::area)
                                : of == "gamma_norm2" ? std::string(physics::symbol::gamma_norm2)
                                                      : of;

@@ -93,12 +93,47 @@ TEST(AtlasLabels, WithoutTheSweepsFtleSettingsTheCaptionNamesNoWindow) {
 TEST(AtlasLabels, Symbols) {
   EXPECT_EQ(axis_symbol("gamma[2]"), "γ₃");
   EXPECT_EQ(axis_symbol("omega[0]"), "Ω₁");
-  EXPECT_EQ(axis_symbol("energy"), "E");
+  EXPECT_EQ(axis_symbol("energy"), "C₁");
   EXPECT_EQ(axis_symbol("t_end"), "T");
   EXPECT_EQ(axis_symbol("inertia[1]"), "inertia[1]");
   EXPECT_EQ(axis_symbol("gamma"), "gamma");
   EXPECT_EQ(metric_label("max_relative_drift.area"), "largest relative drift of C₀");
+  EXPECT_EQ(metric_label("max_relative_drift.energy"), "largest relative drift of C₁");
   EXPECT_EQ(metric_label("largest_stable:step"), "largest stable step");
+}
+
+// The range of the fourth integral is named by the symbol of the case the rows
+// ran, and in words when they ran several cases, one without a fourth
+// integral, or do not say which.
+TEST(AtlasLabels, FourthIntegralRangeIsNamedByTheCasesSymbol) {
+  auto rows_of = [](std::vector<const char*> cases) {
+    std::vector<Json> rows;
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+      Json r = {{"index", long(i)},
+                {"axes", {{"energy", 1.0 + double(i)}, {"area_constant", 0.5}}},
+                {"extra_integral_range", 1e-10 * double(i + 1)}};
+      if (cases[i]) r["case"] = cases[i];
+      rows.push_back(r);
+    }
+    return rows;
+  };
+  auto label = [&](std::vector<const char*> cases) {
+    const auto figs =
+        atlas_figures(rows_of(cases), {"extra_integral_range", "area_constant", "energy"});
+    EXPECT_EQ(figs.size(), 1u);
+    const auto& h = figs.at(0).heat_map;
+    EXPECT_TRUE(h.title.starts_with(h.value_label)) << h.title;
+    return h.value_label;
+  };
+  EXPECT_EQ(label({"kovalevskaya", "kovalevskaya"}), "largest relative range of K over an orbit");
+  EXPECT_EQ(label({"lagrange", "lagrange"}), "largest relative range of Ω₃ over an orbit");
+  EXPECT_EQ(label({"goryachev-chaplygin", "goryachev-chaplygin"}),
+            "largest relative range of G over an orbit");
+  const std::string neutral = "largest relative range of the case's fourth integral over an orbit";
+  EXPECT_EQ(label({"kovalevskaya", "lagrange"}), neutral);
+  EXPECT_EQ(label({"generic", "generic"}), neutral);
+  EXPECT_EQ(label({"kovalevskaya", nullptr}), neutral);
+  EXPECT_EQ(metric_label("extra_integral_range"), neutral);
 }
 
 // A value that varies among the rows (an axis) is not in the caption.

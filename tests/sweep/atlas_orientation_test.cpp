@@ -46,7 +46,7 @@ TEST(AtlasOrientation, NumericAxesAscendRightAndUp) {
     for (int c = 0; c < 3; ++c)
       EXPECT_DOUBLE_EQ(h.values[r][c], 100.0 * steps[r] + energies[c]) << r << "," << c;
   }
-  EXPECT_EQ(h.x_label, "energy E");
+  EXPECT_EQ(h.x_label, "energy C₁");
   EXPECT_EQ(h.y_label, "step");
 }
 
