@@ -89,22 +89,12 @@ void ensemble_batch_dop853(benchmark::State& state, numerics::SimdPath path, int
       benchmark::Counter(double(steps), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
-const physics::batch_isa::DirectKernels& kernels_of(numerics::SimdPath path) {
-  switch (path) {
-    case numerics::SimdPath::sse2: return physics::batch_isa::kSse2;
-    case numerics::SimdPath::avx2: return physics::batch_isa::kAvx2;
-    case numerics::SimdPath::avx512: return physics::batch_isa::kAvx512;
-    case numerics::SimdPath::scalar: break;
-  }
-  return physics::batch_isa::kScalar;
-}
-
 // The attempt kernel over and over on W lanes of the ensemble's first states
 // with a step of 0.05 (each attempt from the same state: no control at all).
 template <int W>
 void ensemble_attempt_only(benchmark::State& state, numerics::SimdPath path) {
   const auto& kernels = [&]() -> const auto& {
-    const auto& k = kernels_of(path);
+    const auto& k = physics::batch_isa::kernels_for(path);
     if constexpr (W == 1) return k.w1.dop853;
     if constexpr (W == 2) return k.w2.dop853;
     if constexpr (W == 4) return k.w4.dop853;

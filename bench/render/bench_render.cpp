@@ -126,7 +126,8 @@ BENCHMARK(mp4_encode)
     ->MinTime(2.0);
 
 BENCHMARK(paint_cloud_frames)
-    ->Name("render_only_cloud_job/with_cloud")
+    ->Name("render_only_cloud_job")
+    ->ArgName("with_cloud")
     ->Arg(1)
     ->Arg(0)
     ->MeasureProcessCPUTime()

@@ -21,6 +21,11 @@ const CasePreset& preset(Case c) {
   throw std::out_of_range("no preset for case '" + case_name(c) + "'");
 }
 
+std::string_view integral_symbol(Case c) {
+  const CasePreset* p = find(c);
+  return p ? p->integral_symbol : std::string_view();
+}
+
 std::string case_name(Case c) {
   const CasePreset* p = find(c);
   return p ? p->name : "custom";

@@ -51,6 +51,8 @@ struct CasePreset {
 
 const std::vector<CasePreset>& case_presets();
 const CasePreset& preset(Case c);  // throws std::out_of_range for custom
+// The case's fourth integral's symbol ("K", "Ω₃"); "" for the generic and custom bodies.
+std::string_view integral_symbol(Case c);
 std::optional<Case> case_from_name(std::string_view name);
 std::string case_name(Case c);  // "custom" for Case::custom
 

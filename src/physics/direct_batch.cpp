@@ -32,6 +32,17 @@ DirectBatchTask direct_batch_task(const InitialState& s, double t_end,
   return task;
 }
 
+const batch_isa::DirectKernels& batch_isa::kernels_for(numerics::SimdPath path) {
+  if (!numerics::cpu_supports(path)) numerics::parse_simd_path(numerics::name(path));  // throws
+  switch (path) {
+    case numerics::SimdPath::scalar: return batch_isa::kScalar;
+    case numerics::SimdPath::sse2: return batch_isa::kSse2;
+    case numerics::SimdPath::avx2: return batch_isa::kAvx2;
+    case numerics::SimdPath::avx512: return batch_isa::kAvx512;
+  }
+  return batch_isa::kScalar;
+}
+
 int default_batch_width(numerics::SimdPath path) {
   switch (path) {
     case numerics::SimdPath::scalar: return 1;
@@ -43,17 +54,6 @@ int default_batch_width(numerics::SimdPath path) {
 }
 
 namespace {
-
-const batch_isa::DirectKernels& kernels_for(numerics::SimdPath path) {
-  if (!numerics::cpu_supports(path)) numerics::parse_simd_path(numerics::name(path));  // throws
-  switch (path) {
-    case numerics::SimdPath::scalar: return batch_isa::kScalar;
-    case numerics::SimdPath::sse2: return batch_isa::kSse2;
-    case numerics::SimdPath::avx2: return batch_isa::kAvx2;
-    case numerics::SimdPath::avx512: return batch_isa::kAvx512;
-  }
-  return batch_isa::kScalar;
-}
 
 template <int W>
 std::vector<DirectBatchResult> run(const DirectBatchSystem& sys,
@@ -77,7 +77,7 @@ std::vector<DirectBatchResult> integrate_direct_batch(const Body& body,
                                                       const std::vector<DirectBatchTask>& tasks,
                                                       const DirectBatchSettings& settings) {
   const numerics::SimdPath path = settings.path ? *settings.path : numerics::chosen_simd_path();
-  const batch_isa::DirectKernels& k = kernels_for(path);
+  const batch_isa::DirectKernels& k = batch_isa::kernels_for(path);
   const DirectBatchSystem sys = DirectBatchSystem::of(body);
   switch (settings.width == 0 ? default_batch_width(path) : settings.width) {
     case 1: return run<1>(sys, k.w1, tasks, settings);

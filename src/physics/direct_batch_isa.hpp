@@ -4,6 +4,7 @@
 // lane count the dispatcher (direct_batch.cpp) offers.
 #include "numerics/batch_lanes.hpp"
 #include "numerics/rk_tableaus.hpp"
+#include "numerics/simd_path.hpp"
 #include "physics/direct_rhs_batch.hpp"
 
 namespace epviz::physics::batch_isa {
@@ -22,5 +23,8 @@ struct DirectKernels {
 };
 
 extern const DirectKernels kScalar, kSse2, kAvx2, kAvx512;
+
+// The kernels of `path`; throws std::invalid_argument when this CPU lacks it.
+const DirectKernels& kernels_for(numerics::SimdPath path);
 
 }  // namespace epviz::physics::batch_isa

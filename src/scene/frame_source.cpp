@@ -25,7 +25,7 @@ std::string case_title(physics::Case c) {
 }
 
 std::string extra_integral_symbol(physics::Case c) {
-  return c == physics::Case::custom ? "" : std::string(physics::preset(c).integral_symbol);
+  return std::string(physics::integral_symbol(c));
 }
 
 int overlay_drift_rows(const sim::RunSpec& run) {

@@ -368,10 +368,6 @@ std::vector<Crossing> section_crossings(const RunSpec& run, const SectionSurface
   throw std::invalid_argument("unknown method");
 }
 
-}  // namespace epviz::sim
-
-namespace epviz::sim {
-
 bool sections_batched(const RunSpec& run) { return run.method == Method::dop853; }
 
 std::vector<OrbitCrossings> section_crossings_batched(const std::vector<RunSpec>& runs,

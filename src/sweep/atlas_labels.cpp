@@ -39,9 +39,8 @@ std::optional<Json> shared(const std::vector<const Json*>& rows, const std::stri
 // rows do not say it, ran several, or ran one without a fourth integral.
 std::string fourth_integral(const std::vector<const Json*>& rows) {
   if (const auto name = shared(rows, "case"); name && name->is_string())
-    if (const auto c = physics::case_from_name(name->get<std::string>());
-        c && *c != physics::Case::custom)
-      if (const std::string_view s = physics::preset(*c).integral_symbol; !s.empty())
+    if (const auto c = physics::case_from_name(name->get<std::string>()))
+      if (const std::string_view s = physics::integral_symbol(*c); !s.empty())
         return std::string(s);
   return "the case's fourth integral";
 }
