@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "app/cli_values.hpp"
+#include "app/cli.hpp"
 #include "app/simulation_fields.hpp"
 #include "io/bad_input.hpp"
 #include "job/resolve.hpp"
@@ -22,7 +22,7 @@ void parse_simulate(const std::vector<std::string>& args) {
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);  // as main()
   app::SimulationOptions options;
   app::add_simulation_options(app, options);
-  app::reject_empty_values(app);
+  app::cli::reject_empty_values(app);
   std::vector<const char*> argv{"epviz-simulate"};
   for (const auto& a : args) argv.push_back(a.c_str());
   app.parse(int(argv.size()), argv.data());

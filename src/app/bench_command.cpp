@@ -1,7 +1,5 @@
 #include "app/bench_command.hpp"
 
-#include <CLI/CLI.hpp>
-
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -131,28 +129,28 @@ int run_bench(const BenchRequest& request) {
   return 0;
 }
 
-std::function<int()> add_bench_command(CLI::App& app) {
+std::function<int()> add_bench_command(cli::Command app) {
   auto request = std::make_shared<BenchRequest>();
-  auto* cmd = app.add_subcommand(
+  cli::Command cmd = app.add_subcommand(
       "bench", "Work-precision, invariant drift and stability studies of the methods");
-  cmd->add_flag("--quick", request->quick, "a short study for CI (well under a minute)");
-  cmd->add_option("--json", request->json, "write every row and the metadata to this JSON file");
-  cmd->add_option("--out", request->out,
-                  "create this directory and write bench.json and the charts (PNG) there");
-  add_gl_option(*cmd, request->gl, "for the charts");
-  cmd->add_option("--format", request->format,
-                  "the charts' files with --out: png (GL), svg or pdf (cairo, vector; no GL "
-                  "needed) (default png)");
-  cmd->add_option("--cases", request->cases,
-                  "comma-separated presets for the work-precision and drift studies (default all; "
-                  "none with --job unless named; custom: the --job body)");
-  cmd->add_option("--job", request->job,
-                  "a render job (its \"simulation\") or a simulate job (JSON): the "
-                  "work-precision study and the peers run on its body, initial state and t_end, "
-                  "and the bench recommends a method for it");
-  cmd->add_option("--target-error", request->target_error,
-                  "with --job: the error at t_end the recommended method must reach (default "
-                  "1e-8)");
+  cmd.add_flag("--quick", request->quick, "a short study for CI (well under a minute)");
+  cmd.add_option("--json", request->json, "write every row and the metadata to this JSON file");
+  cmd.add_option("--out", request->out,
+                 "create this directory and write bench.json and the charts (PNG) there");
+  add_gl_option(cmd, request->gl, "for the charts");
+  cmd.add_option("--format", request->format,
+                 "the charts' files with --out: png (GL), svg or pdf (cairo, vector; no GL "
+                 "needed) (default png)");
+  cmd.add_option("--cases", request->cases,
+                 "comma-separated presets for the work-precision and drift studies (default all; "
+                 "none with --job unless named; custom: the --job body)");
+  cmd.add_option("--job", request->job,
+                 "a render job (its \"simulation\") or a simulate job (JSON): the "
+                 "work-precision study and the peers run on its body, initial state and t_end, "
+                 "and the bench recommends a method for it");
+  cmd.add_option("--target-error", request->target_error,
+                 "with --job: the error at t_end the recommended method must reach (default "
+                 "1e-8)");
   return [request] { return run_bench(*request); };
 }
 

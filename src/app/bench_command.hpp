@@ -4,15 +4,13 @@
 #include <functional>
 #include <string>
 
-namespace CLI {
-class App;  // CLI11: included only where a command is defined
-}
+#include "app/cli.hpp"
 
 namespace epviz::app {
 
 // Adds the subcommand to `app`; the returned function runs it after parsing and
 // returns the process exit code.
-std::function<int()> add_bench_command(CLI::App& app);
+std::function<int()> add_bench_command(cli::Command app);
 
 // What a bench run is asked for, from the command line or a render job
 // (render_jobs/bench_figures.json: `epviz render` draws the bench's figures).

@@ -1,6 +1,5 @@
 #include "app/cases_command.hpp"
 
-#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <memory>
 
@@ -47,10 +46,10 @@ int list_cases(bool json) {
 
 }  // namespace
 
-std::function<int()> add_cases_command(CLI::App& app) {
+std::function<int()> add_cases_command(cli::Command app) {
   auto json = std::make_shared<bool>(false);
-  auto* cmd = app.add_subcommand("cases", "List the classical cases and their presets");
-  cmd->add_flag("--json", *json, "print as JSON");
+  cli::Command cmd = app.add_subcommand("cases", "List the classical cases and their presets");
+  cmd.add_flag("--json", *json, "print as JSON");
   return [json] { return list_cases(*json); };
 }
 

@@ -1,11 +1,9 @@
 #pragma once
 #include <functional>
 
-namespace CLI {
-class App;  // CLI11: included only where a command is defined
-}
+#include "app/cli.hpp"
 
 namespace epviz::app {
 // `epviz cases`: the presets with their parameters, conditions and fourth integral.
-std::function<int()> add_cases_command(CLI::App& app);
+std::function<int()> add_cases_command(cli::Command app);
 }  // namespace epviz::app

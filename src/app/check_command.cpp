@@ -1,7 +1,5 @@
 #include "app/check_command.hpp"
 
-#include <CLI/CLI.hpp>
-
 #include <iostream>
 #include <memory>
 #include <mutex>
@@ -122,34 +120,34 @@ int run_check(const CheckOptions& o) {
 
 }  // namespace
 
-std::function<int()> add_check_command(CLI::App& app) {
+std::function<int()> add_check_command(cli::Command app) {
   auto o = std::make_shared<CheckOptions>();
-  auto* cmd = app.add_subcommand(
+  cli::Command cmd = app.add_subcommand(
       "check", "Render frames of jobs in memory and compare them with goldens (for CI)");
-  cmd->add_option("jobs", o->jobs, "render job files, galleries, or directories of jobs")
-      ->required()
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  cmd->add_option("--golden", o->golden,
-                  "golden directory (default: golden/ next to each job); goldens are <dir>/<job "
-                  "name>/frame_NNNN.png");
-  cmd->add_option(
+  cmd.add_option("jobs", o->jobs, "render job files, galleries, or directories of jobs")
+      .required()
+      .take_all();
+  cmd.add_option("--golden", o->golden,
+                 "golden directory (default: golden/ next to each job); goldens are <dir>/<job "
+                 "name>/frame_NNNN.png");
+  cmd.add_option(
       "--frames", o->frames,
       "frames to check: N, A:B, A:, :B separated by commas (default: first, middle, last)");
-  cmd->add_flag("--update", o->update, "write the goldens (and golden.json) instead of comparing");
-  cmd->add_option("--report", o->report,
-                  "write an HTML report (index.html and images) into this directory");
-  cmd->add_option("--junit", o->junit, "write JUnit XML to this file");
-  cmd->add_option("--metric", o->metric, "pixel (default) or ssim");
-  cmd->add_option("--threshold", o->threshold,
-                  "pixel: largest channel difference 0..255 that counts as equal (default " +
-                      std::to_string(check::kDefaultChannelThreshold) +
-                      "); ssim: lowest SSIM that passes (default " +
-                      check::number_text(check::kDefaultMinSsim) + ")");
-  cmd->add_option("--max-differing", o->max_differing,
-                  "pixel: percentage of pixels allowed to differ (default " +
-                      check::number_text(check::kDefaultMaxDifferingPercent) + ")");
-  cmd->add_option("-j,--jobs-in-parallel", o->workers, "check this many jobs at once (default 1)");
-  add_gl_option(*cmd, o->gl);
+  cmd.add_flag("--update", o->update, "write the goldens (and golden.json) instead of comparing");
+  cmd.add_option("--report", o->report,
+                 "write an HTML report (index.html and images) into this directory");
+  cmd.add_option("--junit", o->junit, "write JUnit XML to this file");
+  cmd.add_option("--metric", o->metric, "pixel (default) or ssim");
+  cmd.add_option("--threshold", o->threshold,
+                 "pixel: largest channel difference 0..255 that counts as equal (default " +
+                     std::to_string(check::kDefaultChannelThreshold) +
+                     "); ssim: lowest SSIM that passes (default " +
+                     check::number_text(check::kDefaultMinSsim) + ")");
+  cmd.add_option("--max-differing", o->max_differing,
+                 "pixel: percentage of pixels allowed to differ (default " +
+                     check::number_text(check::kDefaultMaxDifferingPercent) + ")");
+  cmd.add_option("-j,--jobs-in-parallel", o->workers, "check this many jobs at once (default 1)");
+  add_gl_option(cmd, o->gl);
   return [o] { return run_check(*o); };
 }
 

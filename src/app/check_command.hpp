@@ -3,14 +3,12 @@
 // them with committed goldens (render regression checks for CI).
 #include <functional>
 
-namespace CLI {
-class App;  // CLI11: included only where a command is defined
-}
+#include "app/cli.hpp"
 
 namespace epviz::app {
 
 // Adds the subcommand to `app`; the returned function runs it after parsing and
 // returns the process exit code.
-std::function<int()> add_check_command(CLI::App& app);
+std::function<int()> add_check_command(cli::Command app);
 
 }  // namespace epviz::app

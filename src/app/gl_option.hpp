@@ -4,13 +4,11 @@
 // else auto".
 #include <string>
 
-namespace CLI {
-class App;  // CLI11: included only where options are defined
-}
+#include "app/cli.hpp"
 
 namespace epviz::app {
 
 // `what_for` ends the help's first words: "offscreen GL backend for the charts".
-void add_gl_option(CLI::App& command, std::string& value, const std::string& what_for = "");
+void add_gl_option(cli::Command command, std::string& value, const std::string& what_for = "");
 
 }  // namespace epviz::app

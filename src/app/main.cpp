@@ -1,13 +1,12 @@
 // The epviz command line. Every user error ends here as one line on stderr and
 // exit code 2; numerical failures are reported by the commands (exit code 3).
-#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <functional>
 #include <map>
 
 #include "app/bench_command.hpp"
 #include "app/cases_command.hpp"
-#include "app/cli_values.hpp"
+#include "app/cli.hpp"
 #include "app/merge_command.hpp"
 #include "app/section_command.hpp"
 #include "app/simulate_command.hpp"
@@ -22,14 +21,12 @@
 #include "numerics/simd_path.hpp"
 
 int main(int argc, char** argv) {
-  CLI::App app{
+  epviz::app::cli::Program program{
       "epviz: the heavy rigid body about a fixed point (Euler-Poisson), simulated and rendered "
       "offscreen"};
-  app.require_subcommand(1);
-  // An option given twice takes its last value, so a command line can override
-  // what a wrapper script put before it.
-  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
-  app.set_version_flag("--version", [] {
+  // One subcommand; an option given twice takes its last value, so a command
+  // line can override what a wrapper script put before it (app/cli.hpp).
+  program.set_version_flag("--version", [] {
     std::string text = "epviz " EPVIZ_VERSION " (git " EPVIZ_GIT_COMMIT ")";
     text += "\nbatch SIMD path: " + epviz::numerics::simd_path_report();
 #ifdef EPVIZ_HAVE_RENDER
@@ -37,10 +34,11 @@ int main(int argc, char** argv) {
 #endif
     return text;
   });
+  epviz::app::cli::Command app = program.root();
 #ifdef EPVIZ_HAVE_RENDER
   bool verbose = false;
   app.add_flag("--verbose", verbose, "say on stderr which GL backend was chosen");
-  app.fallthrough();  // --verbose may also follow the command
+  program.fallthrough();  // --verbose may also follow the command
 #endif
   std::map<std::string, std::function<int()>> commands;
   commands["simulate"] = epviz::app::add_simulate_command(app);
@@ -54,20 +52,9 @@ int main(int argc, char** argv) {
   commands["check"] = epviz::app::add_check_command(app);
   commands["serve"] = epviz::app::add_serve_command(app);
 #endif
-  epviz::app::reject_empty_values(app);
+  epviz::app::cli::reject_empty_values(app);
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "epviz: error: %s (see epviz --help)\n", e.what());
-    return 2;
-  }
+  if (const auto exit_code = program.parse(argc, argv)) return *exit_code;
 #ifdef EPVIZ_HAVE_RENDER
   epviz::render::set_gl_verbose(verbose);
 #endif
@@ -79,7 +66,7 @@ int main(int argc, char** argv) {
     } catch (const std::invalid_argument& e) {
       throw epviz::io::BadInput(e.what());
     }
-    for (auto* sub : app.get_subcommands()) return commands.at(sub->get_name())();
+    if (const std::string name = program.subcommand(); !name.empty()) return commands.at(name)();
   } catch (const epviz::io::BadInput& e) {
     std::fprintf(stderr, "epviz: error: %s\n", e.what());
     return 2;

@@ -1,6 +1,5 @@
 #include "app/merge_command.hpp"
 
-#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -223,28 +222,28 @@ int run_merge(const MergeOptions& o) {
 
 }  // namespace
 
-std::function<int()> add_merge_command(CLI::App& app) {
+std::function<int()> add_merge_command(cli::Command app) {
   auto o = std::make_shared<MergeOptions>();
-  auto* cmd = app.add_subcommand(
+  cli::Command cmd = app.add_subcommand(
       "merge",
       "Check the shards in DIR (by their manifests) and join them: sweep rows, video "
       "segments, atlas figures");
-  cmd->add_option("dir", o->dir, "directory the shards wrote to")->required();
-  cmd->add_option("--out", o->out, "directory for the merged files (default DIR)");
-  cmd->add_option("--atlas", o->atlases,
-                  "METRIC:XAXIS:YAXIS: draw this heat map of a sweep (repeatable; default: the "
-                  "sweep file's \"atlas\" list)")
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  add_gl_option(*cmd, o->gl, "for atlases");
-  cmd->add_option("--format", o->format,
-                  "the atlases' files: png (GL), svg or pdf (cairo, vector; no GL needed) "
-                  "(default png)");
-  cmd->add_option("--resubmit", o->resubmit,
-                  "FILE: when shards are missing or incomplete, write a script that submits only "
-                  "those again as Slurm job arrays, then this merge (docs/cluster.md)");
-  cmd->add_flag("--allow-unconverged", o->allow_unconverged,
-                "exit 0 even when a sweep's self-check finds its FTLE or reference error "
-                "not converged (the figures still say so)");
+  cmd.add_option("dir", o->dir, "directory the shards wrote to").required();
+  cmd.add_option("--out", o->out, "directory for the merged files (default DIR)");
+  cmd.add_option("--atlas", o->atlases,
+                 "METRIC:XAXIS:YAXIS: draw this heat map of a sweep (repeatable; default: the "
+                 "sweep file's \"atlas\" list)")
+      .take_all();
+  add_gl_option(cmd, o->gl, "for atlases");
+  cmd.add_option("--format", o->format,
+                 "the atlases' files: png (GL), svg or pdf (cairo, vector; no GL needed) "
+                 "(default png)");
+  cmd.add_option("--resubmit", o->resubmit,
+                 "FILE: when shards are missing or incomplete, write a script that submits only "
+                 "those again as Slurm job arrays, then this merge (docs/cluster.md)");
+  cmd.add_flag("--allow-unconverged", o->allow_unconverged,
+               "exit 0 even when a sweep's self-check finds its FTLE or reference error "
+               "not converged (the figures still say so)");
   return [o] { return run_merge(*o); };
 }
 

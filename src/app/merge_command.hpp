@@ -5,12 +5,10 @@
 // sweep's atlas figures drawn (docs/cluster.md).
 #include <functional>
 
-namespace CLI {
-class App;
-}
+#include "app/cli.hpp"
 
 namespace epviz::app {
 
-std::function<int()> add_merge_command(CLI::App& app);
+std::function<int()> add_merge_command(cli::Command app);
 
 }  // namespace epviz::app

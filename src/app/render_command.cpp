@@ -1,6 +1,5 @@
 #include "app/render_command.hpp"
 
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -366,34 +365,34 @@ int run_render(const RenderOptions& o) {
 
 }  // namespace
 
-std::function<int()> add_render_command(CLI::App& app) {
+std::function<int()> add_render_command(cli::Command app) {
   auto o = std::make_shared<RenderOptions>();
-  auto* cmd = app.add_subcommand(
+  cli::Command cmd = app.add_subcommand(
       "render", "Render a job (render_jobs/*.json) to PNG frames, a video, or a gallery");
-  cmd->add_option("job", o->job,
-                  "render job file (JSON), or the name of a shipped job (see --list-jobs)");
-  cmd->add_flag("--list-jobs", o->list_jobs, "list the shipped jobs and exit");
-  cmd->add_flag("--help-job", o->help_job,
-                "list every key of a job file with its type, default and allowed values, and exit");
-  cmd->add_option("--out", o->out, "output directory (overrides the job's output.dir)");
-  cmd->add_option("--frames", o->frames, "frame range A:B (inclusive), A:, :B or N");
-  cmd->add_option("--width", o->width, "frame width in pixels");
-  cmd->add_option("--height", o->height, "frame height in pixels");
-  cmd->add_option("--format", o->format,
-                  "png|mp4|webm|gif, or svg|pdf: vector stills of --frames (default: the last "
-                  "frame)");
-  add_gl_option(*cmd, o->gl);
-  cmd->add_option("--report-json", o->report_json,
-                  "write what was rendered (tolerance chosen, timings) as JSON ('-': standard "
-                  "output; the summary lines then go to stderr)");
-  cmd->add_option("--shard", o->shard,
-                  "I/N: draw only shard I (from 0) of N, a contiguous range of frames (default "
-                  "from an array job's environment; epviz merge joins video segments)");
-  cmd->add_option("--shard-count", o->shard_count,
-                  "N: the number of shards when the environment gives only the index");
-  cmd->add_flag("--resume", o->resume, "PNG: skip frames already written completely");
-  cmd->add_flag("--quiet", o->quiet, "no progress line");
-  cmd->add_flag("--progress", o->progress, "progress line even when stderr is not a terminal");
+  cmd.add_option("job", o->job,
+                 "render job file (JSON), or the name of a shipped job (see --list-jobs)");
+  cmd.add_flag("--list-jobs", o->list_jobs, "list the shipped jobs and exit");
+  cmd.add_flag("--help-job", o->help_job,
+               "list every key of a job file with its type, default and allowed values, and exit");
+  cmd.add_option("--out", o->out, "output directory (overrides the job's output.dir)");
+  cmd.add_option("--frames", o->frames, "frame range A:B (inclusive), A:, :B or N");
+  cmd.add_option("--width", o->width, "frame width in pixels");
+  cmd.add_option("--height", o->height, "frame height in pixels");
+  cmd.add_option("--format", o->format,
+                 "png|mp4|webm|gif, or svg|pdf: vector stills of --frames (default: the last "
+                 "frame)");
+  add_gl_option(cmd, o->gl);
+  cmd.add_option("--report-json", o->report_json,
+                 "write what was rendered (tolerance chosen, timings) as JSON ('-': standard "
+                 "output; the summary lines then go to stderr)");
+  cmd.add_option("--shard", o->shard,
+                 "I/N: draw only shard I (from 0) of N, a contiguous range of frames (default "
+                 "from an array job's environment; epviz merge joins video segments)");
+  cmd.add_option("--shard-count", o->shard_count,
+                 "N: the number of shards when the environment gives only the index");
+  cmd.add_flag("--resume", o->resume, "PNG: skip frames already written completely");
+  cmd.add_flag("--quiet", o->quiet, "no progress line");
+  cmd.add_flag("--progress", o->progress, "progress line even when stderr is not a terminal");
   return [o] { return run_render(*o); };
 }
 

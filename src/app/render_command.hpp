@@ -1,11 +1,9 @@
 #pragma once
 #include <functional>
 
-namespace CLI {
-class App;  // CLI11: included only where a command is defined
-}
+#include "app/cli.hpp"
 
 namespace epviz::app {
 // `epviz render JOB`: PNG sequences, videos, and galleries of render jobs.
-std::function<int()> add_render_command(CLI::App& app);
+std::function<int()> add_render_command(cli::Command app);
 }  // namespace epviz::app

@@ -1,6 +1,5 @@
 #include "app/section_command.hpp"
 
-#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -130,20 +129,20 @@ void write_merged_section(const section::MergedSection& merged, const std::strin
               merged.job.csv.c_str());
 }
 
-std::function<int()> add_section_command(CLI::App& app) {
+std::function<int()> add_section_command(cli::Command app) {
   auto o = std::make_shared<SectionOptions>();
-  auto* cmd = app.add_subcommand(
+  cli::Command cmd = app.add_subcommand(
       "section", "Poincare section (SECTION.json): crossings of a surface by orbits on a level");
-  cmd->add_option("section", o->file, "section file (JSON; docs/sections.md)")->required();
-  cmd->add_option("--out", o->out, "the crossings' CSV (default: the file's \"csv\")");
-  cmd->add_option("-j,--jobs", o->jobs, "threads (default: all cores)");
-  add_gl_option(*cmd, o->gl, "for the PNG");
-  cmd->add_option("--shard", o->shard,
-                  "I/N: run only shard I (from 0) of N, a contiguous range of the orbits; default "
-                  "from SLURM_ARRAY_TASK_ID, JOB_COMPLETION_INDEX or AWS_BATCH_JOB_ARRAY_INDEX; "
-                  "`epviz merge` joins the shards and draws the pictures");
-  cmd->add_option("--shard-count", o->shard_count,
-                  "N: the number of shards when the environment gives only the index");
+  cmd.add_option("section", o->file, "section file (JSON; docs/sections.md)").required();
+  cmd.add_option("--out", o->out, "the crossings' CSV (default: the file's \"csv\")");
+  cmd.add_option("-j,--jobs", o->jobs, "threads (default: all cores)");
+  add_gl_option(cmd, o->gl, "for the PNG");
+  cmd.add_option("--shard", o->shard,
+                 "I/N: run only shard I (from 0) of N, a contiguous range of the orbits; default "
+                 "from SLURM_ARRAY_TASK_ID, JOB_COMPLETION_INDEX or AWS_BATCH_JOB_ARRAY_INDEX; "
+                 "`epviz merge` joins the shards and draws the pictures");
+  cmd.add_option("--shard-count", o->shard_count,
+                 "N: the number of shards when the environment gives only the index");
   return [o] { return run_section(*o); };
 }
 

@@ -5,15 +5,12 @@
 #include <string>
 #include <vector>
 
+#include "app/cli.hpp"
 #include "section/section_merge.hpp"
-
-namespace CLI {
-class App;
-}
 
 namespace epviz::app {
 
-std::function<int()> add_section_command(CLI::App& app);
+std::function<int()> add_section_command(cli::Command app);
 
 // A section's shards joined by `epviz merge`: writes its CSV and draws its
 // PNG and SVG, as an unsharded run does.

@@ -1,6 +1,5 @@
 #include "app/serve_command.hpp"
 
-#include <CLI/CLI.hpp>
 #include <csignal>
 #include <cstdio>
 #include <memory>
@@ -80,35 +79,35 @@ int run_serve(const ServeOptions& o) {
 
 }  // namespace
 
-std::function<int()> add_serve_command(CLI::App& app) {
+std::function<int()> add_serve_command(cli::Command app) {
   auto o = std::make_shared<ServeOptions>();
-  CLI::App* cmd =
+  cli::Command cmd =
       app.add_subcommand("serve", "Serve the renderer live to a web browser (one scene per tab)");
-  cmd->add_option("job", o->job, "render job to start from (default: the Kovalevskaya top)");
-  cmd->add_option("--port", o->server.port, "TCP port (0: any free port)")->capture_default_str();
-  cmd->add_option("--bind", o->server.bind,
-                  "address to listen on; other than loopback is reachable from the network")
-      ->capture_default_str();
-  add_gl_option(*cmd, o->gl);
-  cmd->add_option("--image", o->server.image, "frame encoding: jpeg or png")->capture_default_str();
-  cmd->add_option("--quality", o->server.quality, "JPEG quality 1..100")->capture_default_str();
-  cmd->add_option("--frame-budget", o->server.frame_budget,
-                  "ms a frame may take to render; views are drawn smaller while frames take "
-                  "longer, and sharp again at rest (0: always full size)")
-      ->capture_default_str();
-  cmd->add_option("--save-dir", o->save_dir,
-                  "also write saved frames and jobs here (default: browser downloads only)");
-  cmd->add_option("--allow-origin", o->server.allow_origins,
-                  "also accept WebSocket connections from pages of this origin "
-                  "(http[s]://HOST[:PORT]; repeatable); by default only the server's own page")
-      ->allow_extra_args(false);
-  cmd->add_option("--max-view", o->server.max_view,
-                  "WIDTHxHEIGHT: the largest view a page gets (each 16..16384); larger requests "
-                  "are drawn at this size")
-      ->capture_default_str();
-  cmd->add_flag("--play", o->play, "start playing");
-  cmd->add_option("--record", o->server.record,
-                  "record the first connection's events (replayed by the tests)");
+  cmd.add_option("job", o->job, "render job to start from (default: the Kovalevskaya top)");
+  cmd.add_option("--port", o->server.port, "TCP port (0: any free port)").show_default();
+  cmd.add_option("--bind", o->server.bind,
+                 "address to listen on; other than loopback is reachable from the network")
+      .show_default();
+  add_gl_option(cmd, o->gl);
+  cmd.add_option("--image", o->server.image, "frame encoding: jpeg or png").show_default();
+  cmd.add_option("--quality", o->server.quality, "JPEG quality 1..100").show_default();
+  cmd.add_option("--frame-budget", o->server.frame_budget,
+                 "ms a frame may take to render; views are drawn smaller while frames take "
+                 "longer, and sharp again at rest (0: always full size)")
+      .show_default();
+  cmd.add_option("--save-dir", o->save_dir,
+                 "also write saved frames and jobs here (default: browser downloads only)");
+  cmd.add_option("--allow-origin", o->server.allow_origins,
+                 "also accept WebSocket connections from pages of this origin "
+                 "(http[s]://HOST[:PORT]; repeatable); by default only the server's own page")
+      .one_value_per_use();
+  cmd.add_option("--max-view", o->server.max_view,
+                 "WIDTHxHEIGHT: the largest view a page gets (each 16..16384); larger requests "
+                 "are drawn at this size")
+      .show_default();
+  cmd.add_flag("--play", o->play, "start playing");
+  cmd.add_option("--record", o->server.record,
+                 "record the first connection's events (replayed by the tests)");
   return [o] { return run_serve(*o); };
 }
 

@@ -1,11 +1,9 @@
 #pragma once
 #include <functional>
 
-namespace CLI {
-class App;  // CLI11: included only where a command is defined
-}
+#include "app/cli.hpp"
 
 namespace epviz::app {
 // `epviz serve [JOB]`: the renderer live in a web browser (docs/serve.md).
-std::function<int()> add_serve_command(CLI::App& app);
+std::function<int()> add_serve_command(cli::Command app);
 }  // namespace epviz::app

@@ -1,6 +1,5 @@
 #include "app/simulate_command.hpp"
 
-#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -116,20 +115,20 @@ int run_simulate(const RawOptions& raw) {
 
 }  // namespace
 
-std::function<int()> add_simulate_command(CLI::App& app) {
+std::function<int()> add_simulate_command(cli::Command app) {
   auto raw = std::make_shared<RawOptions>();
-  auto* cmd =
+  cli::Command cmd =
       app.add_subcommand("simulate", "Integrate one body (or every preset) and write samples");
-  cmd->add_option("--job", raw->job,
-                  "JSON job file with the same fields (options given here override it)");
-  add_simulation_options(*cmd, raw->sim);
-  cmd->add_option("--max-steps", raw->max_steps,
-                  "adaptive methods: end the run as failed after this many steps (default 1e8)");
-  cmd->add_option("--csv", raw->csv,
-                  "write the samples to this CSV file ('-': standard output; the summary then "
-                  "goes to stderr)");
-  cmd->add_option("--report-json", raw->report_json,
-                  "write the run report to this JSON file ('-': standard output)");
+  cmd.add_option("--job", raw->job,
+                 "JSON job file with the same fields (options given here override it)");
+  add_simulation_options(cmd, raw->sim);
+  cmd.add_option("--max-steps", raw->max_steps,
+                 "adaptive methods: end the run as failed after this many steps (default 1e8)");
+  cmd.add_option("--csv", raw->csv,
+                 "write the samples to this CSV file ('-': standard output; the summary then "
+                 "goes to stderr)");
+  cmd.add_option("--report-json", raw->report_json,
+                 "write the run report to this JSON file ('-': standard output)");
   return [raw] { return run_simulate(*raw); };
 }
 

@@ -1,9 +1,7 @@
 #include "app/simulation_fields.hpp"
 
-#include <CLI/CLI.hpp>
-
 namespace epviz::app {
-void add_simulation_options(CLI::App& cmd, SimulationOptions& o) {
+void add_simulation_options(cli::Command cmd, SimulationOptions& o) {
   const auto& table = job::simulation_field_table();
   for (std::size_t i = 0; i < table.size(); ++i) {
     const auto& f = table[i];

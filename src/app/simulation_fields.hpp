@@ -3,14 +3,11 @@
 // job file, before they are checked against each other and against physics.
 // Each field remembers where it came from ("--inertia", "job.json: key 'inertia'")
 // so that an error names what the user wrote.
+#include "app/cli.hpp"
 #include "job/document.hpp"
 #include "job/field_options.hpp"
 #include "job/fields.hpp"
 #include "job/schema.hpp"
-
-namespace CLI {
-class App;  // CLI11: included only where options are defined
-}
 
 namespace epviz::app {
 
@@ -25,6 +22,6 @@ using job::SimulationOptions;
 
 // Adds an option per field (--case, --inertia, ... --no-chart-switch) to
 // `cmd`, read into `options`, with the field's help, choices and default.
-void add_simulation_options(CLI::App& cmd, SimulationOptions& options);
+void add_simulation_options(cli::Command cmd, SimulationOptions& options);
 
 }  // namespace epviz::app

@@ -1,6 +1,5 @@
 #include "app/sweep_command.hpp"
 
-#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -106,22 +105,22 @@ int run_sweep(const SweepOptions& o) {
 
 }  // namespace
 
-std::function<int()> add_sweep_command(CLI::App& app) {
+std::function<int()> add_sweep_command(cli::Command app) {
   auto o = std::make_shared<SweepOptions>();
-  auto* cmd = app.add_subcommand(
+  cli::Command cmd = app.add_subcommand(
       "sweep", "Run every point of a parameter sweep (SWEEP.json) and write one JSON row each");
-  cmd->add_option("sweep", o->file, "sweep file (JSON: simulation, axes; docs/cluster.md)")
-      ->required();
-  cmd->add_option("--out", o->out,
-                  "rows file (JSON Lines, appended; default <sweep>.jsonl); rows already in it "
-                  "are kept and their points skipped");
-  cmd->add_option("-j,--jobs", o->jobs, "threads (default: all cores)");
-  cmd->add_option("--shard", o->shard,
-                  "I/N: run only shard I (from 0) of N, a contiguous range of points; default "
-                  "from SLURM_ARRAY_TASK_ID, JOB_COMPLETION_INDEX or AWS_BATCH_JOB_ARRAY_INDEX");
-  cmd->add_option("--shard-count", o->shard_count,
-                  "N: the number of shards when the environment gives only the index");
-  cmd->add_flag("--quiet", o->quiet, "no progress line");
+  cmd.add_option("sweep", o->file, "sweep file (JSON: simulation, axes; docs/cluster.md)")
+      .required();
+  cmd.add_option("--out", o->out,
+                 "rows file (JSON Lines, appended; default <sweep>.jsonl); rows already in it "
+                 "are kept and their points skipped");
+  cmd.add_option("-j,--jobs", o->jobs, "threads (default: all cores)");
+  cmd.add_option("--shard", o->shard,
+                 "I/N: run only shard I (from 0) of N, a contiguous range of points; default "
+                 "from SLURM_ARRAY_TASK_ID, JOB_COMPLETION_INDEX or AWS_BATCH_JOB_ARRAY_INDEX");
+  cmd.add_option("--shard-count", o->shard_count,
+                 "N: the number of shards when the environment gives only the index");
+  cmd.add_flag("--quiet", o->quiet, "no progress line");
   return [o] { return run_sweep(*o); };
 }
 

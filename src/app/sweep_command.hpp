@@ -3,12 +3,10 @@
 // process on a thread pool, one JSON row per point (docs/cluster.md).
 #include <functional>
 
-namespace CLI {
-class App;
-}
+#include "app/cli.hpp"
 
 namespace epviz::app {
 
-std::function<int()> add_sweep_command(CLI::App& app);
+std::function<int()> add_sweep_command(cli::Command app);
 
 }  // namespace epviz::app
