@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <nlohmann/json.hpp>
 
 #include "physics/cases.hpp"
 #include "sim/failure_advice.hpp"

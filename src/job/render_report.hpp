@@ -2,7 +2,7 @@
 // What `epviz render --report-json` says of a job after its frames: the job,
 // its run's method and accuracy, the frames drawn and the time taken, the
 // failure if any, and each run's work, drifts and pixel-true horizon.
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 

@@ -1,6 +1,7 @@
 #include "live/job_file.hpp"
 
 #include <algorithm>
+#include <nlohmann/json.hpp>
 
 #include "job/schema.hpp"
 #include "physics/cases.hpp"

@@ -9,6 +9,7 @@
 #include "physics/format.hpp"
 #include "physics/notation.hpp"
 #include "scene/body_shape.hpp"
+#include "scene/cloud_run.hpp"
 #include "scene/plane_path.hpp"
 #include "scene/run_palette.hpp"
 #include "scene/theme.hpp"
@@ -89,6 +90,8 @@ FrameSource::FrameSource(const ScenePlan& plan, const SceneSettings& settings)
     cloud_ = std::make_unique<CloudRun>(plan.run, settings.cloud, times);
   }
 }
+
+FrameSource::~FrameSource() = default;
 
 void FrameSource::find_crossings() {
   std::vector<sim::RunSpec> runs{plan_.run};

@@ -6,7 +6,6 @@
 #include <utility>
 #include <vector>
 
-#include "scene/cloud_run.hpp"  // the cloud
 #include "scene/frame.hpp"
 #include "scene/plan.hpp"
 #include "scene/run_track.hpp"
@@ -16,9 +15,14 @@
 
 namespace epviz::scene {
 
+// The cloud of a job with a "cloud" (scene/cloud_run.hpp, which brings the
+// batch integrator): only frame_source.cpp needs it whole.
+class CloudRun;
+
 class FrameSource {
  public:
   FrameSource(const ScenePlan& plan, const SceneSettings& settings);
+  ~FrameSource();
   // The trajectory reports its steps to this object: it stays where it was built.
 
   int frame_count() const { return plan_.frames; }

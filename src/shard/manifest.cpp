@@ -1,5 +1,7 @@
 #include "shard/manifest.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include "io/atomic_file.hpp"
 #include "io/json_reader.hpp"
 #include "io/shell_quote.hpp"

@@ -2,7 +2,7 @@
 // The rows as `epviz bench` writes them to JSON: one object per row with its
 // "study" name and its fields; NaN (not applicable) is written as null, a
 // flag as "yes"/"no", a run's outcome as status "ok"/"failed".
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <vector>
 

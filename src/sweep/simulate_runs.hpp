@@ -2,7 +2,7 @@
 // The runs `epviz simulate` makes of its fields, all checked before any is
 // integrated so that bad input leaves nothing behind, and the summary it
 // prints of each (the CSV and report are simulation_output.hpp).
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <vector>
