@@ -4,7 +4,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
+#include "io/json_text.hpp"
 
 #include "app/cli_values.hpp"
 #include "app/gl_option.hpp"
@@ -80,7 +82,7 @@ void write_outputs(const BenchRequest& request, const std::vector<study::StudyRo
                    double wall, const std::optional<study::Recommendation>& recommendation) {
   if (request.json.empty() && request.out.empty()) return;
   const std::string text =
-      study::bench_document(rows, request.quick, wall, recommendation).dump(1) + "\n";
+      io::json_text(study::bench_document(rows, request.quick, wall, recommendation), 1) + "\n";
   if (!request.json.empty()) io::write_file_atomically(request.json, text);
   if (request.out.empty()) return;
   io::write_file_atomically(fs::path(request.out) / "bench.json", text);

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <memory>
+#include "io/json_text.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -28,7 +29,7 @@ int list_cases(bool json) {
                      {"weight", p.body.weight},
                      {"omega", to_json(p.initial.omega)},
                      {"gamma", to_json(p.initial.gamma)}});
-    std::printf("%s\n", all.dump(2).c_str());
+    std::printf("%s\n", io::json_text(all, 2).c_str());
     return 0;
   }
   for (const auto& p : physics::case_presets()) {

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <optional>
 #include <thread>
+#include "io/json_text.hpp"
 
 #include "app/gl_option.hpp"
 #include "app/section_command.hpp"
@@ -100,7 +101,7 @@ std::optional<sweep::SweepSpec> saved_sweep(const shard::Manifest& m, const std:
 bool merge_sweep(const shard::Batch& b, const std::vector<Json>& rows, const fs::path& out_dir,
                  const MergeOptions& o) {
   std::string text;
-  for (const auto& r : rows) text += r.dump() + "\n";
+  for (const auto& r : rows) text += io::json_text(r) + "\n";
   const auto& any = b.shards.begin()->second;
   const fs::path out = out_dir / any.output;
   io::write_file_atomically(out, text);
@@ -117,7 +118,7 @@ bool merge_sweep(const shard::Batch& b, const std::vector<Json>& rows, const fs:
     check = sweep::run_self_check(*saved, rows, requests,
                                   int(std::max(1u, std::thread::hardware_concurrency())));
     const fs::path file = out_dir / sweep::self_check_file_name(any.output);
-    io::write_file_atomically(file, sweep::self_check_json(*check).dump(1) + "\n");
+    io::write_file_atomically(file, io::json_text(sweep::self_check_json(*check), 1) + "\n");
     for (const auto& line : sweep::self_check_lines(*check)) std::printf("  %s\n", line.c_str());
   } else if (!saved &&
              (rows.front().contains("ftle") || rows.front().contains("reference_error"))) {

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include "io/json_text.hpp"
 
 #include "app/bench_command.hpp"
 #include "app/cli_values.hpp"
@@ -194,7 +195,7 @@ shard::FrameBatch frame_batch(const RenderJob& job, int frames) {
   doc.output.dir = "";
   shard::FrameBatch b;
   b.origin.source = fs::absolute(job.file).lexically_normal().string();
-  b.origin.hash = shard::checksum_of(job::write_job(doc).dump());
+  b.origin.hash = shard::checksum_of(io::json_text(job::write_job(doc)));
   b.origin.command = {"epviz",
                       "render",
                       b.origin.source,
@@ -240,7 +241,7 @@ int render_single(RenderJob job, const RenderOptions& o, const render::GlChoice&
   if (!o.report_json.empty()) {
     auto report = job_report(p, st);
     add_gl_report(report, *context);
-    io::write_file_atomically(o.report_json, report.dump(2) + "\n");
+    io::write_file_atomically(o.report_json, io::json_text(report, 2) + "\n");
   }
   return report_failure(st.written.failure);
 }
@@ -330,7 +331,8 @@ int render_gallery(GalleryJob g, const RenderOptions& o, const render::GlChoice&
     failures += report_failure(st.written.failure) != 0;
   }
   if (g.grid_video) failures += render_grid_video(g, stills, painter, o);
-  if (!o.report_json.empty()) io::write_file_atomically(o.report_json, reports.dump(2) + "\n");
+  if (!o.report_json.empty())
+    io::write_file_atomically(o.report_json, io::json_text(reports, 2) + "\n");
   return failures ? 3 : 0;
 }
 

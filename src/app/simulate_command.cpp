@@ -5,6 +5,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include "io/json_text.hpp"
 
 #include "app/cli_values.hpp"
 #include "app/simulation_fields.hpp"
@@ -109,7 +110,7 @@ int run_simulate(const RawOptions& raw) {
   if (csv_file) csv_file->commit();
   if (!raw.report_json.empty())
     io::write_file_atomically(raw.report_json,
-                              (specs.size() == 1 ? reports[0] : reports).dump(2) + "\n");
+                              io::json_text(specs.size() == 1 ? reports[0] : reports, 2) + "\n");
   return failures ? 3 : 0;
 }
 

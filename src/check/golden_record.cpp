@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
+#include "io/json_text.hpp"
 
 #include "io/bad_input.hpp"
 #include "io/fnv1a.hpp"
@@ -39,7 +40,7 @@ std::string to_json_text(const GoldenRecord& r) {
   j["frames"] = r.frames;
   j["width"] = r.width;
   j["height"] = r.height;
-  return j.dump(2) + "\n";
+  return io::json_text(j, 2) + "\n";
 }
 
 namespace {
@@ -63,9 +64,11 @@ std::optional<GoldenRecord> read_golden_record(const std::filesystem::path& file
     refuse(file, "larger than 1 MiB; not a golden record (re-create it with --update)");
   std::ifstream in(file);
   if (!in) refuse(file, "cannot be read");
+  std::ostringstream text;
+  text << in.rdbuf();
   std::string key;
   try {
-    const auto j = nlohmann::json::parse(in);
+    const auto j = io::parse_json(text.str());
     GoldenRecord r;
     key = "epviz_version";
     r.epviz_version = j.at(key).get<std::string>();

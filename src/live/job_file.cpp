@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
+#include "io/json_text.hpp"
 
 #include "job/schema.hpp"
 #include "physics/cases.hpp"
@@ -124,7 +125,7 @@ job::JobDocument job_document(const LiveSetup& setup, const std::string& name,
 
 std::string render_job_json(const LiveSetup& setup, const std::string& name,
                             const LiveMoment& moment, double duration_s) {
-  return job::write_job(job_document(setup, name, moment, duration_s)).dump(2) + "\n";
+  return io::json_text(job::write_job(job_document(setup, name, moment, duration_s)), 2) + "\n";
 }
 
 }  // namespace epviz::live

@@ -1,6 +1,7 @@
 #include "live/live_session.hpp"
 
 #include <imgui.h>
+#include "io/json_text.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -252,7 +253,7 @@ void LiveSession::save_job() {
   if (live_tolerance(scene_.setup())) tolerance = scene_.tolerance();
   const LiveMoment moment{scene_.time(), tolerance};
   const job::JobDocument job = job_document(setup, panel_.save_name(), moment);
-  const std::string text = job::write_job(job).dump(2) + "\n";
+  const std::string text = io::json_text(job::write_job(job), 2) + "\n";
   deliver({panel_.save_name() + ".json", "application/json",
            std::vector<std::uint8_t>(text.begin(), text.end())});
   // Render jobs have no start time; the live run started at t = 0 too.
@@ -273,7 +274,7 @@ std::string LiveSession::controls_json() const {
   nlohmann::json j = nlohmann::json::object();
   for (const auto& [name, r] : panel_.controls()) j[name] = {r[0], r[1], r[2], r[3]};
   j["view3d"] = {view_3d_.x, view_3d_.y, view_3d_.width, view_3d_.height};
-  return j.dump();
+  return io::json_text(j);
 }
 
 }  // namespace epviz::live

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include "io/json_text.hpp"
 
 #include "io/bad_input.hpp"
 #include "io/json_reader.hpp"
@@ -194,7 +195,7 @@ SectionJob read_section_job(const std::filesystem::path& file) {
   SectionJob job;
   job.file = file.string();
   const nlohmann::json doc = io::read_json_file(file);
-  job.hash = shard::checksum_of(doc.dump());  // nlohmann::json keeps keys sorted
+  job.hash = shard::checksum_of(io::json_text(doc));  // nlohmann::json keeps keys sorted
   io::ObjectReader r(doc, job.file);
   const auto case_name = r.choice("case", names_of_cases());
   if (!case_name) r.fail("case", "is required: one of the named cases");

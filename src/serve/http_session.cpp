@@ -3,6 +3,7 @@
 #include <chrono>
 #include <fstream>
 #include <sstream>
+#include "io/json_text.hpp"
 
 #include <boost/beast/websocket/rfc6455.hpp>
 
@@ -119,7 +120,7 @@ void HttpSession::on_request(beast::error_code ec) {
   if (path == "/stats")
     // The counters and where frames' time goes; harmless to show, and behind the same Host check.
     return respond(request, http::status::ok, "application/json",
-                   stats_json(context_.counters).dump() + "\n");
+                   io::json_text(stats_json(context_.counters)) + "\n");
   if (path != "/")
     return respond(request, http::status::not_found, "text/plain", "not found: " + path + "\n");
   std::optional<std::string> page = read_file(context_.options.page);

@@ -1,6 +1,7 @@
 #include "shard/manifest.hpp"
 
 #include <nlohmann/json.hpp>
+#include "io/json_text.hpp"
 
 #include "io/atomic_file.hpp"
 #include "io/json_reader.hpp"
@@ -120,7 +121,7 @@ Manifest read_manifest(const fs::path& path) {
 }
 
 void write_manifest(const fs::path& path, const Manifest& m) {
-  io::write_file_atomically(path, to_json(m).dump(2) + "\n");
+  io::write_file_atomically(path, io::json_text(to_json(m), 2) + "\n");
 }
 
 std::string manifest_name(const std::string& stem, const ShardSpec& s) {

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include "io/json_text.hpp"
 
 #include "io/bad_input.hpp"
 #include "io/json_reader.hpp"
@@ -29,7 +30,7 @@ std::vector<Json> read_rows(const fs::path& file) {
     ++n;
     Json row;
     try {
-      row = Json::parse(line);
+      row = io::parse_json(line);
     } catch (const Json::exception&) {
       throw io::BadInput(name + ": line " + std::to_string(n) + " is not a JSON row");
     }

@@ -5,6 +5,7 @@
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include "io/json_text.hpp"
 
 #include <cerrno>
 #include <condition_variable>
@@ -41,9 +42,8 @@ std::string utc_now() {
 }
 
 std::string holder_text(const LockHolder& h) {
-  return nlohmann::json{
-             {"host", h.host}, {"machine", h.machine}, {"pid", h.pid}, {"started", h.started}}
-             .dump() +
+  return io::json_text(nlohmann::json{
+             {"host", h.host}, {"machine", h.machine}, {"pid", h.pid}, {"started", h.started}}) +
          "\n";
 }
 
@@ -54,7 +54,7 @@ std::optional<LockHolder> read_holder(int fd) {
   const ssize_t n = ::pread(fd, text.data(), text.size(), 0);
   if (n <= 0) return std::nullopt;
   text.resize(std::size_t(n));
-  const auto j = nlohmann::json::parse(text, nullptr, false);
+  const auto j = io::parse_json_or_discarded(text);
   if (!j.is_object()) return std::nullopt;
   LockHolder h;
   const auto str = [&](const char* key) {

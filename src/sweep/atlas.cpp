@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include "io/json_text.hpp"
 
 #include "physics/notation.hpp"
 #include "sweep/atlas_labels.hpp"
@@ -23,7 +24,7 @@ std::string label_of(const Json& v) {
     std::snprintf(buf, sizeof buf, "%.3g", v.get<double>());
     return buf;
   }
-  return v.dump();
+  return io::json_text(v);
 }
 
 // The metric of one row; NaN when the row has none (null, or a failure's

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include "io/json_text.hpp"
 
 #include "io/number_text.hpp"
 #include "sweep/atlas_labels.hpp"
@@ -28,7 +29,7 @@ std::string value_text(const Json& v) {
     }
     return s + ")";
   }
-  return v.dump();
+  return io::json_text(v);
 }
 
 // "case kovalevskaya, γ₁ = 0.3": the point's axis values, or its index when it has none.

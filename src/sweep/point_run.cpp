@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include "io/json_text.hpp"
 
 #include "sim/drift.hpp"
 #include "sim/trajectory.hpp"
@@ -174,7 +175,8 @@ FtleResult ftle_result(const sim::RunSpec& run, const FtleSettings& settings) {
 }
 
 PreparedPoint prepared_point(const PointFields& fields, sim::RunSpec run) {
-  PreparedPoint p{fields.index, fields.axis_values.dump(), fields.ignored, std::move(run), {}};
+  PreparedPoint p{
+      fields.index, io::json_text(fields.axis_values), fields.ignored, std::move(run), {}};
   if (fields.area) p.level = physics::Level{*fields.energy, *fields.area};
   return p;
 }

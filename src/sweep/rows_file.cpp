@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <unistd.h>
+#include "io/json_text.hpp"
 
 #include <cerrno>
 #include <chrono>
@@ -50,7 +51,7 @@ ExistingRows resume_rows(const fs::path& path, const std::string& sweep_hash, lo
     };
     nlohmann::json row;
     try {
-      row = nlohmann::json::parse(line);
+      row = io::parse_json(line);
     } catch (const nlohmann::json::exception&) {
       bad("is not a JSON row");
     }
@@ -66,7 +67,7 @@ ExistingRows resume_rows(const fs::path& path, const std::string& sweep_hash, lo
     const auto [it, first] = first_row.try_emplace(index, line_no, line);
     if (!first) {
       const auto& [earlier_no, earlier] = it->second;
-      if (earlier != line && !shard::same_row(nlohmann::json::parse(earlier), row))
+      if (earlier != line && !shard::same_row(io::parse_json(earlier), row))
         bad("and line " + std::to_string(earlier_no) + " are different rows of point " +
             std::to_string(index));
       if (!kept) kept = text.substr(0, std::size_t(line.data() - text.data()));

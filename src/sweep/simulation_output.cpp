@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include "io/json_text.hpp"
 
 #include "io/json_line.hpp"
 #include "physics/stereographic.hpp"
@@ -77,7 +78,7 @@ nlohmann::json run_report(const sim::RunSpec& spec, const sim::RunResult& r,
   shared.begin_object();
   write_run_record(shared, spec, r, drift);
   shared.end_object();
-  nlohmann::json j = nlohmann::json::parse(shared.str());
+  nlohmann::json j = io::parse_json(shared.str());
   if (spec.formulation == sim::Formulation::riccati) {
     j["chart_switch"] = spec.chart_switch;
     j["chart_switches"] = r.chart_switches;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include "io/json_text.hpp"
 
 #include "io/json_reader.hpp"
 #include "io/printable.hpp"
@@ -88,7 +89,7 @@ PointReader::ReadValue& PointReader::value(std::size_t axis_index, std::size_t v
   const Json& value = axis.values[value_index];
   // Quoted short and on one line: a value may be a 100 KB string.
   std::string origin = spec_.file + ": key '" + axis.key + "' (" + axis.field + " = " +
-                       io::printable(value.dump(), 60) + ")";
+                       io::printable(io::json_text(value), 60) + ")";
   // A component is checked in the vector it goes into, by operator() at the
   // first point that takes it.
   if (targets_[axis_index].kind == AxisTarget::Kind::field) {

@@ -1,6 +1,7 @@
 #include "sweep/sweep_spec.hpp"
 
 #include <algorithm>
+#include "io/json_text.hpp"
 
 #include <cmath>
 
@@ -337,7 +338,7 @@ SweepSpec read_sweep(const Json& root, const std::string& file) {
     c->finish();
   }
   r.finish();
-  s.hash = shard::checksum_of(root.dump());  // nlohmann::json keeps keys sorted
+  s.hash = shard::checksum_of(io::json_text(root));  // nlohmann::json keeps keys sorted
   return s;
 }
 

@@ -1,6 +1,7 @@
 #include "study/peers/scipy_peer.hpp"
 
 #include <unistd.h>
+#include "io/json_text.hpp"
 
 #include <cstdlib>
 #include <filesystem>
@@ -51,7 +52,7 @@ ScipyResults run_scipy_peers(const physics::Body& body, const physics::InitialSt
                             {"tolerances", tolerances},     {"repeats", std::max(repeats, 1)}};
   io::ProcessOutput po;
   try {
-    po = io::run_process({kPython, script}, problem.dump());
+    po = io::run_process({kPython, script}, io::json_text(problem));
   } catch (const std::exception& e) {
     return all_with(n, PeerStatus::skipped, e.what());
   }
@@ -61,7 +62,7 @@ ScipyResults run_scipy_peers(const physics::Body& body, const physics::InitialSt
                     "scipy driver " + po.status.describe() + ": " + tail(po.err));
   nlohmann::json reply;
   try {
-    reply = nlohmann::json::parse(po.out);
+    reply = io::parse_json(po.out);
   } catch (const std::exception& e) {
     return all_with(n, PeerStatus::failed,
                     std::string("scipy driver wrote no JSON: ") + e.what() + " " + tail(po.err));
