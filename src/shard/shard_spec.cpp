@@ -16,7 +16,7 @@ std::optional<long> whole_number(std::string_view s, long max) {
   return v;
 }
 
-std::string quoted(std::string_view s) {
+std::string quoted_text(std::string_view s) {
   std::string out;
   for (char c : s.substr(0, 40)) out += (c >= 32 && c < 127) ? c : '?';
   return "'" + out + (s.size() > 40 ? "...'" : "'");
@@ -28,7 +28,7 @@ ShardSpec parse_shard(std::string_view text, const std::string& option) {
   const auto slash = text.find('/');
   const auto fail = [&] {
     throw ShardError(option + ": expected I/N with 0 <= I < N <= " + std::to_string(max_shards) +
-                     " (shard I of N, counted from 0), got " + quoted(text));
+                     " (shard I of N, counted from 0), got " + quoted_text(text));
   };
   if (slash == std::string_view::npos) fail();
   const auto i = whole_number(text.substr(0, slash), max_shards);
@@ -51,7 +51,7 @@ std::optional<ShardSpec> shard_from_environment(const Environment& env, long cou
     const auto n = v ? whole_number(*v, max) : std::nullopt;
     if (!n)
       throw ShardError(name + ": expected a whole number from 0 to " + std::to_string(max) +
-                       ", got " + (v ? quoted(*v) : std::string("nothing (unset)")));
+                       ", got " + (v ? quoted_text(*v) : std::string("nothing (unset)")));
     return *n;
   };
   if (env("SLURM_ARRAY_TASK_ID")) {
@@ -104,14 +104,14 @@ std::optional<ShardSpec> shard_from_options(const std::string& shard_option,
     const auto n = whole_number(count_option, max_shards);
     if (!n || *n < 1)
       throw ShardError("--shard-count: expected a whole number from 1 to " +
-                       std::to_string(max_shards) + ", got " + quoted(count_option));
+                       std::to_string(max_shards) + ", got " + quoted_text(count_option));
     count = *n;
   }
   if (shard_option.empty()) return shard_from_environment(env, count);
   const auto s = parse_shard(shard_option, "--shard");
   if (count && count != s.count)
     throw ShardError("--shard-count: " + std::to_string(count) + " disagrees with --shard " +
-                     quoted(shard_option) + "; give one of them");
+                     quoted_text(shard_option) + "; give one of them");
   return s;
 }
 
