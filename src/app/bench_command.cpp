@@ -6,13 +6,13 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
-#include "io/json_text.hpp"
 
 #include "app/cli_values.hpp"
 #include "app/gl_option.hpp"
 #include "io/atomic_file.hpp"
 #include "io/bad_input.hpp"
 #include "io/json_reader.hpp"
+#include "io/json_text.hpp"
 #include "io/output_paths.hpp"
 #include "job/resolve.hpp"
 #include "job/schema.hpp"

@@ -2,10 +2,10 @@
 
 #include <cstdio>
 #include <memory>
-#include "io/json_text.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include "io/json_text.hpp"
 #include "physics/cases.hpp"
 #include "physics/format.hpp"
 

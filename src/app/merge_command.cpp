@@ -4,12 +4,12 @@
 #include <filesystem>
 #include <optional>
 #include <thread>
-#include "io/json_text.hpp"
 
 #include "app/gl_option.hpp"
 #include "app/section_command.hpp"
 #include "io/atomic_file.hpp"
 #include "io/bad_input.hpp"
+#include "io/json_text.hpp"
 #include "io/output_paths.hpp"
 #include "io/shell_quote.hpp"
 #include "io/video_join.hpp"

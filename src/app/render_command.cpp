@@ -5,7 +5,6 @@
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
-#include "io/json_text.hpp"
 
 #include "app/bench_command.hpp"
 #include "app/cli_values.hpp"
@@ -13,6 +12,7 @@
 #include "io/atomic_file.hpp"
 #include "io/bad_input.hpp"
 #include "io/frame_range.hpp"
+#include "io/json_text.hpp"
 #include "io/output_paths.hpp"
 #include "io/printable.hpp"
 #include "io/progress.hpp"

@@ -5,12 +5,12 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
-#include "io/json_text.hpp"
 
 #include "app/cli_values.hpp"
 #include "app/simulation_fields.hpp"
 #include "io/atomic_file.hpp"
 #include "io/bad_input.hpp"
+#include "io/json_text.hpp"
 #include "io/output_paths.hpp"
 #include "io/progress.hpp"
 #include "io/temp_name.hpp"

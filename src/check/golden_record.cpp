@@ -4,10 +4,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
-#include "io/json_text.hpp"
 
 #include "io/bad_input.hpp"
 #include "io/fnv1a.hpp"
+#include "io/json_text.hpp"
 #include "io/printable.hpp"
 
 namespace epviz::check {

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
-#include "io/json_text.hpp"
 
+#include "io/json_text.hpp"
 #include "job/schema.hpp"
 #include "physics/cases.hpp"
 #include "scene/plan.hpp"

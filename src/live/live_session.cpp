@@ -1,7 +1,6 @@
 #include "live/live_session.hpp"
 
 #include <imgui.h>
-#include "io/json_text.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/atomic_file.hpp"
+#include "io/json_text.hpp"
 #include "io/png_writer.hpp"
 #include "job/schema.hpp"
 #include "live/camera_control.hpp"

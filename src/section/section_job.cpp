@@ -4,10 +4,10 @@
 #include <charconv>
 #include <cmath>
 #include <nlohmann/json.hpp>
-#include "io/json_text.hpp"
 
 #include "io/bad_input.hpp"
 #include "io/json_reader.hpp"
+#include "io/json_text.hpp"
 #include "io/output_paths.hpp"
 #include "physics/admissible.hpp"
 #include "shard/checksum.hpp"

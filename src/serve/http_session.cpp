@@ -3,10 +3,10 @@
 #include <chrono>
 #include <fstream>
 #include <sstream>
-#include "io/json_text.hpp"
 
 #include <boost/beast/websocket/rfc6455.hpp>
 
+#include "io/json_text.hpp"
 #include "serve/websocket_connection.hpp"
 
 namespace epviz::serve {

@@ -1,10 +1,10 @@
 #include "shard/manifest.hpp"
 
 #include <nlohmann/json.hpp>
-#include "io/json_text.hpp"
 
 #include "io/atomic_file.hpp"
 #include "io/json_reader.hpp"
+#include "io/json_text.hpp"
 #include "io/shell_quote.hpp"
 #include "shard/checksum.hpp"
 #include "shard/manifest_checks.hpp"

@@ -4,10 +4,10 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
-#include "io/json_text.hpp"
 
 #include "io/bad_input.hpp"
 #include "io/json_reader.hpp"
+#include "io/json_text.hpp"
 #include "io/printable.hpp"
 
 namespace epviz::shard {

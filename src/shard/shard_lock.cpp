@@ -5,7 +5,6 @@
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include "io/json_text.hpp"
 
 #include <cerrno>
 #include <condition_variable>
@@ -16,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/json_text.hpp"
 #include "io/printable.hpp"
 #include "io/temp_name.hpp"
 

@@ -6,8 +6,8 @@
 #include <limits>
 #include <map>
 #include <set>
-#include "io/json_text.hpp"
 
+#include "io/json_text.hpp"
 #include "physics/notation.hpp"
 #include "sweep/atlas_labels.hpp"
 

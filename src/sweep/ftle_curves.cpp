@@ -3,8 +3,8 @@
 #include <cmath>
 #include <limits>
 #include <string>
-#include "io/json_text.hpp"
 
+#include "io/json_text.hpp"
 #include "io/number_text.hpp"
 #include "sweep/atlas_labels.hpp"
 

@@ -2,8 +2,8 @@
 
 #include <cmath>
 #include <cstdio>
-#include "io/json_text.hpp"
 
+#include "io/json_text.hpp"
 #include "sim/drift.hpp"
 #include "sim/trajectory.hpp"
 #include "sweep/run_record.hpp"

@@ -2,9 +2,9 @@
 
 #include <cstdio>
 #include <nlohmann/json.hpp>
-#include "io/json_text.hpp"
 
 #include "io/json_line.hpp"
+#include "io/json_text.hpp"
 #include "physics/stereographic.hpp"
 #include "sim/failure_advice.hpp"
 #include "sweep/run_record.hpp"

@@ -2,9 +2,9 @@
 
 #include <cmath>
 #include <stdexcept>
-#include "io/json_text.hpp"
 
 #include "io/json_reader.hpp"
+#include "io/json_text.hpp"
 #include "io/printable.hpp"
 #include "job/fields.hpp"
 #include "job/schema.hpp"

@@ -1,11 +1,11 @@
 #include "sweep/sweep_spec.hpp"
 
 #include <algorithm>
-#include "io/json_text.hpp"
 
 #include <cmath>
 
 #include "io/json_reader.hpp"
+#include "io/json_text.hpp"
 #include "io/printable.hpp"
 #include "job/fields.hpp"
 #include "job/schema.hpp"

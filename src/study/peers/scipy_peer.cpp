@@ -1,7 +1,6 @@
 #include "study/peers/scipy_peer.hpp"
 
 #include <unistd.h>
-#include "io/json_text.hpp"
 
 #include <cstdlib>
 #include <filesystem>
@@ -9,6 +8,7 @@
 #include <stdexcept>
 
 #include "io/data_dir.hpp"
+#include "io/json_text.hpp"
 #include "io/subprocess.hpp"
 
 namespace epviz::study::peers {
