@@ -39,13 +39,6 @@ std::optional<std::string> read_file(const std::filesystem::path& path) {
   return std::move(text).str();
 }
 
-std::string peer_of(beast::tcp_stream& stream) {
-  beast::error_code ec;
-  const auto endpoint = stream.socket().remote_endpoint(ec);
-  if (ec) return "an unknown address";
-  return endpoint.address().to_string() + ":" + std::to_string(endpoint.port());
-}
-
 // A second Host or Origin makes the request ambiguous: a proxy and this
 // server could each believe a different copy, so which one is checked must
 // not be a choice made here. HTTP says such a request is malformed (400).

@@ -24,14 +24,14 @@ std::string close_reason_text(std::string text) {
   return text;
 }
 
+}  // namespace
+
 std::string peer_of(beast::tcp_stream& stream) {
   beast::error_code ec;
   const auto endpoint = stream.socket().remote_endpoint(ec);
   if (ec) return "an unknown address";
   return endpoint.address().to_string() + ":" + std::to_string(endpoint.port());
 }
-
-}  // namespace
 
 WebSocketConnection::WebSocketConnection(beast::tcp_stream stream, NetworkContext& context, long id)
     : ws_(std::move(stream)),
