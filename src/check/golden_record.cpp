@@ -47,7 +47,7 @@ namespace {
 
 constexpr std::uintmax_t kMaxRecordBytes = 1 << 20;
 
-[[noreturn]] void refuse(const std::filesystem::path& file, const std::string& what) {
+[[noreturn]] void refuse_record(const std::filesystem::path& file, const std::string& what) {
   throw io::BadInput(io::printable(file.string(), 200) + ": " + what);
 }
 
@@ -59,11 +59,12 @@ std::optional<GoldenRecord> read_golden_record(const std::filesystem::path& file
   const auto type = fs::symlink_status(file, ec).type();
   if (type == fs::file_type::not_found) return std::nullopt;
   if (type != fs::file_type::regular)
-    refuse(file, "not a regular file (golden.json must be a plain file written by --update)");
+    refuse_record(file,
+                  "not a regular file (golden.json must be a plain file written by --update)");
   if (fs::file_size(file, ec) > kMaxRecordBytes)
-    refuse(file, "larger than 1 MiB; not a golden record (re-create it with --update)");
+    refuse_record(file, "larger than 1 MiB; not a golden record (re-create it with --update)");
   std::ifstream in(file);
-  if (!in) refuse(file, "cannot be read");
+  if (!in) refuse_record(file, "cannot be read");
   std::ostringstream text;
   text << in.rdbuf();
   std::string key;
@@ -88,17 +89,19 @@ std::optional<GoldenRecord> read_golden_record(const std::filesystem::path& file
     r.frames = j.value(key, std::vector<int>{});
     for (const int f : r.frames)
       if (f < 0)
-        refuse(file, "frames: " + std::to_string(f) + " is not a frame (allowed: 0 or more)");
+        refuse_record(file,
+                      "frames: " + std::to_string(f) + " is not a frame (allowed: 0 or more)");
     key = "width";
     r.width = j.value(key, 0);
     key = "height";
     r.height = j.value(key, 0);
-    if (r.width < 0 || r.height < 0) refuse(file, "width, height: expected 0 or more");
+    if (r.width < 0 || r.height < 0) refuse_record(file, "width, height: expected 0 or more");
     return r;
   } catch (const nlohmann::json::exception& e) {
-    refuse(file, (key.empty() ? std::string("not JSON") : key + ": missing or of the wrong type") +
-                     " (" + io::printable(e.what(), 120) +
-                     "); a damaged golden record: re-create it with --update");
+    refuse_record(file,
+                  (key.empty() ? std::string("not JSON") : key + ": missing or of the wrong type") +
+                      " (" + io::printable(e.what(), 120) +
+                      "); a damaged golden record: re-create it with --update");
   }
 }
 

@@ -10,6 +10,7 @@
 #include <system_error>
 #include <utility>
 
+#include "io/errno_text.hpp"
 #include "io/temp_name.hpp"
 #include "io/temp_registry.hpp"
 
@@ -17,8 +18,6 @@ namespace epviz::io {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string errno_text(int error) { return std::system_category().message(error); }
 
 // A regular file (symbolic links followed) or nothing: a target to replace.
 bool is_regular_or_missing(const fs::path& p) {

@@ -11,6 +11,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/bad_input.hpp"
+#include "io/errno_text.hpp"
 #include "io/printable.hpp"
 
 namespace epviz::io {
@@ -39,8 +40,6 @@ bool too_long(const fs::path& absolute) {
     if (part.native().size() > NAME_MAX) return true;
   return false;
 }
-
-std::string errno_text(int error) { return std::system_category().message(error); }
 
 bool writable_directory(const fs::path& dir) { return ::access(dir.c_str(), W_OK | X_OK) == 0; }
 

@@ -11,12 +11,12 @@
 #include <cstring>
 #include <system_error>
 
+#include "io/errno_text.hpp"
+
 extern char** environ;
 
 namespace epviz::io {
 namespace {
-
-std::string errno_text(int error) { return std::system_category().message(error); }
 
 void close_fd(int& fd) {
   if (fd >= 0) ::close(fd);

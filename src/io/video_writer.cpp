@@ -13,14 +13,13 @@
 #include <utility>
 
 #include "io/atomic_file.hpp"
+#include "io/errno_text.hpp"
 #include "io/temp_registry.hpp"
 
 namespace epviz::io {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string errno_text(int error) { return std::system_category().message(error); }
 
 constexpr std::string_view kNotFound =
     "ffmpeg not found on PATH: install the Debian package ffmpeg (scripts/setup.sh does)";

@@ -17,7 +17,7 @@ void set_from_option(const FieldInfo& f, const SimulationOptions::Value& v, Give
 }
 // Each of `numbers`, read from `text`, within the field's range.
 template <class Numbers>
-void require_in_range(const FieldInfo& f, const std::string& text, const Numbers& numbers) {
+void require_option_in_range(const FieldInfo& f, const std::string& text, const Numbers& numbers) {
   for (double x : numbers)
     if (!f.in_range(x))
       throw io::BadInput(f.flag + ": expected " + f.range_text() + ", got '" + io::printable(text) +
@@ -27,13 +27,13 @@ void set_from_option(const FieldInfo& f, const SimulationOptions::Value& v,
                      Given<std::array<double, 3>>& g) {
   if (v.text.empty()) return;
   const auto x = io::parse_vec3(f.flag, v.text);
-  require_in_range(f, v.text, x);
+  require_option_in_range(f, v.text, x);
   g.set(x, f.flag);
 }
 void set_from_option(const FieldInfo& f, const SimulationOptions::Value& v, Given<double>& g) {
   if (v.text.empty()) return;
   const double x = io::parse_number(f.flag, v.text);
-  require_in_range(f, v.text, std::array<double, 1>{x});
+  require_option_in_range(f, v.text, std::array<double, 1>{x});
   g.set(x, f.flag);
 }
 void set_from_option(const FieldInfo& f, const SimulationOptions::Value& v, Given<long>& g) {

@@ -8,7 +8,7 @@
 namespace epviz::section {
 namespace {
 
-std::string short_number(double x) {
+std::string chart_number(double x) {
   char buf[32];
   const auto r = std::to_chars(buf, buf + sizeof buf, x, std::chars_format::general, 6);
   return std::string(buf, r.ptr);
@@ -20,23 +20,23 @@ std::string title(const SectionJob& job, const SectionMethod& m) {
   t += ": ";
   t += sim::symbol(job.surface.function);
   t += " = ";
-  t += short_number(job.surface.value);
+  t += chart_number(job.surface.value);
   t += " ";
   t += sim::name(job.surface.direction);
   if (job.level) {
     t += ", ";
     t += physics::symbol::energy;
     t += " = ";
-    t += short_number(job.level->energy);
+    t += chart_number(job.level->energy);
     t += ", ";
     t += physics::symbol::area;
     t += " = ";
-    t += short_number(job.level->area);
+    t += chart_number(job.level->area);
   }
   t += " (";
   t += sim::name(m.method);
   t += sim::is_adaptive(m.method) ? ", tol " : ", step ";
-  t += short_number(sim::is_adaptive(m.method) ? m.tol : m.step);
+  t += chart_number(sim::is_adaptive(m.method) ? m.tol : m.step);
   t += ")";
   return t;
 }

@@ -64,14 +64,14 @@ void measure_drift(const Problem& p, const RunRecord& run, Evidence& e) {
 
 Evidence evidence_of(const WorkPrecisionRow& row) { return {row.run, row.error, kNaN, {}, 0}; }
 
-std::string number(double v) { return io::number_text(v, 2); }
+std::string short_number(double v) { return io::number_text(v, 2); }
 
 // "dop853 (direct) at tol 1e-10", "gauss6 (spinor) at step 0.0125".
 std::string setting(const RunRecord& r) {
   std::string s = r.method;
   if (r.impl != "epviz") s = r.impl + " " + s;
   if (!r.formulation.empty()) s += " (" + r.formulation + ")";
-  s += r.adaptive ? " at tol " + number(r.tol) : " at step " + number(r.step);
+  s += r.adaptive ? " at tol " + short_number(r.tol) : " at step " + short_number(r.step);
   return s;
 }
 
@@ -83,12 +83,12 @@ std::string invariant_label(const std::string& key) {
 }
 
 std::string measures(const Evidence& e) {
-  std::string s = number(e.run.cpu_ms) + " ms CPU time, ";
+  std::string s = short_number(e.run.cpu_ms) + " ms CPU time, ";
   s += std::to_string(e.run.cost()) + " evaluations, error ";
-  s += number(e.error);
+  s += short_number(e.error);
   if (std::isfinite(e.drift)) {
     s += ", largest relative drift ";
-    s += number(e.drift) + " (" + invariant_label(e.drift_invariant) + ", over ";
+    s += short_number(e.drift) + " (" + invariant_label(e.drift_invariant) + ", over ";
     s += std::to_string(e.drift_samples) + " steps)";
   }
   return s;
@@ -148,8 +148,8 @@ Recommendation recommend(const Problem& p, const std::vector<StudyRow>& rows, do
 }
 
 std::string recommendation_text(const Recommendation& r) {
-  std::string head = "Recommendation for " + r.case_name + " to t = " + number(r.t_end) +
-                     " at error <= " + number(r.target_error) + ": ";
+  std::string head = "Recommendation for " + r.case_name + " to t = " + short_number(r.t_end) +
+                     " at error <= " + short_number(r.target_error) + ": ";
   if (!r.choice) return head + "no run of epviz's methods finished with an error to compare.\n";
   const Evidence& c = *r.choice;
   std::string text = head;
@@ -162,17 +162,17 @@ std::string recommendation_text(const Recommendation& r) {
   }
   if (r.fastest_peer) {
     const Evidence& q = *r.fastest_peer;
-    text += " The fastest peer that meets it is " + setting(q.run) + ": " + number(q.run.cpu_ms) +
-            " ms, error " + number(q.error);
+    text += " The fastest peer that meets it is " + setting(q.run) + ": " +
+            short_number(q.run.cpu_ms) + " ms, error " + short_number(q.error);
     if (r.met && c.run.cpu_ms > 0.0)
-      text += " (" + number(q.run.cpu_ms / c.run.cpu_ms) + "x the time)";
+      text += " (" + short_number(q.run.cpu_ms / c.run.cpu_ms) + "x the time)";
     text += ".";
   } else {
     text += " No peer run meets it.";
   }
   if (std::isfinite(r.reference_self_check) && r.target_error < 10.0 * r.reference_self_check)
-    text += " The reference resolves errors only down to " + number(10.0 * r.reference_self_check) +
-            ".";
+    text += " The reference resolves errors only down to " +
+            short_number(10.0 * r.reference_self_check) + ".";
   return text + "\n";
 }
 

@@ -16,7 +16,9 @@
 namespace epviz::vector {
 namespace {
 
-void set_colour(cairo_t* cr, const ImVec4& c) { cairo_set_source_rgba(cr, c.x, c.y, c.z, c.w); }
+void set_imgui_colour(cairo_t* cr, const ImVec4& c) {
+  cairo_set_source_rgba(cr, c.x, c.y, c.z, c.w);
+}
 ImVec4 to_imgui(const scene::Rgba& c) { return {c[0], c[1], c[2], c[3]}; }
 
 void rounded_rectangle(cairo_t* cr, double x0, double y0, double x1, double y1, double r) {
@@ -59,7 +61,7 @@ class TextCursor {
       : cr_(cr), font_(font), left_(at.x), y_(at.y), step_(line_step) {}
   // `text` at `x` pixels right of the left edge on the current line; returns its width.
   float put(const std::string& text, const ImVec4& colour, float x = 0.0f) {
-    set_colour(cr_, colour);
+    set_imgui_colour(cr_, colour);
     cairo_move_to(cr_, std::floor(left_ + x), std::floor(y_) + font_.baseline());
     cairo_show_text(cr_, text.c_str());
     return font_.width(text);
@@ -93,11 +95,11 @@ void draw_overlay_window(cairo_t* cr, paint::FramePainter& painter, const scene:
   background.w = layout.overlay_in_column || !layout.view_3d ? ink.overlay_alpha_in_column
                                                              : ink.overlay_alpha_floating;
   rounded_rectangle(cr, x0, y0, x1, y1, st.rounding);
-  set_colour(cr, background);
+  set_imgui_colour(cr, background);
   cairo_fill(cr);
   if (st.border > 0.0f) {
     rounded_rectangle(cr, x0 + 0.5, y0 + 0.5, x1 - 0.5, y1 - 0.5, st.rounding);
-    set_colour(cr, st.border_colour);
+    set_imgui_colour(cr, st.border_colour);
     cairo_set_line_width(cr, st.border);
     cairo_stroke(cr);
   }
@@ -118,7 +120,7 @@ void draw_overlay_window(cairo_t* cr, paint::FramePainter& painter, const scene:
   const double inset = std::max(std::floor(st.padding.x * 0.5f), st.border);
   cairo_move_to(cr, x0 + inset, y);
   cairo_line_to(cr, x1 - inset, y);
-  set_colour(cr, st.separator);
+  set_imgui_colour(cr, st.separator);
   cairo_set_line_width(cr, 1.0);
   cairo_stroke(cr);
   line.put(paint::FramePainter::drift_table_heading(frame), st.text_disabled);
