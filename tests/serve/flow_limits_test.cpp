@@ -4,7 +4,10 @@
 // connection that stays over the bound is dropped while others go on.
 #include <gtest/gtest.h>
 
+#include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/websocket.hpp>
 
 #include "serve_test_support.hpp"
 

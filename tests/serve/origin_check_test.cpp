@@ -3,6 +3,7 @@
 // server's (DNS rebinding), over real sockets with hand-written requests.
 #include <gtest/gtest.h>
 
+#include "http_test_support.hpp"
 #include "serve_test_support.hpp"
 #include "support/cli.hpp"
 

@@ -1,5 +1,7 @@
 #include "serve_test_support.hpp"
 
+#include "http_test_support.hpp"
+
 #include "support/eventually.hpp"
 
 #include <cstdlib>
@@ -9,7 +11,10 @@
 #include <unistd.h>
 
 #include <turbojpeg.h>
+#include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/websocket.hpp>
 
 namespace epviz::serve::testing {
 
@@ -181,8 +186,14 @@ bool TestServer::eventually(const std::function<bool()>& condition,
 
 // ---- TestClient ----
 
-TestClient::TestClient(unsigned short port) : ws_(io_) {
-  auto& stream = beast::get_lowest_layer(ws_);
+struct TestClient::Connection {
+  net::io_context io;
+  websocket::stream<beast::tcp_stream> ws{io};
+  beast::flat_buffer buffer;
+};
+
+TestClient::TestClient(unsigned short port) : c_(std::make_unique<Connection>()) {
+  auto& stream = beast::get_lowest_layer(c_->ws);
   stream.expires_after(expect_within);  // bounds the connect and the handshake
   bool done = false;
   beast::error_code ec;
@@ -194,30 +205,30 @@ TestClient::TestClient(unsigned short port) : ws_(io_) {
   if (!run_until(done, expect_within) || ec)
     throw std::runtime_error("test client: cannot connect: " + ec.message());
   done = false;
-  ws_.async_handshake("127.0.0.1:" + std::to_string(port), "/ws", [&](beast::error_code e) {
+  c_->ws.async_handshake("127.0.0.1:" + std::to_string(port), "/ws", [&](beast::error_code e) {
     ec = e;
     done = true;
   });
   if (!run_until(done, expect_within) || ec)
     throw std::runtime_error("test client: WebSocket handshake failed: " + ec.message());
   stream.expires_never();
-  ws_.read_message_max(64 * 1024 * 1024);
+  c_->ws.read_message_max(64 * 1024 * 1024);
 }
 
 TestClient::~TestClient() {
   beast::error_code ignored;
-  beast::get_lowest_layer(ws_).socket().close(ignored);
-  io_.restart();
-  io_.run_for(expect_within);  // lets the aborted operations finish before the members go
+  beast::get_lowest_layer(c_->ws).socket().close(ignored);
+  c_->io.restart();
+  c_->io.run_for(expect_within);  // lets the aborted operations finish before the members go
 }
 
 bool TestClient::run_until(const bool& done, std::chrono::milliseconds timeout) {
-  io_.restart();
+  c_->io.restart();
   const auto deadline = std::chrono::steady_clock::now() + timeout;
-  while (!done && !io_.stopped()) {
+  while (!done && !c_->io.stopped()) {
     const auto now = std::chrono::steady_clock::now();
     if (now >= deadline) break;
-    io_.run_one_for(deadline - now);
+    c_->io.run_one_for(deadline - now);
   }
   return done;
 }
@@ -225,15 +236,15 @@ bool TestClient::run_until(const bool& done, std::chrono::milliseconds timeout) 
 beast::error_code TestClient::send_text(const std::string& text) {
   bool done = false;
   beast::error_code ec;
-  ws_.text(true);
-  ws_.async_write(net::buffer(text), [&](beast::error_code e, std::size_t) {
+  c_->ws.text(true);
+  c_->ws.async_write(net::buffer(text), [&](beast::error_code e, std::size_t) {
     ec = e;
     done = true;
   });
   if (!run_until(done, expect_within)) {
     // Never leave the write pending on `text` after returning.
     beast::error_code ignored;
-    beast::get_lowest_layer(ws_).socket().close(ignored);
+    beast::get_lowest_layer(c_->ws).socket().close(ignored);
     run_until(done, expect_within);
     return beast::error::timeout;
   }
@@ -244,7 +255,7 @@ void TestClient::start_read() {
   if (read_pending_) return;
   read_pending_ = true;
   read_done_ = false;
-  ws_.async_read(buffer_, [this](beast::error_code ec, std::size_t) {
+  c_->ws.async_read(c_->buffer, [this](beast::error_code ec, std::size_t) {
     read_error_ = ec;
     read_done_ = true;
   });
@@ -256,12 +267,12 @@ std::optional<ServerMessage> TestClient::receive(std::chrono::milliseconds timeo
   read_pending_ = false;
   if (read_error_)
     throw std::runtime_error("test client: connection ended: " + read_error_.message() +
-                             " (close code " + std::to_string(static_cast<int>(ws_.reason().code)) +
-                             ")");
-  const auto data = buffer_.data();
+                             " (close code " +
+                             std::to_string(static_cast<int>(c_->ws.reason().code)) + ")");
+  const auto data = c_->buffer.data();
   const auto* begin = static_cast<const std::uint8_t*>(data.data());
   std::vector<std::uint8_t> bytes(begin, begin + data.size());
-  buffer_.clear();
+  c_->buffer.clear();
   return decode_server_message(bytes);
 }
 
@@ -273,12 +284,12 @@ std::optional<Closed> TestClient::wait_closed(std::chrono::milliseconds timeout)
         deadline - std::chrono::steady_clock::now());
     if (left <= 0ms || !run_until(read_done_, left)) return std::nullopt;
     read_pending_ = false;
-    buffer_.clear();
+    c_->buffer.clear();
     if (read_error_) {
       Closed closed;
       closed.error = read_error_;
       if (read_error_ == websocket::error::closed)
-        closed.code = static_cast<int>(ws_.reason().code);
+        closed.code = static_cast<int>(c_->ws.reason().code);
       return closed;
     }
   }
@@ -286,12 +297,12 @@ std::optional<Closed> TestClient::wait_closed(std::chrono::milliseconds timeout)
 
 void TestClient::close() {
   bool done = false;
-  ws_.async_close(websocket::close_code::normal, [&](beast::error_code) { done = true; });
+  c_->ws.async_close(websocket::close_code::normal, [&](beast::error_code) { done = true; });
   run_until(done, expect_within);
 }
 
 void TestClient::drop() {
-  auto& socket = beast::get_lowest_layer(ws_).socket();
+  auto& socket = beast::get_lowest_layer(c_->ws).socket();
   beast::error_code ignored;
   socket.set_option(net::socket_base::linger(true, 0), ignored);  // RST, not FIN
   socket.close(ignored);

@@ -2,7 +2,9 @@
 // Test doubles for the frame server: a fake Session that paints a solid
 // colour (a new one per input event) and reports what was done to it, a
 // WebSocket client whose every wait has a deadline, and a server fixture
-// that captures the log.
+// that captures the log. Boost.Beast stays in serve_test_support.cpp (the
+// client's connection) and in http_test_support.hpp (plain HTTP requests),
+// which only the tests that make such requests include.
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -17,10 +19,7 @@
 #include <utility>
 #include <vector>
 
-#include <boost/asio/io_context.hpp>
-#include <boost/beast/core.hpp>
-#include <boost/beast/http.hpp>
-#include <boost/beast/websocket.hpp>
+#include <boost/system/error_code.hpp>
 #include <glm/vec4.hpp>
 #include <nlohmann/json.hpp>
 
@@ -140,8 +139,8 @@ struct TestServer {
 
 // How the server ended a connection, as the client saw it.
 struct Closed {
-  boost::beast::error_code error;  // websocket::error::closed after a close frame
-  int code = -1;                   // the close frame's code, -1 without one
+  boost::system::error_code error;  // websocket::error::closed after a close frame
+  int code = -1;                    // the close frame's code, -1 without one
 };
 
 // A WebSocket client on its own io_context; every wait has a deadline. A
@@ -153,8 +152,10 @@ class TestClient {
   explicit TestClient(unsigned short port);
   ~TestClient();
 
-  boost::beast::error_code send_text(const std::string& text);
-  boost::beast::error_code send(const nlohmann::json& message) { return send_text(message.dump()); }
+  boost::system::error_code send_text(const std::string& text);
+  boost::system::error_code send(const nlohmann::json& message) {
+    return send_text(message.dump());
+  }
   // The next server message, or nullopt when none arrives within `timeout`.
   // Throws std::runtime_error if the connection ends.
   std::optional<ServerMessage> receive(std::chrono::milliseconds timeout = expect_within);
@@ -164,15 +165,14 @@ class TestClient {
   void drop();   // resets the TCP connection without any WebSocket close
 
  private:
+  struct Connection;  // the io_context, the WebSocket stream and its buffer (Beast)
   void start_read();
   bool run_until(const bool& done, std::chrono::milliseconds timeout);
 
-  boost::asio::io_context io_;
-  boost::beast::websocket::stream<boost::beast::tcp_stream> ws_;
-  boost::beast::flat_buffer buffer_;
+  std::unique_ptr<Connection> c_;
   bool read_pending_ = false;
   bool read_done_ = false;
-  boost::beast::error_code read_error_;
+  boost::system::error_code read_error_;
 };
 
 // What a page sends.
@@ -201,28 +201,6 @@ class ReadingPage {
   std::pair<int, int> last_size_{0, 0};
   std::thread thread_;
 };
-
-// One plain HTTP GET.
-boost::beast::http::response<boost::beast::http::string_body> http_get(unsigned short port,
-                                                                       const std::string& target);
-// A request written by hand, for what the server must refuse (by hand rather
-// than with websocket::stream::handshake, which in Boost 1.74 does not hand
-// back the response of a declined upgrade): the target, whether it asks for a
-// WebSocket upgrade, and the Host and Origin headers, left out when absent;
-// `repeated` are further (name, value) lines sent after them as they are.
-struct HandRequest {
-  std::string target = "/ws";
-  bool upgrade = true;
-  std::optional<std::string> host = {};
-  std::optional<std::string> origin = {};
-  std::vector<std::pair<std::string, std::string>> repeated = {};
-};
-// Sends it and returns the response (101 for an accepted upgrade).
-boost::beast::http::response<boost::beast::http::string_body> exchange(unsigned short port,
-                                                                       const HandRequest& r);
-// A WebSocket upgrade from this server's own host that is expected to be
-// refused: the HTTP response.
-boost::beast::http::response<boost::beast::http::string_body> refused_upgrade(unsigned short port);
 
 // Decodes a JPEG frame payload to RGBA (TurboJPEG); throws on failure.
 render::RgbaImage decode_jpeg(const std::vector<std::uint8_t>& jpeg);

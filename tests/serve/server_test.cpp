@@ -10,6 +10,7 @@
 
 #include <unistd.h>
 
+#include "http_test_support.hpp"
 #include "serve/shared_state.hpp"
 #include "serve_test_support.hpp"
 

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "http_test_support.hpp"
 #include "serve/stage_times.hpp"
 #include "serve_test_support.hpp"
 
