@@ -6,16 +6,11 @@
 #include <stdexcept>
 #include <utility>
 
-#include "numerics/composition.hpp"
-#include "numerics/embedded_rk.hpp"
-#include "numerics/gauss_legendre.hpp"
-#include "numerics/rk4.hpp"
-#include "numerics/splitting.hpp"
 #include "physics/direct.hpp"
-#include "physics/direct_batch.hpp"
-#include "physics/free_rigid_body_flow.hpp"
 #include "physics/notation.hpp"
 #include "sim/drift.hpp"
+#include "sim/ensemble.hpp"
+#include "sim/steppers.hpp"
 
 namespace epviz::sim {
 namespace {
@@ -337,38 +332,16 @@ std::optional<CrossingDirection> crossing_direction_from_name(std::string_view s
 
 std::vector<Crossing> section_crossings(const RunSpec& run, const SectionSurface& surface,
                                         int max_crossings) {
-  using physics::DirectSystem;
-  using physics::ExactSplitSystem;
-  numerics::AdaptiveOptions opts;
-  opts.rtol = run.tol;
-  opts.atol = run.tol;
-  opts.max_steps = run.max_steps;
-  const DirectSystem sys(run.body);
-  auto fixed = [&](auto stepper) {
-    return run_section(FixedSteps<decltype(stepper)>(std::move(stepper), run.step, run.body), run,
-                       surface, max_crossings);
-  };
-  switch (run.method) {
-    case Method::dopri5:
-      return run_section(numerics::Dopri5<DirectSystem>(sys, opts), run, surface, max_crossings);
-    case Method::dop853:
-      return run_section(numerics::Dop853<DirectSystem>(sys, opts), run, surface, max_crossings);
-    case Method::rk4: return fixed(numerics::Rk4<DirectSystem>(sys));
-    case Method::midpoint: return fixed(numerics::ImplicitMidpoint<DirectSystem>(sys));
-    case Method::gauss4: return fixed(numerics::Gauss4<DirectSystem>(sys));
-    case Method::gauss6: return fixed(numerics::Gauss6<DirectSystem>(sys));
-    case Method::splitting: return fixed(numerics::StrangSplitting<DirectSystem>(sys));
-    case Method::exact_split2:
-      return fixed(
-          numerics::Composition2<ExactSplitSystem>(ExactSplitSystem(run.body), "exact-split2"));
-    case Method::exact_split4:
-      return fixed(
-          numerics::Composition4<ExactSplitSystem>(ExactSplitSystem(run.body), "exact-split4"));
-  }
-  throw std::invalid_argument("unknown method");
+  return with_stepper(physics::DirectSystem(run.body), run, [&](auto stepper) {
+    if constexpr (AdaptiveStepper<decltype(stepper)>)
+      return run_section(std::move(stepper), run, surface, max_crossings);
+    else
+      return run_section(FixedSteps<decltype(stepper)>(std::move(stepper), run.step, run.body), run,
+                         surface, max_crossings);
+  });
 }
 
-bool sections_batched(const RunSpec& run) { return run.method == Method::dop853; }
+bool sections_batched(const RunSpec& run) { return batchable(run); }
 
 std::vector<OrbitCrossings> section_crossings_batched(const std::vector<RunSpec>& runs,
                                                       const SectionSurface& surface,
@@ -377,28 +350,21 @@ std::vector<OrbitCrossings> section_crossings_batched(const std::vector<RunSpec>
   if (runs.empty()) return out;
   const RunSpec& first = runs.front();
   std::vector<OrbitSection> sections;
-  std::vector<physics::DirectBatchTask> tasks;
+  std::vector<sim::DirectBatchTask> tasks;
   sections.reserve(runs.size());
   tasks.reserve(runs.size());
   for (const RunSpec& run : runs) {
-    if (!sections_batched(run) || run.tol != first.tol || run.max_steps != first.max_steps ||
-        run.t_end != first.t_end || run.body.inertia != first.body.inertia ||
-        run.body.com != first.body.com || run.body.weight != first.body.weight)
+    if (!sections_batched(run) || !share_a_batch(run, first) || run.t_end != first.t_end)
       throw std::invalid_argument(
           "section_crossings_batched: every run dop853 with one body, tolerance, step budget and "
           "t_end");
     sections.emplace_back(run, surface, max_crossings);
-    tasks.push_back(physics::direct_batch_task(run.initial, run.t_end));
+    tasks.push_back(sim::direct_batch_task(run.initial, run.t_end));
     tasks.back().id = long(tasks.size()) - 1;
   }
-  // section_crossings's dop853 options.
-  physics::DirectBatchSettings settings;
-  settings.method = physics::BatchMethod::dop853;
-  settings.adaptive.rtol = first.tol;
-  settings.adaptive.atol = first.tol;
-  settings.adaptive.max_steps = first.max_steps;
+  sim::DirectBatchSettings settings = dop853_batch_settings(first);
   settings.step_hook = section_hook(sections, runs, surface);
-  auto results = physics::integrate_direct_batch_parallel(first.body, tasks, settings, threads);
+  auto results = sim::integrate_direct_batch_parallel(first.body, tasks, settings, threads);
   for (std::size_t i = 0; i < runs.size(); ++i) {
     out[i].failure = std::move(results[i].failure);
     if (!out[i].failure) out[i].crossings = std::move(sections[i].crossings());
