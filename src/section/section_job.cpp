@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 #include "io/bad_input.hpp"
 #include "io/json_reader.hpp"
@@ -265,10 +266,17 @@ std::vector<physics::InitialState> section_starts(const SectionJob& job) {
   if (job.level) {
     key = "level";
     starts = physics::level_states(job.body, *job.level, job.orbits).states;
+    // Close above the least energy only a small cap of directions carries
+    // states, which the grid over the sphere misses.
+    if (starts.empty())
+      starts = physics::level_states_about_minimum(job.body, *job.level, job.orbits).states;
     if (starts.empty()) {
       const double least = physics::minimum_energy(job.body, job.level->area).energy;
-      std::string what = "no state of this body lies on it; the least energy at this area is ";
-      what += std::to_string(least);
+      char what[160];
+      std::snprintf(what, sizeof what,
+                    "no state of this body lies on it; the least energy at this area is %.17g "
+                    "(the energy must be at least that)",
+                    least);
       throw io::BadInput(job.file + ": key 'level': " + what);
     }
   }
