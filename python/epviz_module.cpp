@@ -15,6 +15,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -156,13 +157,14 @@ py::tuple section(const std::string& path, const std::string& object_json, int t
   section::for_each_crossing_row(job, results, [&](std::span<const double> row) {
     for (std::size_t i = 0; i < row.size(); ++i) columns[i].push_back(row[i]);
   });
+  const std::size_t crossings = columns.front().size();
   py::dict arrays;
   for (std::size_t i = 0; i < names.size(); ++i)
     arrays[py::str(names[i])] = to_array(std::move(columns[i]));
   nlohmann::json methods = nlohmann::json::array();
   for (const auto& m : job.methods) methods.push_back(section::method_label(m));
   const nlohmann::json report{{"runs", results.size()},
-                              {"crossings", columns.empty() ? 0 : columns.front().size()},
+                              {"crossings", crossings},
                               {"methods", methods},
                               {"summary", section::summary(job, starts.size(), results)}};
   return py::make_tuple(arrays, report.dump());

@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
-#include <span>
 #include <optional>
+#include <span>
 #include <utility>
 
 #include "app/cli_values.hpp"
@@ -101,7 +101,7 @@ int run_section(const SectionOptions& o) {
   if (!o.out.empty()) job.csv = o.out;
   section::check_outputs(job);
   h5::check_h5_output("--h5", o.h5);
-  io::require_distinct_files({{o.file + ": key 'csv'", job.csv},
+  io::require_distinct_files({{o.out.empty() ? o.file + ": key 'csv'" : "--out", job.csv},
                               {o.file + ": key 'png'", job.png},
                               {o.file + ": key 'svg'", job.svg},
                               {"--h5", o.h5}});

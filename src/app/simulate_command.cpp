@@ -123,8 +123,8 @@ int run_simulate(const RawOptions& raw) {
       h5_file->set_attribute("report", reports.back().dump());
       h5_file->set_attribute("failed", long(result.failure ? 1 : 0));
       if (result.failure)
-        h5_file->set_attribute(
-            "failure", sim::failure_line(*result.failure, sim::SettingsIn::command_line));
+        h5_file->set_attribute("failure",
+                               sim::failure_line(*result.failure, sim::SettingsIn::command_line));
     }
     if (result.failure) {
       ++failures;

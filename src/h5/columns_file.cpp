@@ -131,8 +131,7 @@ struct ColumnsFile::Impl {
   }
 };
 
-ColumnsFile::ColumnsFile(fs::path target, std::vector<std::string> columns,
-                         std::size_t chunk_rows)
+ColumnsFile::ColumnsFile(fs::path target, std::vector<std::string> columns, std::size_t chunk_rows)
     : impl_(std::make_unique<Impl>()) {
   auto& m = *impl_;
   m.target = std::move(target);
@@ -163,12 +162,12 @@ void ColumnsFile::create_datasets() {
   // Nobody else opens a temporary: no lock, which some file systems refuse.
   if (!access.valid() || H5Pset_file_locking(access.get(), false, true) < 0)
     m.fail("make the file's access properties");
-  m.file = Handle(H5Fcreate(m.temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()),
-                  H5Fclose);
+  m.file =
+      Handle(H5Fcreate(m.temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), H5Fclose);
   if (!m.file.valid()) {
     const std::string cause = hdf5_error_text();
-    throw io::FileWriteError("cannot write '" + m.target.string() + "': " +
-                             (cause.empty() ? "HDF5 could not create it" : cause));
+    throw io::FileWriteError("cannot write '" + m.target.string() +
+                             "': " + (cause.empty() ? "HDF5 could not create it" : cause));
   }
 
   const hsize_t none[1] = {0}, unlimited[1] = {H5S_UNLIMITED};
@@ -240,9 +239,9 @@ void ColumnsFile::set_attribute(const std::string& name, long value) {
   auto& m = *impl_;
   replace_attribute(m.file.get(), name);
   Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  Handle attribute(H5Acreate2(m.file.get(), name.c_str(), H5T_STD_I64LE, space.get(),
-                              H5P_DEFAULT, H5P_DEFAULT),
-                   H5Aclose);
+  Handle attribute(
+      H5Acreate2(m.file.get(), name.c_str(), H5T_STD_I64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+      H5Aclose);
   if (!attribute.valid() || H5Awrite(attribute.get(), H5T_NATIVE_LONG, &value) < 0)
     m.fail("write the attribute '" + name + "'");
 }
@@ -258,8 +257,8 @@ void ColumnsFile::commit() {
   if (!closed) m.fail("close the file");
   if (std::rename(m.temporary.c_str(), m.resolved.c_str()) != 0) {
     const int error = errno;
-    throw io::FileWriteError("cannot write '" + m.target.string() + "': " +
-                             std::system_category().message(error));
+    throw io::FileWriteError("cannot write '" + m.target.string() +
+                             "': " + std::system_category().message(error));
   }
   m.committed = true;
   if (m.cleanup_slot >= 0) io::unregister_temporary(m.cleanup_slot);

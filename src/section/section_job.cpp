@@ -193,8 +193,7 @@ SectionJob read_section_job(const std::filesystem::path& file) {
   return read_section_object(io::read_json_file(file), file.string());
 }
 
-SectionJob read_section_object(const nlohmann::json& doc, const std::string& name,
-                               bool needs_csv) {
+SectionJob read_section_object(const nlohmann::json& doc, const std::string& name, bool needs_csv) {
   SectionJob job;
   job.file = name;
   job.hash = shard::checksum_of(doc.dump());  // nlohmann::json keeps keys sorted
@@ -243,8 +242,7 @@ SectionJob read_section_object(const nlohmann::json& doc, const std::string& nam
   for (const char* key : {"png", "svg"})
     if (auto path = r.string(key)) (key[0] == 'p' ? job.png : job.svg) = *path;
   const auto csv = r.string("csv");
-  if (needs_csv && (!csv || csv->empty()))
-    r.fail("csv", "is required: the crossings' CSV file");
+  if (needs_csv && (!csv || csv->empty())) r.fail("csv", "is required: the crossings' CSV file");
   if (csv) job.csv = *csv;
   r.finish();
   return job;

@@ -38,8 +38,8 @@ constexpr std::size_t kChunk = 64 * 1024;
 
 const std::array<std::string, kSampleColumns>& sample_column_names() {
   static const std::array<std::string, kSampleColumns> names{
-      "t",      "omega1", "omega2", "omega3", "gamma1",           "gamma2",        "gamma3",
-      "a",      "b",      "energy", "area",   "gamma_norm_error", "extra_integral"};
+      "t", "omega1", "omega2", "omega3", "gamma1",           "gamma2",        "gamma3",
+      "a", "b",      "energy", "area",   "gamma_norm_error", "extra_integral"};
   return names;
 }
 

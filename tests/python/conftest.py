@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 SOURCE = pathlib.Path(os.environ.get("EPVIZ_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
-BINARY = os.environ.get("EPVIZ_BINARY", str(SOURCE / "build" / "epviz"))
+BINARY = os.path.abspath(os.environ.get("EPVIZ_BINARY", str(SOURCE / "build" / "epviz")))
 
 
 def run_epviz(*args, cwd=None, check=True):

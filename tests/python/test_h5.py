@@ -146,7 +146,7 @@ def test_section_refuses_bad_h5_before_any_work(tmp_path):
     shipped.pop("png"), shipped.pop("svg")
     (tmp_path / "k.section.json").write_text(json.dumps(shipped))
     before = sorted(p.name for p in tmp_path.iterdir())
-    for args, name in ((["--h5", "-"], "--h5"), (["--h5", "k.section.csv"], "--h5"),
+    for args, name in ((["--h5", "-"], "--h5"), (["--h5", shipped["csv"]], "--h5"),
                        (["--h5", "k.h5", "--shard", "0/2"], "--h5")):
         r = run_epviz("section", "k.section.json", *args, cwd=tmp_path, check=False)
         assert r.returncode == 2, r.stderr
@@ -171,5 +171,6 @@ def test_memory_of_1e7_samples_to_h5_stays_under_100_mb(tmp_path):
     with h5py.File(tmp_path / "big.h5", "r") as f:
         assert f["t"].shape == (10000001,)
         assert f["t"][-1] == 10000.0 and f["gamma3"].shape == (10000001,)
+    (tmp_path / "big.h5").unlink()  # 1 GB: not left for pytest's kept temporaries
     # 13 columns of 1e7 doubles would be 1040 MB if they were kept.
     assert peak_kb < 100 * 1024, f"peak RSS {peak_kb} kB"
