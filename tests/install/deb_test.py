@@ -210,7 +210,7 @@ try:
                   "image = epviz.render_frame('kovalevskaya', width=64, height=48, gl='osmesa')\n"
                   "assert image.shape == (48, 64, 4) and image.std() > 0\n"
                   "print('ok')\n") % module
-        r = run(["python3", "-c", script], env=py_env, cwd=work)
+        r = run(["/usr/bin/python3", "-c", script], env=py_env, cwd=work)
         if r.returncode != 0 or r.stdout.strip() != "ok":
             problems.append(f"the installed Python module does not work: {r.stderr.strip()[-500:]}")
 finally:
