@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -68,26 +69,25 @@ void draw(const section::SectionJob& job, const std::vector<section::OrbitResult
 }
 
 // The crossings as the CSV's columns (section::crossing_columns), the section
-// file and a short report as attributes.
-void write_section_h5(const SectionOptions& o, const section::SectionJob& job,
-                      const std::vector<section::OrbitResult>& results, const std::string& summary,
-                      double seconds) {
-  h5::ColumnsFile file(o.h5, section::crossing_columns(job));
+// file (when it can still be read) and a short report as attributes.
+void write_section_h5(const std::string& path, const section::SectionJob& job,
+                      const std::vector<section::OrbitResult>& results, nlohmann::json report) {
+  h5::ColumnsFile file(path, section::crossing_columns(job));
   long crossings = 0;
   section::for_each_crossing_row(job, results, [&](std::span<const double> row) {
     file.append(row);
     ++crossings;
   });
   write_provenance(file);
-  file.set_attribute("job", io::read_json_file(o.file).dump());
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(job.file, ec))
+    file.set_attribute("job", io::read_json_file(job.file).dump());
   nlohmann::json methods = nlohmann::json::array();
   for (const auto& m : job.methods) methods.push_back(section::method_label(m));
   file.set_attribute("methods", methods.dump());
-  const nlohmann::json report{{"runs", results.size()},
-                              {"crossings", crossings},
-                              {"methods", methods},
-                              {"summary", summary},
-                              {"seconds", seconds}};
+  report["runs"] = results.size();
+  report["crossings"] = crossings;
+  report["methods"] = methods;
   file.set_attribute("report", report.dump());
   file.set_attribute("failed", 0L);
   file.commit();
@@ -153,7 +153,8 @@ int run_section(const SectionOptions& o) {
     done = which + done;
   } else {
     section::write_crossings_csv(job, results);
-    if (!o.h5.empty()) write_section_h5(o, job, results, done, seconds);
+    if (!o.h5.empty())
+      write_section_h5(o.h5, job, results, {{"summary", done}, {"seconds", seconds}});
     draw(job, results, o.gl);
   }
   std::fprintf(job.csv == "-" ? stderr : stdout, "%s: %s in %.2f s (%d threads)\n", o.file.c_str(),
@@ -163,8 +164,13 @@ int run_section(const SectionOptions& o) {
 
 }  // namespace
 
-void write_merged_section(const section::MergedSection& merged, const std::string& gl) {
+void write_merged_section(const section::MergedSection& merged, const std::string& gl,
+                          const std::string& h5) {
   io::write_file_atomically(merged.job.csv, merged.csv_text);
+  if (!h5.empty()) {
+    write_section_h5(h5, merged.job, merged.results, nlohmann::json::object());
+    std::printf("section %s: crossings -> %s\n", merged.job.file.c_str(), h5.c_str());
+  }
   draw(merged.job, merged.results, gl);
   std::printf("section %s: %zu runs -> %s\n", merged.job.file.c_str(), merged.results.size(),
               merged.job.csv.c_str());

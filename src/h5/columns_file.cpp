@@ -208,7 +208,49 @@ void ColumnsFile::append(std::span<const double> row) {
                                 " values for " + std::to_string(m.buffers.size()) + " columns");
   for (std::size_t c = 0; c < row.size(); ++c) m.buffers[c].push_back(row[c]);
   ++m.rows;
-  if (m.buffers.front().size() >= m.chunk_rows) m.flush();
+  if (!m.buffers.empty() && m.buffers.front().size() >= m.chunk_rows) m.flush();
+}
+
+namespace {
+
+// A variable-length UTF-8 string type.
+Handle text_type() { return Handle(H5Tcopy(H5T_C_S1), H5Tclose); }
+bool make_text(const Handle& type) {
+  return type.valid() && H5Tset_size(type.get(), H5T_VARIABLE) >= 0 &&
+         H5Tset_cset(type.get(), H5T_CSET_UTF8) >= 0;
+}
+
+}  // namespace
+
+void ColumnsFile::write_column(const std::string& name, std::span<const double> values) {
+  auto& m = *impl_;
+  const hsize_t n[1] = {hsize_t(values.size())};
+  Handle space(H5Screate_simple(1, n, nullptr), H5Sclose);
+  Handle d(H5Dcreate2(m.file.get(), name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT,
+                      H5P_DEFAULT, H5P_DEFAULT),
+           H5Dclose);
+  if (!space.valid() || !d.valid() ||
+      (n[0] > 0 &&
+       H5Dwrite(d.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0))
+    m.fail("write the dataset '" + name + "'");
+}
+
+void ColumnsFile::write_text_column(const std::string& name,
+                                    const std::vector<std::string>& values) {
+  auto& m = *impl_;
+  std::vector<const char*> data;
+  data.reserve(values.size());
+  for (const auto& v : values) data.push_back(v.c_str());
+  const hsize_t n[1] = {hsize_t(values.size())};
+  Handle type = text_type();
+  Handle space(H5Screate_simple(1, n, nullptr), H5Sclose);
+  if (!make_text(type) || !space.valid()) m.fail("make the type of the dataset '" + name + "'");
+  Handle d(H5Dcreate2(m.file.get(), name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT,
+                      H5P_DEFAULT),
+           H5Dclose);
+  if (!d.valid() ||
+      (n[0] > 0 && H5Dwrite(d.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0))
+    m.fail("write the dataset '" + name + "'");
 }
 
 namespace {
@@ -222,11 +264,9 @@ void replace_attribute(hid_t file, const std::string& name) {
 void ColumnsFile::set_attribute(const std::string& name, const std::string& text) {
   auto& m = *impl_;
   replace_attribute(m.file.get(), name);
-  Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+  Handle type = text_type();
   Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  if (!type.valid() || !space.valid() || H5Tset_size(type.get(), H5T_VARIABLE) < 0 ||
-      H5Tset_cset(type.get(), H5T_CSET_UTF8) < 0)
-    m.fail("make the type of the attribute '" + name + "'");
+  if (!make_text(type) || !space.valid()) m.fail("make the type of the attribute '" + name + "'");
   Handle attribute(
       H5Acreate2(m.file.get(), name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
       H5Aclose);

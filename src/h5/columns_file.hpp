@@ -29,7 +29,8 @@ void check_h5_output(const std::string& option, const std::string& path);
 class ColumnsFile {
  public:
   // Creates the temporary with one empty, extendible dataset per name, each
-  // chunked by `chunk_rows` rows. Throws io::FileWriteError naming the target.
+  // chunked by `chunk_rows` rows (none: only whole columns are written).
+  // Throws io::FileWriteError naming the target.
   ColumnsFile(std::filesystem::path target, std::vector<std::string> columns,
               std::size_t chunk_rows = 16384);
   ~ColumnsFile();
@@ -39,6 +40,11 @@ class ColumnsFile {
   // One value per column, in the constructor's order. Rows are kept until a
   // chunk is full, then written.
   void append(std::span<const double> row);
+  // A whole column written at once, beside the appended ones (a table built
+  // before it is written, such as a sweep's rows): a float64 dataset, or one
+  // of variable-length UTF-8 strings.
+  void write_column(const std::string& name, std::span<const double> values);
+  void write_text_column(const std::string& name, const std::vector<std::string>& values);
   // A variable-length UTF-8 string attribute of the root (replaced if set before).
   void set_attribute(const std::string& name, const std::string& text);
   // An integer attribute of the root.

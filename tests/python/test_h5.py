@@ -174,3 +174,78 @@ def test_memory_of_1e7_samples_to_h5_stays_under_100_mb(tmp_path):
     (tmp_path / "big.h5").unlink()  # 1 GB: not left for pytest's kept temporaries
     # 13 columns of 1e7 doubles would be 1040 MB if they were kept.
     assert peak_kb < 100 * 1024, f"peak RSS {peak_kb} kB"
+
+
+SWEEP = {
+    "simulation": {"case": "lagrange", "t_end": 4, "samples": 8, "method": "rk4", "step": 0.01},
+    # A drift limit of 1e-14 fails rk4 (lost_motion): rows with a failure object.
+    "axes": [{"field": "omega[2]", "values": [1, 3, 5]}, {"field": "max_drift", "values": [1, 1e-14]}],
+}
+
+
+def json_rows(path):
+    rows = [json.loads(line) for line in pathlib.Path(path).read_text().splitlines() if line]
+    return sorted(rows, key=lambda r: r["index"])
+
+
+def assert_h5_equals_rows(h5_path, rows):
+    with h5py.File(h5_path, "r") as f:
+        assert f["index"][()].tolist() == [r["index"] for r in rows]
+        assert f["steps"].dtype == np.float64
+        assert f["steps"][()].tolist() == [r["steps"] for r in rows]
+        assert f["max_relative_drift.energy"][()].tolist() == [r["max_relative_drift"]["energy"] for r in rows]
+        assert f["initial.omega[2]"][()].tolist() == [r["initial"]["omega"][2] for r in rows]
+        assert f["method"].asstr()[()].tolist() == [r["method"] for r in rows]
+        kinds = f["failure_kind"].asstr()[()].tolist()
+        assert kinds == [r["failure_kind"] or "" for r in rows]
+        assert "lost_motion" in kinds and "" in kinds
+        failure_t = f["failure.t"][()]
+        for r, t in zip(rows, failure_t):
+            assert (np.isnan(t) if r["failure"] is None else t == r["failure"]["t"])
+        assert "failure" not in f  # null beside objects: no column of its own
+        return dict(f.attrs)
+
+
+def test_sweep_h5_holds_the_rows_in_point_order(tmp_path):
+    (tmp_path / "s.sweep.json").write_text(json.dumps(SWEEP))
+    run_epviz("sweep", "s.sweep.json", "--out", "rows.jsonl", "--h5", "s.h5", "-j", "2", "--quiet",
+              cwd=tmp_path)
+    rows = json_rows(tmp_path / "rows.jsonl")
+    assert len(rows) == 6
+    attrs = assert_h5_equals_rows(tmp_path / "s.h5", rows)
+    assert json.loads(attrs["job"]) == SWEEP
+    report = json.loads(attrs["report"])
+    assert report["points"] == 6 and report["failed_points"] == sum(r["failure"] is not None for r in rows)
+    assert attrs["simd_path"] in ("scalar", "sse2", "avx2", "avx512")
+    assert leftovers(tmp_path) == []
+
+
+def test_sweep_refuses_bad_h5_before_any_work(tmp_path):
+    (tmp_path / "s.sweep.json").write_text(json.dumps(SWEEP))
+    for args in (["--h5", "-"], ["--h5", "rows.jsonl"], ["--h5", "s.h5", "--shard", "0/2"]):
+        r = run_epviz("sweep", "s.sweep.json", "--out", "rows.jsonl", *args, cwd=tmp_path, check=False)
+        assert r.returncode == 2, r.stderr
+        assert len(r.stderr.strip().splitlines()) == 1 and "--h5" in r.stderr, r.stderr
+        assert sorted(p.name for p in tmp_path.iterdir()) == ["s.sweep.json"]
+
+
+def test_merge_h5_writes_the_merged_sweep_and_section(tmp_path):
+    (tmp_path / "s.sweep.json").write_text(json.dumps(SWEEP))
+    section = {"case": "kovalevskaya", "level": {"energy": 2, "area": 0.5}, "orbits": 4,
+               "crossings": 20, "csv": "k.csv"}
+    (tmp_path / "k.section.json").write_text(json.dumps(section))
+    shards = tmp_path / "shards"
+    shards.mkdir()
+    for i in range(2):
+        run_epviz("sweep", tmp_path / "s.sweep.json", "--out", shards / "rows.jsonl",
+                  "--shard", f"{i}/2", "--quiet", cwd=tmp_path)
+        run_epviz("section", tmp_path / "k.section.json", "--out", shards / "k.csv",
+                  "--shard", f"{i}/2", cwd=tmp_path)
+    run_epviz("merge", shards, "--out", tmp_path / "merged", "--h5", cwd=tmp_path)
+    merged = tmp_path / "merged"
+    assert_h5_equals_rows(merged / "rows.h5", json_rows(merged / "rows.jsonl"))
+    columns = read_csv_columns(merged / "k.csv")
+    with h5py.File(merged / "k.h5", "r") as f:
+        assert sorted(f.keys()) == sorted(columns)
+        for name, fields in columns.items():
+            assert_column_equals_csv(f[name][()], fields, name)

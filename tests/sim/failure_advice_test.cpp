@@ -36,9 +36,12 @@ TEST(FailureAdvice, EveryKindIsOneSentenceInEveryPlace) {
         EXPECT_EQ(a.find("--") != std::string::npos, where == SettingsIn::command_line);
         EXPECT_EQ(a.find("simulation.") != std::string::npos, where == SettingsIn::render_job);
         EXPECT_EQ(a.find(" panel") != std::string::npos, where == SettingsIn::panel);
-        if (where != SettingsIn::python) EXPECT_EQ(a.find("=\""), std::string::npos);
-        if (where == SettingsIn::python && k == FailureKind::chart_pole)
+        if (where != SettingsIn::python) {
+          EXPECT_EQ(a.find("=\""), std::string::npos);
+        }
+        if (where == SettingsIn::python && k == FailureKind::chart_pole) {
           EXPECT_NE(a.find("formulation=\"spinor\""), std::string::npos);
+        }
       }
     }
   }
