@@ -79,7 +79,9 @@ std::size_t write_json_rows(ColumnsFile& file, const std::vector<Json>& rows) {
       std::vector<std::string> values;
       values.reserve(c.cells.size());
       for (const Json* v : c.cells)
-        values.push_back(!v ? std::string() : v->is_string() ? v->get<std::string>() : v->dump());
+        values.push_back(!v || v->is_null() ? std::string()
+                         : v->is_string()   ? v->get<std::string>()
+                                            : v->dump());
       file.write_text_column(c.name, values);
     }
     ++written;

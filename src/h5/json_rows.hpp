@@ -15,7 +15,7 @@ namespace epviz::h5 {
 // "initial.omega[0]"). A leaf that is a number in every row that has one
 // (true and false count as 1 and 0) is a float64 dataset, NaN where a row
 // holds null or lacks it; any other leaf is a dataset of UTF-8 strings (text
-// as it is, other values as their JSON), "" where a row lacks it. A null
+// as it is, other values as their JSON), "" where a row holds null or lacks it. A null
 // where other rows hold an object ("failure": null beside "failure": {...})
 // makes no column of its own. Returns the number of columns written.
 std::size_t write_json_rows(ColumnsFile& file, const std::vector<nlohmann::json>& rows);
