@@ -249,3 +249,19 @@ def test_merge_h5_writes_the_merged_sweep_and_section(tmp_path):
         assert sorted(f.keys()) == sorted(columns)
         for name, fields in columns.items():
             assert_column_equals_csv(f[name][()], fields, name)
+
+
+def test_an_interrupted_run_leaves_neither_file_nor_temporary(tmp_path):
+    import signal
+    import time
+
+    p = subprocess.Popen([BINARY, "simulate", "--case", "kovalevskaya", "--tol", "1e-14", "--t-end", "1e6",
+                          "--samples", "10000000", "--h5", tmp_path / "k.h5"],
+                         stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    deadline = time.monotonic() + 20
+    while not leftovers(tmp_path) and time.monotonic() < deadline:
+        time.sleep(0.02)
+    assert leftovers(tmp_path), "the run never wrote its temporary"
+    p.send_signal(signal.SIGINT)
+    assert p.wait(timeout=20) == -signal.SIGINT
+    assert list(tmp_path.iterdir()) == []
