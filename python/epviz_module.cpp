@@ -10,8 +10,10 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <fstream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -19,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "h5/json_rows.hpp"
 #include "io/bad_input.hpp"
 #include "io/json_reader.hpp"
 #include "job/fields.hpp"
@@ -31,8 +34,11 @@
 #include "sim/drift.hpp"
 #include "sim/failure_advice.hpp"
 #include "sim/simulate.hpp"
+#include "sweep/rows_file.hpp"
 #include "sweep/simulate_runs.hpp"
 #include "sweep/simulation_output.hpp"
+#include "sweep/sweep_runner.hpp"
+#include "sweep/sweep_spec.hpp"
 #ifdef EPVIZ_HAVE_RENDER
 #include "job/job_file.hpp"
 #include "job/job_plan.hpp"
@@ -170,6 +176,41 @@ py::tuple section(const std::string& path, const std::string& object_json, int t
   return py::make_tuple(arrays, report.dump());
 }
 
+// A sweep's rows, run into `rows_file` (a scratch file of the Python layer)
+// and read back in the order of their points: {name: array} by
+// h5::json_columns (the names `epviz sweep --h5` gives its datasets; text
+// columns as lists of str), and the number of failed points.
+py::tuple sweep(const std::string& path, const std::string& object_json, int threads,
+                const std::string& rows_file) {
+  const sweep::SweepSpec spec =
+      path.empty() ? sweep::read_sweep(object_from(object_json, "epviz.sweep"), "epviz.sweep")
+                   : sweep::read_sweep_file(path);
+  const long total = spec.point_count();
+  const auto pending = sweep::pending_points(spec, {0, total}, {});
+  sweep::SweepTotals totals;
+  {
+    py::gil_scoped_release release;
+    sweep::RowAppender rows(rows_file);
+    totals = sweep::run_points(spec, pending, std::max(1, threads), rows);
+    rows.flush();
+  }
+  std::vector<nlohmann::json> rows;
+  std::ifstream in(rows_file);
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty()) rows.push_back(io::parse_json_text(line, rows_file));
+  std::stable_sort(rows.begin(), rows.end(), [](const nlohmann::json& a, const nlohmann::json& b) {
+    return a.value("index", 0L) < b.value("index", 0L);
+  });
+  py::dict columns;
+  for (auto& c : h5::json_columns(rows)) {
+    if (c.text)
+      columns[py::str(c.name)] = py::cast(c.texts);
+    else
+      columns[py::str(c.name)] = to_array(std::move(c.numbers));
+  }
+  return py::make_tuple(columns, total, totals.failures);
+}
+
 #ifdef EPVIZ_HAVE_RENDER
 // The RGBA frame as a (height, width, 4) uint8 array, or the failure (dict)
 // that ended the frames before it.
@@ -265,6 +306,8 @@ PYBIND11_MODULE(_epviz, m) {
   });
   m.def("simulate", &simulate, py::arg("fields_json"), py::arg("max_steps") = py::none());
   m.def("section", &section, py::arg("path"), py::arg("object_json"), py::arg("threads"));
+  m.def("sweep", &sweep, py::arg("path"), py::arg("object_json"), py::arg("threads"),
+        py::arg("rows_file"));
 #ifdef EPVIZ_HAVE_RENDER
   m.def("render_frame", &render_frame, py::arg("path"), py::arg("object_json"), py::arg("frame"),
         py::arg("width"), py::arg("height"), py::arg("gl"));

@@ -12,6 +12,8 @@ Functions:
   columns of ``epviz simulate --csv``, its report as ``.report``.
 - ``section(path_or_dict)``: a Poincare section's crossings as arrays named
   like the columns of ``epviz section``'s CSV.
+- ``sweep(path_or_dict)``: a parameter sweep's rows as columns, named as
+  ``epviz sweep --h5`` names its datasets.
 - ``render_frame(job, frame=, width=, height=)``: one frame of a render job
   as a uint8 image (height, width, 4), RGBA.
 
@@ -28,6 +30,7 @@ import inspect
 import json
 import math
 import os
+import tempfile
 from typing import Any, Iterator, Mapping, Optional, Union
 
 import numpy as np
@@ -43,6 +46,7 @@ __all__ = [
     "section",
     "simd_path",
     "simulate",
+    "sweep",
 ]
 
 
@@ -51,7 +55,8 @@ class Result(collections.abc.Mapping):
     in the order of the command line's CSV, and the run's report as a dict
     (``result.report``). An empty CSV field (the stereographic ``a``, ``b``
     at the south pole, ``extra_integral`` in a case without a fourth
-    integral) is NaN here."""
+    integral) is NaN here. A sweep's text columns ("method") are lists of
+    str."""
 
     def __init__(self, columns: Mapping[str, np.ndarray], report: dict):
         self._columns = dict(columns)
@@ -165,6 +170,30 @@ def section(path_or_dict: Union[str, os.PathLike, Mapping[str, Any]], *, threads
     else:
         columns, report = _epviz.section(os.fspath(path_or_dict), "", threads)
     return Result(columns, json.loads(report))
+
+
+def sweep(path_or_dict: Union[str, os.PathLike, Mapping[str, Any]], *, threads: int = 0) -> Result:
+    """A parameter sweep (docs/cluster.md): every point run, its row's values
+    as columns in the order of the points, named by their path in the row as
+    ``epviz sweep --h5`` names its datasets ("steps",
+    "max_relative_drift.energy", "initial.omega[0]", "axes.tol"): numbers as
+    float64 arrays (NaN where a row has none), text ("method",
+    "failure_kind") as lists of str ("" where a row has none).
+    ``.report`` holds the number of points and of failed points.
+
+    ``path_or_dict``: a sweep file, or its content as a dict. ``threads``: 0
+    for all cores. A point that fails is a row with its failure, not an error."""
+    if isinstance(threads, bool) or not isinstance(threads, int) or not 0 <= threads <= 4096:
+        raise ValueError(f"epviz.sweep: threads: expected an integer from 0 to 4096, got {threads!r}")
+    threads = threads or (os.cpu_count() or 1)
+    with tempfile.TemporaryDirectory(prefix="epviz-sweep-") as scratch:
+        rows = os.path.join(scratch, "rows.jsonl")
+        if isinstance(path_or_dict, Mapping):
+            columns, points, failed = _epviz.sweep(
+                "", _fields_json("epviz.sweep", path_or_dict), threads, rows)
+        else:
+            columns, points, failed = _epviz.sweep(os.fspath(path_or_dict), "", threads, rows)
+    return Result(columns, {"points": points, "failed_points": failed})
 
 
 def render_frame(

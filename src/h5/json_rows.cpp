@@ -61,32 +61,37 @@ bool is_numeric(const Column& c) {
 
 }  // namespace
 
-std::size_t write_json_rows(ColumnsFile& file, const std::vector<Json>& rows) {
+std::vector<JsonColumn> json_columns(const std::vector<Json>& rows) {
   Table table(rows.size());
   for (std::size_t r = 0; r < rows.size(); ++r) table.add(r, "", rows[r]);
-  std::size_t written = 0;
+  std::vector<JsonColumn> out;
   for (const auto& c : table.columns()) {
     if (table.is_bare_parent(c)) continue;
-    if (is_numeric(c)) {
-      std::vector<double> values;
-      values.reserve(c.cells.size());
-      for (const Json* v : c.cells)
-        values.push_back(!v || v->is_null() ? std::numeric_limits<double>::quiet_NaN()
-                         : v->is_boolean()  ? (v->get<bool>() ? 1.0 : 0.0)
-                                            : v->get<double>());
-      file.write_column(c.name, values);
-    } else {
-      std::vector<std::string> values;
-      values.reserve(c.cells.size());
-      for (const Json* v : c.cells)
-        values.push_back(!v || v->is_null() ? std::string()
-                         : v->is_string()   ? v->get<std::string>()
-                                            : v->dump());
-      file.write_text_column(c.name, values);
+    JsonColumn column{c.name, !is_numeric(c), {}, {}};
+    for (const Json* v : c.cells) {
+      if (!column.text)
+        column.numbers.push_back(!v || v->is_null() ? std::numeric_limits<double>::quiet_NaN()
+                                 : v->is_boolean()  ? (v->get<bool>() ? 1.0 : 0.0)
+                                                    : v->get<double>());
+      else
+        column.texts.push_back(!v || v->is_null() ? std::string()
+                               : v->is_string()   ? v->get<std::string>()
+                                                  : v->dump());
     }
-    ++written;
+    out.push_back(std::move(column));
   }
-  return written;
+  return out;
+}
+
+std::size_t write_json_rows(ColumnsFile& file, const std::vector<Json>& rows) {
+  const auto columns = json_columns(rows);
+  for (const auto& c : columns) {
+    if (c.text)
+      file.write_text_column(c.name, c.texts);
+    else
+      file.write_column(c.name, c.numbers);
+  }
+  return columns.size();
 }
 
 }  // namespace epviz::h5

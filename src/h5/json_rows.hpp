@@ -2,6 +2,7 @@
 // JSON objects of one kind (a sweep's rows) as the columns of an HDF5 file
 // (columns_file.hpp), one dataset per leaf, so that a reader gets a
 // contiguous array per quantity instead of parsing JSON Lines.
+#include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -19,5 +20,15 @@ namespace epviz::h5 {
 // where other rows hold an object ("failure": null beside "failure": {...})
 // makes no column of its own. Returns the number of columns written.
 std::size_t write_json_rows(ColumnsFile& file, const std::vector<nlohmann::json>& rows);
+
+// The same columns, as values (the Python module's epviz.sweep): each
+// numbers or text, by the rule above.
+struct JsonColumn {
+  std::string name;
+  bool text = false;
+  std::vector<double> numbers;     // when not text: one per row
+  std::vector<std::string> texts;  // when text: one per row
+};
+std::vector<JsonColumn> json_columns(const std::vector<nlohmann::json>& rows);
 
 }  // namespace epviz::h5

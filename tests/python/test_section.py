@@ -68,3 +68,4 @@ def test_a_missing_file_is_a_value_error_naming_it(tmp_path):
     with pytest.raises(ValueError) as e:
         epviz.section(tmp_path / "none.section.json")
     assert "none.section.json" in str(e.value)
+
