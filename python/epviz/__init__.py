@@ -239,8 +239,9 @@ _TYPES = {"str": str, "vec3": "tuple[float, float, float]", "float": float, "int
 
 def _simulate_doc() -> str:
     lines = [
-        "One simulation, given by the job's field names (the keys of a job's",
-        '"simulation" object; `epviz simulate --help-job`, `epviz simulate --help`).',
+        "One simulation, given by the job's field names: the keys of a job's",
+        '"simulation" object (`epviz render --help-job`), the options of',
+        "`epviz simulate` (`--t-end` is t_end).",
         "",
         "Returns a Result: result[name] is the CSV column `name` of",
         "`epviz simulate --csv` as a float64 NumPy array (t, omega1..3, gamma1..3,",

@@ -18,9 +18,12 @@ void put(std::string& out, double x) {
   out += buf;
 }
 
-constexpr const char* kCsvHeader =
-    "t,omega1,omega2,omega3,gamma1,gamma2,gamma3,a,b,energy,area,gamma_norm_error,"
-    "extra_integral\n";
+// The header line: the column names, as the HDF5 datasets and Python's arrays are named.
+std::string csv_header() {
+  std::string header;
+  for (const auto& name : sample_column_names()) header += (header.empty() ? "" : ",") + name;
+  return header + "\n";
+}
 
 // Columns a (7), b (8) and extra_integral (12) may be absent: empty fields.
 void append_row(std::string& out, const SampleColumns::Row& row) {
@@ -71,7 +74,7 @@ SampleColumns::Row SampleColumns::row(const sim::Sample& s) const {
 }
 
 SamplesCsvWriter::SamplesCsvWriter(const sim::RunSpec& spec, io::AtomicFile& file)
-    : columns_(spec), file_(file), buffer_(kCsvHeader) {
+    : columns_(spec), file_(file), buffer_(csv_header()) {
   buffer_.reserve(kChunk + 1024);
 }
 
