@@ -191,9 +191,12 @@ SectionRun section_run_of(long run, std::size_t starts) {
 }
 
 SectionJob read_section_job(const std::filesystem::path& file) {
+  return read_section_object(io::read_json_file(file), file.string());
+}
+
+SectionJob read_section_object(const nlohmann::json& doc, const std::string& name, bool needs_csv) {
   SectionJob job;
-  job.file = file.string();
-  const nlohmann::json doc = io::read_json_file(file);
+  job.file = name;
   job.hash = shard::checksum_of(doc.dump());  // nlohmann::json keeps keys sorted
   io::ObjectReader r(doc, job.file);
   const auto case_name = r.choice("case", names_of_cases());
@@ -240,8 +243,8 @@ SectionJob read_section_job(const std::filesystem::path& file) {
   for (const char* key : {"png", "svg"})
     if (auto path = r.string(key)) (key[0] == 'p' ? job.png : job.svg) = *path;
   const auto csv = r.string("csv");
-  if (!csv || csv->empty()) r.fail("csv", "is required: the crossings' CSV file");
-  job.csv = *csv;
+  if (needs_csv && (!csv || csv->empty())) r.fail("csv", "is required: the crossings' CSV file");
+  if (csv) job.csv = *csv;
   r.finish();
   return job;
 }
