@@ -15,8 +15,8 @@
 
 #include "numerics/embedded_rk.hpp"
 #include "physics/direct.hpp"
-#include "physics/direct_batch.hpp"
-#include "physics/direct_batch_isa.hpp"
+#include "sim/ensemble.hpp"
+#include "sim/ensemble_isa.hpp"
 
 namespace {
 
@@ -34,15 +34,15 @@ physics::Body ensemble_body() {
 }
 
 // Initial states spread over a box of angular velocities, t_end from 2 to 4.
-const std::vector<physics::DirectBatchTask>& ensemble() {
-  static const std::vector<physics::DirectBatchTask> tasks = [] {
-    std::vector<physics::DirectBatchTask> t;
+const std::vector<sim::DirectBatchTask>& ensemble() {
+  static const std::vector<sim::DirectBatchTask> tasks = [] {
+    std::vector<sim::DirectBatchTask> t;
     for (int i = 0; i < kTrajectories; ++i) {
       physics::InitialState s;
       s.omega = {-1.0 + 2.0 * (i % 16) / 15.0, -1.0 + 2.0 * ((i / 16) % 16) / 15.0,
                  0.5 + (i / 256) / 16.0};
       s.gamma = physics::Vector3d(0.1 * std::sin(i), 0.2, 1.0).normalized();
-      t.push_back(physics::direct_batch_task(s, 2.0 + 2.0 * (i % 7) / 6.0));
+      t.push_back(sim::direct_batch_task(s, 2.0 + 2.0 * (i % 7) / 6.0));
     }
     return t;
   }();
@@ -75,13 +75,13 @@ void ensemble_scalar_dop853(benchmark::State& state) {
 BENCHMARK(ensemble_scalar_dop853)->Unit(benchmark::kMillisecond);
 
 void ensemble_batch_dop853(benchmark::State& state, numerics::SimdPath path, int width) {
-  physics::DirectBatchSettings settings;
+  sim::DirectBatchSettings settings;
   settings.adaptive = options();
   settings.path = path;
   settings.width = width;
   long steps = 0;
   for (auto _ : state) {
-    const auto results = physics::integrate_direct_batch(ensemble_body(), ensemble(), settings);
+    const auto results = sim::integrate_direct_batch(ensemble_body(), ensemble(), settings);
     for (const auto& r : results) steps += r.steps + r.rejected_steps;
     benchmark::DoNotOptimize(results.data());
   }
@@ -94,7 +94,7 @@ void ensemble_batch_dop853(benchmark::State& state, numerics::SimdPath path, int
 template <int W>
 void ensemble_attempt_only(benchmark::State& state, numerics::SimdPath path) {
   const auto& kernels = [&]() -> const auto& {
-    const auto& k = physics::batch_isa::kernels_for(path);
+    const auto& k = sim::batch_isa::kernels_for(path);
     if constexpr (W == 1) return k.w1.dop853;
     if constexpr (W == 2) return k.w2.dop853;
     if constexpr (W == 4) return k.w4.dop853;
@@ -134,7 +134,7 @@ const bool registered = [] {
           ->Unit(benchmark::kMillisecond);
     }
     const std::string only = "ensemble_attempt_only/" + std::string(numerics::name(path)) + "/W";
-    const int lanes = physics::default_batch_width(path);
+    const int lanes = sim::default_batch_width(path);
     const auto add = [&](auto fn) {
       benchmark::RegisterBenchmark((only + std::to_string(lanes)).c_str(), fn, path);
     };

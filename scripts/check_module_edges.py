@@ -7,6 +7,8 @@ other modules whose headers it includes must equal the set of epviz_<module>
 libraries it lists in DEPS, so that the build graph says what the code does.
 The command line (src/app) is checked against EPVIZ_APP_DEPS and the optional
 libraries it adds with target_link_libraries(epviz ...).
+The module table of docs/architecture.md ("may include") is checked against
+the same include edges, so that the documented dependencies are the code's.
 Exit 0 when they match, 1 with one line per mismatch otherwise.
 """
 import pathlib
@@ -58,8 +60,34 @@ for m in modules:
     for d in sorted(deps - used):
         problems.append(f"src/{m} links epviz_{d} but includes none of its headers")
 
+# The table of docs/architecture.md, "may include": the modules named in
+# backticks in its last column (before any ';', after which come third-party
+# libraries) must be the modules the folder's code includes; "everything"
+# (the command line) is not checked.
+doc = (root / "docs" / "architecture.md").read_text()
+documented = {}
+for folder, allowed in re.findall(r"^\| `(\w+)` \|.*\| ([^|]*) \|$", doc, re.M):
+    if folder in modules:
+        ours = allowed.split(";")[0]
+        documented[folder] = None if ours.strip() == "everything" else {
+            n for n in re.findall(r"`(\w+)`", ours) if n in modules}
+for m in modules:
+    if m not in documented:
+        problems.append(f"src/{m}: no row in docs/architecture.md's module table")
+        continue
+    if documented[m] is None:
+        continue
+    used = set()
+    for f in (root / "src" / m).rglob("*"):
+        if f.suffix in (".cpp", ".hpp"):
+            used |= {u for u in include.findall(f.read_text()) if u in modules and u != m}
+    for u in sorted(used - documented[m]):
+        problems.append(f"src/{m} includes {u}/ headers but docs/architecture.md does not list {u}")
+    for d in sorted(documented[m] - used):
+        problems.append(f"docs/architecture.md lists {d} for src/{m}, which includes none of its headers")
+
 for p in problems:
     print(p)
 if problems:
     sys.exit(1)
-print(f"module edges: {len(modules)} modules, include edges match link edges")
+print(f"module edges: {len(modules)} modules, include edges match link edges and the docs")

@@ -9,8 +9,9 @@
 #                                needs (the README's quick start)
 #   scripts/setup.sh [--test]    --build plus what the test suite, the
 #                                benchmarks, the sanitizer passes, the browser
-#                                tests and the Slurm test need (the default;
-#                                scripts/test.sh and CI)
+#                                tests, the Slurm test, the Python module and
+#                                its tests need (the default; scripts/test.sh
+#                                and CI)
 set -euo pipefail
 
 mode=test
@@ -30,14 +31,14 @@ esac
 # tests/install/deb_test.py checks what a render opens against them.
 runtime_packages=(
   libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6 ffmpeg fonts-dejavu-core
-  libturbojpeg0 libstb0 zlib1g libgsl27 libgslcblas0 libcairo2
+  libturbojpeg0 libstb0 zlib1g libgsl27 libgslcblas0 libcairo2 libhdf5-103-1
 )
 build_packages=(
   build-essential cmake ninja-build pkg-config lld
   libeigen3-dev libboost-dev
   libcli11-dev nlohmann-json3-dev
   libosmesa6-dev libgl-dev libegl-dev libglm-dev libimgui-dev libstb-dev zlib1g-dev
-  libturbojpeg0-dev libgsl-dev libcairo2-dev
+  libturbojpeg0-dev libgsl-dev libcairo2-dev libhdf5-dev
 )
 test_packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
@@ -45,6 +46,7 @@ test_packages=(
   chromium
   clang-format python3 clang libclang-rt-14-dev
   slurmctld slurmd slurm-client munge
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-h5py python3-matplotlib
 )
 packages=("${runtime_packages[@]}")
 case "$mode" in

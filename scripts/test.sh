@@ -28,7 +28,8 @@ sanitizers=${EPVIZ_SANITIZERS:-all}
 bash tests/sanitizers/run.sh "$sanitizers"
 stage_done "sanitizer passes"
 # libFuzzer on the job reader, simulate's options, the page protocol, the
-# sweep reader, shard manifests, golden PNGs and section files, from the
+# sweep reader, shard manifests, golden PNGs, section files and JSON grown
+# wide and deep (with a time bound per input), from the
 # committed corpora, 10 s each, two at a time (a longer search is
 # `scripts/fuzz.sh 600`, docs/architecture.md); in the ASan tree when the
 # sanitizer pass built it, else in build-fuzz/.

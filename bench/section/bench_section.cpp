@@ -8,7 +8,7 @@
 //              for a sign change, each crossing located on the dense output,
 //              checked and kept
 //   batch      the same bare integration by the SIMD batch integrator
-//              (physics/direct_batch.hpp)
+//              (sim/ensemble.hpp)
 //   section on the batch
 //              section::run_section as `epviz section` runs it: the same
 //              section, its orbits in the batch integrator's lanes (checked
@@ -43,9 +43,9 @@
 #include "numerics/embedded_rk.hpp"
 #include "numerics/simd_path.hpp"
 #include "physics/direct.hpp"
-#include "physics/direct_batch.hpp"
 #include "section/section_job.hpp"
 #include "section/section_run.hpp"
+#include "sim/ensemble.hpp"
 
 namespace {
 
@@ -126,12 +126,12 @@ long bare_integration(const section::SectionJob& job,
 void batch_integration(const section::SectionJob& job,
                        const std::vector<physics::InitialState>& starts,
                        const std::vector<double>& t_end, int threads) {
-  std::vector<physics::DirectBatchTask> tasks;
+  std::vector<sim::DirectBatchTask> tasks;
   for (std::size_t i = 0; i < starts.size(); ++i)
-    tasks.push_back(physics::direct_batch_task(starts[i], t_end[i]));
-  physics::DirectBatchSettings settings;
+    tasks.push_back(sim::direct_batch_task(starts[i], t_end[i]));
+  sim::DirectBatchSettings settings;
   settings.adaptive = options_of(job);
-  for (const auto& r : physics::integrate_direct_batch_parallel(job.body, tasks, settings, threads))
+  for (const auto& r : sim::integrate_direct_batch_parallel(job.body, tasks, settings, threads))
     if (r.failure) {
       std::fprintf(stderr, "epviz_section_bench: a batch trajectory failed\n");
       std::exit(1);

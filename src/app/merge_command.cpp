@@ -6,9 +6,13 @@
 #include <thread>
 
 #include "app/gl_option.hpp"
+#include "app/h5_output.hpp"
 #include "app/section_command.hpp"
+#include "h5/columns_file.hpp"
+#include "h5/json_rows.hpp"
 #include "io/atomic_file.hpp"
 #include "io/bad_input.hpp"
+#include "io/json_reader.hpp"
 #include "io/json_text.hpp"
 #include "io/output_paths.hpp"
 #include "io/shell_quote.hpp"
@@ -36,7 +40,15 @@ struct MergeOptions {
   std::string dir, out, gl, format, resubmit;
   std::vector<std::string> atlases;
   bool allow_unconverged = false;
+  bool h5 = false;
 };
+
+// "stability_atlas.jsonl" -> "stability_atlas.h5": the HDF5 file written
+// beside a merged file (--h5).
+fs::path h5_beside(const fs::path& merged) {
+  fs::path p = merged;
+  return p.replace_extension(".h5");
+}
 
 // This merge as a command line with absolute paths, run again by the
 // resubmit script once the failed shards are redone.
@@ -50,6 +62,7 @@ std::vector<std::string> merge_command_line(const MergeOptions& o) {
   if (!o.format.empty()) c.insert(c.end(), {"--format", o.format});
   if (!o.gl.empty()) c.insert(c.end(), {"--gl", o.gl});
   if (o.allow_unconverged) c.push_back("--allow-unconverged");
+  if (o.h5) c.push_back("--h5");
   c.insert(c.end(), {"--resubmit", absolute(o.resubmit)});
   return c;
 }
@@ -107,6 +120,25 @@ bool merge_sweep(const shard::Batch& b, const std::vector<Json>& rows, const fs:
   io::write_file_atomically(out, text);
   std::printf("%s: %zu rows -> %s\n", shard::batch_name(b).c_str(), rows.size(),
               out.string().c_str());
+  if (o.h5) {
+    // The rows as sweep --h5 writes them (merged rows are in point order).
+    h5::ColumnsFile file(h5_beside(out), {});
+    h5::write_json_rows(file, rows);
+    write_provenance(file);
+    std::error_code ec;
+    if (fs::is_regular_file(any.source, ec))
+      file.set_attribute("job", io::read_json_file(any.source).dump());
+    long failed = 0;
+    for (const auto& r : rows) failed += r.contains("failure_kind") && !r["failure_kind"].is_null();
+    file.set_attribute("report", Json{{"points", rows.size()},
+                                      {"rows", rows.size()},
+                                      {"failed_points", failed},
+                                      {"rows_file", out.string()}}
+                                     .dump());
+    file.set_attribute("failed", 0L);
+    file.commit();
+    std::printf("%s: rows -> %s\n", shard::batch_name(b).c_str(), h5_beside(out).string().c_str());
+  }
   const auto saved = saved_sweep(any, b.hash);
   std::vector<sweep::AtlasRequest> requests;
   for (const auto& a : o.atlases) requests.push_back(sweep::parse_atlas_option(a));
@@ -206,7 +238,8 @@ int run_merge(const MergeOptions& o) {
     if (batches[i].kind == "sweep")
       unconverged += !merge_sweep(batches[i], rows[i], out_dir, o);
     else if (sections[i])
-      write_merged_section(*sections[i], o.gl);
+      write_merged_section(*sections[i], o.gl,
+                           o.h5 ? h5_beside(sections[i]->job.csv).string() : std::string());
     else
       merge_render(batches[i], dir, out_dir);
   }
@@ -239,6 +272,9 @@ std::function<int()> add_merge_command(cli::Command app) {
   cmd.add_option("--format", o->format,
                  "the atlases' files: png (GL), svg or pdf (cairo, vector; no GL needed) "
                  "(default png)");
+  cmd.add_flag("--h5", o->h5,
+               "also write each merged sweep's rows and section's crossings as HDF5 beside "
+               "them (NAME.jsonl, NAME.csv -> NAME.h5), as sweep and section --h5 do");
   cmd.add_option("--resubmit", o->resubmit,
                  "FILE: when shards are missing or incomplete, write a script that submits only "
                  "those again as Slurm job arrays, then this merge (docs/cluster.md)");

@@ -2,14 +2,20 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
+#include <span>
 #include <utility>
 
 #include "app/cli_values.hpp"
 #include "app/gl_option.hpp"
+#include "app/h5_output.hpp"
+#include "h5/columns_file.hpp"
 #include "io/atomic_file.hpp"
 #include "io/bad_input.hpp"
+#include "io/json_reader.hpp"
 #include "io/png_writer.hpp"
 #include "section/section_chart.hpp"
 #include "section/section_csv.hpp"
@@ -28,7 +34,7 @@ namespace epviz::app {
 namespace {
 
 struct SectionOptions {
-  std::string file, out, jobs, gl, shard, shard_count;  // the section file, --out, -j, --gl, ...
+  std::string file, out, jobs, gl, shard, shard_count, h5;  // the section file, --out, -j, ...
 };
 
 // One chart per method, side by side on the same axes when there are several;
@@ -61,6 +67,31 @@ void draw(const section::SectionJob& job, const std::vector<section::OrbitResult
 #endif
 }
 
+// The crossings as the CSV's columns (section::crossing_columns), the section
+// file (when it can still be read) and a short report as attributes.
+void write_section_h5(const std::string& path, const section::SectionJob& job,
+                      const std::vector<section::OrbitResult>& results, nlohmann::json report) {
+  h5::ColumnsFile file(path, section::crossing_columns(job));
+  long crossings = 0;
+  section::for_each_crossing_row(job, results, [&](std::span<const double> row) {
+    file.append(row);
+    ++crossings;
+  });
+  write_provenance(file);
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(job.file, ec))
+    file.set_attribute("job", io::read_json_file(job.file).dump());
+  nlohmann::json methods = nlohmann::json::array();
+  for (const auto& m : job.methods) methods.push_back(section::method_label(m));
+  file.set_attribute("methods", methods.dump());
+  report["runs"] = results.size();
+  report["crossings"] = crossings;
+  report["methods"] = methods;
+  file.set_attribute("report", report.dump());
+  file.set_attribute("failed", 0L);
+  file.commit();
+}
+
 int run_section(const SectionOptions& o) {
   section::SectionJob job = section::read_section_job(o.file);
   const int threads =
@@ -68,6 +99,11 @@ int run_section(const SectionOptions& o) {
   const auto shard = shard::shard_from_options(o.shard, o.shard_count);
   if (!o.out.empty()) job.csv = o.out;
   section::check_outputs(job);
+  h5::check_h5_output("--h5", o.h5);
+  io::require_distinct_files({{o.out.empty() ? o.file + ": key 'csv'" : "--out", job.csv},
+                              {o.file + ": key 'png'", job.png},
+                              {o.file + ": key 'svg'", job.svg},
+                              {"--h5", o.h5}});
   const auto starts = section::section_starts(job);
   const long runs = section::run_count(job, starts.size());
   std::optional<shard::RowsShard> part;
@@ -75,6 +111,9 @@ int run_section(const SectionOptions& o) {
     throw io::BadInput(
         "--shard: a shard writes its crossings beside the CSV; give \"csv\" (or --out) a file, not "
         "standard output");
+  if (shard && !o.h5.empty())
+    throw io::BadInput(
+        "--h5: a shard writes only its crossings' CSV; give --h5 to the whole section instead");
   if (shard) part = section::plan_section_shard(job, runs, *shard, o.jobs);
 #ifndef EPVIZ_HAVE_RENDER
   if (!part) draw(job, {}, o.gl);  // refuses pictures before any work
@@ -113,6 +152,8 @@ int run_section(const SectionOptions& o) {
     done = which + done;
   } else {
     section::write_crossings_csv(job, results);
+    if (!o.h5.empty())
+      write_section_h5(o.h5, job, results, {{"summary", done}, {"seconds", seconds}});
     draw(job, results, o.gl);
   }
   std::fprintf(job.csv == "-" ? stderr : stdout, "%s: %s in %.2f s (%d threads)\n", o.file.c_str(),
@@ -122,8 +163,13 @@ int run_section(const SectionOptions& o) {
 
 }  // namespace
 
-void write_merged_section(const section::MergedSection& merged, const std::string& gl) {
+void write_merged_section(const section::MergedSection& merged, const std::string& gl,
+                          const std::string& h5) {
   io::write_file_atomically(merged.job.csv, merged.csv_text);
+  if (!h5.empty()) {
+    write_section_h5(h5, merged.job, merged.results, nlohmann::json::object());
+    std::printf("section %s: crossings -> %s\n", merged.job.file.c_str(), h5.c_str());
+  }
   draw(merged.job, merged.results, gl);
   std::printf("section %s: %zu runs -> %s\n", merged.job.file.c_str(), merged.results.size(),
               merged.job.csv.c_str());
@@ -137,6 +183,10 @@ std::function<int()> add_section_command(cli::Command app) {
   cmd.add_option("--out", o->out, "the crossings' CSV (default: the file's \"csv\")");
   cmd.add_option("-j,--jobs", o->jobs, "threads (default: all cores)");
   add_gl_option(cmd, o->gl, "for the PNG");
+  cmd.add_option("--h5", o->h5,
+                 "also write the crossings to this HDF5 file: a float64 dataset per CSV column "
+                 "(the method as its index into the attribute \"methods\"), the section file "
+                 "and a report as attributes (JSON)");
   cmd.add_option("--shard", o->shard,
                  "I/N: run only shard I (from 0) of N, a contiguous range of the orbits; default "
                  "from SLURM_ARRAY_TASK_ID, JOB_COMPLETION_INDEX or AWS_BATCH_JOB_ARRAY_INDEX; "

@@ -13,7 +13,9 @@ namespace epviz::app {
 std::function<int()> add_section_command(cli::Command app);
 
 // A section's shards joined by `epviz merge`: writes its CSV and draws its
-// PNG and SVG, as an unsharded run does.
-void write_merged_section(const section::MergedSection& merged, const std::string& gl);
+// PNG and SVG, as an unsharded run does, and with `h5` (a path) the
+// crossings as HDF5 too, as `epviz section --h5` writes them.
+void write_merged_section(const section::MergedSection& merged, const std::string& gl,
+                          const std::string& h5 = "");
 
 }  // namespace epviz::app

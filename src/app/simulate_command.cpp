@@ -7,7 +7,9 @@
 #include <optional>
 
 #include "app/cli_values.hpp"
+#include "app/h5_output.hpp"
 #include "app/simulation_fields.hpp"
+#include "h5/columns_file.hpp"
 #include "io/atomic_file.hpp"
 #include "io/bad_input.hpp"
 #include "io/json_text.hpp"
@@ -24,7 +26,7 @@ namespace epviz::app {
 namespace {
 
 struct RawOptions {
-  std::string job, csv, report_json, max_steps;
+  std::string job, csv, report_json, h5, max_steps;
   SimulationOptions sim;
 };
 
@@ -48,9 +50,11 @@ int run_simulate(const RawOptions& raw) {
   SimulationFields fields;
   if (!raw.job.empty()) fields = fields_from_job(raw.job);
   fields.overlay(fields_from_options(raw.sim));
-  require_distinct_files({{"--csv", raw.csv}, {"--report-json", raw.report_json}});
+  require_distinct_files(
+      {{"--csv", raw.csv}, {"--report-json", raw.report_json}, {"--h5", raw.h5}});
   io::check_output_file("--csv", raw.csv);
   io::check_output_file("--report-json", raw.report_json);
+  h5::check_h5_output("--h5", raw.h5);
   const bool csv_to_stdout = !raw.csv.empty() && io::writes_to_standard_output(raw.csv);
   const bool report_to_stdout =
       !raw.report_json.empty() && io::writes_to_standard_output(raw.report_json);
@@ -61,6 +65,8 @@ int run_simulate(const RawOptions& raw) {
 
   if (sweep::runs_every_case(fields) && !raw.csv.empty())
     throw io::BadInput("--csv: writes one run's samples; it cannot be combined with --case all");
+  if (sweep::runs_every_case(fields) && !raw.h5.empty())
+    throw io::BadInput("--h5: writes one run's samples; it cannot be combined with --case all");
   std::optional<long> max_steps;
   if (!raw.max_steps.empty())
     max_steps = long(parse_integer("--max-steps", raw.max_steps, 1, 1'000'000'000'000));
@@ -73,6 +79,7 @@ int run_simulate(const RawOptions& raw) {
   io::install_temporary_cleanup();
   remove_stale_beside(raw.csv);
   remove_stale_beside(raw.report_json);
+  remove_stale_beside(raw.h5);
 
   nlohmann::json reports = nlohmann::json::array();
   int failures = 0;
@@ -80,10 +87,18 @@ int run_simulate(const RawOptions& raw) {
   // many --samples are asked for.
   std::optional<io::AtomicFile> csv_file;
   if (!raw.csv.empty()) csv_file.emplace(raw.csv);
+  // The HDF5 file's datasets grow a chunk at a time (h5/columns_file.hpp).
+  std::optional<h5::ColumnsFile> h5_file;
+  if (!raw.h5.empty()) {
+    const auto& names = sweep::sample_column_names();
+    h5_file.emplace(raw.h5, std::vector<std::string>(names.begin(), names.end()));
+  }
   for (const auto& spec : specs) {
     sim::RunDriftMonitor drifts(spec);
     std::optional<sweep::SamplesCsvWriter> csv;
     if (csv_file) csv.emplace(spec, *csv_file);
+    std::optional<sweep::SampleColumns> columns;
+    if (h5_file) columns.emplace(spec);
     io::ProgressOptions po;
     po.label = "simulate " + physics::case_name(spec.case_id);
     po.unit = "samples";
@@ -93,6 +108,7 @@ int run_simulate(const RawOptions& raw) {
         [&](const sim::Sample& s) {
           drifts.output(s);
           if (csv) csv->add(s);
+          if (h5_file) h5_file->append(columns->row(s).values);
           progress.advance();
         },
         [&](const sim::Sample& s) { drifts.step(s); });
@@ -100,6 +116,16 @@ int run_simulate(const RawOptions& raw) {
     if (csv) csv->flush();
     std::fputs(sweep::run_summary(spec, result, drifts.drifts()).c_str(), summary);
     reports.push_back(sweep::simulate_report(spec, result, drifts.drifts()));
+    if (h5_file) {
+      // A failed run keeps the samples before its failure, marked failed.
+      write_provenance(*h5_file);
+      h5_file->set_attribute("job", given_fields_json(fields).dump());
+      h5_file->set_attribute("report", reports.back().dump());
+      h5_file->set_attribute("failed", long(result.failure ? 1 : 0));
+      if (result.failure)
+        h5_file->set_attribute("failure",
+                               sim::failure_line(*result.failure, sim::SettingsIn::command_line));
+    }
     if (result.failure) {
       ++failures;
       std::fprintf(stderr, "epviz: %s\n",
@@ -108,6 +134,7 @@ int run_simulate(const RawOptions& raw) {
   }
   std::fflush(summary);
   if (csv_file) csv_file->commit();
+  if (h5_file) h5_file->commit();
   if (!raw.report_json.empty())
     io::write_file_atomically(raw.report_json,
                               io::json_text(specs.size() == 1 ? reports[0] : reports, 2) + "\n");
@@ -130,6 +157,9 @@ std::function<int()> add_simulate_command(cli::Command app) {
                  "goes to stderr)");
   cmd.add_option("--report-json", raw->report_json,
                  "write the run report to this JSON file ('-': standard output)");
+  cmd.add_option("--h5", raw->h5,
+                 "write the samples to this HDF5 file: a float64 dataset per CSV column, the "
+                 "job and the report as attributes (JSON)");
   return [raw] { return run_simulate(*raw); };
 }
 

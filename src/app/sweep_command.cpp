@@ -1,13 +1,18 @@
 #include "app/sweep_command.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <optional>
 #include <thread>
 
 #include "app/cli_values.hpp"
+#include "app/h5_output.hpp"
+#include "h5/columns_file.hpp"
+#include "h5/json_rows.hpp"
 #include "io/bad_input.hpp"
 #include "io/json_reader.hpp"
 #include "io/output_paths.hpp"
@@ -24,7 +29,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct SweepOptions {
-  std::string file, out, jobs, shard, shard_count;
+  std::string file, out, jobs, shard, shard_count, h5;
   bool quiet = false;
 };
 
@@ -35,6 +40,33 @@ std::string sweep_stem(const fs::path& file) {
     if (s.size() > std::string(ext).size() && s.ends_with(ext))
       return s.substr(0, s.size() - std::string(ext).size());
   return s;
+}
+
+// The rows of the file `rows` (every point of the sweep, resumed ones too),
+// in the order of their points, as HDF5 columns (h5/json_rows.hpp), with the
+// sweep file and a report as attributes.
+void write_sweep_h5(const SweepOptions& o, const fs::path& rows_file, long total, double seconds) {
+  std::vector<nlohmann::json> rows;
+  std::ifstream in(rows_file);
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty()) rows.push_back(io::parse_json_text(line, rows_file.string()));
+  std::stable_sort(rows.begin(), rows.end(), [](const nlohmann::json& a, const nlohmann::json& b) {
+    return a.value("index", 0L) < b.value("index", 0L);
+  });
+  long failed = 0;
+  for (const auto& r : rows) failed += r.contains("failure_kind") && !r["failure_kind"].is_null();
+  h5::ColumnsFile file(o.h5, {});
+  h5::write_json_rows(file, rows);
+  write_provenance(file);
+  file.set_attribute("job", io::read_json_file(o.file).dump());
+  const nlohmann::json report{{"points", total},
+                              {"rows", rows.size()},
+                              {"failed_points", failed},
+                              {"rows_file", rows_file.string()},
+                              {"seconds", seconds}};
+  file.set_attribute("report", report.dump());
+  file.set_attribute("failed", 0L);
+  file.commit();
 }
 
 int run_sweep(const SweepOptions& o) {
@@ -48,6 +80,11 @@ int run_sweep(const SweepOptions& o) {
       o.out.empty() ? fs::path(sweep_stem(o.file) + ".jsonl") : fs::path(o.out);
   if (o.out == "-") throw io::BadInput("--out: rows are appended to a file, not standard output");
   io::check_output_file("--out", out_given.string());
+  h5::check_h5_output("--h5", o.h5);
+  io::require_distinct_files({{"--out", out_given.string()}, {"--h5", o.h5}});
+  if (shard && !o.h5.empty())
+    throw io::BadInput(
+        "--h5: a shard writes only its rows; `epviz merge --h5` writes the merged sweep's");
   std::optional<shard::RowsShard> rows_shard;
   if (shard) {
     shard::RowsBatch batch{
@@ -88,6 +125,7 @@ int run_sweep(const SweepOptions& o) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   if (rows_shard) shard::finish_rows_shard(*rows_shard);
+  if (!o.h5.empty()) write_sweep_h5(o, out, total, seconds);
   std::printf(
       "%s: %ld points%s, %zu already in %s%s, ran %ld in %.2f s (%.1f points/s, %d threads), %ld "
       "failed\n",
@@ -121,6 +159,10 @@ std::function<int()> add_sweep_command(cli::Command app) {
   cmd.add_option("--shard-count", o->shard_count,
                  "N: the number of shards when the environment gives only the index");
   cmd.add_flag("--quiet", o->quiet, "no progress line");
+  cmd.add_option("--h5", o->h5,
+                 "also write the rows, in the order of their points, to this HDF5 file: a "
+                 "dataset per value (\"max_relative_drift.energy\", \"initial.omega[0]\"), "
+                 "the sweep file and a report as attributes (JSON)");
   return [o] { return run_sweep(*o); };
 }
 

@@ -2,7 +2,7 @@
 // The arithmetic of the batch steppers on W lanes (batch_lanes.hpp): stages,
 // trial solution, error norm, dense output coefficients, RK4 steps. Included
 // only by the translation units that compile it for one instruction set each
-// (e.g. physics/direct_batch_avx2.cpp), and instantiated there with a tag type
+// (e.g. sim/ensemble_avx2.cpp), and instantiated there with a tag type
 // of that unit's anonymous namespace: every function here is then local to its
 // unit, and no copy built for AVX-512 can stand in for another.
 //

@@ -2,11 +2,11 @@
 // The direct Euler–Poisson right-hand side (direct.hpp) on W lanes in
 // structure-of-arrays layout, for the batch steppers (numerics/batch_lanes.hpp).
 // Free of Eigen so that the units compiled per instruction set
-// (direct_batch_<isa>.cpp) instantiate nothing but this and the kernels.
+// (ensemble_<isa>.cpp) instantiate nothing but this and the kernels.
 //
 // Each lane performs the operations of DirectSystem::rhs and
 // euler_omega_dot in their order, so that a lane's derivative is bitwise
-// DirectSystem's (tests/physics/direct_batch_test.cpp checks it).
+// DirectSystem's (tests/sim/ensemble_test.cpp checks it).
 namespace epviz::physics {
 
 struct Body;

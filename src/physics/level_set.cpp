@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "physics/admissible.hpp"
+
 namespace epviz::physics {
 
 namespace {
@@ -128,6 +130,34 @@ LevelStates level_states(const Body& body, const Level& level,
 
 LevelStates level_states(const Body& body, const Level& level, int n) {
   return level_states(body, level, fibonacci_sphere(n));
+}
+
+std::vector<Vector3d> fibonacci_cap(const Vector3d& centre, double radius, int n) {
+  std::vector<Vector3d> out;
+  if (n <= 0) return out;
+  const Vector3d c = centre.normalized();
+  const Vector3d e1 = c.unitOrthogonal(), e2 = c.cross(e1);
+  // Equal areas: 1 - cos(theta) grows linearly with the point's index.
+  const double cap = 1.0 - std::cos(std::min(radius, kPi));
+  out.reserve(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    const double z = 1.0 - cap * (i + 0.5) / n;
+    const double rho = std::sqrt(std::max(0.0, 1.0 - z * z));
+    const double phi = kGoldenAngle * i;
+    out.push_back(z * c + rho * (std::cos(phi) * e1 + std::sin(phi) * e2));
+  }
+  return out;
+}
+
+LevelStates level_states_about_minimum(const Body& body, const Level& level, int n) {
+  const Vector3d centre = minimum_energy(body, level.area).gamma;
+  LevelStates best;
+  for (double radius = 1.0; radius >= 1e-9; radius /= 4.0) {
+    LevelStates cap = level_states(body, level, fibonacci_cap(centre, radius, n));
+    if (int(cap.states.size()) >= n) return cap;
+    if (cap.states.size() > best.states.size()) best = std::move(cap);
+  }
+  return best;
 }
 
 }  // namespace epviz::physics

@@ -54,4 +54,17 @@ LevelStates level_states(const Body& body, const Level& level, const std::vector
 // The same over fibonacci_sphere(n): up to n states.
 LevelStates level_states(const Body& body, const Level& level, int n);
 
+// n points spread evenly by area over the cap of angular radius `radius`
+// (radians, at most pi) about the unit vector `centre` (a Fibonacci spiral
+// from the centre outwards); empty for n <= 0.
+std::vector<Vector3d> fibonacci_cap(const Vector3d& centre, double radius, int n);
+
+// States of a level close to the least energy at its area, where only a
+// small cap of directions about the minimiser (physics/admissible.hpp)
+// carries states and a grid over the whole sphere meets none: caps of radius
+// 1, 1/4, 1/16, ... down to 1e-9 radians about the minimiser, n directions
+// each, and the states of the widest cap where n directions carry one (else
+// of the cap where most do). Empty below the least energy.
+LevelStates level_states_about_minimum(const Body& body, const Level& level, int n);
+
 }  // namespace epviz::physics

@@ -8,6 +8,7 @@
 #include "scene/plan.hpp"
 #include "scene/plane_path.hpp"
 #include "sim/methods.hpp"
+#include "sim/run_options.hpp"
 
 namespace epviz::scene {
 namespace {
@@ -64,15 +65,6 @@ std::vector<physics::InitialState> cloud_members(const physics::Body& body,
   return out;
 }
 
-physics::DirectBatchSettings cloud_batch_settings(const sim::RunSpec& run) {
-  physics::DirectBatchSettings s;
-  s.method = physics::BatchMethod::dop853;
-  const double tol = sim::is_adaptive(run.method) ? run.tol : 1e-10;
-  s.adaptive.rtol = s.adaptive.atol = tol;
-  s.adaptive.max_steps = run.max_steps;
-  return s;
-}
-
 double cloud_spread(const std::vector<Eigen::Vector3f>& points) {
   if (points.empty()) return 0.0;
   std::vector<int> count(kSpreadCells, 0);
@@ -95,19 +87,20 @@ CloudRun::CloudRun(const sim::RunSpec& run, const CloudSettings& cloud,
                    const std::vector<double>& frame_times, int threads)
     : members_(cloud.members), times_(frame_times), gamma_(frame_times.size()) {
   const auto states = cloud_members(run.body, run.initial, cloud);
-  const auto settings = cloud_batch_settings(run);
+  // DOP853 in the direct formulation, whatever the run's own method and
+  // formulation (the batch path has that one only), at sim::adaptive_tol.
+  const auto settings = sim::dop853_batch_settings(run);
   const double t_end = frame_times.empty() ? 0.0 : frame_times.back();
   for (auto& g : gamma_) g.reserve(states.size());
   for (std::size_t first = 0; first < states.size(); first += kChunk) {
     const std::size_t last = std::min(states.size(), first + kChunk);
-    std::vector<physics::DirectBatchTask> tasks;
+    std::vector<sim::DirectBatchTask> tasks;
     tasks.reserve(last - first);
     for (std::size_t i = first; i < last; ++i) {
-      tasks.push_back(physics::direct_batch_task(states[i], t_end, frame_times));
+      tasks.push_back(sim::direct_batch_task(states[i], t_end, frame_times));
       tasks.back().id = long(i);
     }
-    const auto results =
-        physics::integrate_direct_batch_parallel(run.body, tasks, settings, threads);
+    const auto results = sim::integrate_direct_batch_parallel(run.body, tasks, settings, threads);
     // A member that failed is drawn up to its last output.
     for (const auto& r : results)
       for (std::size_t k = 0; k < r.outputs.size(); ++k) {

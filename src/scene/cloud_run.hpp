@@ -1,12 +1,12 @@
 #pragma once
 // The cloud of a render job (scene/cloud.hpp) integrated: its members'
 // initial states, their gamma at every frame time by the batch integrator
-// (physics/direct_batch.hpp), and the spread of the cloud on the sphere.
+// (sim/ensemble.hpp), and the spread of the cloud on the sphere.
 #include <vector>
 
 #include "physics/body.hpp"
-#include "physics/direct_batch.hpp"
 #include "scene/cloud.hpp"
+#include "sim/ensemble.hpp"
 #include "sim/run_spec.hpp"
 
 namespace epviz::scene {
@@ -22,11 +22,6 @@ namespace epviz::scene {
 std::vector<physics::InitialState> cloud_members(const physics::Body& body,
                                                  const physics::InitialState& centre,
                                                  const CloudSettings& cloud);
-
-// How the cloud integrates: DOP853 in the direct formulation at the run's
-// tolerance (a fixed-step run: 1e-10), whatever the run's own method and
-// formulation (the batch path has that one only).
-physics::DirectBatchSettings cloud_batch_settings(const sim::RunSpec& run);
 
 // The spread of points on the unit sphere: the fraction of the sphere's area
 // they effectively cover, exp(H) / M, where H is the entropy of their

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <limits>
 
 #include "io/atomic_file.hpp"
 #include "io/bad_input.hpp"
@@ -67,6 +68,33 @@ std::string crossings_csv(const SectionJob& job, const std::vector<OrbitResult>&
     }
   }
   return out;
+}
+
+std::vector<std::string> crossing_columns(const SectionJob& job) {
+  std::vector<std::string> names;
+  const std::string header = crossings_csv_header(job);
+  for (auto f : fields_of(std::string_view(header).substr(0, header.size() - 1)))
+    names.emplace_back(f);
+  return names;
+}
+
+void for_each_crossing_row(const SectionJob& job, const std::vector<OrbitResult>& orbits,
+                           const std::function<void(std::span<const double>)>& row) {
+  std::vector<double> values;
+  for (const auto& o : orbits) {
+    if (o.failure) continue;
+    for (const auto& c : o.crossings) {
+      const auto inv = physics::invariants(job.body, job.case_id, c.omega, c.gamma);
+      values.clear();
+      if (several_methods(job)) values.push_back(double(o.method));
+      for (double x : {double(o.orbit), double(c.number), c.t, c.omega.x(), c.omega.y(),
+                       c.omega.z(), c.gamma.x(), c.gamma.y(), c.gamma.z(), inv.energy, inv.area,
+                       std::sqrt(inv.gamma_norm2) - 1.0})
+        values.push_back(x);
+      values.push_back(inv.extra ? *inv.extra : std::numeric_limits<double>::quiet_NaN());
+      row(values);
+    }
+  }
 }
 
 void write_crossings_csv(const SectionJob& job, const std::vector<OrbitResult>& orbits) {

@@ -7,6 +7,8 @@
 // |gamma| - 1, extra_integral the case's fourth integral (empty without
 // one). Numbers are the shortest text that reads back as the same double,
 // so that the CSV read back (crossings_from_csv) gives the same crossings.
+#include <functional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -22,6 +24,15 @@ std::string crossings_csv_header(const SectionJob& job);
 // The header and a row per crossing. Orbits with a failure are left out: a
 // lost orbit is no result.
 std::string crossings_csv(const SectionJob& job, const std::vector<OrbitResult>& orbits);
+
+// The same crossings as numbers (an HDF5 file's datasets, Python's arrays):
+// the CSV's column names, and each row's values in that order. The method
+// column (several methods only) holds the method's index into job.methods
+// (0, 1, ...); extra_integral is NaN where the CSV's field is empty. Orbits
+// with a failure are left out, as from the CSV.
+std::vector<std::string> crossing_columns(const SectionJob& job);
+void for_each_crossing_row(const SectionJob& job, const std::vector<OrbitResult>& orbits,
+                           const std::function<void(std::span<const double>)>& row);
 
 // Writes crossings_csv to job.csv under a temporary name, then renames it.
 void write_crossings_csv(const SectionJob& job, const std::vector<OrbitResult>& orbits);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 
 #include "io/bad_input.hpp"
@@ -192,9 +193,12 @@ SectionRun section_run_of(long run, std::size_t starts) {
 }
 
 SectionJob read_section_job(const std::filesystem::path& file) {
+  return read_section_object(io::read_json_file(file), file.string());
+}
+
+SectionJob read_section_object(const nlohmann::json& doc, const std::string& name, bool needs_csv) {
   SectionJob job;
-  job.file = file.string();
-  const nlohmann::json doc = io::read_json_file(file);
+  job.file = name;
   job.hash = shard::checksum_of(io::json_text(doc));  // nlohmann::json keeps keys sorted
   io::ObjectReader r(doc, job.file);
   const auto case_name = r.choice("case", names_of_cases());
@@ -241,8 +245,8 @@ SectionJob read_section_job(const std::filesystem::path& file) {
   for (const char* key : {"png", "svg"})
     if (auto path = r.string(key)) (key[0] == 'p' ? job.png : job.svg) = *path;
   const auto csv = r.string("csv");
-  if (!csv || csv->empty()) r.fail("csv", "is required: the crossings' CSV file");
-  job.csv = *csv;
+  if (needs_csv && (!csv || csv->empty())) r.fail("csv", "is required: the crossings' CSV file");
+  if (csv) job.csv = *csv;
   r.finish();
   return job;
 }
@@ -267,10 +271,17 @@ std::vector<physics::InitialState> section_starts(const SectionJob& job) {
   if (job.level) {
     key = "level";
     starts = physics::level_states(job.body, *job.level, job.orbits).states;
+    // Close above the least energy only a small cap of directions carries
+    // states, which the grid over the sphere misses.
+    if (starts.empty())
+      starts = physics::level_states_about_minimum(job.body, *job.level, job.orbits).states;
     if (starts.empty()) {
       const double least = physics::minimum_energy(job.body, job.level->area).energy;
-      std::string what = "no state of this body lies on it; the least energy at this area is ";
-      what += std::to_string(least);
+      char what[160];
+      std::snprintf(what, sizeof what,
+                    "no state of this body lies on it; the least energy at this area is %.17g "
+                    "(the energy must be at least that)",
+                    least);
       throw io::BadInput(job.file + ": key 'level': " + what);
     }
   }

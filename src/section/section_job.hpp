@@ -75,6 +75,11 @@ std::string surface_value_range();
 
 // Throws io::BadInput.
 SectionJob read_section_job(const std::filesystem::path& file);
+// The same from a JSON object already read, `name` naming it in messages (the
+// file, or "epviz.section" for Python's dictionaries); without `needs_csv`
+// "csv" may be left out (the crossings are returned, not written).
+SectionJob read_section_object(const nlohmann::json& doc, const std::string& name,
+                               bool needs_csv = true);
 
 // Every output path given can be written (io/output_paths.hpp); throws
 // io::BadInput naming the key.

@@ -48,6 +48,9 @@ Words words_for(SettingsIn where) {
               "",
               "simulation.chart_switch true",
               "the initial state"};
+    case SettingsIn::python:
+      return {"tol", "step",           "t_end", "max_drift",         "method=\"",
+              "\"",  "formulation=\"", "\"",    "chart_switch=True", "the initial state"};
     case SettingsIn::panel: {
       const std::string in = " in the Integrator panel";
       return {"the tolerance" + in,

@@ -1,7 +1,8 @@
 #pragma once
 // What a user can do about a numerical failure, worded with the settings of
 // the front end in use: the options of `epviz simulate`, the keys of a render
-// job, or the controls of the interactive panel. numerics/ reports the kind of
+// job, the controls of the interactive panel, or the keywords of the Python
+// module's epviz.simulate. numerics/ reports the kind of
 // trouble and the fact; the remedy for each kind is chosen here, once for all
 // three, and only the names of the settings differ.
 #include <string>
@@ -16,6 +17,7 @@ enum class SettingsIn {
   command_line,  // epviz simulate: --tol, --step, --method, ...
   render_job,    // epviz render: the job file's simulation.tol, simulation.step, ...
   panel,         // epviz serve: the Integrator panel and the Case and body panel
+  python,        // the Python module: epviz.simulate(tol=..., step=..., ...)
 };
 
 // One complete sentence, lower-case first word, ending in a full stop, naming

@@ -37,6 +37,9 @@ struct MethodInfo {
   bool needs_direct;            // its sub-flows are exact only in the direct formulation
   std::string_view why_direct;  // what those sub-flows are (when needs_direct)
   std::string_view help;
+  // The family whose methods drift alike (explicit ones steadily, symplectic
+  // ones bounded): the bench's drift chart draws a panel for each.
+  std::string_view family;
 };
 
 inline constexpr std::array<FormulationInfo, 3> kFormulationTable{{
@@ -46,25 +49,31 @@ inline constexpr std::array<FormulationInfo, 3> kFormulationTable{{
     {Formulation::spinor, "spinor", 7, "pole-free spinor linearisation, also the body's attitude"},
 }};
 
+inline constexpr std::string_view kExplicit = "explicit Runge-Kutta";
+inline constexpr std::string_view kGauss = "implicit Gauss-Legendre (symplectic)";
+inline constexpr std::string_view kSplittings = "splittings";
+
 inline constexpr std::array<MethodInfo, 9> kMethodTable{{
-    {Method::rk4, "rk4", 4, false, false, "", "classical Runge-Kutta, fixed step"},
-    {Method::dopri5, "dopri5", 5, true, false, "", "Dormand-Prince 5(4), adaptive, dense output"},
-    {Method::dop853, "dop853", 8, true, false, "", "Hairer's DOP853, adaptive, dense output"},
+    {Method::rk4, "rk4", 4, false, false, "", "classical Runge-Kutta, fixed step", kExplicit},
+    {Method::dopri5, "dopri5", 5, true, false, "", "Dormand-Prince 5(4), adaptive, dense output",
+     kExplicit},
+    {Method::dop853, "dop853", 8, true, false, "", "Hairer's DOP853, adaptive, dense output",
+     kExplicit},
     {Method::midpoint, "midpoint", 2, false, false, "",
-     "implicit midpoint (Gauss 1), fixed step, symplectic"},
+     "implicit midpoint (Gauss 1), fixed step, symplectic", kGauss},
     {Method::gauss4, "gauss4", 4, false, false, "",
-     "Gauss-Legendre 2 stages, fixed step, symplectic"},
+     "Gauss-Legendre 2 stages, fixed step, symplectic", kGauss},
     {Method::gauss6, "gauss6", 6, false, false, "",
-     "Gauss-Legendre 3 stages, fixed step, symplectic"},
+     "Gauss-Legendre 3 stages, fixed step, symplectic", kGauss},
     {Method::splitting, "splitting", 2, false, true,
      "its sub-flows are exact rotations of (I Omega, gamma)",
-     "axis-by-axis Lie-Poisson splitting (Strang), fixed step"},
+     "axis-by-axis Lie-Poisson splitting (Strang), fixed step", kSplittings},
     {Method::exact_split2, "exact-split2", 2, false, true,
      "its sub-flows are the gravity kick and the exact free rigid body flow of (Omega, gamma)",
-     "gravity kick + exact free rigid body flow, Strang composition"},
+     "gravity kick + exact free rigid body flow, Strang composition", kSplittings},
     {Method::exact_split4, "exact-split4", 4, false, true,
      "its sub-flows are the gravity kick and the exact free rigid body flow of (Omega, gamma)",
-     "gravity kick + exact free rigid body flow, Suzuki 4th-order composition"},
+     "gravity kick + exact free rigid body flow, Suzuki 4th-order composition", kSplittings},
 }};
 
 // The table's row for a method or formulation (the tables are in enum order).

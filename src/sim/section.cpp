@@ -6,16 +6,11 @@
 #include <stdexcept>
 #include <utility>
 
-#include "numerics/composition.hpp"
-#include "numerics/embedded_rk.hpp"
-#include "numerics/gauss_legendre.hpp"
-#include "numerics/rk4.hpp"
-#include "numerics/splitting.hpp"
 #include "physics/direct.hpp"
-#include "physics/direct_batch.hpp"
-#include "physics/free_rigid_body_flow.hpp"
 #include "physics/notation.hpp"
 #include "sim/drift.hpp"
+#include "sim/ensemble.hpp"
+#include "sim/steppers.hpp"
 
 namespace epviz::sim {
 namespace {
@@ -163,6 +158,35 @@ std::pair<double, State> locate(DenseOutput& dense, double t0, double g0, double
   return {t, dense.state(t)};
 }
 
+// The turning point of the section function inside a step whose ends see it
+// move towards the surface and then away from it (r0 = g'(t0) and r1 =
+// g'(t1) of opposite signs): the root of g' along the step's dense output, by
+// the same Illinois iteration on the rate g' = f(x)_c of the dense state.
+template <class Rate>
+double turning_point(DenseOutput& dense, const Rate& rate, double t0, double r0, double t1,
+                     double r1) {
+  double t = 0.5 * (t0 + t1);
+  int kept_side = 0;
+  for (int i = 0; i < 100; ++i) {
+    t = (t0 * r1 - t1 * r0) / (r1 - r0);
+    if (!(t > t0 && t < t1)) t = 0.5 * (t0 + t1);
+    const double r = rate(dense.state(t));
+    if (r == 0.0 || std::nextafter(t0, t1) >= t1 || (t1 - t0) <= 1e-14 * std::abs(t1)) break;
+    if ((r < 0.0) == (r0 < 0.0)) {
+      t0 = t;
+      r0 = r;
+      if (kept_side == 1) r1 *= 0.5;
+      kept_side = 1;
+    } else {
+      t1 = t;
+      r1 = r;
+      if (kept_side == -1) r0 *= 0.5;
+      kept_side = -1;
+    }
+  }
+  return t;
+}
+
 // One orbit's section, shown its steps in turn by either integration path
 // (the scalar stepper here, the batch's step hook below), so that both find
 // the same crossings from the same steps. The drift limit is checked on what
@@ -172,13 +196,55 @@ class OrbitSection {
  public:
   OrbitSection(const RunSpec& run, const SectionSurface& surface, int max_crossings)
       : surface_(surface),
+        equations_(run.body),
         check_(run.body, run.initial, run.max_drift),
         method_(name(run.method)),
         t_end_(run.t_end),
         max_crossings_(max_crossings) {}
 
   double level(const State& x) const { return level_of(surface_, x); }
+  // The rate of the section function at x: its component of the direct
+  // equations' right-hand side.
+  double rate(const State& x) const {
+    State dx;
+    equations_.rhs(0.0, x, dx);
+    return dx[Eigen::Index(surface_.function)];
+  }
   bool crosses(double g0, double g1) const { return sim::crosses(surface_.direction, g0, g1); }
+  // A step whose ends lie on one side of the surface, the first moving
+  // towards it and the second away: the section function turns inside the
+  // step and may pass through the surface and back within it (a grazing
+  // passage, which a sign test of the ends alone loses).
+  bool turns_towards(double g0, double g1, const State& x0, const State& x1) const {
+    if (g0 == 0.0 || (g0 < 0.0) != (g1 < 0.0)) return false;
+    const double r0 = rate(x0), r1 = rate(x1);
+    return (r0 < 0.0) == (g0 > 0.0) && r0 != 0.0 && (r1 > 0.0) == (g1 > 0.0) && r1 != 0.0;
+  }
+  // Whether the step from x0 to x1 may hold a crossing: the dense output is
+  // needed for it.
+  bool may_cross(const State& x0, const State& x1) const {
+    const double g0 = level(x0), g1 = level(x1);
+    return crosses(g0, g1) || turns_towards(g0, g1, x0, x1);
+  }
+
+  // Every crossing in the step from (t0, x0) to (t1, x1), located on its
+  // dense output, checked and kept in order; the first failure, if any.
+  std::optional<numerics::Failure> scan(double t0, const State& x0, double t1, const State& x1,
+                                        DenseOutput& dense) {
+    const double g0 = level(x0), g1 = level(x1);
+    if (crosses(g0, g1)) return take(t0, g0, t1, g1, x1, dense);
+    if (!turns_towards(g0, g1, x0, x1)) return std::nullopt;
+    const double tm = turning_point(
+        dense, [this](const State& x) { return rate(x); }, t0, rate(x0), t1, rate(x1));
+    const State xm = dense.state(tm);
+    const double gm = level(xm);
+    if ((gm < 0.0) == (g0 < 0.0) && gm != 0.0) return std::nullopt;  // turned short of it
+    // Through the surface to the turning point, and back.
+    if (crosses(g0, gm))
+      if (auto failure = take(t0, g0, tm, gm, xm, dense)) return failure;
+    if (!done() && gm != 0.0 && crosses(gm, g1)) return take(tm, gm, t1, g1, x1, dense);
+    return std::nullopt;
+  }
   // Enough crossings, or one past t_end: the orbit goes no further.
   bool done() const { return done_ || int(found_.size()) >= max_crossings_; }
 
@@ -209,6 +275,7 @@ class OrbitSection {
 
  private:
   SectionSurface surface_;
+  physics::DirectSystem equations_;
   MotionCheck check_;
   std::string method_;
   double t_end_;
@@ -226,14 +293,13 @@ std::vector<Crossing> run_section(Stepper stepper, const RunSpec& run,
   };
   StepperDense<Stepper> dense(stepper, surface);
   stepper.init(0.0, physics::DirectSystem::pack(run.initial));
-  double g_prev = section.level(stepper.state());
+  State x_prev = stepper.state();
   while (!section.done() && stepper.t() < run.t_end) {
     const double t0 = stepper.t();
     stepper.step();
-    const double g1 = section.level(stepper.state());
-    if (section.crosses(g_prev, g1))
-      fail_on(section.take(t0, g_prev, stepper.t(), g1, stepper.state(), dense));
-    g_prev = g1;
+    if (section.may_cross(x_prev, stepper.state()))
+      fail_on(section.scan(t0, x_prev, stepper.t(), stepper.state(), dense));
+    x_prev = stepper.state();
   }
   fail_on(section.motion_failure(stepper.t(), stepper.state()));
   return std::move(section.crossings());
@@ -267,26 +333,24 @@ class LaneDense final : public DenseOutput {
 
 // The step hook that shows every orbit's steps to its OrbitSection (sections
 // indexed by the task's id), as run_section's loop does: the dense output is
-// asked for where a step holds a crossing, and at the last step, whose end
-// is checked. The sign test of every step is made on the lane's numbers
-// (OrbitSection::level's arithmetic on the same values), without touching
-// the orbit's section.
+// asked for where a step may hold a crossing (OrbitSection::may_cross on the
+// lane's numbers, the scalar loop's test on the same values; it changes
+// nothing of the orbit's section), and at the last step, whose end is checked.
 numerics::BatchStepHook<6> section_hook(std::vector<OrbitSection>& sections,
                                         const std::vector<RunSpec>& runs,
                                         const SectionSurface& surface) {
   numerics::BatchStepHook<6> hook;
-  hook.wants_dense = [&surface, t_end = runs.front().t_end](const numerics::BatchStep<6>& step) {
-    return crosses(surface.direction, level_of(surface, step.x_prev), level_of(surface, step.x)) ||
+  hook.wants_dense = [&sections, t_end = runs.front().t_end](const numerics::BatchStep<6>& step) {
+    return sections[std::size_t(step.id)].may_cross(state_of(step.x_prev), state_of(step.x)) ||
            step.t >= t_end;
   };
   hook.look = [&](const numerics::BatchStep<6>& step, const numerics::BatchDense<6>& dense) {
     OrbitSection& section = sections[std::size_t(step.id)];
-    const State x1 = state_of(step.x);
-    const double g0 = section.level(state_of(step.x_prev)), g1 = section.level(x1);
+    const State x0 = state_of(step.x_prev), x1 = state_of(step.x);
     numerics::BatchStepVerdict verdict;
-    if (section.crosses(g0, g1)) {
+    if (section.may_cross(x0, x1)) {
       LaneDense at(dense, surface);
-      verdict.failure = section.take(step.t_prev, g0, step.t, g1, x1, at);
+      verdict.failure = section.scan(step.t_prev, x0, step.t, x1, at);
       if (verdict.failure) return verdict;
     }
     if (section.done() || step.t >= runs.front().t_end) {
@@ -337,38 +401,16 @@ std::optional<CrossingDirection> crossing_direction_from_name(std::string_view s
 
 std::vector<Crossing> section_crossings(const RunSpec& run, const SectionSurface& surface,
                                         int max_crossings) {
-  using physics::DirectSystem;
-  using physics::ExactSplitSystem;
-  numerics::AdaptiveOptions opts;
-  opts.rtol = run.tol;
-  opts.atol = run.tol;
-  opts.max_steps = run.max_steps;
-  const DirectSystem sys(run.body);
-  auto fixed = [&](auto stepper) {
-    return run_section(FixedSteps<decltype(stepper)>(std::move(stepper), run.step, run.body), run,
-                       surface, max_crossings);
-  };
-  switch (run.method) {
-    case Method::dopri5:
-      return run_section(numerics::Dopri5<DirectSystem>(sys, opts), run, surface, max_crossings);
-    case Method::dop853:
-      return run_section(numerics::Dop853<DirectSystem>(sys, opts), run, surface, max_crossings);
-    case Method::rk4: return fixed(numerics::Rk4<DirectSystem>(sys));
-    case Method::midpoint: return fixed(numerics::ImplicitMidpoint<DirectSystem>(sys));
-    case Method::gauss4: return fixed(numerics::Gauss4<DirectSystem>(sys));
-    case Method::gauss6: return fixed(numerics::Gauss6<DirectSystem>(sys));
-    case Method::splitting: return fixed(numerics::StrangSplitting<DirectSystem>(sys));
-    case Method::exact_split2:
-      return fixed(
-          numerics::Composition2<ExactSplitSystem>(ExactSplitSystem(run.body), "exact-split2"));
-    case Method::exact_split4:
-      return fixed(
-          numerics::Composition4<ExactSplitSystem>(ExactSplitSystem(run.body), "exact-split4"));
-  }
-  throw std::invalid_argument("unknown method");
+  return with_stepper(physics::DirectSystem(run.body), run, [&](auto stepper) {
+    if constexpr (AdaptiveStepper<decltype(stepper)>)
+      return run_section(std::move(stepper), run, surface, max_crossings);
+    else
+      return run_section(FixedSteps<decltype(stepper)>(std::move(stepper), run.step, run.body), run,
+                         surface, max_crossings);
+  });
 }
 
-bool sections_batched(const RunSpec& run) { return run.method == Method::dop853; }
+bool sections_batched(const RunSpec& run) { return batchable(run); }
 
 std::vector<OrbitCrossings> section_crossings_batched(const std::vector<RunSpec>& runs,
                                                       const SectionSurface& surface,
@@ -377,28 +419,21 @@ std::vector<OrbitCrossings> section_crossings_batched(const std::vector<RunSpec>
   if (runs.empty()) return out;
   const RunSpec& first = runs.front();
   std::vector<OrbitSection> sections;
-  std::vector<physics::DirectBatchTask> tasks;
+  std::vector<sim::DirectBatchTask> tasks;
   sections.reserve(runs.size());
   tasks.reserve(runs.size());
   for (const RunSpec& run : runs) {
-    if (!sections_batched(run) || run.tol != first.tol || run.max_steps != first.max_steps ||
-        run.t_end != first.t_end || run.body.inertia != first.body.inertia ||
-        run.body.com != first.body.com || run.body.weight != first.body.weight)
+    if (!sections_batched(run) || !share_a_batch(run, first) || run.t_end != first.t_end)
       throw std::invalid_argument(
           "section_crossings_batched: every run dop853 with one body, tolerance, step budget and "
           "t_end");
     sections.emplace_back(run, surface, max_crossings);
-    tasks.push_back(physics::direct_batch_task(run.initial, run.t_end));
+    tasks.push_back(sim::direct_batch_task(run.initial, run.t_end));
     tasks.back().id = long(tasks.size()) - 1;
   }
-  // section_crossings's dop853 options.
-  physics::DirectBatchSettings settings;
-  settings.method = physics::BatchMethod::dop853;
-  settings.adaptive.rtol = first.tol;
-  settings.adaptive.atol = first.tol;
-  settings.adaptive.max_steps = first.max_steps;
+  sim::DirectBatchSettings settings = dop853_batch_settings(first);
   settings.step_hook = section_hook(sections, runs, surface);
-  auto results = physics::integrate_direct_batch_parallel(first.body, tasks, settings, threads);
+  auto results = sim::integrate_direct_batch_parallel(first.body, tasks, settings, threads);
   for (std::size_t i = 0; i < runs.size(); ++i) {
     out[i].failure = std::move(results[i].failure);
     if (!out[i].failure) out[i].crossings = std::move(sections[i].crossings());

@@ -70,7 +70,7 @@ struct OrbitCrossings {
 };
 
 // section_crossings of every run, integrated side by side by the batch
-// integrator (physics/direct_batch.hpp, on the path EPVIZ_SIMD or the CPU
+// integrator (sim/ensemble.hpp, on the path EPVIZ_SIMD or the CPU
 // chooses) on `threads` threads: each orbit a lane, every step of it shown to
 // the same crossing search, which locates a crossing on the lane's dense
 // output, bitwise the scalar stepper's. So the crossings and failures are

@@ -40,13 +40,14 @@ struct RunResult {
 // Throws std::invalid_argument for a spec that cannot run (incompatible method).
 RunResult simulate(const RunSpec& spec);
 
-// The same run, handing each sample to `sink` as it is produced instead of
-// keeping it, so that memory does not grow with spec.samples (result.samples
-// stays empty). cpu_seconds counts the integration only, not the sink.
-// Exceptions from the sink propagate.
+// The same run, handing each sample to `sink` instead of keeping it, so that
+// memory does not grow with spec.samples (result.samples stays empty).
 // `on_step`, when given, receives the state at the end of every accepted step
 // (Trajectory::observe_steps), those before an output time ahead of that
-// sample; it is called outside the timed integration, like the sink.
+// sample. Both are called in order, in bursts of at most a few thousand
+// events or a tenth of a second, with the clock stopped: memory does not grow
+// with the steps between two samples either, and cpu_seconds counts the
+// integration only. Exceptions from either propagate.
 using SampleSink = std::function<void(const Sample&)>;
 RunResult simulate(const RunSpec& spec, const SampleSink& sink, const SampleSink& on_step = {});
 

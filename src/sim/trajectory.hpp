@@ -45,9 +45,10 @@ class Trajectory {
 
  protected:
   explicit Trajectory(double spacing) : spacing_(spacing) {}
-  void notify_step(const Sample& s) const {
-    if (step_observer_) step_observer_(s);
-  }
+  // Whether anyone observes the steps: a step's sample is made only then
+  // (for the spinor formulation it costs an attitude).
+  bool observing_steps() const { return bool(step_observer_); }
+  void notify_step(const Sample& s) const { step_observer_(s); }
   double spacing_;
   StepObserver step_observer_;
 };

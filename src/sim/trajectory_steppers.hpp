@@ -1,7 +1,6 @@
 #pragma once
 // Inside sim/: the two ways a stepper becomes a Trajectory (fixed steps that
-// land on the output times, or adaptive steps with dense output), and the
-// choice of stepper for one system. Each formulation instantiates these in its
+// land on the output times, or adaptive steps with dense output). Each formulation instantiates these in its
 // own file (see trajectory_start.hpp).
 #include <algorithm>
 #include <cmath>
@@ -10,10 +9,7 @@
 #include <type_traits>
 #include <utility>
 
-#include "numerics/embedded_rk.hpp"
-#include "numerics/gauss_legendre.hpp"
-#include "numerics/rk4.hpp"
-#include "numerics/splitting.hpp"
+#include "sim/steppers.hpp"
 #include "sim/trajectory.hpp"
 #include "sim/trajectory_start.hpp"
 
@@ -93,7 +89,7 @@ class FixedStepTrajectory final : public Trajectory {
       stepper_.step(x1_, t0, h_);
     }
     ++n_;
-    notify_step(make_sample(stepper_.system(), t1(), x1_));
+    if (observing_steps()) notify_step(make_sample(stepper_.system(), t1(), x1_));
   }
 
   State hermite(double t) {
@@ -137,7 +133,8 @@ class AdaptiveTrajectory final : public Trajectory {
     const double t = double(++k_) * spacing_;
     while (stepper_.t() < t) {
       stepper_.step();
-      notify_step(make_sample(stepper_.system(), stepper_.t(), stepper_.state()));
+      if (observing_steps())
+        notify_step(make_sample(stepper_.system(), stepper_.t(), stepper_.state()));
     }
     // The system's chart is the one the last step ran in, so the dense state
     // and the chart agree.
@@ -161,29 +158,15 @@ std::unique_ptr<Trajectory> adaptive(Stepper s, const RunSpec& spec) {
   return std::make_unique<AdaptiveTrajectory<Stepper>>(std::move(s), spec);
 }
 
-// The methods that integrate `sys` itself. The exact splittings integrate a
-// differently split system and are started by start_direct.
+// The trajectory of spec.method for `sys` (sim/steppers.hpp builds the stepper).
 template <class Sys>
 std::unique_ptr<Trajectory> start_with(Sys sys, const RunSpec& spec) {
-  numerics::AdaptiveOptions opts;
-  opts.rtol = spec.tol;
-  opts.atol = spec.tol;
-  opts.max_steps = spec.max_steps;
-  switch (spec.method) {
-    case Method::rk4: return fixed(numerics::Rk4<Sys>(sys), spec);
-    case Method::dopri5: return adaptive(numerics::Dopri5<Sys>(sys, opts), spec);
-    case Method::dop853: return adaptive(numerics::Dop853<Sys>(sys, opts), spec);
-    case Method::midpoint: return fixed(numerics::ImplicitMidpoint<Sys>(sys), spec);
-    case Method::gauss4: return fixed(numerics::Gauss4<Sys>(sys), spec);
-    case Method::gauss6: return fixed(numerics::Gauss6<Sys>(sys), spec);
-    case Method::splitting:
-      if constexpr (requires { Sys::n_flows; })
-        return fixed(numerics::StrangSplitting<Sys>(sys), spec);
-      break;
-    case Method::exact_split2:
-    case Method::exact_split4: break;
-  }
-  throw std::invalid_argument(*incompatibility(spec.method, spec.formulation));
+  return with_stepper(std::move(sys), spec, [&spec](auto stepper) -> std::unique_ptr<Trajectory> {
+    if constexpr (AdaptiveStepper<decltype(stepper)>)
+      return adaptive(std::move(stepper), spec);
+    else
+      return fixed(std::move(stepper), spec);
+  });
 }
 
 }  // namespace epviz::sim::detail

@@ -119,20 +119,7 @@ ChartSpec chart_of(std::string title, std::string x_label, std::string y_label, 
 // The families the drift chart has a panel for, in the order drawn: methods
 // of a family drift alike (explicit ones steadily, symplectic ones bounded),
 // so that a panel shows a few lines that differ by their settings.
-std::string_view method_family(sim::Method m) {
-  switch (m) {
-    case sim::Method::rk4:
-    case sim::Method::dopri5:
-    case sim::Method::dop853: return "explicit Runge-Kutta";
-    case sim::Method::midpoint:
-    case sim::Method::gauss4:
-    case sim::Method::gauss6: return "implicit Gauss-Legendre (symplectic)";
-    case sim::Method::splitting:
-    case sim::Method::exact_split2:
-    case sim::Method::exact_split4: return "splittings";
-  }
-  return "other";
-}
+std::string_view method_family(sim::Method m) { return sim::info(m).family; }
 
 std::string_view method_family(const std::string& method) {
   const auto m = sim::method_from_name(method);

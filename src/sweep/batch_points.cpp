@@ -6,33 +6,23 @@
 #include <functional>
 #include <stdexcept>
 
-#include "physics/direct_batch.hpp"
 #include "sim/drift.hpp"
+#include "sim/ensemble.hpp"
+#include "sim/run_options.hpp"
 
 namespace epviz::sweep {
 namespace {
 
-// The batch settings of sim's dop853 trajectory (sim/trajectory_steppers.hpp,
-// start_with): the run's tolerance as rtol and atol, its step budget.
-physics::DirectBatchSettings batch_settings(const sim::RunSpec& run) {
-  physics::DirectBatchSettings s;
-  s.method = physics::BatchMethod::dop853;
-  s.adaptive.rtol = run.tol;
-  s.adaptive.atol = run.tol;
-  s.adaptive.max_steps = run.max_steps;
-  return s;
-}
-
 // The task of sim::simulate's run: output times k * (t_end / samples) for
 // k = 1 .. samples, and no stepping past the last (AdaptiveTrajectory steps
 // while t < the output time, then reads the dense output).
-physics::DirectBatchTask task_of(const sim::RunSpec& run, long id) {
+sim::DirectBatchTask task_of(const sim::RunSpec& run, long id) {
   const double spacing = run.t_end / run.samples;
   std::vector<double> out;
   out.reserve(std::size_t(run.samples));
   for (int k = 1; k <= run.samples; ++k) out.push_back(double(k) * spacing);
   const double t_end = out.back();
-  physics::DirectBatchTask task = physics::direct_batch_task(run.initial, t_end, std::move(out));
+  sim::DirectBatchTask task = sim::direct_batch_task(run.initial, t_end, std::move(out));
   task.id = id;
   return task;
 }
@@ -47,23 +37,23 @@ sim::Sample sample_of(double t, const std::array<double, 6>& x) {
 
 // Runs `tasks` (ids 0, 1, ... into `runs`) with every output passing the
 // motion check of its run, as sim::Trajectory's outputs do.
-std::vector<physics::DirectBatchResult> integrate(
-    const std::vector<sim::RunSpec>& runs, const std::vector<physics::DirectBatchTask>& tasks,
-    numerics::BatchEvents<6> events = {}) {
+std::vector<sim::DirectBatchResult> integrate(const std::vector<sim::RunSpec>& runs,
+                                              const std::vector<sim::DirectBatchTask>& tasks,
+                                              numerics::BatchEvents<6> events = {}) {
   std::vector<sim::MotionCheck> checks;
   checks.reserve(runs.size());
   for (const auto& run : runs) checks.emplace_back(run.body, run.initial, run.max_drift);
   const std::string method(sim::name(sim::Method::dop853));
-  physics::DirectBatchSettings settings = batch_settings(runs.front());
+  sim::DirectBatchSettings settings = sim::dop853_batch_settings(runs.front());
   settings.check = [&](long id, double t, const std::array<double, 6>& x) {
     return checks[std::size_t(id)].failure(sample_of(t, x), method);
   };
   settings.events = std::move(events);
-  return physics::integrate_direct_batch(runs.front().body, tasks, settings);
+  return sim::integrate_direct_batch(runs.front().body, tasks, settings);
 }
 
 // sim::simulate's result of the run whose batch result is `r`.
-sim::RunResult run_result(const physics::DirectBatchTask& task, physics::DirectBatchResult r) {
+sim::RunResult run_result(const sim::DirectBatchTask& task, sim::DirectBatchResult r) {
   sim::RunResult out;
   out.samples.reserve(r.outputs.size() + 1);
   out.samples.push_back(sample_of(0.0, task.x0));
@@ -85,7 +75,7 @@ std::vector<FtleResult> exponents(const std::vector<const PreparedPoint*>& point
   windows.reserve(points.size());
   for (const auto* p : points) windows.emplace_back(p->run, settings);
   std::vector<sim::RunSpec> runs;
-  std::vector<physics::DirectBatchTask> tasks;
+  std::vector<sim::DirectBatchTask> tasks;
   std::vector<std::size_t> owner;
   for (;;) {
     runs.clear();
@@ -123,8 +113,7 @@ std::vector<FtleResult> exponents(const std::vector<const PreparedPoint*>& point
 bool runs_batched(const sim::RunSpec& run) {
   // The checks sim::Trajectory::start makes are left to it: a run it would
   // refuse takes the scalar path and is refused there, as before.
-  return run.formulation == sim::Formulation::direct && run.method == sim::Method::dop853 &&
-         run.t_end > 0.0 && std::isfinite(run.t_end) && run.samples >= 1 &&
+  return sim::batchable(run) && run.t_end > 0.0 && std::isfinite(run.t_end) && run.samples >= 1 &&
          run.samples <= kKeptSamples && run.max_drift > 0.0;
 }
 
@@ -140,7 +129,7 @@ std::string batch_key(const sim::RunSpec& run) {
     put(run.body.com[i]);
   }
   put(run.body.weight);
-  put(run.tol);
+  put(sim::adaptive_tol(run));
   put(double(run.max_steps));
   return key;
 }
@@ -149,19 +138,18 @@ void run_batched(const std::vector<const PreparedPoint*>& points, const std::str
                  bool reference, const std::optional<FtleSettings>& ftle, ReferenceCache* cache,
                  const std::function<void(const PointRow&)>& emit) {
   if (points.empty()) return;
-  const std::string key = batch_key(points.front()->run);
   for (const auto* p : points)
-    if (!runs_batched(p->run) || batch_key(p->run) != key)
+    if (!runs_batched(p->run) || !sim::share_a_batch(p->run, points.front()->run))
       throw std::logic_error("run_batched: a point the batch cannot take, or of another batch");
   std::vector<sim::RunSpec> runs;
-  std::vector<physics::DirectBatchTask> tasks;
+  std::vector<sim::DirectBatchTask> tasks;
   runs.reserve(points.size());
   tasks.reserve(points.size());
   for (const auto* p : points) {
     runs.push_back(p->run);
     tasks.push_back(task_of(p->run, long(tasks.size())));
   }
-  const auto row = [&](std::size_t i, physics::DirectBatchResult r, double cpu,
+  const auto row = [&](std::size_t i, sim::DirectBatchResult r, double cpu,
                        const std::optional<FtleResult>& exponent) {
     sim::RunResult result = run_result(tasks[i], std::move(r));
     result.cpu_seconds = cpu;
@@ -172,12 +160,12 @@ void run_batched(const std::vector<const PreparedPoint*>& points, const std::str
   // A run's CPU time: the thread's from its start to its end, shared with
   // the lanes beside it.
   const double lanes = double(std::min<std::size_t>(
-      points.size(), std::size_t(physics::default_batch_width(numerics::chosen_simd_path()))));
+      points.size(), std::size_t(sim::default_batch_width(numerics::chosen_simd_path()))));
   std::vector<double> started(points.size()), cpu(points.size());
-  std::vector<physics::DirectBatchResult> waiting;  // for their exponents
+  std::vector<sim::DirectBatchResult> waiting;  // for their exponents
   numerics::BatchEvents<6> events;
   events.started = [&](long id) { started[std::size_t(id)] = sim::thread_cpu_seconds(); };
-  events.ended = [&](long id, const physics::DirectBatchResult& r) {
+  events.ended = [&](long id, const sim::DirectBatchResult& r) {
     const auto i = std::size_t(id);
     cpu[i] = (sim::thread_cpu_seconds() - started[i]) / lanes;
     if (!ftle) emit(row(i, r, cpu[i], std::nullopt));  // its row now, as the scalar path's

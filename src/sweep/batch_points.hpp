@@ -1,6 +1,6 @@
 #pragma once
 // Sweep points integrated side by side by the batch integrator
-// (physics/direct_batch.hpp, docs/ensembles.md), several to the vector
+// (sim/ensemble.hpp, docs/ensembles.md), several to the vector
 // registers of one core, with the very rows run_point gives them: the batch
 // lane is the scalar DOP853 of sim::simulate, bit for bit, and the row is
 // made by the same code (point_row) from the same numbers.

@@ -16,7 +16,8 @@ namespace {
 // boundary only a small cap of directions carries a state, which a grid of
 // `orbits` directions may miss: the grid is refined fourfold until `orbits`
 // directions carry one (at most 256 x `orbits` directions), and `orbits` of
-// those, evenly spaced along the spiral, are kept.
+// those, evenly spaced along the spiral, are kept; when even the finest grid
+// meets none, the states of physics::level_states_about_minimum.
 std::vector<physics::InitialState> spread_states(const physics::Body& body,
                                                  const physics::Level& level, int orbits) {
   std::vector<physics::InitialState> all;
@@ -24,6 +25,8 @@ std::vector<physics::InitialState> spread_states(const physics::Body& body,
     all = physics::level_states(body, level, n).states;
     if (int(all.size()) >= orbits || n >= 256 * orbits) break;
   }
+  // Closer still to the least energy, the caps about the minimiser.
+  if (all.empty()) all = physics::level_states_about_minimum(body, level, orbits).states;
   if (int(all.size()) <= orbits) return all;
   std::vector<physics::InitialState> kept;
   for (int i = 0; i < orbits; ++i)

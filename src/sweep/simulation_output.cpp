@@ -1,6 +1,7 @@
 #include "sweep/simulation_output.hpp"
 
 #include <cstdio>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "io/json_line.hpp"
@@ -18,37 +19,20 @@ void put(std::string& out, double x) {
   out += buf;
 }
 
-constexpr const char* kCsvHeader =
-    "t,omega1,omega2,omega3,gamma1,gamma2,gamma3,a,b,energy,area,gamma_norm_error,"
-    "extra_integral\n";
+// The header line: the column names, as the HDF5 datasets and Python's arrays are named.
+std::string csv_header() {
+  std::string header;
+  for (const auto& name : sample_column_names()) header += (header.empty() ? "" : ",") + name;
+  return header + "\n";
+}
 
-void append_row(std::string& out, const sim::InvariantMonitor& monitor, const sim::Sample& s) {
-  put(out, s.t);
-  for (int i = 0; i < 3; ++i) {
-    out += ',';
-    put(out, s.omega[i]);
+// Columns a (7), b (8) and extra_integral (12) may be absent: empty fields.
+void append_row(std::string& out, const SampleColumns::Row& row) {
+  for (std::size_t i = 0; i < kSampleColumns; ++i) {
+    if (i > 0) out += ',';
+    const bool absent = ((i == 7 || i == 8) && !row.has_ab) || (i == 12 && !row.has_extra);
+    if (!absent) put(out, row.values[i]);
   }
-  for (int i = 0; i < 3; ++i) {
-    out += ',';
-    put(out, s.gamma[i]);
-  }
-  if (auto ab = physics::stereographic(s.gamma)) {
-    out += ',';
-    put(out, (*ab)[0]);
-    out += ',';
-    put(out, (*ab)[1]);
-  } else {
-    out += ",,";
-  }
-  const auto inv = monitor.at(s);
-  out += ',';
-  put(out, inv.energy);
-  out += ',';
-  put(out, inv.area);
-  out += ',';
-  put(out, s.gamma.norm() - 1.0);
-  out += ',';
-  if (inv.extra) put(out, *inv.extra);
   out += '\n';
 }
 
@@ -56,13 +40,47 @@ constexpr std::size_t kChunk = 64 * 1024;
 
 }  // namespace
 
+const std::array<std::string, kSampleColumns>& sample_column_names() {
+  static const std::array<std::string, kSampleColumns> names{
+      "t", "omega1", "omega2", "omega3", "gamma1",           "gamma2",        "gamma3",
+      "a", "b",      "energy", "area",   "gamma_norm_error", "extra_integral"};
+  return names;
+}
+
+SampleColumns::SampleColumns(const sim::RunSpec& spec)
+    : monitor_(spec.body, spec.case_id, spec.initial) {}
+
+SampleColumns::Row SampleColumns::row(const sim::Sample& s) const {
+  Row r;
+  r.values.fill(std::numeric_limits<double>::quiet_NaN());
+  r.values[0] = s.t;
+  for (int i = 0; i < 3; ++i) {
+    r.values[std::size_t(1 + i)] = s.omega[i];
+    r.values[std::size_t(4 + i)] = s.gamma[i];
+  }
+  if (auto ab = physics::stereographic(s.gamma)) {
+    r.has_ab = true;
+    r.values[7] = (*ab)[0];
+    r.values[8] = (*ab)[1];
+  }
+  const auto inv = monitor_.at(s);
+  r.values[9] = inv.energy;
+  r.values[10] = inv.area;
+  r.values[11] = s.gamma.norm() - 1.0;
+  if (inv.extra) {
+    r.has_extra = true;
+    r.values[12] = *inv.extra;
+  }
+  return r;
+}
+
 SamplesCsvWriter::SamplesCsvWriter(const sim::RunSpec& spec, io::AtomicFile& file)
-    : monitor_(spec.body, spec.case_id, spec.initial), file_(file), buffer_(kCsvHeader) {
+    : columns_(spec), file_(file), buffer_(csv_header()) {
   buffer_.reserve(kChunk + 1024);
 }
 
 void SamplesCsvWriter::add(const sim::Sample& s) {
-  append_row(buffer_, monitor_, s);
+  append_row(buffer_, columns_.row(s));
   if (buffer_.size() >= kChunk) flush();
 }
 

@@ -16,7 +16,9 @@ dpkg-deb -x into a scratch root and checks, with the source tree hidden
   - the copyright file and LICENSE state one licence;
   - the shipped jobs are installed, `render --list-jobs` lists them from the
     installed share/epviz (and, from a build tree, from the sources), and a
-    name from that list renders.
+    name from that list renders;
+  - the Python module, where it was built, is installed, imports, simulates
+    and draws from the package alone, and what its extension links is in Depends.
 Exit 0 when all hold, 1 with one line per problem otherwise.
 """
 import glob
@@ -180,6 +182,37 @@ try:
                                     "does not name alone")
         if fonts == 0:
             problems.append(f"{gl}: no font opened: is the test looking at the render?")
+
+    # The Python module, where it was built: `import epviz` works from the
+    # package alone (the sources hidden), and what its extension links is
+    # named by Depends, as for the binary.
+    module = os.path.join(root, "usr", "lib", "python3", "dist-packages", "epviz")
+    if os.path.isdir(os.path.join(build, "python", "epviz")) and not os.path.isdir(module):
+        problems.append("the Python module was built but the package does not install it")
+    if os.path.isdir(module):
+        names = {a for g in depends for a in g}
+        for package in ("python3", "python3-numpy"):
+            if package not in names:
+                problems.append(f"installs the Python module without {package} in Depends")
+        for extension in glob.glob(os.path.join(module, "_epviz*.so")):
+            linked = re.findall(r"NEEDED\s+(\S+)", must(["objdump", "-p", extension]))
+            resolved = dict(re.findall(r"^\s*(\S+) => (\S+)", must(["ldd", extension]), re.M))
+            for soname, package in owners([resolved.get(n, n) for n in linked]).items():
+                if package not in required:
+                    problems.append(f"the Python module links {soname} of {package}, which "
+                                    "Depends does not name alone")
+        py_env = {**env, "PYTHONPATH": os.path.dirname(module), "PYTHONDONTWRITEBYTECODE": "1",
+                  "EPVIZ_DATA_DIR": data}
+        script = ("import epviz\n"
+                  "assert epviz.__file__.startswith(%r), epviz.__file__\n"
+                  "r = epviz.simulate(case='euler', t_end=1, samples=4)\n"
+                  "assert r['t'].shape == (5,) and r.report['steps'] > 0\n"
+                  "image = epviz.render_frame('kovalevskaya', width=64, height=48, gl='osmesa')\n"
+                  "assert image.shape == (48, 64, 4) and image.std() > 0\n"
+                  "print('ok')\n") % module
+        r = run(["/usr/bin/python3", "-c", script], env=py_env, cwd=work)
+        if r.returncode != 0 or r.stdout.strip() != "ok":
+            problems.append(f"the installed Python module does not work: {r.stderr.strip()[-500:]}")
 finally:
     shutil.rmtree(work, ignore_errors=True)
 

@@ -74,6 +74,36 @@ TEST(JsonReader, NumberOverflowNamesTheKey) {
   EXPECT_NE(message.find("key 'v[1]'"), std::string::npos) << message;
 }
 
+// The value read is the one the plain parser gives: every kind of value, in
+// objects and arrays, nested, with the keys in their places.
+TEST(JsonReader, TheValueReadIsThePlainParsersValue) {
+  const std::string text = R"({"a": [1, -2, 3.5, 1e300, 18446744073709551615, true, false, null,
+      "s\u00e9", {"b": [[], {}], "c": {"d": [{"e": 1}, {"e": 2}]}}], "f": {}, "g": []})";
+  EXPECT_EQ(parse_json_text(text, "v.json"), json::parse(text));
+}
+
+// Many objects in one array are read in time linear in their number: the
+// callback parser this replaced scanned the array at each object's end (a
+// 1.2 MB job took 80 s to refuse). 200,000 objects took 20 s with it, and
+// take a few hundredths of a second now; the bound leaves a loaded or
+// sanitised build a hundredfold margin.
+TEST(JsonReader, ManyObjectsInOneArrayAreReadInLinearTime) {
+  std::string text = R"({"rows": [)";
+  for (int i = 0; i < 200'000; ++i) text += (i ? ", " : "") + std::string(R"({"x": 1, "y": [2]})");
+  text += "]}";
+  const auto start = std::chrono::steady_clock::now();
+  const auto value = parse_json_text(text, "wide.json");
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(value["rows"].size(), 200'000u);
+  EXPECT_EQ(value["rows"][199'999]["y"][0], 2);
+  EXPECT_LT(seconds, 5.0);
+  // A duplicate key deep in the last element is still named by its path.
+  text.insert(text.size() - 3, R"(, "x": 3)");
+  const auto message = error_of([&] { parse_json_text(text, "wide.json"); });
+  EXPECT_NE(message.find("key 'rows[199999].x': given twice"), std::string::npos) << message;
+}
+
 TEST(JsonReader, SyntaxErrorsNameLineAndColumn) {
   const auto message = error_of([] { parse_json_text("{\n  \"a\": x\n}", "s.json"); });
   EXPECT_EQ(message.rfind("s.json:2:", 0), 0u) << message;

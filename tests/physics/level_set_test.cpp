@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -197,6 +198,55 @@ TEST(LevelSet, AtTheMinimumTheStateIsTheSteadyOne) {
     const Vector3d expect = c0 / g.dot(body.inertia.cwiseProduct(g)) * g;
     EXPECT_LT((got.states[0].omega - expect).norm(), 1e-6);
   }
+}
+
+// Levels just above the least energy at their area: the grid over the sphere
+// meets no direction that carries a state, the caps about the minimiser do,
+// and every state they give lies on the level (the integrals written out here).
+TEST(LevelSet, LevelsJustAboveTheLeastEnergyAreReached) {
+  struct Near {
+    Case c;
+    double area;
+  };
+  for (const auto& [c, area] : {Near{Case::kovalevskaya, 0.5},
+                                Near{Case::lagrange, std::sqrt(24.5)}, Near{Case::generic, 1.3}}) {
+    const Body& body = preset(c).body;
+    const double least = minimum_energy(body, area).energy;
+    for (double above : {1e-6, 1e-3, 3e-2}) {
+      const Level level{least + above * std::max(1.0, std::abs(least)), area};
+      const auto grid = level_states(body, level, 16).states.size();
+      const auto near = level_states_about_minimum(body, level, 16);
+      EXPECT_GE(near.states.size(), 16u) << case_name(c) << " " << above;
+      if (above == 1e-6) {
+        EXPECT_EQ(grid, 0u) << "the grid reaches it: the test shows nothing";
+      }
+      for (const auto& s : near.states) {
+        EXPECT_NEAR(s.gamma.norm(), 1.0, 1e-14);
+        EXPECT_NEAR(energy_of(body, s.omega, s.gamma), level.energy,
+                    1e-11 * std::max(1.0, std::abs(level.energy)));
+        EXPECT_NEAR(area_of(body, s.omega, s.gamma), area, 1e-11 * std::max(1.0, area));
+      }
+    }
+    // Below the least energy no cap carries a state.
+    const Level below{least - 1e-6 * std::max(1.0, std::abs(least)), area};
+    EXPECT_TRUE(level_states_about_minimum(body, below, 16).states.empty()) << case_name(c);
+  }
+}
+
+TEST(LevelSet, CapPointsLieInTheirCapEvenlyByArea) {
+  const Vector3d centre = Vector3d(1.0, -2.0, 0.5).normalized();
+  const double radius = 0.3;
+  const auto points = fibonacci_cap(centre, radius, 400);
+  ASSERT_EQ(points.size(), 400u);
+  int inner = 0;  // in the inner cap of half the area
+  const double half = std::acos(1.0 - 0.5 * (1.0 - std::cos(radius)));
+  for (const auto& p : points) {
+    EXPECT_NEAR(p.norm(), 1.0, 1e-14);
+    const double angle = std::acos(std::clamp(p.dot(centre), -1.0, 1.0));
+    EXPECT_LE(angle, radius + 1e-12);
+    if (angle <= half) ++inner;
+  }
+  EXPECT_EQ(inner, 200);
 }
 
 TEST(AdmissibleMinimum, ZeroAreaIsTheLeastPotential) {

@@ -3,11 +3,13 @@
 // reported as a numerical failure (exit 3) with nothing written.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <sstream>
 
 #include "io/bad_input.hpp"
+#include "physics/admissible.hpp"
 #include "section/section_csv.hpp"
 #include "section/section_job.hpp"
 #include "support/cli.hpp"
@@ -78,6 +80,33 @@ TEST(SectionCommand, SaysHowManyDirectionsLieBelowTheLevel) {
   expected += std::to_string(kept.rejected.size());
   expected += " of 40 directions of gamma lie below the level)";
   EXPECT_NE(r.out.find(expected), std::string::npos) << r.out;
+}
+
+// Just above the least energy at C0 = 0.5 (-0.9375 for this body) only a
+// small cap of directions carries states, which a grid over the sphere of
+// `orbits` directions misses: the section starts its orbits there. Below it
+// the refusal gives the least energy to full precision.
+TEST(SectionCommand, LevelsNearTheLeastEnergyAreReachedAndTheLeastIsPrintedWhole) {
+  TempDir d;
+  const auto& body = physics::preset(physics::Case::kovalevskaya).body;
+  const double least = physics::minimum_energy(body, 0.5).energy;
+  for (double energy : {least + 1e-6, -0.9, -0.86}) {
+    const std::string csv = (d / "near.csv").string();
+    char level[80];
+    std::snprintf(level, sizeof level, R"("level": {"energy": %.17g, "area": 0.5})", energy);
+    const auto r =
+        run_section_file(d, std::string(R"({"case": "kovalevskaya", )") + level +
+                                R"(, "orbits": 8, "crossings": 3, "csv": ")" + csv + "\"}");
+    ASSERT_EQ(r.exit_code, 0) << energy << ": " << r.err;
+    EXPECT_GT(test::line_count(test::slurp(csv)), 1u) << energy;
+  }
+  const auto r = run_section_file(d, R"({"case": "kovalevskaya", "level": {"energy": -0.95,
+      "area": 0.5}, "orbits": 8, "crossings": 3, "csv": "x.csv"})");
+  ASSERT_EQ(r.exit_code, 2) << r.err;
+  const auto at = r.err.find("least energy at this area is ");
+  ASSERT_NE(at, std::string::npos) << r.err;
+  const double printed = std::stod(r.err.substr(at + 29));
+  EXPECT_EQ(printed, least) << r.err;
 }
 
 struct BadFile {

@@ -112,7 +112,11 @@ TEST(ServeFlowLimits, APageThatDoesNotReadIsDroppedOthersGoOn) {
   ReadingPage bystander(server.port(), 64, 64);
   NonReadingClient stuck(server.port());
   stuck.send(resize(3840, 2160));
-  EXPECT_TRUE(TestServer::eventually([&] { return server.server->stats().outbox_overflows > 0; }));
+  // The kernel's send buffer for the connection grows to as much as 4 MB
+  // (tcp_wmem) before the outbox holds a byte: tens of 4K frames, which under
+  // ASan take over 10 s to draw and encode. Up to 60 s, then.
+  EXPECT_TRUE(TestServer::eventually([&] { return server.server->stats().outbox_overflows > 0; },
+                                     60s * slowdown()));
   EXPECT_TRUE(server.log->wait_for({"connection #2", "the page does not read; dropped"}))
       << server.log->all();
   EXPECT_EQ(server.server->stats().outbox_overflows, 1);

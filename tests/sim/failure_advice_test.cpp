@@ -17,7 +17,7 @@ namespace {
 using numerics::FailureKind;
 
 constexpr SettingsIn kPlaces[] = {SettingsIn::command_line, SettingsIn::render_job,
-                                  SettingsIn::panel};
+                                  SettingsIn::panel, SettingsIn::python};
 
 TEST(FailureAdvice, EveryKindIsOneSentenceInEveryPlace) {
   for (SettingsIn where : kPlaces) {
@@ -36,6 +36,12 @@ TEST(FailureAdvice, EveryKindIsOneSentenceInEveryPlace) {
         EXPECT_EQ(a.find("--") != std::string::npos, where == SettingsIn::command_line);
         EXPECT_EQ(a.find("simulation.") != std::string::npos, where == SettingsIn::render_job);
         EXPECT_EQ(a.find(" panel") != std::string::npos, where == SettingsIn::panel);
+        if (where != SettingsIn::python) {
+          EXPECT_EQ(a.find("=\""), std::string::npos);
+        }
+        if (where == SettingsIn::python && k == FailureKind::chart_pole) {
+          EXPECT_NE(a.find("formulation=\"spinor\""), std::string::npos);
+        }
       }
     }
   }

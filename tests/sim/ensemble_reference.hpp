@@ -11,9 +11,11 @@
 #include "numerics/embedded_rk.hpp"
 #include "numerics/rk4.hpp"
 #include "physics/direct.hpp"
-#include "physics/direct_batch.hpp"
+#include "sim/ensemble.hpp"
 
-namespace epviz::physics::test {
+namespace epviz::sim::test {
+using physics::Body;
+using physics::DirectSystem;
 
 inline std::array<double, 6> to_array(const DirectSystem::State& x) {
   std::array<double, 6> a;
@@ -119,4 +121,4 @@ inline ::testing::AssertionResult identical(const DirectBatchResult& a,
   return ::testing::AssertionSuccess();
 }
 
-}  // namespace epviz::physics::test
+}  // namespace epviz::sim::test

@@ -1,26 +1,15 @@
-#include "physics/direct_batch.hpp"
+#include "sim/ensemble.hpp"
 
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "numerics/batch_rk4.hpp"
-#include "physics/direct_batch_isa.hpp"
+#include "sim/ensemble_isa.hpp"
 
-namespace epviz::physics {
+namespace epviz::sim {
 
-DirectBatchSystem DirectBatchSystem::of(const Body& body) {
-  // As DirectSystem's constructor: 1 / I_i and P r component by component.
-  DirectBatchSystem s{};
-  for (int i = 0; i < 3; ++i) {
-    s.inertia[i] = body.inertia[i];
-    s.inv_inertia[i] = 1.0 / body.inertia[i];
-    s.pr[i] = body.weight * body.com[i];
-  }
-  return s;
-}
-
-DirectBatchTask direct_batch_task(const InitialState& s, double t_end,
+DirectBatchTask direct_batch_task(const physics::InitialState& s, double t_end,
                                   std::vector<double> out_times) {
   DirectBatchTask task;
   task.t_end = t_end;
@@ -56,16 +45,17 @@ int default_batch_width(numerics::SimdPath path) {
 namespace {
 
 template <int W>
-std::vector<DirectBatchResult> run(const DirectBatchSystem& sys,
+std::vector<DirectBatchResult> run(const physics::DirectBatchSystem& sys,
                                    const batch_isa::DirectKernelsOf<W>& kernels,
                                    const std::vector<DirectBatchTask>& tasks,
                                    const DirectBatchSettings& settings) {
   if (settings.method == BatchMethod::rk4) {
     if (settings.check || settings.events.started || settings.events.ended || settings.step_hook)
       throw std::invalid_argument("batch rk4: no output check, events or step hook (dop853 only)");
-    return numerics::BatchRk4<DirectBatchSystem, W>(sys, kernels.rk4, settings.rk4).run(tasks);
+    return numerics::BatchRk4<physics::DirectBatchSystem, W>(sys, kernels.rk4, settings.rk4)
+        .run(tasks);
   }
-  return numerics::BatchEmbedded<DirectBatchSystem, W, numerics::Dop853Tableau>(
+  return numerics::BatchEmbedded<physics::DirectBatchSystem, W, numerics::Dop853Tableau>(
              sys, kernels.dop853, settings.adaptive, settings.check, settings.events,
              settings.step_hook)
       .run(tasks);
@@ -73,12 +63,12 @@ std::vector<DirectBatchResult> run(const DirectBatchSystem& sys,
 
 }  // namespace
 
-std::vector<DirectBatchResult> integrate_direct_batch(const Body& body,
+std::vector<DirectBatchResult> integrate_direct_batch(const physics::Body& body,
                                                       const std::vector<DirectBatchTask>& tasks,
                                                       const DirectBatchSettings& settings) {
   const numerics::SimdPath path = settings.path ? *settings.path : numerics::chosen_simd_path();
   const batch_isa::DirectKernels& k = batch_isa::kernels_for(path);
-  const DirectBatchSystem sys = DirectBatchSystem::of(body);
+  const physics::DirectBatchSystem sys = physics::DirectBatchSystem::of(body);
   switch (settings.width == 0 ? default_batch_width(path) : settings.width) {
     case 1: return run<1>(sys, k.w1, tasks, settings);
     case 2: return run<2>(sys, k.w2, tasks, settings);
@@ -89,4 +79,4 @@ std::vector<DirectBatchResult> integrate_direct_batch(const Body& body,
                               ": allowed are 1, 2, 4 and 8 lanes (or 0 for the path's own)");
 }
 
-}  // namespace epviz::physics
+}  // namespace epviz::sim

@@ -12,7 +12,7 @@
 #include "numerics/simd_path.hpp"
 #include "physics/body.hpp"
 
-namespace epviz::physics {
+namespace epviz::sim {
 
 enum class BatchMethod { dop853, rk4 };
 
@@ -37,7 +37,7 @@ using DirectBatchTask = numerics::BatchTask<6>;
 using DirectBatchResult = numerics::BatchResult<6>;
 
 // The task from the initial state (Omega, gamma) at t = 0 to t_end.
-DirectBatchTask direct_batch_task(const InitialState& s, double t_end,
+DirectBatchTask direct_batch_task(const physics::InitialState& s, double t_end,
                                   std::vector<double> out_times = {});
 
 // The lanes a path uses unless told: the fastest measured (docs/ensembles.md).
@@ -46,7 +46,7 @@ int default_batch_width(numerics::SimdPath path);
 // One result per task, in order. Throws std::invalid_argument for bad tasks,
 // options or width, and as numerics::parse_simd_path for EPVIZ_SIMD or a path
 // this CPU lacks; a trajectory's own failure is in its result.
-std::vector<DirectBatchResult> integrate_direct_batch(const Body& body,
+std::vector<DirectBatchResult> integrate_direct_batch(const physics::Body& body,
                                                       const std::vector<DirectBatchTask>& tasks,
                                                       const DirectBatchSettings& settings = {});
 
@@ -54,7 +54,7 @@ std::vector<DirectBatchResult> integrate_direct_batch(const Body& body,
 // W lanes on chunks taken in turn): the results are bitwise those of
 // integrate_direct_batch. Bad input throws before any thread starts.
 std::vector<DirectBatchResult> integrate_direct_batch_parallel(
-    const Body& body, const std::vector<DirectBatchTask>& tasks,
+    const physics::Body& body, const std::vector<DirectBatchTask>& tasks,
     const DirectBatchSettings& settings = {}, int threads = 2);
 
-}  // namespace epviz::physics
+}  // namespace epviz::sim

@@ -13,13 +13,20 @@
 #include <string>
 #include <vector>
 
-#include "direct_batch_reference.hpp"
-#include "helpers.hpp"
+#include "ensemble_reference.hpp"
 #include "physics/direct_rhs_batch.hpp"
+#include "physics/helpers.hpp"
 #include "physics/invariants.hpp"
 #include "support/simd_env.hpp"
 
-namespace epviz::physics {
+namespace epviz::sim {
+using physics::Body;
+using physics::Case;
+using physics::DirectBatchSystem;
+using physics::DirectSystem;
+using physics::InitialState;
+using physics::Invariants;
+using physics::Vector3d;
 namespace {
 
 using numerics::SimdPath;
@@ -86,7 +93,7 @@ TEST(DirectBatch, RhsIsDirectSystemsBitwise) {
   const Body body = generic_body();
   const DirectSystem scalar(body);
   const DirectBatchSystem batch = DirectBatchSystem::of(body);
-  test::Random rnd;
+  physics::test::Random rnd;
   for (int trial = 0; trial < 8; ++trial) {
     DirectSystem::State xs, d;
     xs << rnd.vec(), rnd.unit();
@@ -531,4 +538,4 @@ TEST(DirectBatch, ParallelOverThreadsGivesTheSameResults) {
 }
 
 }  // namespace
-}  // namespace epviz::physics
+}  // namespace epviz::sim

@@ -1,15 +1,15 @@
 #pragma once
-// Included by each direct_batch_<isa>.cpp only: the kernel table of that unit,
+// Included by each ensemble_<isa>.cpp only: the kernel table of that unit,
 // instantiated with a tag type of the unit's anonymous namespace
 // (numerics/batch_kernel.hpp says why).
 #include "numerics/batch_kernel.hpp"
-#include "physics/direct_batch_isa.hpp"
+#include "sim/ensemble_isa.hpp"
 
-namespace epviz::physics::batch_isa {
+namespace epviz::sim::batch_isa {
 
 template <int W, class Tag>
 constexpr DirectKernelsOf<W> direct_kernels_of() {
-  using Sys = DirectBatchSystem;
+  using Sys = physics::DirectBatchSystem;
   return {numerics::batch::EmbeddedKernel<Sys, W, numerics::Dop853Tableau, Tag>::table,
           numerics::batch::Rk4KernelImpl<Sys, W, Tag>::table};
 }
@@ -20,4 +20,4 @@ constexpr DirectKernels direct_kernels() {
           direct_kernels_of<8, Tag>()};
 }
 
-}  // namespace epviz::physics::batch_isa
+}  // namespace epviz::sim::batch_isa

@@ -6,12 +6,12 @@
 #include <string>
 #include <thread>
 
-#include "physics/direct_batch.hpp"
+#include "sim/ensemble.hpp"
 
-namespace epviz::physics {
+namespace epviz::sim {
 
 std::vector<DirectBatchResult> integrate_direct_batch_parallel(
-    const Body& body, const std::vector<DirectBatchTask>& tasks,
+    const physics::Body& body, const std::vector<DirectBatchTask>& tasks,
     const DirectBatchSettings& settings, int threads) {
   if (threads < 1)
     throw std::invalid_argument("threads " + std::to_string(threads) + ": must be at least 1");
@@ -56,4 +56,4 @@ std::vector<DirectBatchResult> integrate_direct_batch_parallel(
   return results;
 }
 
-}  // namespace epviz::physics
+}  // namespace epviz::sim

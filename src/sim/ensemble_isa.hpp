@@ -7,12 +7,12 @@
 #include "numerics/simd_path.hpp"
 #include "physics/direct_rhs_batch.hpp"
 
-namespace epviz::physics::batch_isa {
+namespace epviz::sim::batch_isa {
 
 template <int W>
 struct DirectKernelsOf {
-  numerics::EmbeddedKernels<DirectBatchSystem, W, numerics::Dop853Tableau> dop853;
-  numerics::Rk4Kernel<DirectBatchSystem, W> rk4;
+  numerics::EmbeddedKernels<physics::DirectBatchSystem, W, numerics::Dop853Tableau> dop853;
+  numerics::Rk4Kernel<physics::DirectBatchSystem, W> rk4;
 };
 
 struct DirectKernels {
@@ -27,4 +27,4 @@ extern const DirectKernels kScalar, kSse2, kAvx2, kAvx512;
 // The kernels of `path`; throws std::invalid_argument when this CPU lacks it.
 const DirectKernels& kernels_for(numerics::SimdPath path);
 
-}  // namespace epviz::physics::batch_isa
+}  // namespace epviz::sim::batch_isa
