@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Measures the live mode three times (tests/e2e/measure.mjs) and prints one
 # table: frames/s and latency while playing and paused, each stage's median,
-# and the machine's load when each run began.
+# and the machine's load when each run began, under a line naming the CPU
+# and the Chromium that measured (a figure is a figure of one machine).
 #
 #   bash tests/e2e/measure.sh [path/to/epviz] [runs] [job arguments...]
 #
@@ -22,9 +23,11 @@ for i in $(seq 1 "$runs"); do
     exit 1
   }
 done
-node - "$out" "$runs" <<'JS'
+cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)
+chromium=$( (chromium --version || /usr/bin/chromium --version) 2>/dev/null | head -1 || true)
+node - "$out" "$runs" "${cpu:-unknown CPU}" "${chromium:-unknown Chromium}" <<'JS'
 const fs = require('fs');
-const [dir, runs] = process.argv.slice(2);
+const [dir, runs, cpu, chromium] = process.argv.slice(2);
 const rows = [];
 for (let i = 1; i <= Number(runs); ++i) {
   const r = JSON.parse(fs.readFileSync(`${dir}/run${i}.json`, 'utf8'));
@@ -33,6 +36,7 @@ for (let i = 1; i <= Number(runs); ++i) {
 }
 const s = (r, k) => (r.stages[k] === null ? '-' : r.stages[k]);
 console.log(`view ${rows[0].width}x${rows[0].height}, ${rows[0].mime}, ${new Date().toISOString()}, ${require('os').cpus().length} cores`);
+console.log(`CPU: ${cpu}; browser: ${chromium}`);
 console.log('| run | load | frames/s | latency median (p90) ms | paused median (p90) ms | simulate | draw | read back | encode | queue | send | decode | paint | kB |');
 console.log('|---|---|---|---|---|---|---|---|---|---|---|---|---|---|');
 rows.forEach((r, i) => {
