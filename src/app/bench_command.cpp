@@ -109,6 +109,10 @@ int run_bench(const BenchRequest& request) {
 #endif
   if (!request.out.empty()) io::check_output_dir("--out", request.out);
   check_json_path(request);
+  io::require_separate_files(
+      {{"--job", request.job}},
+      {{"--json", request.json},
+       {"--out", request.out.empty() ? "" : (fs::path(request.out) / "bench.json").string()}});
   if (!request.out.empty()) io::make_output_folder("--out", request.out);
 
   bool first = true;  // the first line says whether the run is quick

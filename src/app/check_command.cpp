@@ -11,6 +11,7 @@
 #include "check/update_command.hpp"
 #include "io/frame_range.hpp"
 #include "io/output_paths.hpp"
+#include "io/printable.hpp"
 #include "job/job_list.hpp"
 #include "job/job_plan.hpp"
 #include "paint/frame_drawer.hpp"
@@ -103,6 +104,16 @@ int run_check(const CheckOptions& o) {
     jobs.push_back({std::move(job), std::move(plan)});
   }
   check::refuse_shared_golden_dirs(goldens);
+  // --junit must not replace a job or a golden it checks (io/output_paths.hpp).
+  io::NamedPaths inputs;
+  for (const auto& g : goldens) {
+    inputs.emplace_back("the job " + io::printable(g.shown), g.job_file.string());
+    inputs.emplace_back("a golden of " + io::printable(g.shown),
+                        (g.golden_dir / "golden.json").string());
+    for (const int frame : g.frames)
+      inputs.emplace_back("a golden of " + io::printable(g.shown), g.golden_path(frame).string());
+  }
+  io::require_separate_files(inputs, {{"--junit", o.junit}});
   if (!o.report.empty() && !o.update) io::make_output_folder("--report", o.report);
 
   s.update = o.update;

@@ -11,6 +11,6 @@ namespace epviz::app {
 using io::parse_integer;
 using io::parse_number;
 using io::parse_vec3;
-using io::require_distinct_files;
+using io::require_separate_files;
 
 }  // namespace epviz::app

@@ -187,6 +187,47 @@ int run_merge(const MergeOptions& o) {
 #endif
   const fs::path dir = o.dir;
   std::error_code ec;
+// What the merge reads (each shard's manifest, lock and files, each batch's
+// sweep or section file) and writes (--resubmit, the merged files), for the
+// one check that no output replaces an input or another output
+// (io/output_paths.hpp). `sections`: the sections' pictures, once their
+// files are read (empty before).
+void require_separate_merge_files(
+    const std::vector<shard::Batch>& batches, const fs::path& dir, const fs::path& out_dir,
+    const MergeOptions& o,
+    const std::vector<std::optional<section::MergedSection>>& sections = {}) {
+  io::NamedPaths inputs, outputs{{"--resubmit", o.resubmit}};
+  for (std::size_t i = 0; i < batches.size(); ++i) {
+    const auto& b = batches[i];
+    const std::string name = shard::batch_name(b);
+    for (const auto& [index, m] : b.shards) {
+      const std::string shard_name =
+          "shard " + std::to_string(index) + "/" + std::to_string(b.count) + " of " + name;
+      inputs.emplace_back("the manifest of " + shard_name,
+                          (dir / shard::manifest_name(b.stem, m.shard)).string());
+      inputs.emplace_back("the lock of " + shard_name,
+                          (dir / shard::lock_name(b.stem, m.shard)).string());
+      for (const auto& f : m.files)
+        inputs.emplace_back("a file of " + shard_name, (dir / f.path).string());
+    }
+    const auto& any = b.shards.begin()->second;
+    inputs.emplace_back("the " + b.kind + " file of " + name, any.source);
+    if (any.output.empty()) continue;
+    const fs::path merged = out_dir / any.output;
+    outputs.emplace_back("the merged output of " + name, merged.string());
+    if (o.h5 && b.kind != "render")
+      outputs.emplace_back("the --h5 file of " + name, h5_beside(merged).string());
+    if (b.kind == "sweep")
+      outputs.emplace_back("the self-check of " + name,
+                           (out_dir / sweep::self_check_file_name(any.output)).string());
+    if (i < sections.size() && sections[i]) {
+      outputs.emplace_back("the PNG of " + name, sections[i]->job.png);
+      outputs.emplace_back("the SVG of " + name, sections[i]->job.svg);
+    }
+  }
+  io::require_separate_files(inputs, outputs);
+}
+
   if (!fs::is_directory(dir, ec))
     throw io::BadInput("DIR: '" + o.dir +
                        "' is not a directory (give the directory the shards wrote to)");
@@ -206,6 +247,7 @@ int run_merge(const MergeOptions& o) {
     incomplete += !report.empty();
     to_redo += !b.incomplete.empty();
   }
+  require_separate_merge_files(batches, dir, out_dir, o);
   if (incomplete) {
     std::fprintf(stderr, "epviz: error: %d of %zu batches in %s are incomplete; nothing merged\n",
                  incomplete, batches.size(), o.dir.c_str());
@@ -240,6 +282,7 @@ int run_merge(const MergeOptions& o) {
     else if (sections[i])
       write_merged_section(*sections[i], o.gl,
                            o.h5 ? h5_beside(sections[i]->job.csv).string() : std::string());
+  require_separate_merge_files(batches, dir, out_dir, o, sections);
     else
       merge_render(batches[i], dir, out_dir);
   }

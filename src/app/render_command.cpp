@@ -350,7 +350,14 @@ int run_render(const RenderOptions& o) {
   // SIGINT/SIGTERM remove the temporaries of the frames and videos being written.
   io::install_temporary_cleanup();
   const render::GlChoice gl(o.gl);
-  auto loaded = job::load_job_file(job::job_file_named(o.job, job::shipped_jobs_dir()));
+  const fs::path job_file = job::job_file_named(o.job, job::shipped_jobs_dir());
+  auto loaded = job::load_job_file(job_file);
+  // No output may replace the job or a gallery's member job (io/output_paths.hpp).
+  io::NamedPaths inputs{{"the job", job_file.string()}};
+  if (loaded.gallery)
+    for (const auto& member : loaded.gallery->jobs)
+      inputs.emplace_back("a job of the gallery", member.file.string());
+  io::require_separate_files(inputs, {{"--report-json", o.report_json}});
   if (loaded.bench) {
     if (!o.frames.empty() || !o.format.empty() || o.resume || !o.shard.empty())
       throw io::BadInput(o.job + ": a bench-figures job takes only --out and --gl");

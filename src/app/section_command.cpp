@@ -98,12 +98,8 @@ int run_section(const SectionOptions& o) {
       section::thread_count(o.jobs.empty() ? 0 : parse_integer("-j", o.jobs, 1, 4096));
   const auto shard = shard::shard_from_options(o.shard, o.shard_count);
   if (!o.out.empty()) job.csv = o.out;
-  section::check_outputs(job);
   h5::check_h5_output("--h5", o.h5);
-  io::require_distinct_files({{o.out.empty() ? o.file + ": key 'csv'" : "--out", job.csv},
-                              {o.file + ": key 'png'", job.png},
-                              {o.file + ": key 'svg'", job.svg},
-                              {"--h5", o.h5}});
+  section::check_outputs(job, o.out.empty() ? "" : "--out", {{"--h5", o.h5}});
   const auto starts = section::section_starts(job);
   const long runs = section::run_count(job, starts.size());
   std::optional<shard::RowsShard> part;

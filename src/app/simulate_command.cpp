@@ -50,7 +50,8 @@ int run_simulate(const RawOptions& raw) {
   SimulationFields fields;
   if (!raw.job.empty()) fields = fields_from_job(raw.job);
   fields.overlay(fields_from_options(raw.sim));
-  require_distinct_files(
+  require_separate_files(
+      {{"--job", raw.job}},
       {{"--csv", raw.csv}, {"--report-json", raw.report_json}, {"--h5", raw.h5}});
   io::check_output_file("--csv", raw.csv);
   io::check_output_file("--report-json", raw.report_json);

@@ -81,7 +81,8 @@ int run_sweep(const SweepOptions& o) {
   if (o.out == "-") throw io::BadInput("--out: rows are appended to a file, not standard output");
   io::check_output_file("--out", out_given.string());
   h5::check_h5_output("--h5", o.h5);
-  io::require_distinct_files({{"--out", out_given.string()}, {"--h5", o.h5}});
+  io::require_separate_files({{"the sweep file", o.file}},
+                             {{"--out", out_given.string()}, {"--h5", o.h5}});
   if (shard && !o.h5.empty())
     throw io::BadInput(
         "--h5: a shard writes only its rows; `epviz merge --h5` writes the merged sweep's");

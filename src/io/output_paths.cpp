@@ -43,10 +43,36 @@ bool too_long(const fs::path& absolute) {
 
 bool writable_directory(const fs::path& dir) { return ::access(dir.c_str(), W_OK | X_OK) == 0; }
 
-// The file a path names, so that two spellings of it compare equal: symbolic
-// links followed as the writer follows them, a dangling one to the file it
-// would create.
-fs::path canonical_file(const std::string& path) {
+// What a path names, so that every spelling of one file compares equal.
+struct FileIdentity {
+  bool skipped = false;  // nothing to compare: see require_separate_files
+  bool exists = false;
+  dev_t device = 0;
+  ino_t inode = 0;
+  fs::path path;  // when it does not exist yet: absolute, normalized, links resolved
+
+  bool operator==(const FileIdentity& o) const {
+    if (skipped || o.skipped || exists != o.exists) return false;
+    return exists ? device == o.device && inode == o.inode : path == o.path;
+  }
+};
+
+// Symbolic links are followed as the writer follows them; a dangling one
+// stands for the file it would create.
+FileIdentity identity_of(const std::string& path) {
+  FileIdentity id;
+  if (path.empty() || path == "-") {
+    id.skipped = true;
+    return id;
+  }
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0) {
+    id.skipped = S_ISCHR(st.st_mode);
+    id.exists = true;
+    id.device = st.st_dev;
+    id.inode = st.st_ino;
+    return id;
+  }
   fs::path target = path;
   try {
     target = resolve_output(path).path;
@@ -55,7 +81,8 @@ fs::path canonical_file(const std::string& path) {
   }
   std::error_code ec;
   auto p = fs::weakly_canonical(fs::absolute(target, ec), ec);
-  return ec ? fs::absolute(target).lexically_normal() : p;
+  id.path = ec ? fs::absolute(target).lexically_normal() : p;
+  return id;
 }
 
 }  // namespace
@@ -88,16 +115,23 @@ void check_output_file(const std::string& option, const std::string& path) {
                    " is not writable: " + errno_text(errno));
 }
 
-void require_distinct_files(const std::vector<std::pair<std::string, std::string>>& outputs) {
-  for (std::size_t i = 0; i < outputs.size(); ++i)
-    for (std::size_t j = 0; j < i; ++j) {
-      const auto& [a_option, a] = outputs[j];
-      const auto& [b_option, b] = outputs[i];
-      if (a.empty() || b.empty() || a == "-" || b == "-") continue;
-      if (canonical_file(a) == canonical_file(b))
-        throw BadInput(b_option + ": the same file as " + a_option + " ('" + printable(b) +
-                       "'); give each its own file");
-    }
+void require_separate_files(const NamedPaths& inputs, const NamedPaths& outputs) {
+  std::vector<FileIdentity> read, written;
+  for (const auto& [name, path] : inputs) read.push_back(identity_of(path));
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    const auto& [option, path] = outputs[i];
+    written.push_back(identity_of(path));
+    for (std::size_t j = 0; j < inputs.size(); ++j)
+      if (written[i] == read[j])
+        throw BadInput(option + ": " + in_quotes(path) + " is the same file as " + inputs[j].first +
+                       " (" + in_quotes(inputs[j].second) +
+                       "), which this run reads; give the output another file");
+    for (std::size_t j = 0; j < i; ++j)
+      if (written[i] == written[j])
+        throw BadInput(option + ": " + in_quotes(path) + " is the same file as " +
+                       outputs[j].first + " (" + in_quotes(outputs[j].second) +
+                       "); give each output its own file");
+  }
 }
 
 void check_output_dir(const std::string& what, const fs::path& dir) {

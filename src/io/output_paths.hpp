@@ -16,10 +16,19 @@ namespace epviz::io {
 // Throws BadInput naming the option.
 void check_output_file(const std::string& option, const std::string& path);
 
-// Throws BadInput if two of the (option, path) pairs name the same file,
-// however spelled ("out.csv", "./out.csv", a symlink to it); empty paths and
-// "-" (standard output) are skipped.
-void require_distinct_files(const std::vector<std::pair<std::string, std::string>>& outputs);
+// Files a run reads or writes, each with what names it in a message: the
+// option ("--csv") or the file and key ("s.json: key 'png'").
+using NamedPaths = std::vector<std::pair<std::string, std::string>>;
+
+// The one check every command makes before any work that no output replaces
+// what the run reads or writes: throws BadInput, naming both, when an output
+// is one of the inputs or two outputs are one file. Files are compared by
+// identity, not by name: an existing file by device and inode (another
+// spelling, a symbolic or a hard link to it is the same file), one not there
+// yet by its absolute path with links resolved and "."/".." removed. Empty
+// paths, "-" (standard output) and character devices (/dev/null, a
+// terminal), which nothing replaces, are skipped.
+void require_separate_files(const NamedPaths& inputs, const NamedPaths& outputs);
 
 // `dir` is an output directory (named by `what`: "--out" or "job.json: output.dir"):
 // an existing writable directory, or one that can be created (its first

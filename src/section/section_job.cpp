@@ -251,8 +251,8 @@ SectionJob read_section_object(const nlohmann::json& doc, const std::string& nam
   return job;
 }
 
-void check_outputs(const SectionJob& job) {
-  std::vector<std::pair<std::string, std::string>> outputs;
+void check_outputs(const SectionJob& job, const std::string& csv_from, const io::NamedPaths& more) {
+  io::NamedPaths outputs;
   for (const auto& [key, path] : {std::pair{"csv", job.csv}, {"png", job.png}, {"svg", job.svg}}) {
     std::string where = job.file;
     where += ": key '";
@@ -261,8 +261,10 @@ void check_outputs(const SectionJob& job) {
     io::check_output_file(where, path);
     outputs.emplace_back(where, path);
   }
-  // The pictures are written after the CSV: one naming its file would replace it.
-  io::require_distinct_files(outputs);
+  outputs.insert(outputs.end(), more.begin(), more.end());
+  // The pictures are written after the CSV: one naming its file would replace
+  // it; and an output naming the section file would replace the run's own input.
+  io::require_separate_files({{"the section file", job.file}}, outputs);
 }
 
 std::vector<physics::InitialState> section_starts(const SectionJob& job) {
@@ -292,3 +294,4 @@ std::vector<physics::InitialState> section_starts(const SectionJob& job) {
 }
 
 }  // namespace epviz::section
+    if (key[0] == 'c' && !csv_from.empty()) where = csv_from;

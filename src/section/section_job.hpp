@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "io/json_reader.hpp"
+#include "io/output_paths.hpp"
 #include "physics/body.hpp"
 #include "physics/cases.hpp"
 #include "physics/level_set.hpp"
@@ -81,9 +82,12 @@ SectionJob read_section_job(const std::filesystem::path& file);
 SectionJob read_section_object(const nlohmann::json& doc, const std::string& name,
                                bool needs_csv = true);
 
-// Every output path given can be written (io/output_paths.hpp); throws
-// io::BadInput naming the key.
-void check_outputs(const SectionJob& job);
+// Every output path given can be written, and none is the section file or
+// another output (io/output_paths.hpp); throws io::BadInput naming the key.
+// `csv_from`: what named the CSV when not the file's key "csv" ("--out");
+// `more`: the command's other outputs (--h5).
+void check_outputs(const SectionJob& job, const std::string& csv_from = "",
+                   const io::NamedPaths& more = {});
 
 // The orbits' initial states: the explicit ones, or those level_states builds
 // on the level (gammas that carry none are skipped). Throws io::BadInput when

@@ -13,7 +13,7 @@ namespace fs = std::filesystem;
 
 std::string batch_name(const Batch& b) {
   const auto& m = b.shards.begin()->second;
-  return m.kind + " " + m.source + " (" + std::to_string(b.count) + " shards)";
+  return m.kind + " " + io::printable(m.source, 200) + " (" + std::to_string(b.count) + " shards)";
 }
 
 std::vector<Batch> read_batches(const fs::path& dir) {

@@ -41,20 +41,54 @@ TEST(OptionValues, ThreeNumbers) {
   EXPECT_EQ(message.find('\n'), std::string::npos) << message;
 }
 
-TEST(DistinctOutputs, TwoSpellingsOfOneFileAreRefused) {
+TEST(SeparateFiles, TwoSpellingsOfOneFileAreRefused) {
   test::TempDir dir;
   const auto file = (dir / "out.csv").string();
   std::filesystem::create_symlink(file, dir / "link.csv");
   const auto dotted = (dir.path() / "." / "out.csv").string();
-  io::require_distinct_files({{"--csv", file}, {"--report-json", (dir / "report.json").string()}});
-  io::require_distinct_files({{"--csv", "-"}, {"--report-json", "-"}});
-  io::require_distinct_files({{"--csv", ""}, {"--report-json", ""}});
+  io::require_separate_files({},
+                             {{"--csv", file}, {"--report-json", (dir / "report.json").string()}});
+  io::require_separate_files({}, {{"--csv", "-"}, {"--report-json", "-"}});
+  io::require_separate_files({}, {{"--csv", ""}, {"--report-json", ""}});
   for (const auto& other : {file, dotted, (dir / "link.csv").string()}) {
     const auto message = test::error_of<io::BadInput>([&] {
-      io::require_distinct_files({{"--csv", file}, {"--report-json", other}});
+      io::require_separate_files({}, {{"--csv", file}, {"--report-json", other}});
     });
-    EXPECT_EQ(message.rfind("--report-json: the same file as --csv", 0), 0u) << message;
+    EXPECT_EQ(message.rfind("--report-json: '", 0), 0u) << message;
+    EXPECT_NE(message.find("the same file as --csv"), std::string::npos) << message;
   }
+}
+
+// Existing files are compared by device and inode: a hard link is the file.
+TEST(SeparateFiles, AnOutputThatIsAnInputIsRefusedHowEverSpelled) {
+  test::TempDir dir;
+  const auto job = dir.write("job.json", "{}");
+  std::filesystem::create_hard_link(job, dir / "hard.json");
+  std::filesystem::create_symlink(job, dir / "soft.json");
+  for (const auto& out :
+       {job, dir / "hard.json", dir / "soft.json", dir.path() / "." / "job.json"}) {
+    const auto message = test::error_of<io::BadInput>([&] {
+      io::require_separate_files({{"--job", job.string()}}, {{"--csv", out.string()}});
+    });
+    EXPECT_EQ(message.rfind("--csv: '", 0), 0u) << message;
+    EXPECT_NE(message.find("the same file as --job ('" + job.string() + "')"), std::string::npos)
+        << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+  // Two hard links to one new output, and a file that is not there yet.
+  const auto message = test::error_of<io::BadInput>([&] {
+    io::require_separate_files(
+        {}, {{"--csv", (dir / "hard.json").string()}, {"--h5", (dir / "soft.json").string()}});
+  });
+  EXPECT_EQ(message.rfind("--h5: ", 0), 0u) << message;
+  io::require_separate_files({{"--job", job.string()}}, {{"--csv", (dir / "new.csv").string()}});
+  EXPECT_EQ(test::slurp(job), "{}");
+}
+
+// Nothing replaces a character device: /dev/null may take every output.
+TEST(SeparateFiles, CharacterDevicesAreNotCompared) {
+  io::require_separate_files({{"--job", "/dev/null"}},
+                             {{"--csv", "/dev/null"}, {"--report-json", "/dev/null"}});
 }
 
 }  // namespace

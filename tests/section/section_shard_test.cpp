@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
 
 #include "support/cli.hpp"
 
@@ -92,6 +93,43 @@ TEST(SectionShard, TheMergeRefusesASectionFileChangedSince) {
 }
 
 // A shard that cannot be one is refused before any orbit runs.
+// The merge writes a section's pictures into its output folder under their
+// file names: a name that is one of the merge's own files there (the merged
+// CSV, a shard's CSV or manifest, the section file) is refused before
+// anything is written, and that file is left as it was.
+TEST(SectionShard, PicturesNamingTheMergesOwnFilesAreRefused) {
+  struct Case {
+    std::string key, name, out, must_name;
+  };
+  for (const auto& c :
+       {Case{"png", "k.csv", "", "the merged output"},
+        Case{"png", "k.shard-0-of-2.csv", "", "a file of shard 0/2"},
+        Case{"svg", "k.shard-1-of-2.manifest.json", "", "the manifest of shard 1/2"},
+        Case{"svg", "k.section.json", "..", "the section file"}}) {
+    SCOPED_TRACE(c.name);
+    std::string text = kSection;
+    text.replace(text.find("\"" + c.key + "\": \"k."), 13, "\"" + c.key + "\": \"sub/" + c.name);
+    Folders f(text);
+    fs::create_directories(f.shards / "sub");
+    for (int i = 0; i < 2; ++i)
+      ASSERT_EQ(
+          f.run(f.shards, "section " + f.file.string() + " --shard " + std::to_string(i) + "/2")
+              .exit_code,
+          0);
+    const fs::path out = c.out.empty() ? f.shards : f.d.path();
+    std::map<fs::path, std::string> before;
+    for (const auto& e : fs::directory_iterator(out))
+      if (e.is_regular_file()) before[e.path()] = slurp(e.path());
+    const auto r = f.run(f.d.path(), "merge " + f.shards.string() + " --out " + out.string());
+    expect_bad_input(r, "the " + std::string(c.key == "png" ? "PNG" : "SVG") + " of section");
+    EXPECT_NE(r.err.find(c.must_name), std::string::npos) << r.err;
+    std::map<fs::path, std::string> after;
+    for (const auto& e : fs::directory_iterator(out))
+      if (e.is_regular_file()) after[e.path()] = slurp(e.path());
+    EXPECT_TRUE(before == after) << "the merge wrote in " << out;
+  }
+}
+
 TEST(SectionShard, BadShardOptionsAreRefused) {
   Folders f;
   const std::string section = "section " + f.file.string();
