@@ -1,6 +1,7 @@
 #include "shard/batch.hpp"
 
 #include <algorithm>
+#include <map>
 #include <set>
 
 #include "io/bad_input.hpp"
@@ -52,6 +53,20 @@ std::vector<Batch> read_batches(const fs::path& dir) {
   }
   std::vector<Batch> out;
   for (auto& [key, b] : by_key) out.push_back(std::move(b));
+  // Two batches (two sweeps, or one sweep split twice) that merge into one
+  // name: the later's rows would replace the earlier's. Neither is merged.
+  std::map<std::string, const Batch*> by_output;
+  for (const auto& b : out) {
+    const std::string& output = b.shards.begin()->second.output;
+    if (output.empty()) continue;
+    const auto [first, fresh] = by_output.emplace(output, &b);
+    if (!fresh)
+      throw io::BadInput(batch_name(*first->second) + " and " + batch_name(b) +
+                         " both merge into " + io::quoted(output, 200) + " in " +
+                         io::quoted(dir.string(), 200) +
+                         "; merge each in a folder of its own (move one batch's manifests and "
+                         "files), or run one again with another --out");
+  }
   return out;
 }
 

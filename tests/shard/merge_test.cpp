@@ -118,6 +118,31 @@ TEST_F(Merge, HostileRowsAreRefusedNamingTheFileAndLine) {
   }
 }
 
+// Two sweeps whose shards went into one folder under one --out: the later
+// batch's rows would replace the earlier's. Refused, naming both sweeps.
+TEST_F(Merge, TwoBatchesThatMergeIntoOneNameAreRefusedNamingBoth) {
+  for (const std::string hash : {"aa", "bb"}) {
+    write_shard(hash, 0, row(0, hash) + row(1, hash));
+    write_shard(hash, 1, row(2, hash) + row(3, hash));
+  }
+  for (long i : {0, 1}) {
+    const fs::path file = dir_ / manifest_name("bb-2", {i, 2});
+    auto j = nlohmann::json::parse(test::slurp(file));
+    j["output"] = "aa.jsonl";
+    std::ofstream(file, std::ios::trunc) << j.dump();
+  }
+  try {
+    read_batches(dir_);
+    FAIL() << "two batches merged into one file";
+  } catch (const io::BadInput& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("sweep /s/aa.sweep.json (2 shards) and sweep /s/bb.sweep.json (2 shards) "
+                        "both merge into 'aa.jsonl'"),
+              std::string::npos)
+        << what;
+  }
+}
+
 TEST_F(Merge, ARangeWithAGapBetweenShardsIsRefused) {
   // Shard 1 claims points 3.. only: point 2 would belong to no shard.
   write_shard("aa", 0, row(0, "aa") + row(1, "aa"));
