@@ -119,7 +119,9 @@ void check_batch(Batch& b, const fs::path& dir) {
     b.incomplete.push_back(i);
     ++(listed || lock.state == LockState::dead ? b.dead : b.missing);
     if (!listing) continue;
-    if (lock.state == LockState::dead)
+    if (lock.state == LockState::dead && !lock.holder)
+      found.push_back("dead (" + lock.why + ")");  // no holder: not a lock of epviz
+    else if (lock.state == LockState::dead)
       found.push_back("dead (its lock was left by " + holder_of(lock) + ")");
     else if (!listed)
       found.push_back("missing (no manifest in " + io::printable(dir.string(), 300) + ")");

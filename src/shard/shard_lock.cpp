@@ -71,15 +71,15 @@ std::optional<LockHolder> read_holder(int fd) {
   return h;
 }
 
-// Time since the open file was last modified (0 when its clock is ahead of ours).
+// Time since the open file was last modified: negative when that time is
+// ahead of our clock (another node's clock, or a forged time).
 seconds heartbeat_age(int fd) {
   struct stat st {};
   if (::fstat(fd, &st) != 0) return seconds{0};
   const auto mtime = std::chrono::system_clock::time_point(
       std::chrono::duration_cast<std::chrono::system_clock::duration>(
           seconds(st.st_mtim.tv_sec) + std::chrono::nanoseconds(st.st_mtim.tv_nsec)));
-  const auto age = std::chrono::duration_cast<seconds>(std::chrono::system_clock::now() - mtime);
-  return age < seconds{0} ? seconds{0} : age;
+  return std::chrono::duration_cast<seconds>(std::chrono::system_clock::now() - mtime);
 }
 
 bool process_exists(long pid) {
@@ -97,6 +97,16 @@ LockStatus judge(const std::optional<LockHolder>& holder, seconds age) {
     s.why = alive ? "its process is alive" : "no such process on this host";
     return s;
   }
+  // A time ahead of ours by more than clocks differ is no heartbeat: it would
+  // keep the lock "running" until that time comes.
+  if (age < -clock_skew_allowed) {
+    s.state = LockState::dead;
+    s.why = "its heartbeat is " + std::to_string(-age.count()) +
+            " s in the future, which no live holder writes (clocks differ by at most " +
+            std::to_string(clock_skew_allowed.count()) + " s)";
+    return s;
+  }
+  if (age < seconds{0}) s.heartbeat_age = age = seconds{0};
   const bool fresh = age < heartbeat_stale;
   s.state = fresh ? LockState::running : LockState::dead;
   s.why = (fresh ? "heartbeat " : "no heartbeat for ") + std::to_string(age.count()) +
@@ -134,6 +144,25 @@ LockStatus watch_heartbeat(const fs::path& path, LockStatus s, std::chrono::mill
   return s;
 }
 
+// What keeps the open file from being a lock file of epviz ("" when it is
+// one): anything but a regular file with one name, or a file that holds
+// something other than a holder (an empty one is being made).
+std::string lock_file_problem(int fd) {
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) return std::strerror(errno);
+  if (S_ISFIFO(st.st_mode)) return "is a FIFO";
+  if (S_ISDIR(st.st_mode)) return "is a directory";
+  if (!S_ISREG(st.st_mode)) return "is not a regular file";
+  if (st.st_nlink != 1) return "has other hard links";
+  if (st.st_size > 0 && !read_holder(fd)) return "does not name a holder";
+  return "";
+}
+
+std::string not_a_lock(const fs::path& path, const std::string& why) {
+  return io::printable(path.string(), 300) + ": " + why +
+         ", not a shard lock of epviz; move it away and run again";
+}
+
 std::string busy_message(const fs::path& path, const LockStatus& s) {
   return io::printable(path.string(), 300) + ": this shard is being run by " +
          (s.holder ? describe(*s.holder) : std::string("another process")) + " (" + s.why +
@@ -150,9 +179,17 @@ std::string describe(const LockHolder& h) {
 }
 
 LockStatus probe_lock(const fs::path& path) {
-  // Opening (not only stat) makes NFS fetch the file's attributes afresh.
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
-  if (fd < 0) return {};
+  // Opening (not only stat) makes NFS fetch the file's attributes afresh;
+  // without blocking, which opening a FIFO for reading would.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
+  if (fd < 0) {
+    if (errno == ENOENT) return {};
+    return {LockState::dead, std::nullopt, seconds{0}, not_a_lock(path, "cannot be opened")};
+  }
+  if (const auto why = lock_file_problem(fd); !why.empty()) {
+    ::close(fd);
+    return {LockState::dead, std::nullopt, seconds{0}, not_a_lock(path, why)};
+  }
   LockStatus s = judge(read_holder(fd), heartbeat_age(fd));
   if (::flock(fd, LOCK_SH | LOCK_NB) != 0) {
     if (errno == EWOULDBLOCK) {
@@ -204,10 +241,22 @@ ShardLock::ShardLock(const fs::path& path, std::chrono::milliseconds watch)
   // A holder that ends removes the file while still holding its flock; a
   // copy that opened the file just before takes the flock of a file that no
   // longer has this name, and so tries again.
+  // The file is made exclusively and never followed: whatever else is at the
+  // path (a link to another file, a FIFO) is refused, not written or removed.
   for (int attempt = 0; held_->fd < 0; ++attempt) {
-    const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+    if (attempt >= 100) throw ShardError(name + ": the lock file keeps being replaced");
+    int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0644);
+    if (fd < 0 && errno == EEXIST)
+      fd = ::open(path.c_str(), O_RDWR | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
+    if (fd < 0 && errno == ENOENT) continue;  // its holder ended meanwhile
+    if (fd < 0 && errno == ELOOP) throw ShardError(not_a_lock(path, "is a symbolic link"));
+    if (fd < 0 && errno == EISDIR) throw ShardError(not_a_lock(path, "is a directory"));
     if (fd < 0)
       throw ShardError(name + ": cannot open the shard's lock file (" + std::strerror(errno) + ")");
+    if (const auto why = lock_file_problem(fd); !why.empty()) {
+      ::close(fd);
+      throw ShardError(not_a_lock(path, why));
+    }
     if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
       const int error = errno;
       LockStatus s{LockState::running, read_holder(fd), heartbeat_age(fd), "its lock is held"};
@@ -220,7 +269,6 @@ ShardLock::ShardLock(const fs::path& path, std::chrono::milliseconds watch)
     if (::fstat(fd, &opened) != 0 || ::stat(path.c_str(), &named) != 0 ||
         opened.st_ino != named.st_ino || opened.st_dev != named.st_dev) {
       ::close(fd);
-      if (attempt >= 100) throw ShardError(name + ": the lock file keeps being replaced");
       continue;
     }
     // Ours by flock; but where flock is not shared between nodes, a holder on

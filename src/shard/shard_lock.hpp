@@ -25,6 +25,9 @@ inline constexpr std::chrono::seconds heartbeat_interval{5};
 // cache and for clocks a few seconds apart; short enough that a merge soon
 // calls a lost node's shard dead.
 inline constexpr std::chrono::seconds heartbeat_stale{60};
+// How far another node's clock may run ahead of ours: a heartbeat further
+// in the future is not one (a forged time would keep a lock "running").
+inline constexpr std::chrono::seconds clock_skew_allowed{30};
 // How long a new holder watches a fresh lock of another machine for a beat
 // before it takes the lock for dead: two beats and some slack.
 inline constexpr std::chrono::milliseconds heartbeat_watch =

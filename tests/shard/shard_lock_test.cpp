@@ -5,12 +5,16 @@
 
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <mutex>
 #include <stop_token>
 #include <thread>
@@ -144,6 +148,89 @@ TEST(ShardLock, AnotherHostsLockWithAStaleHeartbeatIsDeadAtOnce) {
   EXPECT_LT(std::chrono::steady_clock::now() - start, heartbeat_watch) << "watched a stale lock";
   ASSERT_TRUE(lock.taken_over().has_value());
   EXPECT_EQ(lock.taken_over()->pid, 4242);
+}
+
+// A heartbeat an hour ahead is no clock skew: such a lock would stay
+// "running" for that hour. It is dead, and the reason says so.
+TEST(ShardLock, AHeartbeatFarInTheFutureIsNoHeartbeat) {
+  const test::TempDir dir;
+  const auto path = dir / "a.lock";
+  write_lock(path, "0123456789ab", 4242, -1h);
+  const auto seen = probe_lock(path);
+  EXPECT_EQ(seen.state, LockState::dead);
+  EXPECT_NE(seen.why.find("s in the future"), std::string::npos) << seen.why;
+  const ShardLock lock(path, 300ms);
+  ASSERT_TRUE(lock.taken_over().has_value());
+  // Clocks a few seconds apart are not refused.
+  const auto near = dir / "b.lock";
+  write_lock(near, "0123456789ab", 4242, -clock_skew_allowed / 3);
+  EXPECT_EQ(probe_lock(near).state, LockState::running);
+}
+
+// Opening a FIFO for reading waits for a writer: the merge's look at a lock
+// must not. Should it wait, a writer opened here after 20 s lets it go on,
+// and the test fails.
+TEST(ShardLock, AFifoAtTheLockPathIsNotWaitedOn) {
+  const test::TempDir dir;
+  const auto path = dir / "a.lock";
+  ASSERT_EQ(::mkfifo(path.c_str(), 0600), 0);
+  std::atomic<bool> probed{false}, freed{false};
+  std::jthread rescue([&](std::stop_token stop) {
+    std::mutex m;
+    std::condition_variable_any cv;
+    std::unique_lock lk(m);
+    if (cv.wait_for(lk, stop, 20s, [&] { return probed.load(); })) return;
+    freed = true;
+    const int fd = ::open(path.c_str(), O_WRONLY | O_NONBLOCK);
+    if (fd >= 0) ::close(fd);
+  });
+  const auto seen = probe_lock(path);
+  probed = true;
+  rescue.request_stop();
+  rescue.join();
+  EXPECT_FALSE(freed.load()) << "probe_lock waited on the FIFO";
+  EXPECT_EQ(seen.state, LockState::dead);
+  EXPECT_NE(seen.why.find("a.lock: is a FIFO, not a shard lock of epviz"), std::string::npos)
+      << seen.why;
+}
+
+// What is at a lock path and is not a lock of epviz is refused, not written
+// through (a hard link's other name keeps its text) nor removed (the FIFO).
+TEST(ShardLock, AFileThatIsNotALockOfEpvizIsRefusedAndKept) {
+  const test::TempDir dir;
+  const auto victim = dir / "victim.txt";
+  std::ofstream(victim) << "precious";
+  struct Case {
+    std::string name, why;
+    std::function<void(const fs::path&)> make;
+  };
+  const std::vector<Case> cases{
+      {"hard", "has other hard links", [&](const fs::path& p) { fs::create_hard_link(victim, p); }},
+      {"soft", "is a symbolic link", [&](const fs::path& p) { fs::create_symlink(victim, p); }},
+      {"fifo", "is a FIFO", [](const fs::path& p) { ASSERT_EQ(::mkfifo(p.c_str(), 0600), 0); }},
+      {"dir", "is a directory", [](const fs::path& p) { fs::create_directory(p); }},
+      {"text", "does not name a holder",
+       [](const fs::path& p) { std::ofstream(p) << "my notes"; }}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    const auto path = dir / (c.name + ".lock");
+    c.make(path);
+    std::string why;
+    try {
+      ShardLock lock(path, 100ms);
+      ADD_FAILURE() << "taken";
+    } catch (const ShardBusy& e) {
+      ADD_FAILURE() << "taken for busy: " << e.what();
+    } catch (const ShardError& e) {
+      why = e.what();
+    }
+    EXPECT_NE(why.find(c.name + ".lock: " + c.why + ", not a shard lock of epviz"),
+              std::string::npos)
+        << why;
+    EXPECT_TRUE(fs::exists(fs::symlink_status(path))) << "removed";
+    EXPECT_EQ(test::slurp(victim), "precious");
+  }
+  EXPECT_TRUE(fs::is_fifo(dir / "fifo.lock"));
 }
 
 }  // namespace
