@@ -17,6 +17,7 @@
 #include "io/bad_input.hpp"
 #include "io/json_reader.hpp"
 #include "io/png_writer.hpp"
+#include "io/temp_registry.hpp"
 #include "section/section_chart.hpp"
 #include "section/section_csv.hpp"
 #include "section/section_run.hpp"
@@ -119,6 +120,11 @@ int run_section(const SectionOptions& o) {
   if (part) {
     lock.emplace(part->lock_path);
     shard::start_rows_shard(*part);  // "completed": false until the end
+  // As simulate and render: SIGINT and SIGTERM remove the temporaries being
+  // written, and those a run killed with SIGKILL left are removed now.
+  io::install_temporary_cleanup();
+  for (const auto& path : {job.csv, job.png, job.svg, o.h5})
+    io::remove_stale_temporaries_beside(path);
   }
   const auto start = std::chrono::steady_clock::now();
   const auto results =

@@ -38,14 +38,6 @@ SimulationFields fields_from_job(const std::string& path) {
   return f;
 }
 
-// Removes temporaries that killed runs left beside `path` (the process is gone).
-void remove_stale_beside(const std::string& path) {
-  if (path.empty() || path == "-") return;
-  const auto target = io::resolve_output(path);
-  if (target.kind == io::OutputKind::replace)
-    io::remove_stale_temporaries(target.path.parent_path());
-}
-
 int run_simulate(const RawOptions& raw) {
   SimulationFields fields;
   if (!raw.job.empty()) fields = fields_from_job(raw.job);
@@ -78,9 +70,9 @@ int run_simulate(const RawOptions& raw) {
   // cannot corrupt the data.
   std::FILE* summary = csv_to_stdout || report_to_stdout ? stderr : stdout;
   io::install_temporary_cleanup();
-  remove_stale_beside(raw.csv);
-  remove_stale_beside(raw.report_json);
-  remove_stale_beside(raw.h5);
+  io::remove_stale_temporaries_beside(raw.csv);
+  io::remove_stale_temporaries_beside(raw.report_json);
+  io::remove_stale_temporaries_beside(raw.h5);
 
   nlohmann::json reports = nlohmann::json::array();
   int failures = 0;

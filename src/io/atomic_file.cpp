@@ -61,6 +61,18 @@ bool writes_to_standard_output(const fs::path& target) {
   return out.st_dev == file.st_dev && out.st_ino == file.st_ino;
 }
 
+void remove_stale_temporaries_beside(const std::filesystem::path& target) {
+  if (target.empty() || target == "-") return;
+  try {
+    const auto resolved = resolve_output(target);
+    if (resolved.kind == OutputKind::replace)
+      remove_stale_temporaries(resolved.path.parent_path().empty() ? std::filesystem::path(".")
+                                                                   : resolved.path.parent_path());
+  } catch (const FileWriteError&) {
+    // A link loop: writing it fails with its own message.
+  }
+}
+
 AtomicFile::AtomicFile(std::filesystem::path target, bool sync)
     : target_(std::move(target)), resolved_(resolve_output(target_)), sync_(sync) {
   switch (resolved_.kind) {

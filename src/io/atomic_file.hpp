@@ -50,6 +50,13 @@ OutputTarget resolve_output(const std::filesystem::path& target);
 // command that writes data there prints its messages to stderr instead.
 bool writes_to_standard_output(const std::filesystem::path& target);
 
+// Removes the temporaries that killed runs left beside the output `target`
+// (remove_stale_temporaries in its directory, links followed as the writer
+// follows them). "-", "" and streams have none. A command calls it for each
+// output before writing, so that a run killed with SIGKILL leaves nothing
+// for good; SIGINT and SIGTERM remove the temporaries at once (temp_registry.hpp).
+void remove_stale_temporaries_beside(const std::filesystem::path& target);
+
 // An open temporary file that becomes `target` on commit(). If it is destroyed
 // without commit() (an exception, an early return) the temporary is removed.
 // For a stream target (see resolve_output) the target itself is written and

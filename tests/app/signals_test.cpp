@@ -111,5 +111,28 @@ TEST(Signals, SimulateRemovesStaleTemporariesBesideItsOutputs) {
   EXPECT_TRUE(fs::exists(dir / "s.csv"));
 }
 
+// A section killed with SIGKILL while writing leaves its temporaries; the
+// next run removes them beside each of its outputs, as simulate does.
+TEST(Signals, SectionRemovesStaleTemporariesBesideItsOutputs) {
+  test::TempDir dir;
+  fs::create_directories(dir / "pictures");
+  const auto stale_csv = dir / ("c.csv" + io::temporary_suffix(dead_pid()));
+  const auto stale_svg = dir / "pictures" / ("c.svg" + io::temporary_suffix(dead_pid()));
+  const auto live = dir / ("d.csv" + io::temporary_suffix(::getpid()));  // this test is alive
+  for (const auto& f : {stale_csv, stale_svg, live}) std::ofstream(f) << "being written";
+  const nlohmann::json section = {{"case", "generic"},
+                                  {"level", {{"energy", 2}, {"area", 1}}},
+                                  {"orbits", 1},
+                                  {"crossings", 3},
+                                  {"csv", (dir / "c.csv").string()},
+                                  {"svg", (dir / "pictures" / "c.svg").string()}};
+  std::ofstream(dir / "s.section.json") << section.dump();
+  const auto r = test::run_epviz("section " + (dir / "s.section.json").string(), dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(stale_csv)) << "stale temporary beside the CSV kept";
+  EXPECT_FALSE(fs::exists(stale_svg)) << "stale temporary beside the SVG kept";
+  EXPECT_TRUE(fs::exists(live)) << "temporary of a live process removed";
+}
+
 }  // namespace
 }  // namespace epviz
