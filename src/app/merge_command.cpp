@@ -271,7 +271,7 @@ void require_separate_merge_files(
   std::vector<std::optional<section::MergedSection>> sections(batches.size());
   for (std::size_t i = 0; i < batches.size(); ++i)
     if (batches[i].kind == "sweep")
-      rows[i] = shard::merged_rows(batches[i], dir);
+      rows[i] = shard::merged_rows(batches[i], dir, sweep::ftle_curve_problem);
     else if (batches[i].kind == "section")
       sections[i] = section::read_section_shards(batches[i], dir, out_dir);
   fs::create_directories(out_dir);

@@ -107,6 +107,7 @@ std::vector<OrbitResult> crossings_from_csv(const SectionJob& job, std::string_v
   if (!text.starts_with(header))
     throw io::BadInput(file + ": line 1: expected the header " +
                        header.substr(0, header.size() - 1));
+  const std::vector<std::string> columns = crossing_columns(job);
   std::vector<OrbitResult> results;
   std::size_t at = header.size();
   const std::size_t first_field = several_methods(job) ? 1 : 0;
@@ -124,6 +125,17 @@ std::vector<OrbitResult> crossings_from_csv(const SectionJob& job, std::string_v
       while (method < job.methods.size() && method_label(job.methods[method]) != f[0]) ++method;
       if (method == job.methods.size())
         fail(std::string("method '") + io::printable(f[0]) + "' is not one of the section's");
+    }
+    // Every value a number the merge can draw and join: "nan" or "inf" parse
+    // as doubles but are no crossing's (extra_integral is empty where the
+    // case has none).
+    const std::size_t last = f.size() - 1;
+    for (std::size_t k = first_field + 2; k <= last; ++k) {
+      double x = 0.0;
+      if (k == last && f[k].empty()) continue;
+      if (!parse(f[k], x) || !std::isfinite(x))
+        fail("column '" + columns[k] + "': expected a finite number, got '" + io::printable(f[k]) +
+             "'");
     }
     sim::Crossing c;
     int orbit = 0;

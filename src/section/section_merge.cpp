@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "io/bad_input.hpp"
+#include "io/printable.hpp"
 #include "section/section_csv.hpp"
 
 namespace epviz::section {
@@ -52,7 +53,7 @@ MergedSection read_section_shards(const shard::Batch& b, const fs::path& dir,
     for (const auto& f : shard.files) {
       const fs::path path = dir / f.path;
       const std::string text = file_text(path);
-      for (auto& r : crossings_from_csv(m.job, text, path.string())) {
+      for (auto& r : crossings_from_csv(m.job, text, io::printable(path.string(), 300))) {
         const long run = long(r.method * starts) + r.orbit - 1;
         if (run < shard.items.first || run >= shard.items.end)
           throw io::BadInput(path.string() + ": orbit " + std::to_string(r.orbit) +

@@ -55,7 +55,7 @@ bool same_row(const Json& a, const Json& b) {
   return a_result == b_result;
 }
 
-std::vector<Json> merged_rows(const Batch& b, const fs::path& dir) {
+std::vector<Json> merged_rows(const Batch& b, const fs::path& dir, const RowCheck& check) {
   std::vector<Json> rows;
   std::vector<std::string> names;  // of the files read, for messages
   struct Seen {
@@ -78,6 +78,9 @@ std::vector<Json> merged_rows(const Batch& b, const fs::path& dir) {
           throw io::BadInput(names.back() + ": a row (index " + std::to_string(index) +
                              ") that is not one of shard " + std::to_string(i) + "'s points");
         const Seen here{rows.size(), names.size() - 1, k + 1};
+        if (check)
+          if (const std::string problem = check(r); !problem.empty())
+            throw io::BadInput(where(here) + ": " + problem);
         const auto [it, first] = seen.try_emplace(index, here);
         if (!first) {
           if (!same_row(rows[it->second.row], r))

@@ -4,6 +4,7 @@
 #include <limits>
 #include <string>
 
+#include "io/json_reader.hpp"
 #include "io/json_text.hpp"
 #include "io/number_text.hpp"
 #include "sweep/atlas_labels.hpp"
@@ -47,6 +48,22 @@ std::string point_name(const Json& row) {
 
 }  // namespace
 
+std::string ftle_curve_problem(const Json& row) {
+  const auto it = row.find("ftle_curve");
+  if (it == row.end()) return "";
+  const std::string allowed =
+      "key 'ftle_curve': expected a list of [T, λ] pairs, T a positive number and λ a number or "
+      "null";
+  if (!it->is_array()) return allowed + ", got " + io::describe(*it);
+  for (std::size_t i = 0; i < it->size(); ++i) {
+    const Json& p = (*it)[i];
+    const bool ok = p.is_array() && p.size() == 2 && p[0].is_number() && p[0].get<double>() > 0.0 &&
+                    (p[1].is_number() || p[1].is_null());
+    if (!ok) return allowed + "; item " + std::to_string(i) + " is " + io::describe(p);
+  }
+  return "";
+}
+
 std::optional<chart::Figure> ftle_curve_figure(const std::vector<Json>& rows,
                                                const std::optional<FtleSettings>& ftle) {
   chart::ChartSpec c;
@@ -64,6 +81,7 @@ std::optional<chart::Figure> ftle_curve_figure(const std::vector<Json>& rows,
     chart::ChartSeries s;
     s.name = point_name(row);
     for (const auto& p : row["ftle_curve"]) {
+      if (!p[1].is_number()) continue;  // null: λ was not finite there
       const double t = p.at(0).get<double>(), lambda = p.at(1).get<double>();
       s.points.push_back({t, lambda});
       t_min = t_min > 0.0 ? std::min(t_min, t) : t;

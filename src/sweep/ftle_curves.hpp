@@ -5,6 +5,7 @@
 // exponent; a regular orbit's falls towards 0 like ln T / T, since its
 // neighbours part only linearly (docs/cluster.md, "FTLE").
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <nlohmann/json_fwd.hpp>
@@ -18,6 +19,13 @@ namespace epviz::sweep {
 // log axes (λ <= 0 breaks its line there), and a dashed guide
 // c · ln T / T through the lowest line's last point. nullopt when no row has
 // a curve. The file name is "ftle_curves.png".
+// What is wrong with a row's `ftle_curve` ("" when it has none or a lawful
+// one): [[T, λ], ...] with T a positive number and λ a number or null (a
+// value that was not finite), as "key 'ftle_curve': ...". Rows come from
+// shard files, which anyone may edit: the merge checks them with this before
+// ftle_curve_figure reads them.
+std::string ftle_curve_problem(const nlohmann::json& row);
+
 std::optional<chart::Figure> ftle_curve_figure(const std::vector<nlohmann::json>& rows,
                                                const std::optional<FtleSettings>& ftle);
 

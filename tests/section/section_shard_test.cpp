@@ -6,6 +6,7 @@
 #include <fstream>
 #include <map>
 
+#include "shard/manifest.hpp"
 #include "support/cli.hpp"
 
 namespace epviz::test {
@@ -92,7 +93,6 @@ TEST(SectionShard, TheMergeRefusesASectionFileChangedSince) {
   expect_bad_input(f.run(f.d.path(), "merge " + f.shards.string()), "changed since");
 }
 
-// A shard that cannot be one is refused before any orbit runs.
 // The merge writes a section's pictures into its output folder under their
 // file names: a name that is one of the merge's own files there (the merged
 // CSV, a shard's CSV or manifest, the section file) is refused before
@@ -130,6 +130,37 @@ TEST(SectionShard, PicturesNamingTheMergesOwnFilesAreRefused) {
   }
 }
 
+// A shard's CSV is a file anyone may edit: a value that is not a finite
+// number ("nan", "inf") is refused naming the file, line and column, though
+// the manifest was made to match it.
+TEST(SectionShard, AValueThatIsNotAFiniteNumberIsRefused) {
+  for (const std::string bad : {"nan", "-inf", "1e999"}) {
+    SCOPED_TRACE(bad);
+    Folders f;
+    for (int i = 0; i < 2; ++i)
+      ASSERT_EQ(
+          f.run(f.shards, "section " + f.file.string() + " --shard " + std::to_string(i) + "/2")
+              .exit_code,
+          0);
+    const fs::path manifest = f.shards / "k.shard-0-of-2.manifest.json";
+    shard::Manifest m = shard::read_manifest(manifest);
+    const fs::path csv = f.shards / m.files.at(0).path;
+    std::string text = slurp(csv);
+    // Line 3, column omega1 (the fourth): orbit,crossing,t,omega1,...
+    std::size_t at = text.find('\n', text.find('\n') + 1) + 1;
+    for (int comma = 0; comma < 3; ++comma) at = text.find(',', at) + 1;
+    text.replace(at, text.find(',', at) - at, bad);
+    std::ofstream(csv, std::ios::trunc) << text;
+    m.files.clear();
+    shard::add_file(m, f.shards, csv);
+    shard::write_manifest(manifest, m);
+    const auto r = f.run(f.d.path(), "merge " + f.shards.string());
+    expect_bad_input(r, "k.shard-0-of-2.csv: line 3: column 'omega1'");
+    EXPECT_FALSE(fs::exists(f.shards / "k.csv")) << "merged despite exit 2";
+  }
+}
+
+// A shard that cannot be one is refused before any orbit runs.
 TEST(SectionShard, BadShardOptionsAreRefused) {
   Folders f;
   const std::string section = "section " + f.file.string();
