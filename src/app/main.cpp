@@ -1,6 +1,7 @@
 // The epviz command line. Every user error ends here as one line on stderr and
 // exit code 2; numerical failures are reported by the commands (exit code 3).
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <map>
 
@@ -20,6 +21,7 @@
 #include "io/bad_input.hpp"
 #include "numerics/simd_path.hpp"
 
+#include "io/printable.hpp"
 int main(int argc, char** argv) {
   epviz::app::cli::Program program{
       "epviz: the heavy rigid body about a fixed point (Euler-Poisson), simulated and rendered "
@@ -64,7 +66,11 @@ int main(int argc, char** argv) {
     try {
       (void)epviz::numerics::chosen_simd_path();
     } catch (const std::invalid_argument& e) {
-      throw epviz::io::BadInput(e.what());
+      // "EPVIZ_SIMD=VALUE: why", with the value quoted as every message quotes one.
+      const char* set = std::getenv("EPVIZ_SIMD");
+      const std::string given = "EPVIZ_SIMD=" + std::string(set ? set : ""), why = e.what();
+      if (!why.starts_with(given)) throw epviz::io::BadInput(epviz::io::printable(why, 300));
+      throw epviz::io::BadInput("EPVIZ_SIMD=" + epviz::io::quoted(set) + why.substr(given.size()));
     }
     if (const std::string name = program.subcommand(); !name.empty()) return commands.at(name)();
   } catch (const epviz::io::BadInput& e) {

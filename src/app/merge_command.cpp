@@ -110,6 +110,15 @@ std::optional<sweep::SweepSpec> saved_sweep(const shard::Manifest& m, const std:
   return std::nullopt;
 }
 
+// The atlases to draw of a sweep: --atlas, else those of its sweep file.
+std::vector<sweep::AtlasRequest> atlas_requests(const std::optional<sweep::SweepSpec>& saved,
+                                                const MergeOptions& o) {
+  std::vector<sweep::AtlasRequest> requests;
+  for (const auto& a : o.atlases) requests.push_back(sweep::parse_atlas_option(a));
+  if (o.atlases.empty() && saved) requests = saved->atlases;
+  return requests;
+}
+
 // Returns false when the sweep's self-check found it not converged.
 bool merge_sweep(const shard::Batch& b, const std::vector<Json>& rows, const fs::path& out_dir,
                  const MergeOptions& o) {
@@ -140,9 +149,7 @@ bool merge_sweep(const shard::Batch& b, const std::vector<Json>& rows, const fs:
     std::printf("%s: rows -> %s\n", shard::batch_name(b).c_str(), h5_beside(out).string().c_str());
   }
   const auto saved = saved_sweep(any, b.hash);
-  std::vector<sweep::AtlasRequest> requests;
-  for (const auto& a : o.atlases) requests.push_back(sweep::parse_atlas_option(a));
-  if (o.atlases.empty() && saved) requests = saved->atlases;
+  const auto requests = atlas_requests(saved, o);
   // The sample is rerun here, where every row and the sweep file are at hand
   // (docs/cluster.md, "Atlases check themselves").
   std::optional<sweep::SelfCheck> check;
@@ -180,13 +187,6 @@ void merge_render(const shard::Batch& b, const fs::path& dir, const fs::path& ou
               (out_dir / any.output).string().c_str());
 }
 
-int run_merge(const MergeOptions& o) {
-#ifdef EPVIZ_HAVE_RENDER
-  (void)render::GlChoice(o.gl);  // an unknown backend is refused before anything is merged
-  (void)vector::parse_figure_format(o.format);
-#endif
-  const fs::path dir = o.dir;
-  std::error_code ec;
 // What the merge reads (each shard's manifest, lock and files, each batch's
 // sweep or section file) and writes (--resubmit, the merged files), for the
 // one check that no output replaces an input or another output
@@ -228,6 +228,14 @@ void require_separate_merge_files(
   io::require_separate_files(inputs, outputs);
 }
 
+int run_merge(const MergeOptions& o) {
+#ifdef EPVIZ_HAVE_RENDER
+  (void)render::GlChoice(o.gl);  // an unknown backend is refused before anything is merged
+  (void)vector::parse_figure_format(o.format);
+#endif
+  for (const auto& a : o.atlases) (void)sweep::parse_atlas_option(a);
+  const fs::path dir = o.dir;
+  std::error_code ec;
   if (!fs::is_directory(dir, ec))
     throw io::BadInput("DIR: '" + o.dir +
                        "' is not a directory (give the directory the shards wrote to)");
@@ -239,6 +247,7 @@ void require_separate_merge_files(
     throw io::BadInput("DIR: no shard manifests (*" + std::string(shard::manifest_suffix) +
                        ") in " + o.dir +
                        "; run epviz sweep or render with --shard I/N there first");
+  require_separate_merge_files(batches, dir, out_dir, o);
   int incomplete = 0, to_redo = 0;
   for (auto& b : batches) {
     shard::check_batch(b, dir);
@@ -247,7 +256,6 @@ void require_separate_merge_files(
     incomplete += !report.empty();
     to_redo += !b.incomplete.empty();
   }
-  require_separate_merge_files(batches, dir, out_dir, o);
   if (incomplete) {
     std::fprintf(stderr, "epviz: error: %d of %zu batches in %s are incomplete; nothing merged\n",
                  incomplete, batches.size(), o.dir.c_str());
@@ -274,6 +282,13 @@ void require_separate_merge_files(
       rows[i] = shard::merged_rows(batches[i], dir, sweep::ftle_curve_problem);
     else if (batches[i].kind == "section")
       sections[i] = section::read_section_shards(batches[i], dir, out_dir);
+  require_separate_merge_files(batches, dir, out_dir, o, sections);
+  // Every atlas is checked against its rows before anything is written.
+  for (std::size_t i = 0; i < batches.size(); ++i)
+    if (batches[i].kind == "sweep")
+      for (const auto& q :
+           atlas_requests(saved_sweep(batches[i].shards.begin()->second, batches[i].hash), o))
+        sweep::check_atlas_request(rows[i], q);
   fs::create_directories(out_dir);
   int unconverged = 0;
   for (std::size_t i = 0; i < batches.size(); ++i) {
@@ -282,7 +297,6 @@ void require_separate_merge_files(
     else if (sections[i])
       write_merged_section(*sections[i], o.gl,
                            o.h5 ? h5_beside(sections[i]->job.csv).string() : std::string());
-  require_separate_merge_files(batches, dir, out_dir, o, sections);
     else
       merge_render(batches[i], dir, out_dir);
   }

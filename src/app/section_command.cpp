@@ -100,6 +100,9 @@ int run_section(const SectionOptions& o) {
   const auto shard = shard::shard_from_options(o.shard, o.shard_count);
   if (!o.out.empty()) job.csv = o.out;
   h5::check_h5_output("--h5", o.h5);
+#ifdef EPVIZ_HAVE_RENDER
+  (void)render::GlChoice(o.gl);  // an unknown backend is refused before the CSV is written
+#endif
   section::check_outputs(job, o.out.empty() ? "" : "--out", {{"--h5", o.h5}});
   const auto starts = section::section_starts(job);
   const long runs = section::run_count(job, starts.size());

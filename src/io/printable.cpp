@@ -86,4 +86,11 @@ std::string printable(std::string_view text, std::size_t max_bytes) {
   return out;
 }
 
+std::string quoted(std::string_view text, std::size_t max_bytes) {
+  std::string out(1, '\'');
+  out += printable(text, max_bytes);
+  out += '\'';
+  return out;
+}
+
 }  // namespace epviz::io

@@ -14,4 +14,8 @@ namespace epviz::io {
 // "... (N bytes)".
 std::string printable(std::string_view text, std::size_t max_bytes = 60);
 
+// How a message quotes a value it was given: printable(text, max_bytes) in
+// single quotes ("'bo\\ngus'", "'xxx... (100000 bytes)'").
+std::string quoted(std::string_view text, std::size_t max_bytes = 60);
+
 }  // namespace epviz::io

@@ -4,6 +4,7 @@
 
 #include "io/bad_input.hpp"
 #include "io/data_dir.hpp"
+#include "io/printable.hpp"
 #include "job/job_file.hpp"
 
 namespace epviz::job {
@@ -65,7 +66,7 @@ fs::path job_file_named(const std::string& arg, const fs::path& dir) {
     const auto file = dir / (name + ".json");
     if (!is_other_command_file(file) && fs::is_regular_file(file, error)) return file;
   }
-  throw io::BadInput(arg +
+  throw io::BadInput(io::quoted(arg, 200) +
                      ": no such job file, nor a shipped job of that name (epviz render "
                      "--list-jobs lists them)");
 }

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "io/json_text.hpp"
+#include "io/printable.hpp"
 #include "physics/notation.hpp"
 #include "sweep/atlas_labels.hpp"
 
@@ -68,6 +69,20 @@ std::string safe(const std::string& s) {
   return out;
 }
 
+// The sweep's axes: those of the row of the lowest index (every row has the
+// same; a forged row without them has none).
+std::vector<std::string> axis_names(const std::vector<Json>& rows) {
+  const Json* first = nullptr;
+  for (const auto& r : rows)
+    if (!first || r["index"].get<long>() < (*first)["index"].get<long>()) first = &r;
+  std::vector<std::string> names;
+  if (!first) return names;
+  const auto axes = first->find("axes");
+  if (axes == first->end() || !axes->is_object()) return names;
+  for (auto it = axes->begin(); it != axes->end(); ++it) names.push_back(it.key());
+  return names;
+}
+
 }  // namespace
 
 AtlasRequest parse_atlas_option(const std::string& text) {
@@ -77,45 +92,47 @@ AtlasRequest parse_atlas_option(const std::string& text) {
   if (a == std::string::npos || a == 0 || b == a + 1 || b + 1 >= text.size())
     throw AtlasError(
         "--atlas: expected METRIC:XAXIS:YAXIS (e.g. ftle:gamma[0]:gamma[1] or "
-        "largest_stable:step:energy:method), got '" +
-        text + "'");
+        "largest_stable:step:energy:method), got " +
+        io::quoted(text));
   return {text.substr(0, a), text.substr(a + 1, b - a - 1), text.substr(b + 1)};
+}
+
+void check_atlas_request(const std::vector<Json>& rows, const AtlasRequest& q) {
+  const std::string atlas = "atlas " + io::quoted(q.metric);
+  if (rows.empty()) throw AtlasError(atlas + ": the sweep has no rows");
+  const std::vector<std::string> names = axis_names(rows);
+  auto is_axis = [&](const std::string& n) {
+    return std::find(names.begin(), names.end(), n) != names.end();
+  };
+  std::string allowed;
+  for (const auto& n : names) allowed += (allowed.empty() ? "" : ", ") + io::printable(n);
+  const std::string stable = "largest_stable:";
+  std::vector<std::string> axes{q.x, q.y};
+  if (q.metric.starts_with(stable)) axes.push_back(q.metric.substr(stable.size()));
+  for (const auto& n : axes)
+    if (!is_axis(n))
+      throw AtlasError(atlas + ": " + io::quoted(n) +
+                       " is not an axis of the sweep (axes: " + allowed + ")");
+  if (!q.metric.starts_with(stable) && q.metric != "time_to_failure" && !has_metric(rows, q.metric))
+    throw AtlasError(atlas +
+                     ": no row has this metric (e.g. ftle, reference_error, "
+                     "max_relative_drift.energy, time_to_failure, largest_stable:AXIS, "
+                     "cpu_seconds)");
 }
 
 std::vector<AtlasFigure> atlas_figures(const std::vector<Json>& rows, const AtlasRequest& q,
                                        const std::optional<FtleSettings>& ftle,
                                        const SelfCheck* check) {
-  if (rows.empty()) throw AtlasError("atlas " + q.metric + ": the sweep has no rows");
+  check_atlas_request(rows, q);
   std::vector<Json> sorted = rows;
   std::sort(sorted.begin(), sorted.end(), [](const Json& a, const Json& b) {
     return a["index"].get<long>() < b["index"].get<long>();
   });
   // Axis names and their values in sweep order (first appearance in index order).
-  const Json& first_axes = sorted.front()["axes"];
-  std::vector<std::string> names;
-  for (auto it = first_axes.begin(); it != first_axes.end(); ++it) names.push_back(it.key());
-  auto is_axis = [&](const std::string& n) {
-    return std::find(names.begin(), names.end(), n) != names.end();
-  };
-  std::string allowed;
-  for (const auto& n : names) allowed += (allowed.empty() ? "" : ", ") + n;
-  for (const auto* n : {&q.x, &q.y})
-    if (!is_axis(*n))
-      throw AtlasError("atlas " + q.metric + ": '" + *n +
-                       "' is not an axis of the sweep (axes: " + allowed + ")");
-  std::string reduced;
+  const std::vector<std::string> names = axis_names(sorted);
   const std::string stable = "largest_stable:";
-  if (q.metric.starts_with(stable)) {
-    reduced = q.metric.substr(stable.size());
-    if (!is_axis(reduced))
-      throw AtlasError("atlas " + q.metric + ": '" + reduced +
-                       "' is not an axis of the sweep (axes: " + allowed + ")");
-  } else if (q.metric != "time_to_failure" && !has_metric(sorted, q.metric)) {
-    throw AtlasError(
-        "atlas " + q.metric +
-        ": no row has this metric (e.g. ftle, reference_error, "
-        "max_relative_drift.energy, time_to_failure, largest_stable:AXIS, cpu_seconds)");
-  }
+  const std::string reduced =
+      q.metric.starts_with(stable) ? q.metric.substr(stable.size()) : std::string();
   std::map<std::string, std::vector<std::string>> values;  // labels in order
   std::map<std::string, std::map<std::string, std::size_t>> position;
   std::map<std::string, std::map<std::string, double>> number;  // of numeric axes' labels

@@ -38,6 +38,11 @@ struct AtlasFigure {
 // "metric:x:y" (the --atlas option). Throws AtlasError naming --atlas.
 AtlasRequest parse_atlas_option(const std::string& text);
 
+// Throws AtlasError when `request` cannot be drawn from `rows` (any order):
+// no rows, an axis that is not in them or a metric that no row has. The
+// merge asks this of every atlas before it writes anything.
+void check_atlas_request(const std::vector<nlohmann::json>& rows, const AtlasRequest& request);
+
 // `rows`: the sweep's rows (any order). Throws AtlasError for an axis that
 // is not in the rows or a metric that no row has. Axes are titled by their
 // symbols and numeric ones carry their values (round ticks); the note under

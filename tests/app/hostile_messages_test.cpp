@@ -64,5 +64,35 @@ TEST(HostileMessages, AHugeOutputDirIsBadInputQuotedShort) {
   EXPECT_EQ(dir.file_count(), 1u) << "something besides the job file was created";
 }
 
+// A value with a newline, a terminal's escape code and 5,000 more bytes, as
+// one shell word: the message quotes it escaped and cut short, on one line.
+const std::string kHostileValue = "bo\ngus\x1b[31m" + std::string(5000, 'x');
+
+void expect_quoted_short(const test::CliResult& r, const std::string& must_name) {
+  test::expect_bad_input(r, must_name);
+  EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << "an escape code reached the terminal";
+  EXPECT_NE(r.err.find("'bo\\ngus\\u001b[31mxxx"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("(5011 bytes)"), std::string::npos) << r.err;
+}
+
+TEST(HostileMessages, AJobNameIsQuotedEscapedAndShort) {
+  const test::TempDir dir;
+  expect_quoted_short(test::run_epviz("render '" + kHostileValue + "'", dir), "no such job file");
+}
+
+TEST(HostileMessages, AnEpvizSimdValueIsQuotedEscapedAndShort) {
+  const test::TempDir dir;
+  expect_quoted_short(test::run_epviz("cases", dir, "env EPVIZ_SIMD='" + kHostileValue + "'"),
+                      "EPVIZ_SIMD=");
+}
+
+TEST(HostileMessages, AnAtlasOptionIsQuotedEscapedAndShort) {
+  const test::TempDir dir;
+  // Not METRIC:X:Y: refused before the folder is looked at.
+  expect_quoted_short(
+      test::run_epviz("merge " + dir.path().string() + " --atlas '" + kHostileValue + "'", dir),
+      "--atlas: expected METRIC:XAXIS:YAXIS");
+}
+
 }  // namespace
 }  // namespace epviz

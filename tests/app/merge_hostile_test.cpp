@@ -118,6 +118,17 @@ TEST_F(MergeHostile, AForeignCommandIsNotEchoedAsAdvice) {
   EXPECT_EQ(r.err.find("run: rm"), std::string::npos) << r.err;
 }
 
+// A metric no row has is known once the rows are read: refused then, before
+// the merged rows are written; the metric quoted escaped and short.
+TEST_F(MergeHostile, AnAtlasOfAnUnknownMetricIsRefusedBeforeAnythingIsWritten) {
+  const std::string metric = "bo\ngus\x1b[31m" + std::string(3000, 'x');
+  const auto r =
+      run_epviz("merge " + shards_.string() + " --atlas '" + metric + ":energy:energy'", d_);
+  expect_bad_input(r, "no row has this metric");
+  EXPECT_NE(r.err.find("atlas 'bo\\ngus\\u001b[31mxxx"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(merged_)) << "rows written before the atlas was checked";
+}
+
 TEST_F(MergeHostile, AMillionMissingShardsAreSummarisedInAFewLines) {
   edit([](Json& j) {
     j["shards"] = 1000000;

@@ -26,7 +26,7 @@ TEST(SimdEnvironment, AValueNamingNoPathIsRefusedBeforeAnyWork) {
         "section " + section + " --out " + (dir / "crossings.csv").string() + " --shard 0/2",
         std::string("cases")}) {
     const auto r = test::run_epviz(args, dir);
-    test::expect_bad_input(r, "EPVIZ_SIMD=avx9");
+    test::expect_bad_input(r, "EPVIZ_SIMD='avx9'");
     EXPECT_NE(r.err.find("avx512"), std::string::npos) << "the allowed values: " << r.err;
   }
   EXPECT_EQ(dir.file_count(), 0u) << "a shard was started";

@@ -198,6 +198,21 @@ TEST(SectionCommand, ALostOrbitIsANumericalFailureAndNothingIsWritten) {
 }
 
 TEST(SectionCsv, LeavesALostOrbitOut) {
+// An unknown GL backend is bad input like any other: refused before the
+// orbits run and the CSV is written, not when the picture is drawn.
+TEST(SectionCommand, AnUnknownGlBackendIsRefusedBeforeTheCsvIsWritten) {
+  TempDir d;
+  const std::string csv = (d / "g.csv").string();
+  std::ofstream(d / "s.section.json") << R"({"case": "generic", "level": {"energy": 2, "area": 1},
+      "orbits": 1, "crossings": 3, "csv": ")" +
+                                             csv + R"(", "svg": ")" + (d / "g.svg").string() + ""
+}
+";
+    const auto r = run_epviz("section " + (d / "s.section.json").string() + " --gl bogus", d);
+expect_bad_input(r, "--gl");
+EXPECT_FALSE(fs::exists(csv)) << "the CSV was written before --gl was checked";
+}
+
   section::SectionJob job;
   job.case_id = physics::Case::generic;
   job.body = physics::preset(job.case_id).body;
