@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdlib>
+#include <utility>
+#include <vector>
 
 namespace epviz::shard {
 namespace {
@@ -54,6 +56,12 @@ std::optional<ShardSpec> shard_from_environment(const Environment& env, long cou
                        ", got " + (v ? quoted_text(*v) : std::string("nothing (unset)")));
     return *n;
   };
+  // Each variable that is set says which shard this task is: the index
+  // variables of the other schedulers must then say the same (a job started
+  // by one scheduler inside another's task, or a variable left from a test),
+  // else the task would run some other task's share.
+  std::vector<std::pair<std::string, long>> said;  // "NAME=value", the shard it says
+  std::optional<ShardSpec> chosen;
   if (env("SLURM_ARRAY_TASK_ID")) {
     const long id = number("SLURM_ARRAY_TASK_ID", 1'000'000'000);
     const long count = number("SLURM_ARRAY_TASK_COUNT", max_shards);
@@ -79,11 +87,16 @@ std::optional<ShardSpec> shard_from_environment(const Environment& env, long cou
       throw ShardError("SLURM_ARRAY_TASK_ID: task " + std::to_string(id) + " is not one of the " +
                        std::to_string(count) + " tasks from " + std::to_string(min) +
                        " (give the array as --array=A-B with step 1, or pass --shard I/N)");
-    return ShardSpec{id - min, count};
+    chosen = ShardSpec{id - min, count};
+    said.emplace_back("SLURM_ARRAY_TASK_ID=" + std::to_string(id) +
+                          (min ? " (from " + std::to_string(min) + ")" : std::string()),
+                      id - min);
   }
   for (const char* name : {"JOB_COMPLETION_INDEX", "AWS_BATCH_JOB_ARRAY_INDEX"}) {
     if (!env(name)) continue;
     const long id = number(name, max_shards);
+    said.emplace_back(std::string(name) + "=" + std::to_string(id), id);
+    if (chosen) continue;
     if (count_option < 1)
       throw ShardError(std::string(name) +
                        " is set but the number of shards is not known: pass --shard-count N "
@@ -91,9 +104,14 @@ std::optional<ShardSpec> shard_from_environment(const Environment& env, long cou
     if (id >= count_option)
       throw ShardError(std::string(name) + ": index " + std::to_string(id) +
                        " is not below --shard-count " + std::to_string(count_option));
-    return ShardSpec{id, count_option};
+    chosen = ShardSpec{id, count_option};
   }
-  return std::nullopt;
+  for (const auto& [what, index] : said)
+    if (index != said.front().second)
+      throw ShardError(said.front().first + " and " + what +
+                       " disagree on which shard this task runs; unset the variable of the "
+                       "scheduler that did not start it, or pass --shard I/N");
+  return chosen;
 }
 
 std::optional<ShardSpec> shard_from_options(const std::string& shard_option,

@@ -79,6 +79,41 @@ std::string refusal(F f) {
   return "";
 }
 
+// Two schedulers' index variables that name different shards: which one
+// started this task is unknown, so neither is picked.
+TEST(ShardSpec, IndexVariablesThatDisagreeAreRefusedNamingBoth) {
+  const auto refusal = [](std::map<std::string, std::string> vars, long count) {
+    try {
+      shard_from_environment(env_of(std::move(vars)), count);
+    } catch (const ShardError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(refusal({{"JOB_COMPLETION_INDEX", "1"}, {"AWS_BATCH_JOB_ARRAY_INDEX", "2"}}, 4),
+            "JOB_COMPLETION_INDEX=1 and AWS_BATCH_JOB_ARRAY_INDEX=2 disagree on which shard this "
+            "task runs; unset the variable of the scheduler that did not start it, or pass "
+            "--shard I/N");
+  const auto slurm = refusal({{"SLURM_ARRAY_TASK_ID", "3"},
+                              {"SLURM_ARRAY_TASK_MIN", "1"},
+                              {"SLURM_ARRAY_TASK_COUNT", "4"},
+                              {"JOB_COMPLETION_INDEX", "3"}},
+                             0);
+  EXPECT_EQ(slurm.rfind("SLURM_ARRAY_TASK_ID=3 (from 1) and JOB_COMPLETION_INDEX=3 disagree", 0),
+            0u)
+      << slurm;
+  // Saying the same shard is no conflict: Slurm's task 3 of an array from 1 is shard 2.
+  EXPECT_EQ(shard_from_environment(env_of({{"SLURM_ARRAY_TASK_ID", "3"},
+                                           {"SLURM_ARRAY_TASK_MIN", "1"},
+                                           {"SLURM_ARRAY_TASK_COUNT", "4"},
+                                           {"AWS_BATCH_JOB_ARRAY_INDEX", "2"}}),
+                                   0),
+            (ShardSpec{2, 4}));
+  EXPECT_EQ(shard_from_environment(
+                env_of({{"JOB_COMPLETION_INDEX", "1"}, {"AWS_BATCH_JOB_ARRAY_INDEX", "1"}}), 4),
+            (ShardSpec{1, 4}));
+}
+
 TEST(ShardOptions, TheOptionWinsOverTheEnvironment) {
   const auto slurm = env_of({{"SLURM_ARRAY_TASK_ID", "1"}, {"SLURM_ARRAY_TASK_COUNT", "4"}});
   EXPECT_EQ(shard_from_options("2/3", "", slurm), (ShardSpec{2, 3}));
