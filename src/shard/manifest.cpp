@@ -89,6 +89,10 @@ Manifest read_manifest(const fs::path& path) {
   }
   m.output = text("output");
   check(r, "output", output_name_problem(m.output));
+  // Only a render's PNG frames join into nothing; rows and crossings always
+  // merge into a file ("" would name the folder itself).
+  if (m.output.empty() && m.kind != "render")
+    r.fail("output", "a " + m.kind + " shard's merged file: expected a plain file name, got ''");
   const auto* command = r.raw("command");
   if (!command || !command->is_array()) r.fail("command", "expected an array of strings");
   for (const auto& a : *command) {

@@ -129,6 +129,13 @@ TEST_F(MergeHostile, AnAtlasOfAnUnknownMetricIsRefusedBeforeAnythingIsWritten) {
   EXPECT_FALSE(fs::exists(merged_)) << "rows written before the atlas was checked";
 }
 
+// An empty output would make the merge write the folder itself.
+TEST_F(MergeHostile, AnEmptyOutputOfASweepIsRefusedNamingTheFileAndKey) {
+  edit([](Json& j) { j["output"] = ""; });
+  const auto r = merge();
+  expect_bad_input(r, manifest_.filename().string() + ": key 'output'");
+}
+
 TEST_F(MergeHostile, AMillionMissingShardsAreSummarisedInAFewLines) {
   edit([](Json& j) {
     j["shards"] = 1000000;

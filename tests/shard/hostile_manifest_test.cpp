@@ -81,6 +81,7 @@ INSTANTIATE_TEST_SUITE_P(
         HostileCase{"OutputUpwards", "/output", "../victim", "output"},
         HostileCase{"OutputInASubfolder", "/output", "sub/victim", "output"},
         HostileCase{"OutputDotDot", "/output", "..", "output"},
+        HostileCase{"EmptyOutputOfASweep", "/output", "", "output"},
         HostileCase{"FileUpwards", "/files/0/path", "../x", "files[0].path"},
         HostileCase{"FileUpwardsInside", "/files/0/path", "a/../../x", "files[0].path"},
         HostileCase{"AbsoluteFile", "/files/0/path", "/etc/passwd", "files[0].path"},
