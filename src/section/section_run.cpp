@@ -8,6 +8,7 @@
 #include "io/bad_input.hpp"
 #include "numerics/simd_path.hpp"
 #include "physics/format.hpp"
+#include "sim/run_spec.hpp"
 
 namespace epviz::section {
 namespace {
@@ -24,6 +25,29 @@ sim::RunSpec orbit_run(const SectionJob& job, const SectionMethod& m,
   run.t_end = job.t_end;
   run.max_drift = job.max_drift;
   return run;
+}
+
+// What to change in the section file for a lost orbit: by what went wrong,
+// and by whether the method chose its steps by "tol" or took "step".
+std::string lost_orbit_advice(numerics::FailureKind kind, bool adaptive) {
+  using numerics::FailureKind;
+  const std::string drift = ", or raise \"max_drift\" if the drift is expected";
+  switch (kind) {
+    case FailureKind::step_budget:
+      // Sections have no key for the budget: the run itself must be shorter.
+      return std::string(
+                 "the run needs more steps than one run may take: shorten it (a smaller "
+                 "\"t_end\", fewer \"crossings\")") +
+             (adaptive ? ", or loosen \"tol\"" : ", or use a larger \"step\"");
+    case FailureKind::step_underflow: return adaptive ? "loosen \"tol\"" : "use a larger \"step\"";
+    case FailureKind::rejections: return adaptive ? "loosen \"tol\"" : "use a smaller \"step\"";
+    case FailureKind::chart_pole: return "use another \"method\"";
+    case FailureKind::non_finite:
+    case FailureKind::solver_divergence:
+    case FailureKind::lost_motion: break;
+  }
+  return adaptive ? "tighten \"tol\"" + drift
+                  : "use a smaller \"step\" or an adaptive \"method\" (dop853)" + drift;
 }
 
 }  // namespace
@@ -155,7 +179,9 @@ std::string lost_orbits_line(const SectionJob& job, const std::vector<OrbitResul
   line += physics::detail::vec(first->start.gamma);
   line += ": ";
   line += first->failure->message();
-  line += "; tighten \"tol\", or raise \"max_drift\" if the drift is expected";
+  line += "; ";
+  line +=
+      lost_orbit_advice(first->failure->kind, sim::is_adaptive(job.methods[first->method].method));
   return line;
 }
 

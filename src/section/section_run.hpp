@@ -42,7 +42,8 @@ std::vector<OrbitResult> run_section(const SectionJob& job,
 // The failed orbits, one line: how many, and the first one's orbit number,
 // start (and method, when there are several) and failure ("orbit 3 from omega
 // ..., gamma ...: dop853 failed at t = ...:
-// ...; tighten ..."). Empty when every orbit kept the motion.
+// ...; what to change in the section file, by the failure and the method").
+// Empty when every orbit kept the motion.
 std::string lost_orbits_line(const SectionJob& job, const std::vector<OrbitResult>& results);
 
 // "16 orbits, 6400 crossings" (`starts` orbits, the crossings of `results`),

@@ -12,6 +12,7 @@
 #include "physics/admissible.hpp"
 #include "section/section_csv.hpp"
 #include "section/section_job.hpp"
+#include "section/section_run.hpp"
 #include "support/cli.hpp"
 
 namespace epviz::test {
@@ -197,22 +198,49 @@ TEST(SectionCommand, ALostOrbitIsANumericalFailureAndNothingIsWritten) {
   EXPECT_FALSE(fs::exists(csv));
 }
 
-TEST(SectionCsv, LeavesALostOrbitOut) {
+// The advice follows what went wrong and how the method steps: a fixed-step
+// method has no "tol" to tighten, and a run out of steps needs to be shorter.
+TEST(SectionCommand, ALostOrbitsAdviceFitsItsMethodAndFailure) {
+  section::SectionJob job;
+  job.case_id = physics::Case::generic;
+  job.methods = {{sim::Method::dop853, 1e-10, 0.01}, {sim::Method::rk4, 1e-10, 0.05}};
+  const auto advice = [&](std::size_t method, numerics::FailureKind kind) {
+    section::OrbitResult lost;
+    lost.orbit = 1;
+    lost.method = method;
+    lost.failure = numerics::Failure{1.0, "x", kind, "what happened"};
+    const std::string line = section::lost_orbits_line(job, {lost});
+    return line.substr(line.find("what happened; ") + 15);
+  };
+  using numerics::FailureKind;
+  EXPECT_EQ(advice(0, FailureKind::lost_motion).rfind("tighten \"tol\"", 0), 0u);
+  const std::string fixed = advice(1, FailureKind::lost_motion);
+  EXPECT_EQ(fixed.rfind("use a smaller \"step\"", 0), 0u) << fixed;
+  EXPECT_EQ(fixed.find("tol"), std::string::npos) << fixed;
+  EXPECT_EQ(advice(1, FailureKind::non_finite).rfind("use a smaller \"step\"", 0), 0u);
+  for (std::size_t method : {0u, 1u}) {
+    const std::string budget = advice(method, FailureKind::step_budget);
+    EXPECT_NE(budget.find("more steps than one run may take: shorten it"), std::string::npos)
+        << budget;
+    EXPECT_EQ(budget.find("tighten"), std::string::npos) << budget;
+  }
+}
+
 // An unknown GL backend is bad input like any other: refused before the
 // orbits run and the CSV is written, not when the picture is drawn.
 TEST(SectionCommand, AnUnknownGlBackendIsRefusedBeforeTheCsvIsWritten) {
   TempDir d;
   const std::string csv = (d / "g.csv").string();
-  std::ofstream(d / "s.section.json") << R"({"case": "generic", "level": {"energy": 2, "area": 1},
-      "orbits": 1, "crossings": 3, "csv": ")" +
-                                             csv + R"(", "svg": ")" + (d / "g.svg").string() + ""
-}
-";
-    const auto r = run_epviz("section " + (d / "s.section.json").string() + " --gl bogus", d);
-expect_bad_input(r, "--gl");
-EXPECT_FALSE(fs::exists(csv)) << "the CSV was written before --gl was checked";
+  const nlohmann::json section = {{"case", "generic"}, {"level", {{"energy", 2}, {"area", 1}}},
+                                  {"orbits", 1},       {"crossings", 3},
+                                  {"csv", csv},        {"svg", (d / "g.svg").string()}};
+  std::ofstream(d / "s.section.json") << section.dump();
+  const auto r = run_epviz("section " + (d / "s.section.json").string() + " --gl bogus", d);
+  expect_bad_input(r, "--gl");
+  EXPECT_FALSE(fs::exists(csv)) << "the CSV was written before --gl was checked";
 }
 
+TEST(SectionCsv, LeavesALostOrbitOut) {
   section::SectionJob job;
   job.case_id = physics::Case::generic;
   job.body = physics::preset(job.case_id).body;
