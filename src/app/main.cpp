@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <functional>
 #include <map>
+#include <string>
 
 #include "app/bench_command.hpp"
 #include "app/cases_command.hpp"
@@ -19,9 +20,9 @@
 #include "render/gl_context.hpp"
 #endif
 #include "io/bad_input.hpp"
+#include "io/printable.hpp"
 #include "numerics/simd_path.hpp"
 
-#include "io/printable.hpp"
 int main(int argc, char** argv) {
   epviz::app::cli::Program program{
       "epviz: the heavy rigid body about a fixed point (Euler-Poisson), simulated and rendered "

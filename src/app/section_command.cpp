@@ -98,11 +98,11 @@ int run_section(const SectionOptions& o) {
   const int threads =
       section::thread_count(o.jobs.empty() ? 0 : parse_integer("-j", o.jobs, 1, 4096));
   const auto shard = shard::shard_from_options(o.shard, o.shard_count);
-  if (!o.out.empty()) job.csv = o.out;
-  h5::check_h5_output("--h5", o.h5);
 #ifdef EPVIZ_HAVE_RENDER
   (void)render::GlChoice(o.gl);  // an unknown backend is refused before the CSV is written
 #endif
+  if (!o.out.empty()) job.csv = o.out;
+  h5::check_h5_output("--h5", o.h5);
   section::check_outputs(job, o.out.empty() ? "" : "--out", {{"--h5", o.h5}});
   const auto starts = section::section_starts(job);
   const long runs = section::run_count(job, starts.size());
@@ -118,16 +118,16 @@ int run_section(const SectionOptions& o) {
 #ifndef EPVIZ_HAVE_RENDER
   if (!part) draw(job, {}, o.gl);  // refuses pictures before any work
 #endif
-  // Held to the end, so that a second copy of this shard refuses (shard/shard_lock.hpp).
-  std::optional<shard::ShardLock> lock;
-  if (part) {
-    lock.emplace(part->lock_path);
-    shard::start_rows_shard(*part);  // "completed": false until the end
   // As simulate and render: SIGINT and SIGTERM remove the temporaries being
   // written, and those a run killed with SIGKILL left are removed now.
   io::install_temporary_cleanup();
   for (const auto& path : {job.csv, job.png, job.svg, o.h5})
     io::remove_stale_temporaries_beside(path);
+  // Held to the end, so that a second copy of this shard refuses (shard/shard_lock.hpp).
+  std::optional<shard::ShardLock> lock;
+  if (part) {
+    lock.emplace(part->lock_path);
+    shard::start_rows_shard(*part);  // "completed": false until the end
   }
   const auto start = std::chrono::steady_clock::now();
   const auto results =

@@ -258,6 +258,7 @@ void check_outputs(const SectionJob& job, const std::string& csv_from, const io:
     where += ": key '";
     where += key;
     where += "'";
+    if (key[0] == 'c' && !csv_from.empty()) where = csv_from;
     io::check_output_file(where, path);
     outputs.emplace_back(where, path);
   }
@@ -294,4 +295,3 @@ std::vector<physics::InitialState> section_starts(const SectionJob& job) {
 }
 
 }  // namespace epviz::section
-    if (key[0] == 'c' && !csv_from.empty()) where = csv_from;
