@@ -8,6 +8,7 @@
 #include <string>
 
 #include "live/case_constraints.hpp"
+#include "live/setup_limits.hpp"
 #include "physics/cases.hpp"
 #include "physics/notation.hpp"
 #include "render/font_text.hpp"
@@ -157,7 +158,7 @@ void ControlPanel::draw_playback(const LiveScene& scene, PanelActions& out) {
   if (ImGui::Button("Restart", ImVec2(button_w, 0))) out.restart = true;
   note_item("restart");
   double speed = s.speed;
-  if (log_slider("speed (t/s)", &speed, 0.05, 100.0, "%.3g")) {
+  if (log_slider("speed (t/s)", &speed, kMinSpeed, kMaxSpeed, "%.3g")) {
     LiveSetup v = s;
     v.speed = speed;
     out.view = v;
@@ -174,6 +175,17 @@ void ControlPanel::draw_playback(const LiveScene& scene, PanelActions& out) {
   ImGui::SetNextItemWidth(std::max(2.0f * button_w / 5.5f, ImGui::GetContentRegionAvail().x));
   draw_save();
   ImGui::TextDisabled("Space: play/pause   R: restart   S: step");
+  if (!scene.keeping_up() && !scene.failure()) {
+    // The frame's step budget holds the run back (live_scene.hpp): said,
+    // so that a slow picture is not taken for the motion's own pace.
+    ImGui::PushStyleColor(ImGuiCol_Text, kWarnColour);
+    ImGui::TextWrapped(
+        "behind: plays at %.0f%% of the speed (its steps cost more than a frame may spend; "
+        "a larger step or tolerance, or a lower speed, keeps up)",
+        100.0 * scene.pace());
+    ImGui::PopStyleColor();
+    note_item("behind");
+  }
   if (scene.failure()) {
     ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
     ImGui::TextWrapped("Stopped: %s", scene.failure()->c_str());
@@ -238,6 +250,7 @@ void ControlPanel::draw_case_and_body(const LiveScene& scene, PanelActions& out)
   if (ImGui::DragScalarN("centre of mass", ImGuiDataType_Double, e.run.body.com.data(), 3, 0.01f,
                          nullptr, nullptr, "%.4g"))
     edited(Edited::com);
+  note_item("com");
   if (ImGui::InputDouble("weight P", &e.run.body.weight, 0.1, 1.0, "%.4g",
                          ImGuiInputTextFlags_EnterReturnsTrue))
     edited(Edited::weight);
@@ -248,6 +261,7 @@ void ControlPanel::draw_case_and_body(const LiveScene& scene, PanelActions& out)
   if (ImGui::DragScalarN(omega0.c_str(), ImGuiDataType_Double, e.run.initial.omega.data(), 3, 0.01f,
                          nullptr, nullptr, "%.4g"))
     edited(Edited::omega);
+  note_item("omega");
   if (ImGui::DragScalarN(gamma0.c_str(), ImGuiDataType_Double, e.run.initial.gamma.data(), 3, 0.01f,
                          nullptr, nullptr, "%.4g")) {
     // gamma is a unit vector: the edit sets its direction.
@@ -255,6 +269,7 @@ void ControlPanel::draw_case_and_body(const LiveScene& scene, PanelActions& out)
     if (n > 1e-9) e.run.initial.gamma /= n;
     edited(Edited::gamma);
   }
+  note_item("gamma");
 }
 
 void ControlPanel::draw_integrator(const LiveScene& scene, PanelActions& out) {
@@ -302,9 +317,14 @@ void ControlPanel::draw_integrator(const LiveScene& scene, PanelActions& out) {
       e.scene.auto_tolerance = automatic;
       out.rerun = e;
     }
-    if (!automatic && log_slider("tolerance", &e.run.tol, 1e-13, 1e-3, "%.1e")) out.rerun = e;
-  } else if (log_slider("step", &e.run.step, 1e-4, 0.5, "%.2e")) {
-    out.rerun = e;
+    note_item("auto_tol");
+    if (!automatic) {
+      if (log_slider("tolerance", &e.run.tol, 1e-13, 1e-3, "%.1e")) out.rerun = e;
+      note_item("run_tol");
+    }
+  } else {
+    if (log_slider("step", &e.run.step, 1e-4, 0.5, "%.2e")) out.rerun = e;
+    note_item("run_step");
   }
   if (s.run.formulation == sim::Formulation::riccati &&
       ImGui::Checkbox("chart switch", &e.run.chart_switch))
@@ -331,7 +351,10 @@ void ControlPanel::draw_view(const LiveScene& scene, PanelActions& out) {
     layers_changed |= ImGui::Checkbox(l.panel_label, &(e.scene.layers.*l.member));
   }
   if (layers_changed && e.scene.layers.any()) out.view = e;
-  if (drag_double("trail length", &e.scene.trail_length, 0.1, 0.5, 1000.0, "%.3g")) out.rerun = e;
+  if (drag_double("trail length", &e.scene.trail_length, 0.1, kMinTrailLength, kMaxTrailLength,
+                  "%.3g"))
+    out.rerun = e;
+  note_item("trail");
   if (ImGui::Button("Reset camera")) {
     e.scene.camera = scene::CameraSettings{};
     out.view = e;
@@ -428,7 +451,7 @@ void ControlPanel::draw_runs(const LiveScene& scene, PanelActions& out) {
   if (full) ImGui::EndDisabled();
   note_item("add_run");
   // The first run's state, nudged.
-  log_slider("nudge (rad)", &nudge_, 1e-12, 1e-1, "%.1e");
+  log_slider("nudge (rad)", &nudge_, kMinNudge, kMaxNudge, "%.1e");
   note_item("nudge");
   if (full) ImGui::BeginDisabled();
   if (ImGui::Button("Add nudged run")) {

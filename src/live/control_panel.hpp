@@ -33,10 +33,14 @@ class ControlPanel {
 
   // A line shown under the playback buttons (saved file, refused edit, ...).
   void set_message(std::string text, bool error = false);
+  const std::string& message() const { return message_; }
+  bool message_is_error() const { return message_is_error_; }
   // Where the named controls were in the last frame: "play", "step",
   // "restart", "speed", "case", "case:<name>" (items of the open combo),
-  // "stay", "broken" (a broken condition's line), "I1", "I2", "I3", "weight", "formulation", "formulation:<name>",
-  // "method", "method:<name>", "list:case" / "list:formulation" /
+  // "stay", "broken" (a broken condition's line), "behind" (the run cannot
+  // keep up with its speed), "I1", "I2", "I3", "com", "weight", "omega",
+  // "gamma", "formulation", "formulation:<name>", "method", "method:<name>",
+  // "auto_tol", "run_tol" / "run_step" (the first run's), "trail", "list:case" / "list:formulation" /
   // "list:method" (an open combo's list), "header:<section>", "file_name",
   // "save_frame", "save_job", the runs section's "run:<n>" (legend rows),
   // "remove:<n>" (n = 2, 3, ...), "new_method", "new_method:<name>",

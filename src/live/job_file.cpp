@@ -3,7 +3,12 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include "io/bad_input.hpp"
 #include "io/json_text.hpp"
+#include "io/output_paths.hpp"
+#include "io/video_format.hpp"
+#include "job/job_file.hpp"
+#include "job/job_plan.hpp"
 #include "job/schema.hpp"
 #include "physics/cases.hpp"
 #include "scene/plan.hpp"
@@ -86,7 +91,34 @@ std::vector<job::RunFields> compared_runs(const LiveSetup& setup, const LiveMome
   return runs;
 }
 
+// A page's size as a job's video can have it: at most the job's 8192 a side
+// (smaller alike, the shape kept), and even (MP4's yuv420p needs it).
+void even_video_size(int& width, int& height) {
+  constexpr int kLargest = 8192, kSmallest = 16;
+  const double shrink = std::min(1.0, double(kLargest) / std::max({width, height, 1}));
+  auto even = [&](int side) {
+    const int s = int(std::lround(side * shrink)) / 2 * 2;
+    return std::clamp(s, kSmallest, kLargest);
+  };
+  width = even(width);
+  height = even(height);
+}
+
 }  // namespace
+
+void check_render_accepts(const std::string& text, const std::string& file_name) {
+  const nlohmann::json object = nlohmann::json::parse(text);
+  job::JobDocument d = job::read_job(object, file_name);
+  job::RenderJob job{file_name, std::move(d.simulation), std::move(d.runs), std::move(d.scene),
+                     std::move(d.output)};
+  io::check_file_name(file_name + ": output.name", job.output.name);
+  if (job.output.video)
+    if (const std::string why =
+            io::video_size_problem(*job.output.video, job.scene.width, job.scene.height);
+        !why.empty())
+      throw io::BadInput(file_name + ": " + why);
+  (void)job::plan_job(job);
+}
 
 std::optional<double> live_tolerance(const LiveSetup& setup) {
   if (!sim::is_adaptive(setup.run.method) || !setup.scene.auto_tolerance) return std::nullopt;
@@ -111,6 +143,7 @@ job::JobDocument job_document(const LiveSetup& setup, const std::string& name,
   d.runs = compared_runs(setup, moment);
 
   d.scene = setup.scene;
+  even_video_size(d.scene.width, d.scene.height);
   if (sim::is_adaptive(run.method)) d.scene.auto_tolerance = false;  // the tol written is the one
   d.scene.fps = 30.0;
   // Frames 1/fps s apart at the live speed, the first at t = 0 and the last

@@ -33,6 +33,12 @@ job::JobDocument job_document(const LiveSetup& setup, const std::string& name,
 std::string render_job_json(const LiveSetup& setup, const std::string& name,
                             const LiveMoment& moment = {}, double duration_s = 10.0);
 
+// Throws io::BadInput with the message `epviz render` would give when it
+// would refuse the job `text` (the file `file_name`): read by the job reader,
+// its runs resolved and planned, its output name and video size checked, as
+// `epviz render` does before any work. What "Save job" sends passes this.
+void check_render_accepts(const std::string& text, const std::string& file_name);
+
 // The tolerance the live scene runs `setup` with (its plan for an open-ended
 // run), or nullopt when the method has a fixed step or the tolerance is set.
 std::optional<double> live_tolerance(const LiveSetup& setup);

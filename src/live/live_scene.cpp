@@ -1,7 +1,9 @@
 #include "live/live_scene.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "numerics/failure.hpp"
 #include "scene/plan.hpp"
@@ -17,10 +19,52 @@ constexpr double kSamplesPerWallSecond = 240.0;
 // The run has no end; this many samples make a horizon nobody reaches.
 constexpr int kOpenEndedSamples = 100'000'000;
 constexpr double kToleranceHorizon = 1e4;
+// Trials of an adaptive run's first sample before its spacing is taken as found.
+constexpr int kSpacingTrials = 3;
+// How quickly pace() follows the frames (the weight of the newest).
+constexpr double kPaceWeight = 0.25;
+
+struct SampleCost {
+  double spacing;  // at most the one asked for
+  double steps;    // one sample's, estimated
+};
+
+// The spacing (at most `spacing`) at which one sample of `run` takes about
+// LiveScene::kSampleStepLimit steps or fewer. A fixed step says it exactly.
+// An adaptive method's first sample is tried with that many steps as its
+// limit: one that runs out of them has reached the time it could (the
+// failure's), and half of that is tried next, so that no sample the scene
+// asks for is unaffordable from the start. Its later steps may be smaller
+// (the budget per frame still holds then, a sample at a time).
+SampleCost affordable(sim::RunSpec run, double spacing) {
+  constexpr long limit = LiveScene::kSampleStepLimit;
+  if (!sim::is_adaptive(run.method)) {
+    spacing = std::min(spacing, double(limit) * run.step);
+    return {spacing, std::max(1.0, std::ceil(spacing / run.step))};
+  }
+  run.samples = 1;
+  run.max_steps = limit;
+  for (int trial = 0; trial < kSpacingTrials; ++trial) {
+    run.t_end = spacing;
+    auto first = sim::Trajectory::start(run);
+    try {
+      first->next();
+      const numerics::Stats st = first->stats();
+      return {spacing, std::max(1.0, double(st.steps + st.rejected_steps))};
+    } catch (const numerics::IntegrationError& e) {
+      // Another failure is the run's own: it reports it when it gets there.
+      if (e.failure().kind != numerics::FailureKind::step_budget) break;
+      const double reached = e.failure().t;
+      spacing = reached > 0.0 && reached < spacing ? 0.5 * reached : spacing / 64.0;
+    }
+  }
+  return {spacing, double(limit)};
+}
 
 }  // namespace
 
-std::unique_ptr<scene::FrameSource> LiveScene::make_source(const LiveSetup& setup) {
+std::unique_ptr<scene::FrameSource> LiveScene::make_source(const LiveSetup& setup,
+                                                           double& steps_per_sample) {
   std::vector<scene::RunRequest> runs = run_requests(setup);
   for (auto& r : runs) {
     // The automatic tolerance keeps the drawn error under a pixel up to a
@@ -33,11 +77,23 @@ std::unique_ptr<scene::FrameSource> LiveScene::make_source(const LiveSetup& setu
   }
   scene::ScenePlan plan = scene::plan_scene(std::move(runs), setup.scene, scene::Horizon::none);
   plan.open_ended = true;
-  const double spacing = std::max(setup.speed, 1e-3) / kSamplesPerWallSecond;
-  // Every run to the same sample times, as in a render.
+  // Every run to the same sample times, as in a render: spaced for the
+  // speed, or closer where a run's sample would cost too many steps.
+  double spacing = std::max(setup.speed, 1e-3) / kSamplesPerWallSecond;
+  std::vector<SampleCost> costs;
+  costs.push_back(affordable(plan.run, spacing));
+  for (const auto& other : plan.others) costs.push_back(affordable(other.run, spacing));
+  for (const SampleCost& c : costs) spacing = std::min(spacing, c.spacing);
+  // A run tried at a wider spacing than the one chosen takes fewer steps a
+  // sample there (about in proportion; each at least one).
+  steps_per_sample = 0.0;
+  for (const SampleCost& c : costs)
+    steps_per_sample += std::max(1.0, std::ceil(c.steps * spacing / c.spacing));
   auto open_ended = [&](sim::RunSpec& run) {
     run.samples = kOpenEndedSamples;
     run.t_end = spacing * kOpenEndedSamples;
+    // The budget per frame bounds the work; a run with no end has no total.
+    run.max_steps = std::numeric_limits<long>::max();
   };
   open_ended(plan.run);
   for (auto& other : plan.others) open_ended(other.run);
@@ -47,11 +103,14 @@ std::unique_ptr<scene::FrameSource> LiveScene::make_source(const LiveSetup& setu
 LiveScene::LiveScene(const LiveSetup& setup) { restart(setup); }
 
 void LiveScene::restart(const LiveSetup& setup) {
-  auto source = make_source(setup);  // may throw: keep the old scene then
+  double steps_per_sample = 1.0;
+  auto source = make_source(setup, steps_per_sample);  // may throw: keep the old scene then
   const auto& run = source->plan().run;
   monitor_ = std::make_unique<sim::InvariantMonitor>(run.body, run.case_id, run.initial);
   source_ = std::move(source);
   setup_ = setup;
+  steps_per_sample_ = steps_per_sample;
+  pace_ = 1.0;
   failure_.reset();
   drift_history_.clear();
   advance_to(0.0);
@@ -81,8 +140,27 @@ const scene::Frame& LiveScene::step() {
   return frame_;
 }
 
-void LiveScene::advance_to(double t) {
+long LiveScene::steps_taken() const {
+  long steps = 0;
+  for (int i = 0; i < source_->run_count(); ++i) {
+    const numerics::Stats st = source_->run(i).trajectory().stats();
+    steps += st.steps + st.rejected_steps;
+  }
+  return steps;
+}
+
+void LiveScene::advance_to(double wanted) {
   if (failure_) return;
+  // As many samples as the frame's step budget affords at the last frame's
+  // cost per sample, at least one (so that every run moves) and at most
+  // kFrameSampleLimit: the frame then ends short of `wanted`, and the run
+  // plays slower than its speed.
+  const double spacing = source_->trajectory().spacing();
+  const double from = source_->time();
+  const double samples = std::clamp(std::floor(double(kFrameStepBudget) / steps_per_sample_), 1.0,
+                                    double(kFrameSampleLimit));
+  const double t = std::min(wanted, from + samples * spacing);
+  const long steps_before = steps_taken();
   try {
     frame_ = source_->frame_at_time(t);
   } catch (const numerics::IntegrationError& e) {
@@ -94,6 +172,13 @@ void LiveScene::advance_to(double t) {
     playing_ = false;
     return;
   }
+  const double taken = std::round((source_->time() - from) / spacing);
+  if (taken >= 1.0) steps_per_sample_ = std::max(1.0, double(steps_taken() - steps_before) / taken);
+  // A frame the budget cut short reached that share of what it was asked;
+  // any other kept up (its sample is the one nearest to the time asked).
+  const bool cut_short = t + 0.5 * spacing < wanted;
+  const double reached = cut_short ? (source_->time() - from) / (wanted - from) : 1.0;
+  if (wanted > from) pace_ += kPaceWeight * (std::clamp(reached, 0.0, 1.0) - pace_);
   show_view_settings();
   show_separation_so_far();
   drift_history_.push_back({frame_.t, monitor_->relative_drift(monitor_->at(source_->latest()))});

@@ -6,6 +6,11 @@
 // or |gamma|^2 drift above the default limit, sim/drift.hpp) is such a failure.
 // With compared runs (LiveSetup::compared) it is a comparison scene, drawn as
 // a render of a job with "runs" draws it; a failure of any run stops it.
+//
+// One render thread serves every browser tab, so a frame's integration work
+// is bounded (kFrameStepBudget): a run too costly for its speed (a tiny
+// step, a stiff body) plays slower than asked and says so (pace()), rather
+// than holding up the other tabs' frames.
 #include <deque>
 #include <memory>
 #include <optional>
@@ -62,8 +67,29 @@ class LiveScene {
   // The runs drawn: 1, or 1 + setup().compared.size() in a comparison.
   int run_count() const { return source_->run_count(); }
 
+  // The integrator steps (accepted and rejected, all runs together) that one
+  // frame may take: about 10 ms of the slowest methods' work on one core.
+  static constexpr long kFrameStepBudget = 20'000;
+  // The most steps one sample may take: the samples are spaced for it, as
+  // far as can be known before the run (a fixed step exactly; an adaptive
+  // method by a trial of its first sample).
+  static constexpr long kSampleStepLimit = kFrameStepBudget / 4;
+  // Samples one frame may take whatever their cost (the trail, drift and
+  // chart work per sample): more than a frame at the fastest speed needs.
+  static constexpr long kFrameSampleLimit = 64;
+  // The share of the speed the run reached over the last frames: 1 while it
+  // keeps up, less while the step budget holds it back.
+  double pace() const { return pace_; }
+  bool keeping_up() const { return pace_ > 0.9; }
+  // Simulation time between two samples (the speed's, or less where one
+  // sample would take more than kSampleStepLimit steps).
+  double sample_spacing() const { return source_->trajectory().spacing(); }
+  // Integrator steps (accepted and rejected) of every run since t = 0.
+  long steps_taken() const;
+
  private:
-  static std::unique_ptr<scene::FrameSource> make_source(const LiveSetup& setup);
+  static std::unique_ptr<scene::FrameSource> make_source(const LiveSetup& setup,
+                                                         double& steps_per_sample);
   void advance_to(double t);
   // Comparisons: the run whose failure stopped the scene, in its legend row and the report.
   void mark_failed_run();
@@ -79,6 +105,8 @@ class LiveScene {
   bool playing_ = false;
   std::optional<std::string> failure_;
   std::deque<DriftPoint> drift_history_;
+  double steps_per_sample_ = 1.0;  // estimated, all runs together (the last frame's)
+  double pace_ = 1.0;
 };
 
 }  // namespace epviz::live

@@ -13,6 +13,7 @@
 #include "job/schema.hpp"
 #include "live/camera_control.hpp"
 #include "live/job_file.hpp"
+#include "live/setup_limits.hpp"
 #include "render/framebuffer.hpp"
 #include "render/imgui_context_scope.hpp"
 
@@ -184,7 +185,12 @@ void LiveSession::apply(const PanelActions& a) {
   if (a.toggle_play) scene_.set_playing(!scene_.playing());
   if (a.step) scene_.step();
   if (a.restart) scene_.restart();
-  if (a.view) scene_.set_view(a.view->scene, a.view->speed);
+  if (a.view) {
+    if (auto why = out_of_range(*a.view, scene_.setup()))
+      panel_.set_message("not applied: " + *why, true);
+    else
+      scene_.set_view(a.view->scene, a.view->speed);
+  }
   if (a.rerun) rerun(*a.rerun);
   if (a.load_case) {
     LiveSetup s = options_.presets(*a.load_case);
@@ -201,8 +207,14 @@ void LiveSession::apply(const PanelActions& a) {
 
 void LiveSession::rerun(const LiveSetup& s) {
   const bool was_playing = scene_.playing();
+  // Every value the page could have typed, against its range, before any work.
+  if (auto why = out_of_range(s, scene_.setup())) {
+    panel_.set_message("not applied: " + *why, true);
+    return;
+  }
   try {
     physics::validate_body(s.run.body, false);
+    (void)physics::validate_initial_state(s.run.initial, false);
     scene_.restart(s);
     scene_.set_playing(was_playing);
     panel_.set_message("");
@@ -254,8 +266,18 @@ void LiveSession::save_job() {
   const LiveMoment moment{scene_.time(), tolerance};
   const job::JobDocument job = job_document(setup, panel_.save_name(), moment);
   const std::string text = io::json_text(job::write_job(job), 2) + "\n";
-  deliver({panel_.save_name() + ".json", "application/json",
-           std::vector<std::uint8_t>(text.begin(), text.end())});
+  const std::string file_name = panel_.save_name() + ".json";
+  // Only a job that `epviz render` accepts leaves: a setup it would refuse
+  // (a step too small for the time watched, say) is said in the panel.
+  try {
+    check_render_accepts(text, file_name);
+  } catch (const std::exception& e) {
+    const std::string note = std::string("not saved: ") + e.what();
+    panel_.set_message(note, true);
+    notices_.push_back(note);
+    return;
+  }
+  deliver({file_name, "application/json", std::vector<std::uint8_t>(text.begin(), text.end())});
   // Render jobs have no start time; the live run started at t = 0 too.
   if (moment.time > 0) {
     char note[200];

@@ -3,6 +3,8 @@
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <cstdio>
+#include <cstdlib>
 #include <future>
 #include <mutex>
 #include <optional>
@@ -241,10 +243,29 @@ void Server::wait() {
     impl_->stopped.wait_for(lock, std::chrono::milliseconds(100));
     if (impl_->stop_requested && impl_->state != Impl::State::stopped) {
       lock.unlock();
-      stop();
+      stop_by_deadline();
       lock.lock();
     }
   }
+}
+
+void Server::stop_by_deadline() {
+  const ServerOptions& o = impl_->options;
+  std::promise<void> stopped;
+  std::future<void> done = stopped.get_future();
+  // A watchdog, since nothing can interrupt a session in the middle of its
+  // render: the render thread finishes its frame before it sees the stop.
+  std::thread watchdog([&o, &done, &log = impl_->log] {
+    if (done.wait_for(o.stop_deadline) != std::future_status::timeout) return;
+    log("not stopped after " + std::to_string(o.stop_deadline.count()) +
+        " ms (a session is still busy): exiting without waiting for it");
+    if (o.on_overdue_stop) return o.on_overdue_stop();
+    std::fflush(nullptr);
+    std::_Exit(0);
+  });
+  stop();
+  stopped.set_value();
+  watchdog.join();
 }
 
 ServerStats Server::stats() const {

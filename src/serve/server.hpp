@@ -53,6 +53,13 @@ struct ServerOptions {
   int jpeg_quality = 85;
   // One line per event worth logging (connections, closes and their reasons).
   std::function<void(const std::string&)> log;
+  // How long a stop asked for by a signal (request_stop) may take. Past it
+  // (a session busy in a frame that has not ended, a connection that does
+  // not close) `on_overdue_stop` runs, which by default ends the process at
+  // once with status 0, as a stop does: a signal to stop is not a request to
+  // wait for the work in hand.
+  std::chrono::milliseconds stop_deadline{1500};
+  std::function<void()> on_overdue_stop;
   // Records the first connection's messages here, one JSON line each as the
   // page sent them, with {"type":"render"} where a frame was rendered: the
   // session calls in order, which live::replay() repeats without a browser.
@@ -90,11 +97,14 @@ class Server {
   void wait();
   // Async-signal-safe (one lock-free atomic store), for SIGINT/SIGTERM
   // handlers, where stop() itself must not run: wait() notices within
-  // ~100 ms, calls stop() and returns.
+  // ~100 ms, calls stop() and returns, or past ServerOptions::stop_deadline
+  // runs on_overdue_stop.
   void request_stop() noexcept;
   ServerStats stats() const;
 
  private:
+  void stop_by_deadline();  // stop(), or on_overdue_stop past the deadline
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -129,6 +129,30 @@ class SessionDriver {
     }
   }
 
+  // Holds or releases Ctrl (a key event carries the modifiers ImGui sees).
+  void ctrl(bool down) {
+    render::InputEvent e;
+    e.kind = render::InputEvent::Kind::key;
+    e.key = "Control", e.ctrl = down, e.down = down;
+    send(e);
+  }
+  // Types `text` into a slider or drag box the way ImGui lets a user type
+  // any number (Ctrl+click, the text selected, then Enter); `at`: where
+  // across the control to click (a box of three numbers: its first at 0.1).
+  void type_into(const std::string& name, const std::string& text, float at = 0.5f) {
+    const Rect r = control(name);
+    const float x = r[0] + r[2] * at, y = r[1] + r[3] / 2;
+    move(x, y);
+    ctrl(true);
+    button(x, y, true);
+    button(x, y, false);
+    ctrl(false);
+    settle();
+    type(text);
+    key("Enter");
+    settle();
+  }
+
   std::unique_ptr<LiveSession> session;
   std::uint64_t last_hash = 0;
 };

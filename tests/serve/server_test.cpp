@@ -479,5 +479,46 @@ TEST(ServeServer, WaitReturnsAfterRequestStop) {
   EXPECT_EQ(waiting.wait_for(expect_within), std::future_status::ready);
 }
 
+TEST(ServeServer, AStopBySignalIsNotHeldUpByABusySession) {
+  // A session stuck in its work: the render thread cannot see the stop until
+  // it returns, so past the deadline the overdue action runs (by default it
+  // ends the process; here it lets the session go, so the test can end).
+  std::atomic<bool> overdue{false};
+  std::shared_ptr<FakeProbe> probe;
+  TestServer server([&](ServerOptions& o) {
+    o.stop_deadline = 300ms;
+    o.on_overdue_stop = [&] {
+      overdue = true;
+      probe->unblock.set_value();
+    };
+  });
+  probe = server.probe;
+  TestClient client(server.port());
+  settle(client);
+  client.send(key("block"));
+  ASSERT_TRUE(TestServer::eventually([&] { return server.probe->blocked.load(); }));
+  auto waiting = std::async(std::launch::async, [&] { server.server->wait(); });
+  const auto asked = std::chrono::steady_clock::now();
+  server.server->request_stop();
+  ASSERT_EQ(waiting.wait_for(expect_within), std::future_status::ready) << server.log->all();
+  EXPECT_TRUE(overdue) << server.log->all();
+  EXPECT_GE(std::chrono::steady_clock::now() - asked, 300ms);
+  EXPECT_TRUE(server.log->wait_for({"not stopped after 300 ms", "a session is still busy"}));
+}
+
+TEST(ServeServer, AStopBySignalInTimeRunsNoOverdueAction) {
+  std::atomic<bool> overdue{false};
+  TestServer server([&](ServerOptions& o) {
+    o.stop_deadline = expect_within;  // the sanitizers slow a stop down too
+    o.on_overdue_stop = [&] { overdue = true; };
+  });
+  TestClient client(server.port());
+  settle(client);
+  auto waiting = std::async(std::launch::async, [&] { server.server->wait(); });
+  server.server->request_stop();
+  ASSERT_EQ(waiting.wait_for(expect_within), std::future_status::ready);
+  EXPECT_FALSE(overdue);
+}
+
 }  // namespace
 }  // namespace epviz::serve::testing
