@@ -211,12 +211,13 @@ TEST(LiveSoak, ExtremeValuesFromOnePageNeitherStallTheOtherNorGrowTheServer) {
   std::printf("soak: reader's longest wait %.3f s (alone %.3f s), server grew %ld MB\n", longest,
               yardstick, grown_mb);
   // Each round renders the typist's frame too (the same size, its
-  // simulation bounded per frame, a rerun's trial sample): measured up to 2.5
-  // times the reader's longest wait alone. Unbounded, the step-1e-9 run alone
-  // held a frame for over 19 s.
-  EXPECT_LT(longest, 6.0 * yardstick)
+  // simulation bounded per frame, each rerun's trial of a sample): measured
+  // 3.3 times the reader's longest wait alone (0.125 s against 0.038 s on 2
+  // loaded cores), the rest of the bound is a loaded machine's jitter.
+  // Unbounded, the step-1e-9 run alone held a frame for over 19 s.
+  EXPECT_LT(longest, 10.0 * yardstick)
       << "the reader waited " << longest << " s for a frame; alone at most " << yardstick << " s";
-  // Measured: a few MB (the typist's session and its frames). The speed of
+  // Measured: 11 MB (the typist's session and its frames). The speed of
   // 1e300 grew the server by 90 MB/s before it was refused. Under ASan the
   // resident size holds its quarantine of freed blocks (256 MB) too.
   EXPECT_LT(grown_mb, kAddressSanitizer ? 512 : 150) << "the server grew by " << grown_mb << " MB";
