@@ -43,6 +43,8 @@ struct SectionOptions {
 void draw(const section::SectionJob& job, const std::vector<section::OrbitResult>& results,
           const std::string& gl) {
   if (job.png.empty() && job.svg.empty()) return;
+  for (const auto& w : section::fold_warnings(job, results))
+    std::fprintf(stderr, "%s\n", w.c_str());
 #ifdef EPVIZ_HAVE_RENDER
   auto charts = section::section_charts(job, results);
   const bool one = charts.size() == 1;

@@ -10,6 +10,7 @@
 #include "io/json_reader.hpp"
 #include "io/json_text.hpp"
 #include "io/output_paths.hpp"
+#include "io/printable.hpp"
 #include "physics/admissible.hpp"
 #include "shard/checksum.hpp"
 
@@ -188,6 +189,41 @@ std::array<sim::StateComponent, 2> read_coords(io::ObjectReader& r, sim::StateCo
   return coords;
 }
 
+namespace {
+
+// "sheet": "COMPONENT > 0" or "COMPONENT < 0", or "sheets": "COMPONENT": a
+// state component that is neither the surface's nor plotted.
+std::optional<SheetChoice> read_sheet(io::ObjectReader& r, const SectionJob& job) {
+  const auto one = r.string("sheet");
+  const auto both = r.string("sheets");
+  if (one && both)
+    r.fail("sheet", "give \"sheet\" (one sheet) or \"sheets\" (both apart), not both");
+  if (!one && !both) return std::nullopt;
+  const char* key = one ? "sheet" : "sheets";
+  std::string free;  // the components a sheet may be told apart by
+  for (auto c : sim::all_state_components())
+    if (c != job.surface.function && c != job.coords[0] && c != job.coords[1])
+      free += (free.empty() ? "" : ", ") + std::string(sim::name(c));
+  const std::string allowed = one ? "\"C > 0\" or \"C < 0\", C one of " + free : "one of " + free;
+  std::string text = one ? *one : *both;
+  SheetChoice sheet;
+  if (one) {
+    const auto space = text.find(' ');
+    const std::string side = space == std::string::npos ? "" : text.substr(space);
+    if (side != " > 0" && side != " < 0")
+      r.fail(key, "must be " + allowed + ", got " + io::quoted(text));
+    sheet.show = side == " > 0" ? SheetChoice::Show::positive : SheetChoice::Show::negative;
+    text = text.substr(0, space);
+  }
+  const auto c = sim::state_component_from_name(text);
+  if (!c || *c == job.surface.function || *c == job.coords[0] || *c == job.coords[1])
+    r.fail(key, "must be " + allowed + ", got " + io::quoted(one ? *one : *both));
+  sheet.component = *c;
+  return sheet;
+}
+
+}  // namespace
+
 SectionRun section_run_of(long run, std::size_t starts) {
   return {std::size_t(run) / starts, std::size_t(run) % starts};
 }
@@ -242,6 +278,7 @@ SectionJob read_section_object(const nlohmann::json& doc, const std::string& nam
   }
   if (auto d = r.number_in("max_drift", 1e-14, 1.0, "1e-14 to 1")) job.max_drift = *d;
   job.coords = read_coords(r, job.surface.function);
+  job.sheet = read_sheet(r, job);
   for (const char* key : {"png", "svg"})
     if (auto path = r.string(key)) (key[0] == 'p' ? job.png : job.svg) = *path;
   const auto csv = r.string("csv");

@@ -33,6 +33,19 @@ std::string method_label(const SectionMethod& m);
 
 inline constexpr std::size_t kMaxSectionMethods = 8;
 
+// Which sheet of the surface the picture shows (docs/sections.md, "Sheets"):
+// a surface gamma3 = 0 on a level is covered twice by the plotted
+// coordinates (gamma1, Omega3), once for gamma2 > 0 and once for gamma2 < 0.
+// "sheet": "gamma2 > 0" draws the crossings with gamma2 > 0 only;
+// "sheets": "gamma2" draws both, each in a panel of its own. Crossings on
+// the fold itself (the component exactly 0) are in neither. The CSV keeps
+// every crossing.
+struct SheetChoice {
+  enum class Show { positive, negative, both_apart };
+  sim::StateComponent component = sim::StateComponent::gamma2;
+  Show show = Show::both_apart;
+};
+
 struct SectionJob {
   std::string file;  // for messages
   physics::Case case_id = physics::Case::kovalevskaya;
@@ -51,6 +64,7 @@ struct SectionJob {
   // gamma3 section, else the first two components the surface leaves free).
   std::array<sim::StateComponent, 2> coords{sim::StateComponent::gamma1,
                                             sim::StateComponent::omega3};
+  std::optional<SheetChoice> sheet;  // none: every crossing on one plane
   std::string csv;
   std::string png, svg;  // optional pictures of the crossings
   std::string hash;      // of the file's parsed content: the shards of one section share it
