@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
+#include "numerics/failure.hpp"
 #include "physics/stereographic.hpp"
 #include "scene/plan.hpp"
 #include "scene/plane_path.hpp"
@@ -12,10 +14,6 @@
 
 namespace epviz::scene {
 namespace {
-
-// Integrated this many members at a time: their outputs at every frame time
-// (6 doubles each) are turned into floats before the next chunk.
-constexpr std::size_t kChunk = 1024;
 
 double kinetic(const physics::Body& body, const Eigen::Vector3d& omega) {
   return 0.5 * (body.inertia.array() * omega.array().square()).sum();
@@ -83,31 +81,67 @@ double cloud_spread(const std::vector<Eigen::Vector3f>& points) {
   return std::exp(h) / kSpreadCells;
 }
 
-CloudRun::CloudRun(const sim::RunSpec& run, const CloudSettings& cloud,
-                   const std::vector<double>& frame_times, int threads)
-    : members_(cloud.members), times_(frame_times), gamma_(frame_times.size()) {
+void integrate_cloud(const sim::RunSpec& run, const CloudSettings& cloud,
+                     const std::vector<double>& times, int threads, const CloudChunkSink& take) {
   const auto states = cloud_members(run.body, run.initial, cloud);
-  // DOP853 in the direct formulation, whatever the run's own method and
-  // formulation (the batch path has that one only), at sim::adaptive_tol.
   const auto settings = sim::dop853_batch_settings(run);
-  const double t_end = frame_times.empty() ? 0.0 : frame_times.back();
-  for (auto& g : gamma_) g.reserve(states.size());
-  for (std::size_t first = 0; first < states.size(); first += kChunk) {
-    const std::size_t last = std::min(states.size(), first + kChunk);
+  const double t_end = times.empty() ? 0.0 : times.back();
+  for (std::size_t first = 0; first < states.size(); first += kCloudChunk) {
+    const std::size_t last = std::min(states.size(), first + kCloudChunk);
     std::vector<sim::DirectBatchTask> tasks;
     tasks.reserve(last - first);
     for (std::size_t i = first; i < last; ++i) {
-      tasks.push_back(sim::direct_batch_task(states[i], t_end, frame_times));
+      tasks.push_back(sim::direct_batch_task(states[i], t_end, times));
       tasks.back().id = long(i);
     }
-    const auto results = sim::integrate_direct_batch_parallel(run.body, tasks, settings, threads);
-    // A member that failed is drawn up to its last output.
-    for (const auto& r : results)
-      for (std::size_t k = 0; k < r.outputs.size(); ++k) {
-        const auto& x = r.outputs[k];
-        gamma_[k].emplace_back(float(x[3]), float(x[4]), float(x[5]));
-      }
+    take(first, sim::integrate_direct_batch_parallel(run.body, tasks, settings, threads));
   }
+}
+
+std::vector<double> cloud_times(const ScenePlan& plan) {
+  std::vector<double> times;
+  times.reserve(std::size_t(plan.frames));
+  for (int i = 0; i < plan.frames; ++i) times.push_back(plan.frame_time(i));
+  return times;
+}
+
+CloudRows cloud_rows(std::size_t first, const std::vector<sim::DirectBatchResult>& results,
+                     std::size_t times) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  CloudRows rows;
+  rows.first = first;
+  rows.members = results.size();
+  rows.times = times;
+  for (auto& c : rows.state) c.assign(results.size() * times, nan);
+  rows.failure_t.assign(results.size(), nan);
+  rows.failure_kind.resize(results.size());
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const auto& outputs = results[i].outputs;
+    for (std::size_t k = 0; k < outputs.size() && k < times; ++k)
+      for (std::size_t c = 0; c < rows.state.size(); ++c)
+        rows.state[c][i * times + k] = outputs[k][c];
+    if (const auto& f = results[i].failure) {
+      rows.failure_t[i] = f->t;
+      rows.failure_kind[i] = std::string(numerics::name(f->kind));
+      ++rows.failed;
+    }
+  }
+  return rows;
+}
+
+CloudRun::CloudRun(const sim::RunSpec& run, const CloudSettings& cloud,
+                   const std::vector<double>& frame_times, int threads)
+    : members_(cloud.members), times_(frame_times), gamma_(frame_times.size()) {
+  for (auto& g : gamma_) g.reserve(std::size_t(cloud.members));
+  integrate_cloud(run, cloud, frame_times, threads,
+                  [&](std::size_t, const std::vector<sim::DirectBatchResult>& results) {
+                    // A member that failed is drawn up to its last output.
+                    for (const auto& r : results)
+                      for (std::size_t k = 0; k < r.outputs.size(); ++k) {
+                        const auto& x = r.outputs[k];
+                        gamma_[k].emplace_back(float(x[3]), float(x[4]), float(x[5]));
+                      }
+                  });
   spread_.reserve(gamma_.size());
   for (const auto& g : gamma_) spread_.push_back(cloud_spread(g));
 }

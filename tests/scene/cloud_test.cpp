@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "numerics/embedded_rk.hpp"
@@ -87,6 +88,63 @@ TEST(Cloud, MembersAreTheScalarRunsAlone) {
     EXPECT_EQ(gamma[i].x(), float(x[3])) << i;
     EXPECT_EQ(gamma[i].y(), float(x[4])) << i;
     EXPECT_EQ(gamma[i].z(), float(x[5])) << i;
+  }
+}
+
+// The members as rows (what `render --h5` and epviz.cloud hold): each
+// member's outputs where it reached them, NaN from its failure on, and the
+// chunks in member order.
+TEST(Cloud, RowsHoldEachMembersOutputsAndNaNFromItsFailureOn) {
+  auto run = shipped_disc(Case::generic, 8.0);
+  const scene::CloudSettings cloud{int(scene::kCloudChunk) + 5, 0.2};
+  const auto t = times(run.t_end, 9);
+  // Whole to the end first, then with a step budget that ends every member
+  // part of the way (a step_budget failure).
+  std::vector<scene::CloudRows> whole, cut;
+  std::vector<std::optional<numerics::Failure>> failures;
+  scene::integrate_cloud(run, cloud, t, 2,
+                         [&](std::size_t first, const std::vector<sim::DirectBatchResult>& r) {
+                           whole.push_back(scene::cloud_rows(first, r, t.size()));
+                         });
+  run.max_steps = 12;
+  scene::integrate_cloud(run, cloud, t, 2,
+                         [&](std::size_t first, const std::vector<sim::DirectBatchResult>& r) {
+                           EXPECT_EQ(first, cut.size() * scene::kCloudChunk);
+                           cut.push_back(scene::cloud_rows(first, r, t.size()));
+                           for (const auto& x : r) failures.push_back(x.failure);
+                         });
+  ASSERT_EQ(cut.size(), 2u);
+  ASSERT_EQ(cut[1].members, 5u);
+  ASSERT_EQ(failures.size(), std::size_t(cloud.members));
+  int cut_short = 0;
+  for (std::size_t chunk = 0; chunk < cut.size(); ++chunk)
+    for (std::size_t i = 0; i < cut[chunk].members; ++i) {
+      const auto& f = failures[cut[chunk].first + i];
+      ASSERT_TRUE(f.has_value());
+      EXPECT_EQ(f->kind, numerics::FailureKind::step_budget);
+      EXPECT_EQ(cut[chunk].failure_kind[i], "step_budget");
+      EXPECT_EQ(cut[chunk].failure_t[i], f->t);
+      for (std::size_t k = 0; k < t.size(); ++k)
+        for (int c = 0; c < 6; ++c) {
+          const double x = cut[chunk].state[std::size_t(c)][i * t.size() + k];
+          if (t[k] < f->t) {
+            // Before the failure: the very numbers of the run to the end.
+            EXPECT_EQ(x, whole[chunk].state[std::size_t(c)][i * t.size() + k]);
+          } else {
+            EXPECT_TRUE(std::isnan(x)) << "member " << i << " at t = " << t[k];
+          }
+        }
+      cut_short += std::isnan(cut[chunk].state[0][i * t.size() + t.size() - 1]);
+      EXPECT_GT(f->t, t[1]);  // part of the way: outputs before the failure and NaN after
+    }
+  EXPECT_EQ(cut_short, cloud.members);
+  EXPECT_EQ(cut[0].failed + cut[1].failed, cloud.members);
+  for (const auto& rows : whole) {
+    EXPECT_EQ(rows.failed, 0);
+    for (const auto& c : rows.state)
+      for (double x : c) EXPECT_TRUE(std::isfinite(x));
+    for (std::size_t i = 0; i < rows.members; ++i)
+      EXPECT_TRUE(std::isnan(rows.failure_t[i]) && rows.failure_kind[i].empty());
   }
 }
 
