@@ -14,6 +14,7 @@
 #include <array>
 #include <cstdint>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -25,14 +26,20 @@
 #include "io/bad_input.hpp"
 #include "io/json_reader.hpp"
 #include "job/fields.hpp"
+#include "job/job_file.hpp"
+#include "job/job_plan.hpp"
 #include "job/schema.hpp"
+#include "job/shipped_jobs.hpp"
 #include "numerics/failure.hpp"
 #include "numerics/simd_path.hpp"
+#include "scene/cloud_run.hpp"
 #include "section/section_csv.hpp"
 #include "section/section_job.hpp"
 #include "section/section_run.hpp"
 #include "sim/drift.hpp"
 #include "sim/failure_advice.hpp"
+#include "sim/methods.hpp"
+#include "sim/run_options.hpp"
 #include "sim/simulate.hpp"
 #include "sweep/rows_file.hpp"
 #include "sweep/simulate_runs.hpp"
@@ -40,9 +47,6 @@
 #include "sweep/sweep_runner.hpp"
 #include "sweep/sweep_spec.hpp"
 #ifdef EPVIZ_HAVE_RENDER
-#include "job/job_file.hpp"
-#include "job/job_plan.hpp"
-#include "job/shipped_jobs.hpp"
 #include "paint/frame_drawer.hpp"
 #include "paint/frame_painter.hpp"
 #include "render/gl_choice.hpp"
@@ -60,6 +64,14 @@ py::array_t<double> to_array(std::vector<double>&& values) {
   return py::array_t<double>({owned->size()}, {sizeof(double)}, owned->data(), owner);
 }
 
+// values (rows x columns, row-major) as a 2-D array, without a copy.
+py::array_t<double> to_matrix(std::vector<double>&& values, std::size_t rows, std::size_t columns) {
+  auto* owned = new std::vector<double>(std::move(values));
+  py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<double>*>(p); });
+  return py::array_t<double>({rows, columns}, {columns * sizeof(double), sizeof(double)},
+                             owned->data(), owner);
+}
+
 // Thrown from inside a run (the GIL released) when Python has a signal
 // pending; the Python error (KeyboardInterrupt) is set and raised once the
 // GIL is back.
@@ -68,7 +80,10 @@ struct Interrupted {};
 class SignalCheck {
  public:
   void operator()() {
-    if (++calls_ % 4096 != 0) return;
+    if (++calls_ % 4096 == 0) now();
+  }
+  // Looks at once (between chunks of work that take a while each).
+  void now() {
     py::gil_scoped_acquire gil;
     if (PyErr_CheckSignals() != 0) throw Interrupted{};
   }
@@ -211,22 +226,87 @@ py::tuple sweep(const std::string& path, const std::string& object_json, int thr
   return py::make_tuple(columns, total, totals.failures);
 }
 
+// A single render job: a file, a shipped job's name, or a job's content
+// (JSON text) read as a file would be, named `name` in messages.
+job::RenderJob render_job(const std::string& path, const std::string& object_json,
+                          const std::string& name) {
+  if (path.empty()) {
+    const auto doc = job::read_job(object_from(object_json, name), name);
+    return {name, doc.simulation, doc.runs, doc.scene, doc.output};
+  }
+  auto loaded = job::load_job_file(job::job_file_named(path, job::shipped_jobs_dir()));
+  if (!loaded.single)
+    throw io::BadInput(path + ": " + name +
+                       " takes a single render job, not a gallery or bench-figures job");
+  return std::move(*loaded.single);
+}
+
+// A render job's cloud, integrated as `epviz render` integrates it
+// (scene::integrate_cloud), as the datasets of the group "cloud" of `epviz
+// render --h5`: {name: array} and what its attributes say (JSON text).
+py::tuple cloud(const std::string& path, const std::string& object_json, int threads) {
+  const std::string name = "epviz.cloud";
+  const job::RenderJob job = render_job(path, object_json, name);
+  const auto& settings = job.scene.cloud;
+  if (!settings.enabled())
+    throw io::BadInput((path.empty() ? name : path) +
+                       ": the job has no \"cloud\" (give it {\"members\": N, \"radius\": r})");
+  const scene::ScenePlan plan = job::plan_job(job);
+  std::vector<double> times = scene::cloud_times(plan);
+  const auto members = std::size_t(settings.members), frames = times.size();
+  std::array<std::vector<double>, 6> state;
+  for (auto& c : state) c.resize(members * frames);
+  std::vector<double> failure_t(members, std::numeric_limits<double>::quiet_NaN());
+  std::vector<std::string> failure_kind(members);
+  long failed = 0;
+  bool interrupted = false;
+  {
+    py::gil_scoped_release release;
+    SignalCheck check;
+    try {
+      scene::integrate_cloud(
+          plan.run, settings, times, threads,
+          [&](std::size_t first, const std::vector<sim::DirectBatchResult>& results) {
+            const auto rows = scene::cloud_rows(first, results, frames);
+            for (std::size_t c = 0; c < state.size(); ++c)
+              std::copy(rows.state[c].begin(), rows.state[c].end(),
+                        state[c].begin() + std::ptrdiff_t(first * frames));
+            std::copy(rows.failure_t.begin(), rows.failure_t.end(),
+                      failure_t.begin() + std::ptrdiff_t(first));
+            std::copy(rows.failure_kind.begin(), rows.failure_kind.end(),
+                      failure_kind.begin() + std::ptrdiff_t(first));
+            failed += rows.failed;
+            check.now();
+          });
+    } catch (const Interrupted&) {
+      interrupted = true;
+    }
+  }
+  if (interrupted) throw py::error_already_set();
+  const auto& names = sweep::sample_column_names();  // t, omega1..3, gamma1..3, ...
+  py::dict arrays;
+  arrays[py::str(names[0])] = to_array(std::move(times));
+  for (std::size_t c = 0; c < state.size(); ++c)
+    arrays[py::str(names[1 + c])] = to_matrix(std::move(state[c]), members, frames);
+  arrays["failure_t"] = to_array(std::move(failure_t));
+  arrays["failure_kind"] = py::cast(failure_kind);
+  const nlohmann::json report{{"members", settings.members},
+                              {"radius", settings.radius},
+                              {"frames", plan.frames},
+                              {"run", "run0"},
+                              {"method", std::string(sim::name(sim::Method::dop853))},
+                              {"formulation", std::string(sim::name(sim::Formulation::direct))},
+                              {"tol", sim::adaptive_tol(plan.run)},
+                              {"failed_members", failed}};
+  return py::make_tuple(arrays, report.dump());
+}
+
 #ifdef EPVIZ_HAVE_RENDER
 // The RGBA frame as a (height, width, 4) uint8 array, or the failure (dict)
 // that ended the frames before it.
 py::object render_frame(const std::string& path, const std::string& object_json, long frame,
                         long width, long height, const std::string& gl) {
-  job::RenderJob job;
-  if (path.empty()) {
-    const std::string name = "epviz.render_frame";
-    const auto doc = job::read_job(object_from(object_json, name), name);
-    job = {name, doc.simulation, doc.runs, doc.scene, doc.output};
-  } else {
-    auto loaded = job::load_job_file(job::job_file_named(path, job::shipped_jobs_dir()));
-    if (!loaded.single)
-      throw io::BadInput(path + ": a gallery or bench-figures job has no single frame to draw");
-    job = std::move(*loaded.single);
-  }
+  job::RenderJob job = render_job(path, object_json, "epviz.render_frame");
   const auto in_range = [](const char* key, long v, long lo, long hi) {
     if (v < lo || v > hi)
       throw io::BadInput(std::string("epviz.render_frame: ") + key + ": expected an integer from " +
@@ -306,6 +386,7 @@ PYBIND11_MODULE(_epviz, m) {
   });
   m.def("simulate", &simulate, py::arg("fields_json"), py::arg("max_steps") = py::none());
   m.def("section", &section, py::arg("path"), py::arg("object_json"), py::arg("threads"));
+  m.def("cloud", &cloud, py::arg("path"), py::arg("object_json"), py::arg("threads"));
   m.def("sweep", &sweep, py::arg("path"), py::arg("object_json"), py::arg("threads"),
         py::arg("rows_file"));
 #ifdef EPVIZ_HAVE_RENDER

@@ -16,6 +16,9 @@ Functions:
   ``epviz sweep --h5`` names its datasets.
 - ``render_frame(job, frame=, width=, height=)``: one frame of a render job
   as a uint8 image (height, width, 4), RGBA.
+- ``cloud(job)``: a render job's cloud of nearby states, every member's
+  state at every frame time as 2-D arrays [member, frame], named as the
+  datasets of the group "cloud" of ``epviz render --h5``.
 
 Bad input raises ValueError with the one-line message the command line
 gives for a job file; a numerical failure raises SimulationFailure, which
@@ -41,6 +44,7 @@ __version__: str = _epviz.version
 __all__ = [
     "Result",
     "SimulationFailure",
+    "cloud",
     "fields",
     "render_frame",
     "section",
@@ -56,7 +60,7 @@ class Result(collections.abc.Mapping):
     (``result.report``). An empty CSV field (the stereographic ``a``, ``b``
     at the south pole, ``extra_integral`` in a case without a fourth
     integral) is NaN here. A sweep's text columns ("method") are lists of
-    str."""
+    str; a cloud's states are 2-D, one row per member."""
 
     def __init__(self, columns: Mapping[str, np.ndarray], report: dict):
         self._columns = dict(columns)
@@ -194,6 +198,40 @@ def sweep(path_or_dict: Union[str, os.PathLike, Mapping[str, Any]], *, threads: 
         else:
             columns, points, failed = _epviz.sweep(os.fspath(path_or_dict), "", threads, rows)
     return Result(columns, {"points": points, "failed_points": failed})
+
+
+def cloud(job: Union[str, os.PathLike, Mapping[str, Any]], *, threads: int = 0) -> Result:
+    """The cloud of a render job (its "cloud": members and radius; see
+    docs/ensembles.md), integrated as ``epviz render`` integrates it for its
+    frames: DOP853 in the direct formulation at the tolerance of the job's
+    first run, every member to every frame time. The same numbers as the
+    group "cloud" of ``epviz render JOB --h5``, under the same names:
+
+    - ``t``: the frame times, shape (frames,);
+    - ``omega1``..``omega3``, ``gamma1``..``gamma3``: float64 arrays of shape
+      (members, frames), so ``result["gamma3"][k]`` is member k's gamma3
+      over time; NaN from a member's failure on;
+    - ``failure_t``: when each member failed (NaN for one that reached the
+      end); ``failure_kind``: how ("step_underflow", ...; "" for none), a
+      list of str.
+
+    ``.report`` holds what the group's attributes hold: members, radius,
+    frames, run ("run0": the run the cloud is launched with), method,
+    formulation, tol and failed_members.
+
+    ``job``: a job file, a shipped job's name ("cloud_generic"), or a job as
+    a dict. ``threads``: 0 for all cores (the numbers do not depend on it).
+    The GIL is released while integrating; Ctrl-C ends it with
+    KeyboardInterrupt between chunks of 1,024 members. A job without a
+    "cloud" raises ValueError."""
+    if isinstance(threads, bool) or not isinstance(threads, int) or not 0 <= threads <= 4096:
+        raise ValueError(f"epviz.cloud: threads: expected an integer from 0 to 4096, got {threads!r}")
+    threads = threads or (os.cpu_count() or 1)
+    if isinstance(job, Mapping):
+        columns, report = _epviz.cloud("", _fields_json("epviz.cloud", job), threads)
+    else:
+        columns, report = _epviz.cloud(os.fspath(job), "", threads)
+    return Result(columns, json.loads(report))
 
 
 def render_frame(

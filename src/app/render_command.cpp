@@ -9,6 +9,8 @@
 #include "app/bench_command.hpp"
 #include "app/cli_values.hpp"
 #include "app/gl_option.hpp"
+#include "app/render_h5.hpp"
+#include "h5/columns_file.hpp"
 #include "io/atomic_file.hpp"
 #include "io/bad_input.hpp"
 #include "io/frame_range.hpp"
@@ -45,7 +47,7 @@ using job::GalleryJob;
 using job::RenderJob;
 
 struct RenderOptions {
-  std::string job, out, frames, width, height, format, gl, report_json, shard, shard_count;
+  std::string job, out, frames, width, height, format, gl, report_json, shard, shard_count, h5;
   bool resume = false, quiet = false, progress = false, list_jobs = false, help_job = false;
 };
 
@@ -232,18 +234,28 @@ int render_single(RenderJob job, const RenderOptions& o, const render::GlChoice&
     p.range = {int(shard->frames.first), int(shard->frames.end - 1)};
     p.job.output.name = shard->output_name;
   }
+  if (shard && !o.h5.empty())
+    throw io::BadInput(
+        "--h5: a shard draws only some frames; give --h5 to a render of the whole job instead");
   auto context = gl.open();
   paint::FramePainter painter(*context, p.job.scene.width, p.job.scene.height);
   if (shard) shard::start_frame_shard(*shard);
   const auto st = render_frames(p, painter, o);
   if (shard && !st.written.failure) shard::finish_frame_shard(*shard, batch);
   print_job_line(summary_stream(o), p, st);
-  if (!o.report_json.empty()) {
-    auto report = job_report(p, st);
-    add_gl_report(report, *context);
+  auto report = job_report(p, st);
+  add_gl_report(report, *context);
+  if (!o.report_json.empty())
     io::write_file_atomically(o.report_json, io::json_text(report, 2) + "\n");
-  }
-  return report_failure(st.written.failure);
+  const int frames_code = report_failure(st.written.failure);
+  if (o.h5.empty()) return frames_code;
+  const auto h5 =
+      write_render_h5(o.h5, p.job, p.plan, report, progress_options(o, p.job.file.stem().string()));
+  std::fputs(render_h5_summary(o.h5, h5).c_str(), summary_stream(o));
+  // A run that failed beyond the frames drawn (--frames) fails the render too.
+  if (h5.failure && frames_code == 0)
+    std::fprintf(stderr, "epviz: numerical failure: %s\n", h5.failure->c_str());
+  return h5.failure ? 3 : frames_code;
 }
 
 // Every job of the gallery at once, tiled frame by frame into one MP4
@@ -272,6 +284,8 @@ int render_gallery(GalleryJob g, const RenderOptions& o, const render::GlChoice&
     throw io::BadInput("--frames: a gallery renders whole jobs; give --frames to a single job");
   if (!o.shard.empty())
     throw io::BadInput("--shard: a gallery renders whole jobs; shard a single job");
+  if (!o.h5.empty())
+    throw io::BadInput("--h5: writes one job's runs; give --h5 to a single job of the gallery");
   if (!o.out.empty()) g.dir = o.out;
   // --width and --height size every tile, so that gallery.png, the grid video
   // and the videos of its jobs (each drawn at the tile size) follow them alike.
@@ -347,6 +361,7 @@ int run_render(const RenderOptions& o) {
   if (o.job.empty())
     throw io::BadInput("render: give a job file or a shipped job's name (--list-jobs lists them)");
   io::check_output_file("--report-json", o.report_json);
+  h5::check_h5_output("--h5", o.h5);
   // SIGINT/SIGTERM remove the temporaries of the frames and videos being written.
   io::install_temporary_cleanup();
   const render::GlChoice gl(o.gl);
@@ -357,8 +372,10 @@ int run_render(const RenderOptions& o) {
   if (loaded.gallery)
     for (const auto& member : loaded.gallery->jobs)
       inputs.emplace_back("a job of the gallery", member.file.string());
-  io::require_separate_files(inputs, {{"--report-json", o.report_json}});
+  io::require_separate_files(inputs, {{"--report-json", o.report_json}, {"--h5", o.h5}});
   if (loaded.bench) {
+    if (!o.h5.empty())
+      throw io::BadInput("--h5: a bench-figures job has no runs to write; give it a single job");
     if (!o.frames.empty() || !o.format.empty() || o.resume || !o.shard.empty())
       throw io::BadInput(o.job + ": a bench-figures job takes only --out and --gl");
     BenchRequest b;
@@ -399,6 +416,10 @@ std::function<int()> add_render_command(cli::Command app) {
                  "from an array job's environment; epviz merge joins video segments)");
   cmd.add_option("--shard-count", o->shard_count,
                  "N: the number of shards when the environment gives only the index");
+  cmd.add_option("--h5", o->h5,
+                 "also write the job's runs and its cloud to this HDF5 file: a group per run "
+                 "(run0, ...) with simulate's CSV columns, a group cloud with [member, frame] "
+                 "datasets; the job and the report as attributes (JSON)");
   cmd.add_flag("--resume", o->resume, "PNG: skip frames already written completely");
   cmd.add_flag("--quiet", o->quiet, "no progress line");
   cmd.add_flag("--progress", o->progress, "progress line even when stderr is not a terminal");
