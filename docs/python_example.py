@@ -1,5 +1,5 @@
-"""Two methods' energy drift, a Poincare section and a rendered frame, from
-Python (docs/python.md). Run from the source tree, after the full build:
+"""Two methods' energy drift, a Poincare section, a rendered frame and a
+cloud of nearby states, from Python (docs/python.md). Run from the source tree, after the full build:
 
     PYTHONPATH=build/python python3 docs/python_example.py OUT_DIR
 """
@@ -15,7 +15,7 @@ import numpy as np
 import epviz
 
 out = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else ".")
-fig, (drift_ax, section_ax, frame_ax) = plt.subplots(1, 3, figsize=(16, 4.8))
+fig, (drift_ax, section_ax, frame_ax, cloud_ax) = plt.subplots(1, 4, figsize=(21, 4.8))
 
 # 1. The Kovalevskaya top with an adaptive and a fixed-step method: the
 #    relative drift of the energy C1 along each run.
@@ -37,6 +37,17 @@ section_ax.set(xlabel="gamma1", ylabel="omega3", title=f"{section.report['crossi
 frame = epviz.render_frame("kovalevskaya", frame=0, width=640, height=360)
 frame_ax.imshow(frame)
 frame_ax.set_axis_off()
+
+# 4. The cloud of the shipped generic job: 10,000 states launched in a small
+#    disc of gamma, each member's gamma over time a row of the arrays
+#    (the same numbers as `epviz render cloud_generic --h5`'s group "cloud").
+cloud = epviz.cloud("cloud_generic")
+for frame_index, colour in ((0, "crimson"), (-1, "steelblue")):
+    cloud_ax.scatter(cloud["gamma1"][:, frame_index], cloud["gamma2"][:, frame_index], s=0.2,
+                     color=colour, label=f"t = {cloud['t'][frame_index]:g}")
+cloud_ax.set(xlabel="gamma1", ylabel="gamma2", aspect="equal",
+             title=f"{cloud.report['members']} members, {cloud.report['failed_members']} failed")
+cloud_ax.legend(markerscale=20)
 
 fig.tight_layout()
 fig.savefig(out / "python_example.png", dpi=80)
