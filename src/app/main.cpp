@@ -9,6 +9,7 @@
 #include "app/bench_command.hpp"
 #include "app/cases_command.hpp"
 #include "app/cli.hpp"
+#include "app/diagram_command.hpp"
 #include "app/merge_command.hpp"
 #include "app/section_command.hpp"
 #include "app/simulate_command.hpp"
@@ -50,6 +51,7 @@ int main(int argc, char** argv) {
   commands["sweep"] = epviz::app::add_sweep_command(app);
   commands["merge"] = epviz::app::add_merge_command(app);
   commands["section"] = epviz::app::add_section_command(app);
+  commands["diagram"] = epviz::app::add_diagram_command(app);
 #ifdef EPVIZ_HAVE_RENDER
   commands["render"] = epviz::app::add_render_command(app);
   commands["check"] = epviz::app::add_check_command(app);

@@ -1,0 +1,26 @@
+#pragma once
+// `epviz diagram`'s figure and tables: the bifurcation diagram
+// (physics/critical_values.hpp) as a chart for the figure painters, and its
+// points as CSV text (docs/diagram.md).
+#include <string>
+
+#include "chart/chart_spec.hpp"
+#include "physics/critical_values.hpp"
+
+namespace epviz::app {
+
+// The chart "diagram.png": the sampled values as small dots, each critical
+// curve as a named line over them (single critical values as markers); axes
+// C₁ and the case's integral; the title names the case and C₀.
+chart::Figure diagram_figure(const physics::DiagramRequest& request,
+                             const physics::BifurcationDiagram& diagram);
+
+// "curve,energy,integral" and a row per drawn point of the critical curves,
+// curve by curve, in order along each (the breaks between attained parts are
+// not rows).
+std::string critical_curves_csv(const physics::BifurcationDiagram& diagram);
+
+// "energy,integral" and a row per sampled state.
+std::string sampled_values_csv(const physics::BifurcationDiagram& diagram);
+
+}  // namespace epviz::app
