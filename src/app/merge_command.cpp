@@ -223,6 +223,7 @@ void require_separate_merge_files(
     if (i < sections.size() && sections[i]) {
       outputs.emplace_back("the PNG of " + name, sections[i]->job.png);
       outputs.emplace_back("the SVG of " + name, sections[i]->job.svg);
+      outputs.emplace_back("the PDF of " + name, sections[i]->job.pdf);
     }
   }
   io::require_separate_files(inputs, outputs);

@@ -18,6 +18,7 @@
 #include "io/json_reader.hpp"
 #include "io/png_writer.hpp"
 #include "io/temp_registry.hpp"
+#include "job/shipped_jobs.hpp"
 #include "section/section_chart.hpp"
 #include "section/section_csv.hpp"
 #include "section/section_run.hpp"
@@ -42,7 +43,7 @@ struct SectionOptions {
 // the charts are built only when the file asks for a picture.
 void draw(const section::SectionJob& job, const std::vector<section::OrbitResult>& results,
           const std::string& gl) {
-  if (job.png.empty() && job.svg.empty()) return;
+  if (job.png.empty() && job.svg.empty() && job.pdf.empty()) return;
   for (const auto& w : section::fold_warnings(job, results))
     std::fprintf(stderr, "%s\n", w.c_str());
 #ifdef EPVIZ_HAVE_RENDER
@@ -64,9 +65,12 @@ void draw(const section::SectionJob& job, const std::vector<section::OrbitResult
   }
   if (!job.svg.empty())
     vector::write_vector_panels(job.svg, panels, vector::FigureFormat::svg, size, kGap);
+  if (!job.pdf.empty())
+    vector::write_vector_panels(job.pdf, panels, vector::FigureFormat::pdf, size, kGap);
 #else
   (void)results, (void)gl;
-  throw io::BadInput(job.file + ": keys 'png', 'svg': this epviz was built without the renderer");
+  throw io::BadInput(job.file +
+                     ": keys 'png', 'svg', 'pdf': this epviz was built without the renderer");
 #endif
 }
 
@@ -123,7 +127,7 @@ int run_section(const SectionOptions& o) {
   // As simulate and render: SIGINT and SIGTERM remove the temporaries being
   // written, and those a run killed with SIGKILL left are removed now.
   io::install_temporary_cleanup();
-  for (const auto& path : {job.csv, job.png, job.svg, o.h5})
+  for (const auto& path : {job.csv, job.png, job.svg, job.pdf, o.h5})
     io::remove_stale_temporaries_beside(path);
   // Held to the end, so that a second copy of this shard refuses (shard/shard_lock.hpp).
   std::optional<shard::ShardLock> lock;
@@ -186,7 +190,10 @@ std::function<int()> add_section_command(cli::Command app) {
   auto o = std::make_shared<SectionOptions>();
   cli::Command cmd = app.add_subcommand(
       "section", "Poincare section (SECTION.json): crossings of a surface by orbits on a level");
-  cmd.add_option("section", o->file, "section file (JSON; docs/sections.md)").required();
+  cmd.add_option("section", o->file,
+                 "section file (JSON; docs/sections.md), or the name of a shipped section "
+                 "(epviz render --list-jobs lists them)")
+      .required();
   cmd.add_option("--out", o->out, "the crossings' CSV (default: the file's \"csv\")");
   cmd.add_option("-j,--jobs", o->jobs, "threads (default: all cores)");
   add_gl_option(cmd, o->gl, "for the PNG");
@@ -200,7 +207,10 @@ std::function<int()> add_section_command(cli::Command app) {
                  "`epviz merge` joins the shards and draws the pictures");
   cmd.add_option("--shard-count", o->shard_count,
                  "N: the number of shards when the environment gives only the index");
-  return [o] { return run_section(*o); };
+  return [o] {
+    o->file = job::job_file_named(o->file, job::shipped_jobs_dir(), job::ShippedKind::section);
+    return run_section(*o);
+  };
 }
 
 }  // namespace epviz::app

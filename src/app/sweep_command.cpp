@@ -17,6 +17,7 @@
 #include "io/json_reader.hpp"
 #include "io/output_paths.hpp"
 #include "io/progress.hpp"
+#include "job/shipped_jobs.hpp"
 #include "shard/rows_shard.hpp"
 #include "shard/shard_lock.hpp"
 #include "shard/shard_spec.hpp"
@@ -148,7 +149,9 @@ std::function<int()> add_sweep_command(cli::Command app) {
   auto o = std::make_shared<SweepOptions>();
   cli::Command cmd = app.add_subcommand(
       "sweep", "Run every point of a parameter sweep (SWEEP.json) and write one JSON row each");
-  cmd.add_option("sweep", o->file, "sweep file (JSON: simulation, axes; docs/cluster.md)")
+  cmd.add_option("sweep", o->file,
+                 "sweep file (JSON: simulation, axes; docs/cluster.md), or the name of a "
+                 "shipped sweep (epviz render --list-jobs lists them)")
       .required();
   cmd.add_option("--out", o->out,
                  "rows file (JSON Lines, appended; default <sweep>.jsonl); rows already in it "
@@ -164,7 +167,10 @@ std::function<int()> add_sweep_command(cli::Command app) {
                  "also write the rows, in the order of their points, to this HDF5 file: a "
                  "dataset per value (\"max_relative_drift.energy\", \"initial.omega[0]\"), "
                  "the sweep file and a report as attributes (JSON)");
-  return [o] { return run_sweep(*o); };
+  return [o] {
+    o->file = job::job_file_named(o->file, job::shipped_jobs_dir(), job::ShippedKind::sweep);
+    return run_sweep(*o);
+  };
 }
 
 }  // namespace epviz::app

@@ -279,8 +279,8 @@ SectionJob read_section_object(const nlohmann::json& doc, const std::string& nam
   if (auto d = r.number_in("max_drift", 1e-14, 1.0, "1e-14 to 1")) job.max_drift = *d;
   job.coords = read_coords(r, job.surface.function);
   job.sheet = read_sheet(r, job);
-  for (const char* key : {"png", "svg"})
-    if (auto path = r.string(key)) (key[0] == 'p' ? job.png : job.svg) = *path;
+  for (auto [key, path] : {std::pair{"png", &job.png}, {"svg", &job.svg}, {"pdf", &job.pdf}})
+    if (auto given = r.string(key)) *path = *given;
   const auto csv = r.string("csv");
   if (needs_csv && (!csv || csv->empty())) r.fail("csv", "is required: the crossings' CSV file");
   if (csv) job.csv = *csv;
@@ -290,7 +290,8 @@ SectionJob read_section_object(const nlohmann::json& doc, const std::string& nam
 
 void check_outputs(const SectionJob& job, const std::string& csv_from, const io::NamedPaths& more) {
   io::NamedPaths outputs;
-  for (const auto& [key, path] : {std::pair{"csv", job.csv}, {"png", job.png}, {"svg", job.svg}}) {
+  for (const auto& [key, path] :
+       {std::pair{"csv", job.csv}, {"png", job.png}, {"svg", job.svg}, {"pdf", job.pdf}}) {
     std::string where = job.file;
     where += ": key '";
     where += key;

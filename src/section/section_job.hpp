@@ -66,8 +66,8 @@ struct SectionJob {
                                             sim::StateComponent::omega3};
   std::optional<SheetChoice> sheet;  // none: every crossing on one plane
   std::string csv;
-  std::string png, svg;  // optional pictures of the crossings
-  std::string hash;      // of the file's parsed content: the shards of one section share it
+  std::string png, svg, pdf;  // optional pictures of the crossings
+  std::string hash;           // of the file's parsed content: the shards of one section share it
 };
 
 // The keys a section surface and its plot are given by, wherever one is read

@@ -69,6 +69,7 @@ MergedSection read_section_shards(const shard::Batch& b, const fs::path& dir,
   m.job.csv = (out_dir / any.output).string();
   into_out(m.job.png);
   into_out(m.job.svg);
+  into_out(m.job.pdf);
   return m;
 }
 

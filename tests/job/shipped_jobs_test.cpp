@@ -51,7 +51,9 @@ TEST_F(ShippedJobs, TheListNamesTheDirectoryAndEachJobOnItsOwnLine) {
   EXPECT_NE(text.find(dir_.path().string()), std::string::npos) << text;
   for (const auto& j : shipped_jobs(dir_.path()))
     EXPECT_NE(text.find("\n  " + j.name + " "), std::string::npos) << j.name << "\n" << text;
-  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 4) << text;
+  // The directory; each command's heading and its files: three jobs, the
+  // fixture's section and its sweep.
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1 + (1 + 3) + (1 + 1) + (1 + 1)) << text;
   EXPECT_NE(shipped_jobs_text({}).find("no shipped jobs"), std::string::npos);
 }
 
@@ -80,11 +82,50 @@ TEST_F(ShippedJobs, ABareNameIsTheShippedJobOfThatName) {
       ADD_FAILURE() << name << ": accepted";
     } catch (const io::BadInput& e) {
       const std::string what = e.what();
-      EXPECT_EQ(what.rfind(name + ": ", 0), 0u) << what;
+      EXPECT_EQ(what.rfind("'" + name + "': ", 0), 0u) << what;
       EXPECT_NE(what.find("--list-jobs"), std::string::npos) << what;
     }
   }
   EXPECT_THROW(job_file_named("single", {}), io::BadInput);
+}
+
+TEST_F(ShippedJobs, SectionsAndSweepsAreListedUnderTheirCommandsAndTakenByName) {
+  write("level.section.json", R"({"case": "kovalevskaya"})");
+  write("map.sweep.json", R"({"simulation": {"case": "generic"}})");
+  const auto text = shipped_jobs_text(dir_.path());
+  const auto render = text.find("epviz render NAME:\n");
+  const auto section = text.find("epviz section NAME:\n");
+  const auto sweep = text.find("epviz sweep NAME:\n");
+  ASSERT_NE(render, std::string::npos) << text;
+  ASSERT_NE(section, std::string::npos) << text;
+  ASSERT_NE(sweep, std::string::npos) << text;
+  EXPECT_LT(render, section);
+  EXPECT_LT(section, sweep);
+  EXPECT_NE(text.find("  level  ", section), std::string::npos) << text;
+  EXPECT_NE(text.find("Poincare section: case kovalevskaya"), std::string::npos) << text;
+  EXPECT_NE(text.find("parameter sweep: case generic"), std::string::npos) << text;
+  // The fixture's unreadable ones are listed, saying so, not dropped.
+  EXPECT_NE(text.find("  top  "), std::string::npos) << text;
+  EXPECT_EQ(names(shipped_files(dir_.path(), ShippedKind::sweep)),
+            (std::vector<std::string>{"atlas", "map"}));
+
+  EXPECT_EQ(job_file_named("level", dir_.path(), ShippedKind::section),
+            dir_ / "level.section.json");
+  EXPECT_EQ(job_file_named("level.section.json", dir_.path(), ShippedKind::section),
+            dir_ / "level.section.json");
+  EXPECT_EQ(job_file_named("map", dir_.path(), ShippedKind::sweep), dir_ / "map.sweep.json");
+  // Each command takes only its own kind.
+  EXPECT_THROW(job_file_named("single", dir_.path(), ShippedKind::section), io::BadInput);
+  EXPECT_THROW(job_file_named("level", dir_.path(), ShippedKind::sweep), io::BadInput);
+  EXPECT_THROW(job_file_named("level", dir_.path(), ShippedKind::render), io::BadInput);
+  try {
+    job_file_named("nope", dir_.path(), ShippedKind::section);
+    ADD_FAILURE() << "a name that is nothing was taken";
+  } catch (const io::BadInput& e) {
+    EXPECT_NE(std::string(e.what()).find("no such section file, nor a shipped section"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST_F(ShippedJobs, TheirDirectoryFollowsTheDataSearchPath) {

@@ -63,6 +63,42 @@ TEST(SectionCommand, ShippedSectionFilesRunAndDrawTheirCrossings) {
   }
 }
 
+// A shipped section taken by its name writes its files where the user is,
+// not beside the shipped file; "pdf" draws the same panels as a PDF.
+TEST(SectionCommand, AShippedSectionRunsByItsNameAndDrawsAPdf) {
+  TempDir d;
+  const std::string in_d = "cd " + d.path().string() + " &&";
+  const auto r = run_epviz("section kovalevskaya_methods -j 2", d, in_d);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(line_count(slurp(d / "kovalevskaya_methods.section.csv")), 1u + 8u * 300u * 3u);
+  EXPECT_EQ(slurp(d / "kovalevskaya_methods.section.png").substr(1, 3), "PNG");
+  EXPECT_FALSE(
+      fs::exists(fs::path(EPVIZ_SOURCE_DIR) / "render_jobs" / "kovalevskaya_methods.section.csv"));
+  const auto missing = run_epviz("section no_such_section", d, in_d);
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("no such section file, nor a shipped section"), std::string::npos)
+      << missing.err;
+
+  auto job = nlohmann::json::parse(
+      slurp(fs::path(EPVIZ_SOURCE_DIR) / "render_jobs" / "kovalevskaya.section.json"));
+  job.erase("png");
+  job.erase("svg");
+  job["csv"] = (d / "k.csv").string();
+  job["pdf"] = (d / "k.pdf").string();
+  job["crossings"] = 20;
+  const auto pdf = run_section_file(d, job.dump());
+  ASSERT_EQ(pdf.exit_code, 0) << pdf.err;
+  const std::string bytes = slurp(d / "k.pdf");
+  EXPECT_EQ(bytes.substr(0, 5), "%PDF-");
+  EXPECT_GT(bytes.size(), 2000u);
+  // Named like another output, it is refused before any work.
+  job["pdf"] = job["csv"];
+  fs::remove(d / "k.csv");
+  const auto same = run_section_file(d, job.dump());
+  EXPECT_EQ(same.exit_code, 2) << same.err;
+  EXPECT_FALSE(fs::exists(d / "k.csv"));
+}
+
 // Directions of gamma the level cannot reach carry no orbit, and the summary
 // says how many: at C1 = 0.5, C0 = 0.5 the Kovalevskaya body's potential
 // gamma1 leaves out the directions near gamma1 = 1 (C1 - V < T_min there).
