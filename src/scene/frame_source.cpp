@@ -85,9 +85,7 @@ FrameSource::FrameSource(const ScenePlan& plan, const SceneSettings& settings)
   // The cloud: integrated to every frame time at once (renders only: an
   // open-ended scene has no last frame).
   if (settings.cloud.enabled() && !plan.open_ended) {
-    std::vector<double> times;
-    for (int i = 0; i < plan.frames; ++i) times.push_back(plan.frame_time(i));
-    cloud_ = std::make_unique<CloudRun>(plan.run, settings.cloud, times);
+    cloud_ = std::make_unique<CloudRun>(plan.run, settings.cloud, cloud_times(plan));
   }
 }
 
@@ -105,7 +103,7 @@ void FrameSource::advance() {
   const auto& first = tracks_.front()->latest();
   for (std::size_t i = 1; i < tracks_.size(); ++i) {
     const auto& s = tracks_[i]->latest();
-    separation_[i - 1].emplace_back(float(s.t), float((s.gamma - first.gamma).norm()));
+    separation_[i - 1].add(float(s.t), float((s.gamma - first.gamma).norm()));
   }
 }
 
@@ -255,7 +253,7 @@ void FrameSource::compose_comparison(Frame& f) const {
       r.plane_path.push_back({p, 0.0f, false});
       if (inside_panel(p, f.plane_extent)) r.plane_current = p;
     }
-    r.separation = separation_[std::size_t(i - 1)];
+    r.separation = separation_[std::size_t(i - 1)].points();
     if (const auto& until = track.pixel_true_until()) {
       r.pixel_true_until = *until;
       r.untrue_age = age(*until);

@@ -10,6 +10,7 @@
 #include "scene/plan.hpp"
 #include "scene/run_track.hpp"
 #include "scene/section_panel.hpp"
+#include "scene/separation_history.hpp"
 #include "sim/drift.hpp"
 #include "sim/trajectory.hpp"
 
@@ -58,8 +59,9 @@ class FrameSource {
   ScenePlan plan_;
   SceneSettings settings_;
   std::vector<std::unique_ptr<RunTrack>> tracks_;
-  // Comparison scenes: |delta gamma| of each further run from the first, per sample.
-  std::vector<std::vector<Eigen::Vector2f>> separation_;
+  // Comparison scenes: |delta gamma| of each further run from the first,
+  // bounded (a frame copies the points the chart draws, never every sample).
+  std::vector<SeparationHistory> separation_;
   long sample_index_ = 0;
   int frames_composed_ = 0;
   BodyShape shape_;
