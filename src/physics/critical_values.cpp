@@ -19,6 +19,9 @@ struct KovalevskayaScale {
   double energy, area, integral;
 };
 
+// The largest |C0| of the normalised Kovalevskaya body drawn.
+constexpr double kMaxNormalisedArea = 8.0;
+
 KovalevskayaScale kovalevskaya_scale(const Body& body) {
   const double c = body.inertia.z();
   const double eps = std::abs(body.weight * body.com.x()) / c;
@@ -57,6 +60,15 @@ double check_diagram_request(const DiagramRequest& r) {
                        "Omega2^2)^2): no diagram; needs P != 0 and a0 != 0");
   if (!std::isfinite(r.area))
     throw InvalidInput("area", "C0 must be a finite number; got " + detail::num(r.area));
+  if (r.case_id == Case::kovalevskaya) {
+    // Past this the search for critical states loses curves that real states
+    // attain (tests/physics/critical_values_test.cpp checks it up to here).
+    const double limit = kMaxNormalisedArea * kovalevskaya_scale(r.body).area;
+    if (std::abs(r.area) > limit)
+      throw InvalidInput("area", "the kovalevskaya diagram is computed for |C0| up to " +
+                                     detail::approx(limit) + " (8 I3 sqrt(|P a0| / I3)); got " +
+                                     detail::num(r.area));
+  }
   const double energy_min = minimum_energy(r.body, r.area).energy;
   if (r.energy_max && !(std::isfinite(*r.energy_max) && *r.energy_max > energy_min))
     throw InvalidInput(

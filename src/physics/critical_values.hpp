@@ -51,7 +51,9 @@ struct BifurcationDiagram {
 // Checks a request before any work, throwing InvalidInput with the field
 // "case" (not kovalevskaya or lagrange), "body" (a body the case does not
 // allow, or one with no diagram: Kovalevskaya's P a0 = 0), "area" (not
-// finite) or "energy_max" (not finite, or below the least energy). Returns
+// finite; for Kovalevskaya, |C0| above 8 I3 √ε, past which the search for
+// critical states is not reliable) or "energy_max" (not finite, or below the
+// least energy). Returns
 // the least energy at this area.
 double check_diagram_request(const DiagramRequest& request);
 

@@ -107,8 +107,11 @@ std::vector<CriticalCurve> critical_curves(double area, double energy_min, doubl
     negative.push_back(parametric_point(area, parametric_roots(area, h).front()));
   }
   if (area == 0.0) {
-    // The curve is the line k = 1, its branches h < 0 and h > 0.
-    std::erase_if(negative, [](const ValuePoint& p) { return !(p.energy < 0.0); });
+    // The limit ℓ → 0: the branches become the line k = 1 (s = h), and both
+    // their parts near s = 0 (s ≈ ∓ℓ / (2√h)) the parabola k = 1 + h², h ≥ 0,
+    // drawn once, as the continuation of s < 0 past h = 0.
+    negative.clear();
+    for (const double h : grid) negative.push_back({h, h < 0.0 ? 1.0 : 1.0 + h * h});
     for (const double h : grid)
       if (h > 0.0) positive.push_back({h, 1.0});
   } else {

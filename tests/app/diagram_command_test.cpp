@@ -133,6 +133,8 @@ TEST(DiagramCommand, BadInputIsRefusedBeforeAnyWork) {
       {"--case nope --area 1", "--case: 'nope'"},
       {"--case kovalevskaya --area nan", "--area"},
       {"--case kovalevskaya --area 1x", "--area"},
+      {"--case kovalevskaya --area 9",
+       "--area: the kovalevskaya diagram is computed for |C0| up to 8"},
       {"--case kovalevskaya --area 0.5 --energy-max -3", "--energy-max"},
       {"--case kovalevskaya --area 0.5 --energy-max inf", "--energy-max"},
       {"--case kovalevskaya --area 0.5 --inertia 2,2,1.5", "kovalevskaya needs I1 = I2 = 2 I3"},

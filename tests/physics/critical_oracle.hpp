@@ -98,7 +98,7 @@ inline std::optional<Vector6d> oracle_search(const IntegralsAt& f, double area,
   const auto residual = [&](const Eigen::VectorXd& y) {
     return oracle_residual(f, area, start.lead, value, y);
   };
-  for (int it = 0; it < 80; ++it) {
+  for (int it = 0; it < 200; ++it) {
     const Eigen::VectorXd r = residual(z);
     if (!r.allFinite() || r.norm() > 1e8) return std::nullopt;
     if (r.norm() < 1e-11) return Vector6d(z.head<6>());
