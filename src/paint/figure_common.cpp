@@ -1,7 +1,10 @@
 #include "paint/figure_common.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 #include "render/panel_2d.hpp"
 
@@ -13,9 +16,41 @@ float chart_font_px(const ChartOptions& options) {
   return std::clamp(float(options.height) / 40.0f, 13.0f, 30.0f);
 }
 
-std::string decade_label(int exponent) {
-  if (exponent == 0) return "1";
-  return "1e" + std::to_string(exponent);
+std::string power_of_ten(int exponent) {
+  static const char* const digits[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+  std::string text = "10";
+  if (exponent < 0) text += "⁻";
+  for (char c : std::to_string(std::abs(exponent))) text += digits[c - '0'];
+  return text;
+}
+
+std::string decade_label(int exponent) { return power_of_ten(exponent); }
+
+std::string print_minus(std::string text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char next = i + 1 < text.size() ? text[i + 1] : '\0';
+    const bool minus =
+        text[i] == '-' && (std::isdigit(static_cast<unsigned char>(next)) || next == '.');
+    // Not a hyphen inside a word or a name ("Gauss-4", "RK-45").
+    const bool in_word = i > 0 && std::isalnum(static_cast<unsigned char>(text[i - 1]));
+    out += minus && !in_word ? "−" : std::string(1, text[i]);
+  }
+  return out;
+}
+
+std::string print_number(double value, int significant) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", std::clamp(significant, 1, 17), value);
+  std::string text = buf;
+  const auto e = text.find_first_of("eE");
+  if (e == std::string::npos) return print_minus(text);
+  const int exponent = std::atoi(text.c_str() + e + 1);
+  std::string mantissa = text.substr(0, e);
+  // "1e-08" is 10⁻⁸, not 1×10⁻⁸.
+  if (mantissa == "1" || mantissa == "-1")
+    return (mantissa == "1" ? "" : "−") + power_of_ten(exponent);
+  return print_minus(mantissa) + "×" + power_of_ten(exponent);
 }
 
 void Span::add(double v) {
@@ -65,7 +100,7 @@ std::vector<Tick> axis_ticks(double lo, double hi, bool log_axis, int max_labels
   }
   const auto values = render::nice_ticks(lo, hi, max_labels);
   const double spacing = values.size() > 1 ? values[1] - values[0] : (hi - lo);
-  for (double v : values) ticks.push_back({v, render::format_tick(v, spacing), true});
+  for (double v : values) ticks.push_back({v, print_minus(render::format_tick(v, spacing)), true});
   return ticks;
 }
 

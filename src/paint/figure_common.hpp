@@ -45,8 +45,19 @@ struct ChartFont {
   std::function<float(const std::string&)> width;
 };
 
-// The log10 decade labels: "1" for 1e0, else "1e-8" style.
+// Numbers as print sets them, the one formatter of the figures' tick labels
+// and chart text (GL and vector painters alike): a minus sign (U+2212, not
+// the hyphen) and powers of ten in superscripts ("10⁻⁸", not "1e-8").
+// `exponent` as a power of ten: "10⁻⁸", "10⁰", "10³".
+std::string power_of_ten(int exponent);
+// The log10 decade labels: power_of_ten, every decade alike.
 std::string decade_label(int exponent);
+// `text` with each hyphen that stands for a minus (before a digit or a
+// decimal point) made a minus sign; other hyphens ("Gauss-4") kept.
+std::string print_minus(std::string text);
+// `value` to `significant` digits ("%g"-style), in print: "−0.25", and
+// "2.6×10⁻⁴" where "%g" would write an exponent.
+std::string print_number(double value, int significant = 3);
 
 // --- For the painters' own files -------------------------------------------------
 

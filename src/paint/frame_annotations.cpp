@@ -28,8 +28,8 @@ Box box_of(const render::Viewport& v) {
 // A time before now for the colour bar's ticks: short, no trailing zeros.
 std::string time_ago(double t) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "-%.3g", t);
-  return buf;
+  std::snprintf(buf, sizeof buf, "%.3g", t);
+  return "−" + std::string(buf);
 }
 
 // A small arrow from `from` along `dir` (unit, image pixels) of `length` pixels.

@@ -16,6 +16,7 @@
 
 #include "paint/cloud_drawing.hpp"
 #include "paint/comparison_painter.hpp"
+#include "paint/figure_common.hpp"
 #include "paint/painter_common.hpp"
 #include "paint/section_panel_drawing.hpp"
 #include "physics/notation.hpp"
@@ -183,7 +184,9 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
   // under it, how they are made. Beside a section panel the plane has half
   // the column.
   const float title_room = float(f.section ? column.width / 2 : column.width) - 8 * px;
-  const std::string of_gamma = "Riccati plane (a, b) of " + std::string(physics::symbol::gamma);
+  // Appended, not "literal" + string: GCC 12 warns of a bound it misreads there.
+  const std::string of_gamma =
+      std::string("Riccati plane (a, b) of ").append(physics::symbol::gamma);
   for (const std::string& title :
        {of_gamma + " (body axes)", of_gamma, std::string("(a, b) plane")})
     if (gui().text_size(title).x <= title_room) {
@@ -263,18 +266,12 @@ void FramePainter::draw_plane_captions(render::DrawList& flat, const render::Vie
 render::ImGuiOverlay& FramePainter::gui() { return *renderer_->overlay(); }
 
 namespace {
-// The drift readouts' traffic light explained: the level each colour stands
-// for (scene::drift_level's thresholds) and what it means for the picture.
-std::string decade(double v) { return "1e" + std::to_string(int(std::lround(std::log10(v)))); }
+// The drift readouts' traffic light explained: the range each colour stands
+// for (scene::drift_level's thresholds), in one wording at every width. Only
+// the thresholds: a word for them ("round-off", "ok") would claim more than
+// the colour does, and the bare ranges fit the smallest window.
+int exponent_of(double v) { return int(std::lround(std::log10(v))); }
 using DriftKey = std::array<std::string, 3>;
-// The key in words where the window is wide enough, else shorter: the
-// longest of these no wider than the window's other rows (the last one always).
-std::vector<DriftKey> drift_keys() {
-  const std::string warn = decade(scene::kDriftWarnFrom), bad = decade(scene::kDriftBadFrom);
-  return {{"round-off <" + warn, "  small <" + bad, "  visible ≥" + bad},
-          {"ok <" + warn, "  fair <" + bad, "  bad ≥" + bad},
-          {"<" + warn, "  <" + bad, "  ≥" + bad}};
-}
 void draw_drift_key(const scene::Theme& ink, const DriftKey& parts) {
   const scene::Rgba* colours[] = {&ink.drift_ok, &ink.drift_warn, &ink.drift_bad};
   for (std::size_t i = 0; i < parts.size(); ++i) {
@@ -313,11 +310,10 @@ std::string FramePainter::drift_key_text(const std::array<std::string, 3>& parts
   return parts[0] + parts[1] + parts[2];
 }
 
-std::array<std::string, 3> FramePainter::drift_key(float room) {
-  const auto keys = drift_keys();
-  for (const auto& k : keys)
-    if (gui().text_size(drift_key_text(k)).x <= room + 0.5f) return k;
-  return keys.back();
+std::array<std::string, 3> FramePainter::drift_key() {
+  const std::string warn = power_of_ten(exponent_of(scene::kDriftWarnFrom)),
+                    bad = power_of_ten(exponent_of(scene::kDriftBadFrom));
+  return {"<" + warn, "  <" + bad, "  ≥" + bad};
 }
 
 Box FramePainter::info_window_box(const scene::Frame& f, const scene::FrameLayout& layout,
@@ -339,7 +335,7 @@ Box FramePainter::info_window_box(const scene::Frame& f, const scene::FrameLayou
         std::max({text_w, gui().text_size("xxxxxxxxxxxx  -0.0e+00 ").x,
                   drift_names_width(gui(), f) + st.ItemSpacing.x + gui().text_size("-0.0e+00 ").x,
                   gui().text_size(drift_heading(f)).x});
-    text_w = std::max(text_w, gui().text_size(drift_key_text(drift_key(text_w))).x);
+    text_w = std::max(text_w, gui().text_size(drift_key_text(drift_key())).x);
   }
   // Title, lines, then the drifts' heading, their rows and the key of their colours.
   const int rows = 1 + shown + (f.overlay.drifts.empty() ? 0 : 2 + int(f.overlay.drifts.size()));
@@ -401,7 +397,7 @@ void FramePainter::draw_info_window(const scene::Frame& f, const scene::FrameLay
         ImGui::SameLine(values_x);
         ImGui::TextColored(c, "%9.1e", value);
       }
-      draw_drift_key(ink, drift_key(ImGui::GetContentRegionAvail().x));
+      draw_drift_key(ink, drift_key());
     }
     ImGui::End();
     ImGui::PopStyleColor(pushed);

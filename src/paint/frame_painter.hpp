@@ -106,9 +106,9 @@ class FramePainter {
     flat_sink_ = std::move(sink);
   }
   // The overlay's drift table as draw_info_window writes it: its heading and
-  // the key of its colours that fits `room` pixels (for vector stills).
+  // the key of its colours (for vector stills).
   static const char* drift_table_heading(const scene::Frame& f);
-  std::array<std::string, 3> drift_table_key(float room) { return drift_key(room); }
+  static std::array<std::string, 3> drift_table_key() { return drift_key(); }
   // Where its values start, from the left of the window's text: after the
   // widest name (at least 12 characters of the bitmap font) and a spacing.
   float drift_table_values_x(const scene::Frame& f);
@@ -148,10 +148,9 @@ class FramePainter {
   // A 2D list to the GPU, or to the flat sink where one is set.
   void draw_flat(const render::DrawList& list);
   void draw_info_window(const scene::Frame& f, const scene::FrameLayout& layout, float px);
-  // The key of the drift colours that fits `room` pixels (in words where it
-  // does), and its text.
-  std::array<std::string, 3> drift_key(float room);
-  std::string drift_key_text(const std::array<std::string, 3>& parts);
+  // The key of the drift colours, one wording at every width, and its text.
+  static std::array<std::string, 3> drift_key();
+  static std::string drift_key_text(const std::array<std::string, 3>& parts);
   // Where the overlay window goes and how large it is (from this frame's text).
   Box info_window_box(const scene::Frame& f, const scene::FrameLayout& layout, float px);
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "paint/figure_common.hpp"
 
@@ -63,9 +62,7 @@ std::vector<GridTick> grid_ticks(const std::vector<double>& values, int max_labe
       for (double m : {1.0, 2.0, 5.0}) {
         const double at = e + std::log10(m);
         if (at < lo - 1e-9 || at > hi + 1e-9) continue;
-        char text[32];
-        std::snprintf(text, sizeof text, "%g", std::pow(10.0, at));
-        ticks.push_back({at, text, true});
+        ticks.push_back({at, print_number(std::pow(10.0, at)), true});
       }
   }
   std::vector<GridTick> out;

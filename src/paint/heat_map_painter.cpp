@@ -72,11 +72,7 @@ void keep_apart(std::vector<GridTick>& ticks, float cell,
   ticks = std::move(kept);
 }
 
-std::string heat_value_text(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
-  return buf;
-}
+std::string heat_value_text(double v) { return print_number(v, 3); }
 
 }  // namespace
 

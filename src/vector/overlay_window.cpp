@@ -134,7 +134,7 @@ void draw_overlay_window(cairo_t* cr, paint::FramePainter& painter, const scene:
     line.put(value_text, to_imgui(ink.drift_colour(value)), values_x);
     line.next_line();
   }
-  const auto key = painter.drift_table_key(float(x1 - x0) - 2.0f * st.padding.x);
+  const auto key = paint::FramePainter::drift_table_key();
   const scene::Rgba* colours[] = {&ink.drift_ok, &ink.drift_warn, &ink.drift_bad};
   float x = 0.0f;
   for (std::size_t i = 0; i < key.size(); ++i) x += line.put(key[i], to_imgui(*colours[i]), x);

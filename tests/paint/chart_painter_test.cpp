@@ -37,10 +37,40 @@ int colour_count(const render::RgbaImage& img, const render::Viewport& box,
   return n;
 }
 
+// Print typography: powers of ten in superscripts, every decade alike.
 TEST(ChartPainter, DecadeLabels) {
-  EXPECT_EQ(paint::decade_label(-8), "1e-8");
-  EXPECT_EQ(paint::decade_label(0), "1");
-  EXPECT_EQ(paint::decade_label(3), "1e3");
+  EXPECT_EQ(paint::decade_label(-8), "10⁻⁸");
+  EXPECT_EQ(paint::decade_label(0), "10⁰");
+  EXPECT_EQ(paint::decade_label(3), "10³");
+  EXPECT_EQ(paint::decade_label(-12), "10⁻¹²");
+}
+
+// A minus sign (U+2212) for negative numbers, not the hyphen, and no "e".
+TEST(ChartPainter, NumbersInPrint) {
+  EXPECT_EQ(paint::print_number(-0.25), "−0.25");
+  EXPECT_EQ(paint::print_number(0.25), "0.25");
+  EXPECT_EQ(paint::print_number(2.6e-5, 2), "2.6×10⁻⁵");
+  EXPECT_EQ(paint::print_number(-3e7), "−3×10⁷");
+  EXPECT_EQ(paint::print_number(1e-8), "10⁻⁸");
+  EXPECT_EQ(paint::print_number(-1e-8), "−10⁻⁸");
+  EXPECT_EQ(paint::print_minus("-0.5"), "−0.5");
+  EXPECT_EQ(paint::print_minus("t = -.5"), "t = −.5");
+  EXPECT_EQ(paint::print_minus("Gauss-4, RK-45"), "Gauss-4, RK-45");  // hyphens in names kept
+}
+
+// Every tick label of a linear axis across zero: negative ones with the minus sign.
+TEST(ChartPainter, LinearTicksUseTheMinusSign) {
+  int negative = 0;
+  for (const auto& t : paint::axis_ticks(-2.5, 2.5, false, 6)) {
+    EXPECT_EQ(t.label.find('-'), std::string::npos) << t.label;
+    if (t.at < 0.0) {
+      ++negative;
+      EXPECT_EQ(t.label.rfind("−", 0), 0u) << t.label;
+    }
+  }
+  EXPECT_GE(negative, 2);
+  for (const auto& t : paint::axis_ticks(-9.0, -3.0, true, 8))
+    EXPECT_EQ(t.label.find('e'), std::string::npos) << t.label;
 }
 
 TEST(ChartPainter, LogLayoutCoversWholeDecades) {

@@ -241,3 +241,13 @@ TEST(Painter, OverlayAloneDrawsTextAndNothingElse) {
 
 }  // namespace
 }  // namespace epviz
+
+// The drift key says what each colour stands for in one wording, whatever
+// the window's width: the thresholds as powers of ten. No claim of round-off
+// for the first, no "1e-8".
+TEST(Painter, DriftKeyIsOneWordingInPrint) {
+  const auto key = epviz::paint::FramePainter::drift_table_key();
+  EXPECT_EQ(key[0], "<10⁻⁸");
+  EXPECT_EQ(key[1], "  <10⁻²");
+  EXPECT_EQ(key[2], "  ≥10⁻²");
+}

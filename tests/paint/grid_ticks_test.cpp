@@ -43,7 +43,9 @@ void expect_round_linear_ticks(const std::vector<double>& v) {
   for (std::size_t k = 0; k < ticks.size(); ++k) {
     const auto& t = ticks[k];
     EXPECT_NEAR(t.value / step, std::round(t.value / step), 1e-9) << t.value;
-    EXPECT_NEAR(std::stod(t.label), t.value, step * 1e-6) << t.label;
+    std::string ascii = t.label;  // the minus sign (U+2212) back to a hyphen for stod
+    if (ascii.rfind("−", 0) == 0) ascii.replace(0, std::string("−").size(), "-");
+    EXPECT_NEAR(std::stod(ascii), t.value, step * 1e-6) << t.label;
     // On the grid, and where the grid's formula puts the value.
     EXPECT_GE(t.position, -0.5);
     EXPECT_LE(t.position, n - 0.5);
@@ -89,6 +91,26 @@ TEST(GridTicks, LogGridWithinADecadeGetsOneTwoFive) {
     EXPECT_NEAR(t.position, std::log10(t.value) / std::log10(v[1]), 1e-9);
   }
   EXPECT_EQ(labels, (std::vector<std::string>{"1", "2", "5"}));
+}
+
+// Small values in print: powers of ten in superscripts, not "2e-05".
+TEST(GridTicks, SmallOneTwoFiveInPowersOfTen) {
+  std::vector<std::string> labels;
+  for (const auto& t : grid_ticks(geomspace(1e-5, 6e-5, 5), 8)) labels.push_back(t.label);
+  EXPECT_EQ(labels, (std::vector<std::string>{"10⁻⁵", "2×10⁻⁵", "5×10⁻⁵"}));
+}
+
+// Negative values with the minus sign (U+2212), never a hyphen.
+TEST(GridTicks, NegativeLabelsUseTheMinusSign) {
+  int negative = 0;
+  for (const auto& t : grid_ticks(linspace(-0.739, 0.912, 24), 6)) {
+    EXPECT_EQ(t.label.find('-'), std::string::npos) << t.label;
+    if (t.value < 0.0) {
+      ++negative;
+      EXPECT_EQ(t.label.rfind("−", 0), 0u) << t.label;
+    }
+  }
+  EXPECT_GE(negative, 1);
 }
 
 // Uneven cells: linear within each cell.

@@ -67,14 +67,14 @@ TEST(SmallMultiples, PanelsStackOnSharedAxes) {
   EXPECT_LT(y_of("Relative drift")[0], y_of("low")[0]);
   EXPECT_LT(y_of("low")[0], y_of("high")[0]);
   EXPECT_GE(float(d.height), y_of("high")[0] + 100.0f);
-  // Both panels' y axes span 1e-12 to 1e-4: the same decade labels in each,
+  // Both panels' y axes span 10⁻¹² to 10⁻⁴: the same decade labels in each,
   // the low panel's smallest among the high panel's.
   std::vector<std::string> first, second;
   for (const auto& l : all)
-    if (l.text.rfind("1e", 0) == 0)
+    if (l.text.rfind("10", 0) == 0)
       (l.position.y < y_of("high")[0] ? first : second).push_back(l.text);
   EXPECT_EQ(first, second);
-  EXPECT_NE(std::find(second.begin(), second.end(), "1e-12"), second.end());
+  EXPECT_NE(std::find(second.begin(), second.end(), "10⁻¹²"), second.end());
   EXPECT_GE(second.size(), 3u);
   // The panels' own series are drawn, and nothing of the chart's own.
   std::size_t polylines = 0;

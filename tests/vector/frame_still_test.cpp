@@ -111,7 +111,7 @@ TEST_F(StillCommand, PdfIsOnePageOfTextWithTheViewAsItsOneImage) {
   // table's key), the 3D view's labels and key, the plane's panel and the legend.
   const auto text = et::run_tool("pdftotext -enc UTF-8 '" + pdf + "' -").out;
   for (const char* expected :
-       {"Kovalevskaya top: three integrators", "t = ", "bad ≥", "|γ|²", "fixed point", "e2",
+       {"Kovalevskaya top: three integrators", "t = ", "≥10⁻²", "|γ|²", "fixed point", "e2",
         "equator", "Riccati", "reference: dop853", "over t"})
     EXPECT_NE(text.find(expected), std::string::npos) << expected << " not in:\n" << text;
   // One raster, the 3D view's pixels: pdfimages lists it after two header lines.
