@@ -7,6 +7,8 @@
 #include <string>
 #include <string_view>
 
+#include "physics/cases.hpp"
+#include "physics/notation.hpp"
 #include "sim/run_spec.hpp"
 #include "study/stability.hpp"
 
@@ -126,6 +128,17 @@ std::string_view method_family(const std::string& method) {
   return m ? method_family(*m) : "other";
 }
 
+// The names of the integrals a drift series follows, as the renders and
+// atlases write them (physics/notation.hpp): marker key 0 the energy C₁, 1
+// the case's own fourth integral (K, Ω₃, ...).
+constexpr int kEnergyKey = 0, kExtraKey = 1;
+std::string integral_name(const std::string& case_name, int key) {
+  if (key == kEnergyKey) return std::string(physics::symbol::energy);
+  const auto c = physics::case_from_name(case_name);
+  const std::string_view symbol = c ? physics::integral_symbol(*c) : std::string_view();
+  return symbol.empty() ? "fourth integral" : std::string(symbol);
+}
+
 // The drift series of one case as small multiples: a panel per method family
 // (in the methods' order), each with its methods' legend, all on the same axes.
 ChartSpec drift_panels(const std::string& case_name, std::vector<ChartSeries> series) {
@@ -141,8 +154,7 @@ ChartSpec drift_panels(const std::string& case_name, std::vector<ChartSeries> se
       const std::string method = one.name.substr(0, one.name.find(", "));
       if (method_family(method) != family) continue;
       add_legend_key(panel.colour_legend, one.colour_key, method);
-      add_legend_key(panel.marker_legend, one.marker_key,
-                     one.marker_key == 0 ? "C1" : "4th integral");
+      add_legend_key(panel.marker_legend, one.marker_key, integral_name(case_name, one.marker_key));
       panel.series.push_back(one);
     }
     if (!panel.series.empty()) chart.panels.push_back(std::move(panel));
@@ -332,12 +344,12 @@ std::vector<chart::Figure> bench_figures(const std::vector<StudyRow>& rows) {
     if (r->run.rhs_evals > 0) by_evals.points.push_back({double(r->run.rhs_evals), r->error});
   }
   for (const auto* r : rows_of<DriftRow>(rows)) {
-    for (const auto& [values, what] : {std::pair{&r->series_drift_C1, "C1"},
-                                       std::pair{&r->series_drift_extra, "4th integral"}}) {
+    for (const auto& [values, key] : {std::pair{&r->series_drift_C1, kEnergyKey},
+                                      std::pair{&r->series_drift_extra, kExtraKey}}) {
       ChartSeries s;
-      s.name = series_name(r->run) + ", " + what;
+      s.name = series_name(r->run) + ", " + integral_name(r->run.case_name, key);
       s.colour_key = keys.colour(r->run.method);
-      s.marker_key = std::string_view(what) == "C1" ? 0 : 1;
+      s.marker_key = key;
       for (std::size_t i = 0; i < std::min(r->series_t.size(), values->size()); ++i)
         if (std::isfinite(r->series_t[i]) && std::isfinite((*values)[i]))
           s.points.push_back({r->series_t[i], std::abs((*values)[i])});

@@ -1,5 +1,5 @@
 // Bench rows -> figure specifications: a chart per case and cost measure with
-// a series per method, the drift chart with C1 and the fourth integral, and the
+// a series per method, the drift chart with C₁ and the fourth integral, and the
 // stability rows as one table.
 #include <gtest/gtest.h>
 
@@ -89,8 +89,12 @@ TEST(BenchFigures, ChartsFromRows) {
   const auto& drift = small_multiples.panels[0];
   EXPECT_FALSE(drift.log_x);
   ASSERT_EQ(drift.series.size(), 2u);
-  EXPECT_EQ(drift.series[0].name, "rk4, C1");
-  EXPECT_EQ(drift.series[1].name, "rk4, 4th integral");
+  // The integrals by the symbols the renders use: the energy C₁, Kovalevskaya's K.
+  EXPECT_EQ(drift.series[0].name, "rk4, C₁");
+  EXPECT_EQ(drift.series[1].name, "rk4, K");
+  ASSERT_EQ(drift.marker_legend.size(), 2u);
+  EXPECT_EQ(drift.marker_legend[0].name, "C₁");
+  EXPECT_EQ(drift.marker_legend[1].name, "K");
   EXPECT_DOUBLE_EQ(drift.series[0].points[0].y, 1e-10);  // drifts shown as magnitudes
   EXPECT_EQ(drift.series[1].points.size(), 19u);         // the NaN point is left out
 }
