@@ -99,8 +99,21 @@ std::string render_summary(const RenderJob& job, const scene::ScenePlan& plan,
   line += std::to_string(counts.frames_drawn) + " frames " + std::to_string(job.scene.width) + "x" +
           std::to_string(job.scene.height);
   line += rate;
-  line += std::string(sim::name(plan.run.method)) + " " + plan.accuracy_note + ", " +
-          std::string(sim::name(plan.run.formulation)) + " -> " + job.output.dir.string() + "\n";
+  // Each run's method, accuracy and formulation: a comparison names every run
+  // it drew, numbered as in its legend, not the first alone.
+  const auto setting = [](const sim::RunSpec& run, const std::string& note) {
+    return std::string(sim::name(run.method)) + " " + note + ", " +
+           std::string(sim::name(run.formulation));
+  };
+  if (!plan.comparison()) {
+    line += setting(plan.run, plan.accuracy_note);
+  } else {
+    line += "run 1 " + setting(plan.run, plan.accuracy_note);
+    for (std::size_t k = 0; k < plan.others.size(); ++k)
+      line += "; run " + std::to_string(k + 2) + " " +
+              setting(plan.others[k].run, plan.others[k].accuracy_note);
+  }
+  line += " -> " + job.output.dir.string() + "\n";
   return line;
 }
 

@@ -112,6 +112,24 @@ TEST(RenderRuns, ReportsEachRunOfAComparison) {
             report["runs"][0]["max_relative_drift"]["energy"].get<double>());
 }
 
+// The summary line names every run's method and accuracy, not the first
+// run's alone: a reader of the log sees what was compared.
+TEST(RenderRuns, SummaryNamesEveryRunsMethod) {
+  test::TempDir dir;
+  auto j = kovalevskaya_job(dir / "frames", 0.25);
+  j["runs"] = nlohmann::json::parse(
+      R"([{"label": "coarse"}, {"label": "fine", "method": "dop853", "tol": 1e-10},
+          {"method": "gauss4", "step": 0.1}])");
+  const auto job = dir / "job.json";
+  std::ofstream(job) << j.dump();
+  const auto r = test::run_epviz("render " + job.string() + " --frames 6 --quiet", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string summary = r.out + r.err;
+  for (const char* run :
+       {"run 1 rk4 step 0.25", "; run 2 dop853 tol 1e-10", "; run 3 gauss4 step 0.1"})
+    EXPECT_NE(summary.find(run), std::string::npos) << run << " not in:\n" << summary;
+}
+
 TEST(RenderRuns, RefusesAnUnknownKeyInARunWithExitTwo) {
   test::TempDir dir;
   auto j = kovalevskaya_job(dir / "frames", 0.25);
