@@ -6,6 +6,7 @@
 // this target a time bound per input of 2 s: a slow input is a finding.
 #include <cstddef>
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
 
