@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "app/bench_command.hpp"
 #include "app/cli_values.hpp"
@@ -287,8 +288,8 @@ int render_gallery(GalleryJob g, const RenderOptions& o, const render::GlChoice&
   if (!o.h5.empty())
     throw io::BadInput("--h5: writes one job's runs; give --h5 to a single job of the gallery");
   if (!o.out.empty()) g.dir = o.out;
-  // --width and --height size every tile, so that gallery.png, the grid video
-  // and the videos of its jobs (each drawn at the tile size) follow them alike.
+  // --width and --height size every tile (gallery.png, the grid video) and
+  // every job's video, which is otherwise drawn at the size its job asks for.
   if (!o.width.empty()) g.tile_width = int(parse_integer("--width", o.width, 16, 8192));
   if (!o.height.empty()) g.tile_height = int(parse_integer("--height", o.height, 16, 8192));
   io::check_output_dir(o.out.empty() ? g.file.string() + ": dir" : "--out", g.dir);
@@ -308,7 +309,12 @@ int render_gallery(GalleryJob g, const RenderOptions& o, const render::GlChoice&
     ps.range = {at, at};
     ps.caption = job::tile_caption(ps.job, ps.plan);
     stills.push_back(std::move(ps));
-    if (g.videos) videos.push_back(prepare(job::gallery_member(g, job, /*video=*/true), job_opts));
+    if (g.videos) {
+      auto video = job::gallery_member(g, job, /*video=*/true);
+      if (!o.width.empty()) video.scene.width = g.tile_width;
+      if (!o.height.empty()) video.scene.height = g.tile_height;
+      videos.push_back(prepare(std::move(video), job_opts));
+    }
   }
   if (g.grid_video) {
     job::grid_video_size(g, int(stills.size()));
@@ -338,7 +344,11 @@ int render_gallery(GalleryJob g, const RenderOptions& o, const render::GlChoice&
   nlohmann::json reports = nlohmann::json::array();
 
   for (const auto& p : videos) {
-    const auto st = render_frames(p, painter, o);
+    // A painter of the video's own size; the tiles' one where they agree.
+    std::optional<paint::FramePainter> own_size;
+    if (p.job.scene.width != g.tile_width || p.job.scene.height != g.tile_height)
+      own_size.emplace(*context, p.job.scene.width, p.job.scene.height);
+    const auto st = render_frames(p, own_size ? *own_size : painter, o);
     print_job_line(summary_stream(o), p, st);
     reports.push_back(job_report(p, st));
     add_gl_report(reports.back(), *context);

@@ -8,8 +8,11 @@
 namespace epviz::job {
 
 RenderJob gallery_member(const GalleryJob& gallery, RenderJob job, bool video) {
-  job.scene.width = gallery.tile_width;
-  job.scene.height = gallery.tile_height;
+  // A still is a tile; a video is the job's own, at the size the job asks for.
+  if (!video) {
+    job.scene.width = gallery.tile_width;
+    job.scene.height = gallery.tile_height;
+  }
   job.output.dir = gallery.dir;
   job.output.video.reset();
   if (video) {

@@ -7,9 +7,10 @@
 
 namespace epviz::job {
 
-// A job of the gallery as the gallery draws it: at the tile size, into the
-// gallery's directory; as a still (no video), or as the gallery's video of it
-// (in the gallery's video format, named after the job's file).
+// A job of the gallery as the gallery draws it, into the gallery's
+// directory: as a still (no video) at the tile size, or as the gallery's
+// video of it at the job's own size (in the gallery's video format, named
+// after the job's file).
 RenderJob gallery_member(const GalleryJob& gallery, RenderJob job, bool video);
 
 // The frame of a job's still, of its `frames`: `at` of the way through.

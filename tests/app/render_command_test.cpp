@@ -233,3 +233,49 @@ TEST(Render, GalleryTilesOneStillPerJob) {
 
 }  // namespace
 }  // namespace epviz
+
+namespace epviz {
+namespace {
+
+// The width and height of a video's first stream, by ffprobe.
+std::pair<int, int> video_size(const test::TempDir& dir, const fs::path& video) {
+  const std::string probe =
+      "ffprobe -v error -select_streams v:0 -show_entries stream=width,height -of json " +
+      video.string() + " > " + (dir / "probe.json").string();
+  if (std::system(probe.c_str()) != 0) return {0, 0};
+  const auto p = nlohmann::json::parse(test::slurp(dir / "probe.json"));
+  return {p["streams"][0]["width"].get<int>(), p["streams"][0]["height"].get<int>()};
+}
+
+// A gallery's videos come out at the size each job asks for; its tiles at the
+// tile size. --width and --height size both.
+TEST(Render, GalleryVideosAreAtTheirJobsSize) {
+  if (std::system("command -v ffprobe >/dev/null 2>&1") != 0) GTEST_SKIP() << "no ffprobe";
+  test::TempDir dir;
+  auto a = small_job(dir / "unused");
+  a["width"] = 200;
+  a["height"] = 150;
+  a["duration"] = 1;
+  dir.write("a.json", a.dump(2));
+  auto b = a;
+  b["width"] = 240;
+  b["height"] = 136;
+  dir.write("b.json", b.dump(2));
+  const nlohmann::json gallery = {{"jobs", {"a.json", "b.json"}},
+                                  {"tile", {{"width", 160}, {"height", 120}, {"columns", 2}}},
+                                  {"videos", "mp4"},
+                                  {"dir", (dir / "gallery").string()}};
+  const auto g = dir.write("gallery.json", gallery.dump(2));
+  auto r = test::run_epviz("render " + g.string() + " --quiet", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(video_size(dir, dir / "gallery" / "a.mp4"), std::make_pair(200, 150));
+  EXPECT_EQ(video_size(dir, dir / "gallery" / "b.mp4"), std::make_pair(240, 136));
+  // The summary line says so too.
+  EXPECT_NE((r.out + r.err).find("200x150"), std::string::npos) << r.out << r.err;
+  r = test::run_epviz("render " + g.string() + " --quiet --width 96 --height 64", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(video_size(dir, dir / "gallery" / "a.mp4"), std::make_pair(96, 64));
+}
+
+}  // namespace
+}  // namespace epviz

@@ -16,7 +16,7 @@ GalleryJob gallery(int tile_width, int tile_height, int columns) {
   return g;
 }
 
-TEST(GalleryLayout, AMemberIsDrawnAtTheTileSizeIntoTheGallerysDirectory) {
+TEST(GalleryLayout, AStillIsATileAndAVideoTheJobsOwnSizeInTheGallerysDirectory) {
   auto g = gallery(320, 180, 3);
   g.dir = "out/g";
   g.videos = io::VideoFormat::webm;
@@ -30,6 +30,8 @@ TEST(GalleryLayout, AMemberIsDrawnAtTheTileSizeIntoTheGallerysDirectory) {
   EXPECT_EQ(still.output.dir, "out/g");
   EXPECT_EQ(still.output.video, std::nullopt);
   const auto video = gallery_member(g, job, true);
+  EXPECT_EQ(video.scene.width, 1280);  // a video at the size its job asks for
+  EXPECT_EQ(video.scene.height, job.scene.height);
   EXPECT_EQ(video.output.video, io::VideoFormat::webm);
   EXPECT_EQ(video.output.name, "euler");
   EXPECT_EQ(video.output.dir, "out/g");
