@@ -279,20 +279,52 @@ void draw_drift_key(const scene::Theme& ink, const DriftKey& parts) {
     ImGui::TextColored(to_imgui(*colours[i]), "%s", render::drawable_text(parts[i]).c_str());
   }
 }
+// The drift table's heading: of the one run, or of each run of a comparison
+// (its rows are the runs).
+const char* drift_heading(const scene::Frame& f) {
+  return f.comparison ? "largest rel. drift" : "max rel. drift";
+}
 // The width of the drift table's names column: 12 characters of the bitmap
-// font (as its "%-12s" was), or the widest name.
+// font (as its "%-12s" was), or the widest name, or the heading on its row.
 float drift_names_width(const render::ImGuiOverlay& gui, const scene::Frame& f) {
-  float w = gui.text_size("xxxxxxxxxxxx").x;
+  float w = std::max(gui.text_size("xxxxxxxxxxxx").x, gui.text_size(drift_heading(f)).x);
   for (const auto& d : f.overlay.drifts) w = std::max(w, gui.text_size(d.first).x);
   return w;
 }
-// The drift table's heading: of the one run, or of each run of a comparison.
-const char* drift_heading(const scene::Frame& f) {
-  return f.comparison ? "largest rel. drift per run" : "max rel. drift";
+// Whether the frame has the drift at the integrator's steps for every row.
+bool with_step_drifts(const scene::Frame& f) {
+  return !f.overlay.drifts.empty() && f.overlay.step_drifts.size() == f.overlay.drifts.size();
 }
+// A drift value as the table writes it, in a column of fixed width.
+constexpr const char* kDriftFormat = "%9.1e";
+constexpr const char* kWidestDrift = "-0.0e+00 ";
 }  // namespace
 
 const char* FramePainter::drift_table_heading(const scene::Frame& f) { return drift_heading(f); }
+
+std::vector<std::string> FramePainter::drift_table_columns(const scene::Frame& f) {
+  // What each value column measures: the drift over the states drawn (between
+  // the steps, interpolated), and where the run has it, at the steps.
+  if (with_step_drifts(f)) return {"drawn", "at steps"};
+  return {"drawn states"};
+}
+
+std::vector<std::string> FramePainter::drift_table_row(const scene::Frame& f, std::size_t row) {
+  std::vector<std::string> values;
+  char text[32];
+  std::snprintf(text, sizeof text, kDriftFormat, f.overlay.drifts[row].second);
+  values.emplace_back(text);
+  if (with_step_drifts(f)) {
+    std::snprintf(text, sizeof text, kDriftFormat, f.overlay.step_drifts[row]);
+    values.emplace_back(text);
+  }
+  return values;
+}
+
+float FramePainter::drift_table_column_width() {
+  render::ImGuiContextScope scope(gui().context());
+  return gui().text_size(kWidestDrift).x + ImGui::GetStyle().ItemSpacing.x;
+}
 
 float FramePainter::drift_table_values_x(const scene::Frame& f) {
   render::ImGuiContextScope scope(gui().context());
@@ -330,12 +362,12 @@ Box FramePainter::info_window_box(const scene::Frame& f, const scene::FrameLayou
   float text_w = gui().text_size(f.overlay.title).x;
   for (int i = 0; i < shown; ++i)
     text_w = std::max(text_w, gui().text_size(f.overlay.lines[std::size_t(i)]).x);
-  if (!f.overlay.drifts.empty()) {  // the names, then "%9.1e" values; the heading; the key
-    text_w =
-        std::max({text_w, gui().text_size("xxxxxxxxxxxx  -0.0e+00 ").x,
-                  drift_names_width(gui(), f) + st.ItemSpacing.x + gui().text_size("-0.0e+00 ").x,
-                  gui().text_size(drift_heading(f)).x});
-    text_w = std::max(text_w, gui().text_size(drift_key_text(drift_key())).x);
+  if (!f.overlay.drifts.empty()) {  // the names, then the value columns; the key
+    const auto columns = drift_table_columns(f);
+    float values_w = float(columns.size() - 1) * drift_table_column_width();
+    values_w += std::max(gui().text_size(kWidestDrift).x, gui().text_size(columns.back()).x);
+    text_w = std::max({text_w, drift_names_width(gui(), f) + st.ItemSpacing.x + values_w,
+                       gui().text_size(drift_key_text(drift_key())).x});
   }
   // Title, lines, then the drifts' heading, their rows and the key of their colours.
   const int rows = 1 + shown + (f.overlay.drifts.empty() ? 0 : 2 + int(f.overlay.drifts.size()));
@@ -389,13 +421,24 @@ void FramePainter::draw_info_window(const scene::Frame& f, const scene::FrameLay
     for (int i = 0; i < shown; ++i) text(f.overlay.lines[std::size_t(i)]);
     if (!f.overlay.drifts.empty()) {
       ImGui::Separator();
-      ImGui::TextDisabled("%s", drift_heading(f));
       const float values_x = ImGui::GetStyle().WindowPadding.x + drift_table_values_x(f);
-      for (const auto& [name, value] : f.overlay.drifts) {
-        const ImVec4 c = to_imgui(ink.drift_colour(value));  // traffic light: scene::drift_level
-        text(name);
-        ImGui::SameLine(values_x);
-        ImGui::TextColored(c, "%9.1e", value);
+      const float column_w = drift_table_column_width();
+      // The heading, and over each value column what it measures.
+      ImGui::TextDisabled("%s", drift_heading(f));
+      const auto columns = drift_table_columns(f);
+      for (std::size_t c = 0; c < columns.size(); ++c) {
+        ImGui::SameLine(values_x + float(c) * column_w);
+        ImGui::TextDisabled("%s", columns[c].c_str());
+      }
+      for (std::size_t row = 0; row < f.overlay.drifts.size(); ++row) {
+        text(f.overlay.drifts[row].first);
+        const auto values = drift_table_row(f, row);
+        for (std::size_t c = 0; c < values.size(); ++c) {
+          // Traffic light (scene::drift_level) of the column's own value.
+          const double v = c == 0 ? f.overlay.drifts[row].second : f.overlay.step_drifts[row];
+          ImGui::SameLine(values_x + float(c) * column_w);
+          ImGui::TextColored(to_imgui(ink.drift_colour(v)), "%s", values[c].c_str());
+        }
       }
       draw_drift_key(ink, drift_key());
     }

@@ -112,6 +112,12 @@ class FramePainter {
   // Where its values start, from the left of the window's text: after the
   // widest name (at least 12 characters of the bitmap font) and a spacing.
   float drift_table_values_x(const scene::Frame& f);
+  // What its value columns measure, written over them on the heading's row:
+  // the drawn states, and the integrator's steps where the frame has them.
+  static std::vector<std::string> drift_table_columns(const scene::Frame& f);
+  // A row's values, one per column; and how far apart the columns start.
+  static std::vector<std::string> drift_table_row(const scene::Frame& f, std::size_t row);
+  float drift_table_column_width();
 
  private:
   void draw_body(render::DrawList& list, const scene::Frame& f, float px);

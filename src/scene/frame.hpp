@@ -74,8 +74,13 @@ struct OverlayText {
   // Time, method and tolerance, formulation, parameters: most important first,
   // so that a small picture can show only the first few.
   std::vector<std::string> lines;
-  // Running relative drift of each invariant: (name, value) e.g. ("C₁ (energy)", 3e-13).
+  // Running relative drift of each invariant: (name, value) e.g. ("C₁ (energy)", 3e-13),
+  // measured on the states drawn (interpolated between the integrator's steps).
   std::vector<std::pair<std::string, double>> drifts;
+  // The same invariants' drift at the integrator's own steps, one per row of
+  // `drifts`, where the run measures it (empty: not known; the overlay then
+  // shows the drawn states' column alone).
+  std::vector<double> step_drifts;
 };
 
 // One run of a comparison scene beyond the first (the first run's trail,

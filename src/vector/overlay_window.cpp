@@ -123,15 +123,22 @@ void draw_overlay_window(cairo_t* cr, paint::FramePainter& painter, const scene:
   set_imgui_colour(cr, st.separator);
   cairo_set_line_width(cr, 1.0);
   cairo_stroke(cr);
-  line.put(paint::FramePainter::drift_table_heading(frame), st.text_disabled);
-  line.next_line();
-  // The painter's columns: the names, then the values where it puts them.
+  // The painter's columns: the names, then the values where it puts them,
+  // each headed by what it measures.
   const float values_x = painter.drift_table_values_x(frame);
-  for (const auto& [name, value] : frame.overlay.drifts) {
-    char value_text[32];
-    std::snprintf(value_text, sizeof value_text, "%9.1e", value);
-    line.put(name, st.text);
-    line.put(value_text, to_imgui(ink.drift_colour(value)), values_x);
+  const float column_w = painter.drift_table_column_width();
+  line.put(paint::FramePainter::drift_table_heading(frame), st.text_disabled);
+  const auto columns = paint::FramePainter::drift_table_columns(frame);
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    line.put(columns[c], st.text_disabled, values_x + float(c) * column_w);
+  line.next_line();
+  for (std::size_t row = 0; row < frame.overlay.drifts.size(); ++row) {
+    line.put(frame.overlay.drifts[row].first, st.text);
+    const auto values = paint::FramePainter::drift_table_row(frame, row);
+    for (std::size_t c = 0; c < values.size(); ++c) {
+      const double v = c == 0 ? frame.overlay.drifts[row].second : frame.overlay.step_drifts[row];
+      line.put(values[c], to_imgui(ink.drift_colour(v)), values_x + float(c) * column_w);
+    }
     line.next_line();
   }
   const auto key = paint::FramePainter::drift_table_key();

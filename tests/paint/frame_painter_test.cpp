@@ -251,3 +251,41 @@ TEST(Painter, DriftKeyIsOneWordingInPrint) {
   EXPECT_EQ(key[1], "  <10⁻²");
   EXPECT_EQ(key[2], "  ≥10⁻²");
 }
+
+namespace epviz {
+namespace {
+
+// The overlay's drift table says what it measures: the drawn (interpolated)
+// states, and, where the run reports it, the drift at the integrator's steps
+// in a column of its own, each headed.
+TEST(Painter, DriftTableSaysWhatItMeasures) {
+  scene::Frame f;
+  f.overlay.drifts = {{"|γ|²", 2.6e-4}, {"C₁ (energy)", 1e-9}};
+  EXPECT_EQ(paint::FramePainter::drift_table_columns(f), std::vector<std::string>{"drawn states"});
+  EXPECT_EQ(paint::FramePainter::drift_table_row(f, 0), std::vector<std::string>{"  2.6e-04"});
+  f.overlay.step_drifts = {8e-16, 3e-10};
+  EXPECT_EQ(paint::FramePainter::drift_table_columns(f),
+            (std::vector<std::string>{"drawn", "at steps"}));
+  EXPECT_EQ(paint::FramePainter::drift_table_row(f, 0),
+            (std::vector<std::string>{"  2.6e-04", "  8.0e-16"}));
+  f.overlay.step_drifts = {8e-16};  // not one per row: not shown
+  EXPECT_EQ(paint::FramePainter::drift_table_columns(f).size(), 1u);
+}
+
+TEST(Painter, StepDriftsAreDrawnInTheOverlay) {
+  auto f =
+      case_frame(physics::Case::kovalevskaya, scene::View::body, only(false, false, false, true));
+  auto bright = [](const render::RgbaImage& img) {
+    int n = 0;
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x) n += et::luminance(et::pixel_colour(img, x, y)) > 0.35f;
+    return n;
+  };
+  const int without = bright(painter().paint(f));
+  f.overlay.step_drifts.assign(f.overlay.drifts.size(), 1e-15);
+  const int with = bright(painter().paint(f));
+  EXPECT_GT(with, without + 100);  // a column of values and its heading more
+}
+
+}  // namespace
+}  // namespace epviz
