@@ -7,6 +7,7 @@
 #include <initializer_list>
 #include <optional>
 
+#include "paint/frame_drawer.hpp"
 #include "paint/frame_painter.hpp"
 #include "paint/preset_frame.hpp"
 #include "physics/cases.hpp"
@@ -285,6 +286,32 @@ TEST(Painter, StepDriftsAreDrawnInTheOverlay) {
   f.overlay.step_drifts.assign(f.overlay.drifts.size(), 1e-15);
   const int with = bright(painter().paint(f));
   EXPECT_GT(with, without + 100);  // a column of values and its heading more
+}
+
+}  // namespace
+}  // namespace epviz
+
+namespace epviz {
+namespace {
+
+// A render's frames carry the run's drift at its steps beside the drawn
+// states': Gauss-4 keeps |γ|² at its steps to round-off, while the states
+// drawn between them (interpolated) drift far more.
+TEST(Painter, RenderedFramesShowTheDriftAtTheSteps) {
+  auto run = sim::preset_run(physics::Case::kovalevskaya, sim::Method::gauss4,
+                             sim::Formulation::direct, 12.0, 200);
+  run.step = 0.05;
+  scene::SceneSettings s;
+  s.width = W;
+  s.height = H;
+  s.fps = 10;
+  s.duration = 3;
+  paint::FrameDrawer drawer(scene::plan_scene(run, s), s);
+  const auto f = drawer.frame(29);
+  ASSERT_EQ(f.overlay.drifts.size(), 4u);  // |γ|², C₀, C₁, K
+  ASSERT_EQ(f.overlay.step_drifts.size(), 4u);
+  EXPECT_LT(f.overlay.step_drifts[0], 1e-12);
+  EXPECT_GT(f.overlay.drifts[0].second, 1e3 * f.overlay.step_drifts[0]);
 }
 
 }  // namespace
