@@ -208,21 +208,6 @@ void LiveScene::show_separation_so_far() {
   // ends its own at the moment shown (a live run has no end); at least one
   // step's worth, so that the axis at t = 0 has a span to label.
   frame_.comparison->t_end = std::max(frame_.t, kStepWallSeconds * setup_.speed);
-  // The samples since t = 0 grow without end: at most kChartPoints of them
-  // (the largest of each stretch, so that a jump is never lost).
-  for (auto& run : frame_.comparison->others) {
-    auto& sep = run.separation;
-    if (sep.size() <= kChartPoints) continue;
-    const std::size_t stride = (sep.size() + kChartPoints - 1) / kChartPoints;
-    std::size_t kept = 0;
-    for (std::size_t i = 0; i < sep.size(); i += stride) {
-      Eigen::Vector2f top = sep[i];
-      for (std::size_t j = i + 1; j < std::min(sep.size(), i + stride); ++j)
-        if (sep[j].y() > top.y()) top.y() = sep[j].y();
-      sep[kept++] = top;
-    }
-    sep.resize(kept);
-  }
 }
 
 }  // namespace epviz::live

@@ -18,6 +18,7 @@
 
 #include "live/live_setup.hpp"
 #include "scene/frame_source.hpp"
+#include "scene/separation_history.hpp"
 #include "sim/drift.hpp"
 
 namespace epviz::live {
@@ -61,9 +62,10 @@ class LiveScene {
   sim::Formulation formulation() const { return source_->plan().run.formulation; }
   // The tolerance the run uses (planned when it started; a view change since does not re-plan it).
   double tolerance() const { return source_->plan().run.tol; }
-  // A comparison's separation chart keeps at most this many points a run
-  // (the samples since t = 0 grow without end).
-  static constexpr std::size_t kChartPoints = 2048;
+  // A comparison's separation chart has at most this many points a run: the
+  // scene's history thins the samples since t = 0, which grow without end,
+  // keeping each stretch's lowest and highest (scene/separation_history.hpp).
+  static constexpr std::size_t kChartPoints = scene::SeparationHistory::kMaxPoints;
   // The runs drawn: 1, or 1 + setup().compared.size() in a comparison.
   int run_count() const { return source_->run_count(); }
 
@@ -94,7 +96,7 @@ class LiveScene {
   void advance_to(double t);
   // Comparisons: the run whose failure stopped the scene, in its legend row and the report.
   void mark_failed_run();
-  // Comparisons: the separation chart from t = 0 to now, in at most kChartPoints points a run.
+  // Comparisons: the separation chart's time axis from t = 0 to now.
   void show_separation_so_far();
   // The view settings live in the setup (they change without a restart).
   void show_view_settings();
