@@ -207,9 +207,9 @@ chart::HeatMapSpec stability_heat_map(const std::vector<StudyRow>& rows) {
   chart::HeatMapSpec h;
   h.title = "Stability: largest fixed step that keeps the motion";
   h.value_label = "step / fastest period";
-  h.note =
-      "bisection on the step over t = 20; fails on blow-up, drift of energy or |gamma|^2 > 1, or "
-      "error > 0.1";
+  h.note = "bisection on the step over t = 20; fails on blow-up, drift of " +
+           std::string(physics::symbol::energy) + " or " +
+           std::string(physics::symbol::gamma_norm2) + " > 1, or error > 0.1";
   const auto max_step = rows_of<MaxStepRow>(rows);
   auto index_of = [](std::vector<std::string>& names, const std::string& n) {
     const auto it = std::find(names.begin(), names.end(), n);

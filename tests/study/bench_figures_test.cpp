@@ -73,6 +73,9 @@ TEST(BenchFigures, ChartsFromRows) {
   EXPECT_EQ(figures[2].file_name, "drift_kovalevskaya.png");
   EXPECT_EQ(figures[3].file_name, "stability.png");  // a heat map; no other stability rows
   EXPECT_TRUE(std::holds_alternative<chart::HeatMapSpec>(figures[3].content));
+  // Its note names the integrals by their symbols, as the charts' keys do.
+  const auto& note = std::get<chart::HeatMapSpec>(figures[3].content).note;
+  EXPECT_NE(note.find("C₁ or |γ|² > 1"), std::string::npos) << note;
 
   const auto& cpu = std::get<chart::ChartSpec>(figures[0].content);
   EXPECT_TRUE(cpu.log_x && cpu.log_y);
