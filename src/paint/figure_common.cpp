@@ -53,6 +53,16 @@ std::string print_number(double value, int significant) {
   return print_minus(mantissa) + "×" + power_of_ten(exponent);
 }
 
+std::string print_scientific(double value, int decimals) {
+  if (!std::isfinite(value))
+    return std::isnan(value) ? "nan" : print_minus(value < 0 ? "-inf" : "inf");
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*e", std::clamp(decimals, 0, 16), value);
+  const std::string text = buf;
+  const auto e = text.find('e');
+  return print_minus(text.substr(0, e)) + "×" + power_of_ten(std::atoi(text.c_str() + e + 1));
+}
+
 void Span::add(double v) {
   if (std::isfinite(v)) {
     lo = std::min(lo, v);

@@ -58,6 +58,9 @@ std::string print_minus(std::string text);
 // `value` to `significant` digits ("%g"-style), in print: "−0.25", and
 // "2.6×10⁻⁴" where "%g" would write an exponent.
 std::string print_number(double value, int significant = 3);
+// `value` always in scientific form with `decimals` decimals, in print:
+// "2.6×10⁻⁴" (a table's column of drifts); "nan" for NaN.
+std::string print_scientific(double value, int decimals = 1);
 
 // --- For the painters' own files -------------------------------------------------
 

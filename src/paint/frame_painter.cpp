@@ -244,7 +244,8 @@ void FramePainter::draw_plane_captions(render::DrawList& flat, const render::Vie
   if (any_exit) legend += "hollow: leaves, dot: re-enters";
   if (any_infinity) {
     if (!legend.empty()) legend += "   ";
-    legend += std::string(physics::symbol::infinity) + ": through the south pole";
+    // Appended piece by piece: GCC 12 misreads a bound in string + "literal" here.
+    legend.append(physics::symbol::infinity).append(": through the south pole");
   }
   // Each line only where it stays below the plot's tick labels (and above a chart).
   const float lowest_top = ticks_top + font + 4.0f;
@@ -295,9 +296,8 @@ float drift_names_width(const render::ImGuiOverlay& gui, const scene::Frame& f) 
 bool with_step_drifts(const scene::Frame& f) {
   return !f.overlay.drifts.empty() && f.overlay.step_drifts.size() == f.overlay.drifts.size();
 }
-// A drift value as the table writes it, in a column of fixed width.
-constexpr const char* kDriftFormat = "%9.1e";
-constexpr const char* kWidestDrift = "-0.0e+00 ";
+// The widest drift value the table writes (print_scientific, one decimal).
+constexpr const char* kWidestDrift = "0.0×10⁻⁰⁰ ";
 }  // namespace
 
 const char* FramePainter::drift_table_heading(const scene::Frame& f) { return drift_heading(f); }
@@ -310,14 +310,8 @@ std::vector<std::string> FramePainter::drift_table_columns(const scene::Frame& f
 }
 
 std::vector<std::string> FramePainter::drift_table_row(const scene::Frame& f, std::size_t row) {
-  std::vector<std::string> values;
-  char text[32];
-  std::snprintf(text, sizeof text, kDriftFormat, f.overlay.drifts[row].second);
-  values.emplace_back(text);
-  if (with_step_drifts(f)) {
-    std::snprintf(text, sizeof text, kDriftFormat, f.overlay.step_drifts[row]);
-    values.emplace_back(text);
-  }
+  std::vector<std::string> values{print_scientific(f.overlay.drifts[row].second)};
+  if (with_step_drifts(f)) values.push_back(print_scientific(f.overlay.step_drifts[row]));
   return values;
 }
 
@@ -437,7 +431,8 @@ void FramePainter::draw_info_window(const scene::Frame& f, const scene::FrameLay
           // Traffic light (scene::drift_level) of the column's own value.
           const double v = c == 0 ? f.overlay.drifts[row].second : f.overlay.step_drifts[row];
           ImGui::SameLine(values_x + float(c) * column_w);
-          ImGui::TextColored(to_imgui(ink.drift_colour(v)), "%s", values[c].c_str());
+          ImGui::TextColored(to_imgui(ink.drift_colour(v)), "%s",
+                             render::drawable_text(values[c]).c_str());
         }
       }
       draw_drift_key(ink, drift_key());

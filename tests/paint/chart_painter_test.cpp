@@ -53,6 +53,9 @@ TEST(ChartPainter, NumbersInPrint) {
   EXPECT_EQ(paint::print_number(-3e7), "−3×10⁷");
   EXPECT_EQ(paint::print_number(1e-8), "10⁻⁸");
   EXPECT_EQ(paint::print_number(-1e-8), "−10⁻⁸");
+  EXPECT_EQ(paint::print_scientific(2.6e-4), "2.6×10⁻⁴");
+  EXPECT_EQ(paint::print_scientific(1e-15), "1.0×10⁻¹⁵");
+  EXPECT_EQ(paint::print_scientific(-3.0), "−3.0×10⁰");
   EXPECT_EQ(paint::print_minus("-0.5"), "−0.5");
   EXPECT_EQ(paint::print_minus("t = -.5"), "t = −.5");
   EXPECT_EQ(paint::print_minus("Gauss-4, RK-45"), "Gauss-4, RK-45");  // hyphens in names kept

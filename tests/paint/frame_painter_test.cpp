@@ -263,12 +263,12 @@ TEST(Painter, DriftTableSaysWhatItMeasures) {
   scene::Frame f;
   f.overlay.drifts = {{"|γ|²", 2.6e-4}, {"C₁ (energy)", 1e-9}};
   EXPECT_EQ(paint::FramePainter::drift_table_columns(f), std::vector<std::string>{"drawn states"});
-  EXPECT_EQ(paint::FramePainter::drift_table_row(f, 0), std::vector<std::string>{"  2.6e-04"});
+  EXPECT_EQ(paint::FramePainter::drift_table_row(f, 0), std::vector<std::string>{"2.6×10⁻⁴"});
   f.overlay.step_drifts = {8e-16, 3e-10};
   EXPECT_EQ(paint::FramePainter::drift_table_columns(f),
             (std::vector<std::string>{"drawn", "at steps"}));
   EXPECT_EQ(paint::FramePainter::drift_table_row(f, 0),
-            (std::vector<std::string>{"  2.6e-04", "  8.0e-16"}));
+            (std::vector<std::string>{"2.6×10⁻⁴", "8.0×10⁻¹⁶"}));
   f.overlay.step_drifts = {8e-16};  // not one per row: not shown
   EXPECT_EQ(paint::FramePainter::drift_table_columns(f).size(), 1u);
 }
