@@ -7,6 +7,8 @@
 
 #include <glm/mat4x4.hpp>
 
+#include "paint/figure_common.hpp"
+
 namespace epviz::paint {
 namespace {
 
@@ -73,7 +75,7 @@ void draw_cloud_spread(render::DrawList& flat, const render::Viewport& view,
   s.grid_lines = false;
   s.tick_length = 0.0f;
   s.frame_width = s.axis_width = 1.0f * px;
-  plot.draw_axes(flat, s);
+  draw_axes_in_print(plot, flat, s);
   std::vector<glm::dvec2> curve;
   curve.reserve(cloud.spread.size());
   for (const auto& p : cloud.spread) curve.emplace_back(p.x(), log_spread(p.y()));

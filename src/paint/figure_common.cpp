@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <span>
 
 #include "render/panel_2d.hpp"
 
@@ -112,6 +113,24 @@ std::vector<Tick> axis_ticks(double lo, double hi, bool log_axis, int max_labels
   const double spacing = values.size() > 1 ? values[1] - values[0] : (hi - lo);
   for (double v : values) ticks.push_back({v, print_minus(render::format_tick(v, spacing)), true});
   return ticks;
+}
+
+void draw_axes_in_print(const render::Panel2D& plot, render::DrawList& list,
+                        const render::PanelStyle& style) {
+  // Drawn apart, then added: a DrawList's labels are not edited in place.
+  render::DrawList axes;
+  plot.draw_axes(axes, style);
+  if (!axes.triangles().empty()) list.add_triangles(axes.triangles());
+  const auto& vertices = axes.line_vertices();
+  for (const auto& p : axes.polylines())
+    list.add_polyline(std::span(vertices).subspan(p.first, p.count), p.width_px, p.closed);
+  for (const auto& m : axes.markers()) list.add_marker(m);
+  for (const auto& d : axes.dots())
+    list.add_dots(std::span(axes.dot_vertices()).subspan(d.first, d.count), d.size_px);
+  for (auto l : axes.labels()) {
+    l.text = print_minus(l.text);
+    list.add_text(std::move(l));
+  }
 }
 
 render::TextLabel label(glm::vec2 at, std::string text, render::TextAnchor anchor,

@@ -13,6 +13,7 @@
 
 #include "chart/chart_spec.hpp"
 #include "render/draw_list.hpp"
+#include "render/panel_2d.hpp"
 
 namespace epviz::paint {
 
@@ -87,6 +88,12 @@ struct Tick {
 // Ticks over [lo, hi] in plotted units (log10 on a log axis), at most
 // `max_labels` of them labelled.
 std::vector<Tick> axis_ticks(double lo, double hi, bool log_axis, int max_labels);
+
+// plot.draw_axes into `list`, its tick labels in print (print_minus): the
+// panels of frames (the plane, the separation chart, sections) read as the
+// charts do.
+void draw_axes_in_print(const render::Panel2D& plot, render::DrawList& list,
+                        const render::PanelStyle& style);
 
 render::TextLabel label(glm::vec2 at, std::string text, render::TextAnchor anchor,
                         glm::vec4 colour = kInk);

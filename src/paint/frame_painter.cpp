@@ -163,7 +163,7 @@ void FramePainter::draw_plane(const scene::Frame& f, const render::Viewport& col
   const scene::Theme& ink = ink_for(f);
   const render::PanelStyle style = column_panel_style(ink, px);
   DrawList flat;
-  plot.draw_axes(flat, style);
+  draw_axes_in_print(plot, flat, style);
   plot.draw_circle(flat, {0.0, 0.0}, 1.0, {style.text.r, style.text.g, style.text.b, 0.85f},
                    1.3f * px);
 
@@ -288,7 +288,9 @@ const char* drift_heading(const scene::Frame& f) {
 // The width of the drift table's names column: 12 characters of the bitmap
 // font (as its "%-12s" was), or the widest name, or the heading on its row.
 float drift_names_width(const render::ImGuiOverlay& gui, const scene::Frame& f) {
-  float w = std::max(gui.text_size("xxxxxxxxxxxx").x, gui.text_size(drift_heading(f)).x);
+  // The heading with a space more: it and the first column's label read apart.
+  float w = std::max(gui.text_size("xxxxxxxxxxxx").x,
+                     gui.text_size(std::string(drift_heading(f)) + " ").x);
   for (const auto& d : f.overlay.drifts) w = std::max(w, gui.text_size(d.first).x);
   return w;
 }

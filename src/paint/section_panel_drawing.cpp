@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "paint/figure_common.hpp"
 #include "paint/painter_common.hpp"
 
 namespace epviz::paint {
@@ -29,7 +30,7 @@ void draw_section_panel(render::DrawList& flat, const scene::SectionPanel& panel
   const render::Panel2D plot(area, {r[0], r[1], r[2], r[3]}, false);
   render::PanelStyle style = column_panel_style(ink, px);
   style.axis = {0, 0, 0, 0};  // the lines through 0 mean nothing special here
-  plot.draw_axes(flat, style);
+  draw_axes_in_print(plot, flat, style);
 
   // The dots, each run's oldest first and the runs from the last to the
   // first, so that the first run's lie on top.

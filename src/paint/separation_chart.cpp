@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "paint/dash_pattern.hpp"
+#include "paint/figure_common.hpp"
 #include "paint/painter_common.hpp"
 #include "physics/notation.hpp"
 #include "render/panel_2d.hpp"
@@ -44,7 +45,7 @@ void draw_separation_chart(render::DrawList& flat, const scene::Comparison& c,
   style.frame_width = 1.0f * px;
   style.tick_count = 4;
   style.min_tick_spacing_px = 12.0f * px;
-  plot.draw_axes(flat, style);
+  draw_axes_in_print(plot, flat, style);
   for (std::size_t i = 0; i < c.others.size(); ++i) {
     const auto& sep = c.others[i].separation;
     std::vector<glm::dvec2> points;
