@@ -316,3 +316,28 @@ TEST(Painter, RenderedFramesShowTheDriftAtTheSteps) {
 
 }  // namespace
 }  // namespace epviz
+
+namespace epviz {
+namespace {
+
+// The plane's tick labels in print, as the charts': −1, not -1.
+TEST(Painter, PanelTickLabelsUseTheMinusSign) {
+  const auto f =
+      case_frame(physics::Case::kovalevskaya, scene::View::body, only(false, false, true, false));
+  std::vector<std::string> texts;
+  painter().set_flat_sink([&](const render::DrawList& list) {
+    for (const auto& l : list.labels()) texts.push_back(l.text);
+  });
+  painter().paint(f);
+  painter().set_flat_sink({});
+  int negative = 0;
+  for (const auto& t : texts) {
+    EXPECT_FALSE(t.size() > 1 && t[0] == '-' && std::isdigit(static_cast<unsigned char>(t[1])))
+        << t;
+    negative += t.rfind("−", 0) == 0;
+  }
+  EXPECT_GE(negative, 2);  // −2 and −1 on each axis, at least
+}
+
+}  // namespace
+}  // namespace epviz
