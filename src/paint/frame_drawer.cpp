@@ -2,34 +2,21 @@
 
 #include <vector>
 
-#include "sim/drift.hpp"
-
 namespace epviz::paint {
 
 FrameDrawer::FrameDrawer(const scene::ScenePlan& plan, const scene::SceneSettings& settings)
     : source_(plan, settings) {}
-
-namespace {
-
-// The run's largest drift at the integrator's own steps so far, in the rows of
-// the overlay's drift table as FrameSource writes them (|γ|², C₀, C₁, then the
-// fourth integral where the case has one); empty where the rows are not those.
-std::vector<double> step_drift_column(const sim::Drifts& steps, std::size_t rows) {
-  std::vector<double> column{steps.gamma_norm2, steps.area, steps.energy};
-  if (steps.extra) column.push_back(*steps.extra);
-  return column.size() == rows ? column : std::vector<double>{};
-}
-
-}  // namespace
 
 scene::Frame FrameDrawer::frame(int index) {
   scene::Frame frame = source_.frame(index);
   frame.caption = caption_;
   // A single run's overlay shows its drift at the steps beside the drawn
   // states' (a comparison's rows are its runs, one figure each).
-  if (!frame.comparison && source_.run_count() == 1)
-    frame.overlay.step_drifts =
-        step_drift_column(source_.run(0).drifts().steps, frame.overlay.drifts.size());
+  // Empty where the rows are not those of the column.
+  if (!frame.comparison && source_.run_count() == 1) {
+    auto column = source_.step_drift_column();
+    if (column.size() == frame.overlay.drifts.size()) frame.overlay.step_drifts = std::move(column);
+  }
   return frame;
 }
 

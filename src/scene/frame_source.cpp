@@ -215,6 +215,13 @@ Frame FrameSource::compose(int index) const {
   return f;
 }
 
+std::vector<double> FrameSource::step_drift_column() const {
+  const sim::Drifts& steps = tracks_.front()->drifts().steps;
+  std::vector<double> column{steps.gamma_norm2, steps.area, steps.energy};
+  if (steps.extra) column.push_back(*steps.extra);
+  return column;
+}
+
 void FrameSource::compose_comparison(Frame& f) const {
   const double window = trail_window();
   const double now = time();

@@ -40,6 +40,10 @@ class FrameSource {
   const sim::Trajectory& trajectory() const { return tracks_.front()->trajectory(); }
   // The drift over the samples drawn (the overlay's), interpolated ones included.
   const sim::Drifts& max_drift() const { return tracks_.front()->drifts().output; }
+  // The first run's largest drift at the integrator's own steps so far, in
+  // the rows of a single run's overlay drift table (|γ|², C₀, C₁, then the
+  // case's integral where it has one).
+  std::vector<double> step_drift_column() const;
   const ScenePlan& plan() const { return plan_; }
   double time() const { return latest().t; }
   const sim::Sample& latest() const { return tracks_.front()->latest(); }
