@@ -210,11 +210,11 @@ INSTANTIATE_TEST_SUITE_P(
         Refused{"huge_moment", "--inertia 1,1,1e308 --allow-nonphysical", "--inertia"},
         Refused{"huge_omega", "--omega 1e300,0,0", "--omega"},
         Refused{"same_csv_and_report", "--csv {dir}/out.x --report-json {dir}/out.x",
-                "--report-json: the same file as --csv"},
+                "is the same file as --csv"},
         Refused{"same_file_other_spelling", "--csv {dir}/out.x --report-json {dir}/./sub/../out.x",
-                "--report-json: the same file as --csv"},
+                "is the same file as --csv"},
         Refused{"same_file_through_symlink", "--csv {dir}/target.csv --report-json {dir}/link.csv",
-                "--report-json: the same file as --csv"}),
+                "is the same file as --csv"}),
     test::case_name);
 
 INSTANTIATE_TEST_SUITE_P(

@@ -131,15 +131,27 @@ try:
     env = {k: v for k, v in os.environ.items() if not k.startswith("EPVIZ_")}
     env["EPVIZ_IGNORE_SOURCE_TREE"] = "1"
 
-    # The shipped jobs, installed and listed; sweeps and sections are other commands'.
+    # The shipped jobs, installed and listed, and the sections and sweeps
+    # listed under their own commands.
     shipped = sorted(os.path.basename(p)[:-5] for p in glob.glob(os.path.join(source, "render_jobs", "*.json"))
                      if not p.endswith((".sweep.json", ".section.json")))
     listed_text = must([epviz, "render", "--list-jobs"], env=env, cwd=work)
     if os.path.join(data, "render_jobs") not in listed_text:
         problems.append("--list-jobs does not name the installed share/epviz/render_jobs")
-    listed = sorted(re.findall(r"^  (\S+)  ", listed_text, re.M))
+    # Each command's files under its heading ("epviz render NAME:", then
+    # "epviz section NAME:" and "epviz sweep NAME:").
+    groups = {}
+    for heading, body in re.findall(r"^epviz (\w+) NAME:\n((?:  .*\n)*)", listed_text, re.M):
+        groups[heading] = sorted(re.findall(r"^  (\S+)  ", body, re.M))
+    listed = groups.get("render", [])
     if listed != shipped:
         problems.append(f"--list-jobs lists {listed}, the sources ship {shipped}")
+    for command, suffix in (("section", ".section.json"), ("sweep", ".sweep.json")):
+        files = sorted(os.path.basename(p)[:-len(suffix)]
+                       for p in glob.glob(os.path.join(source, "render_jobs", "*" + suffix)))
+        if groups.get(command, []) != files:
+            problems.append(f"--list-jobs lists {groups.get(command)} for epviz {command}, "
+                            f"the sources ship {files}")
     build_env = {k: v for k, v in os.environ.items() if not k.startswith("EPVIZ_")}
     from_build = must([os.path.join(build, "epviz"), "render", "--list-jobs"], env=build_env, cwd=work)
     if os.path.join(source, "render_jobs") not in from_build:
