@@ -85,21 +85,29 @@ class TypingPage {
   void click(const std::string& control) {
     const auto [x, y] = centre_of(control);
     pointer(x, y);
-    frames(3);
+    settle();
   }
   void type_into(const std::string& control, const std::string& text, float at = 0.5f) {
     const auto [x, y] = centre_of(control, at);
-    client_.send(key("Control", true, true));
+    send_input(key("Control", true, true));
     pointer(x, y);
-    client_.send(key("Control", false, false));
+    send_input(key("Control", false, false));
     frames(2);
-    client_.send({{"type", "text"}, {"text", text}});
-    client_.send(key("Enter", true, false));
-    client_.send(key("Enter", false, false));
-    frames(3);
+    send_input({{"type", "text"}, {"text", text}});
+    send_input(key("Enter", true, false));
+    send_input(key("Enter", false, false));
+    settle();
   }
   void frames(int n) {
     for (int i = 0; i < n; ++i) next_frame();
+  }
+  // Reads frames until one was drawn after the last pointer event sent (the
+  // frames' "seq"), then two more, so that the panels have answered it: the
+  // frames in flight when it was sent show the controls where they were, and
+  // on a loaded machine more of them are in flight.
+  void settle() {
+    while (applied_seq_ < sent_seq_) next_frame();
+    frames(2);
   }
 
  private:
@@ -107,9 +115,14 @@ class TypingPage {
     return {{"type", "key"}, {"key", k}, {"down", down}, {"ctrl", ctrl}};
   }
   void pointer(float x, float y) {
-    client_.send({{"type", "move"}, {"x", x}, {"y", y}});
-    client_.send({{"type", "button"}, {"x", x}, {"y", y}, {"button", 0}, {"down", true}});
-    client_.send({{"type", "button"}, {"x", x}, {"y", y}, {"button", 0}, {"down", false}});
+    send_input({{"type", "move"}, {"x", x}, {"y", y}});
+    send_input({{"type", "button"}, {"x", x}, {"y", y}, {"button", 0}, {"down", true}});
+    send_input({{"type", "button"}, {"x", x}, {"y", y}, {"button", 0}, {"down", false}});
+  }
+  // Every input numbered, so that settle() can tell when it was applied.
+  void send_input(json message) {
+    message["seq"] = ++sent_seq_;
+    client_.send(message);
   }
   json next_frame() {
     for (;;) {
@@ -117,11 +130,13 @@ class TypingPage {
       if (!m) throw std::runtime_error("no frame within the deadline");
       if (m->header.value("kind", "") != "frame") continue;
       client_.send(serve::testing::ack(m->header["frame"].get<std::int64_t>()));
+      applied_seq_ = std::max(applied_seq_, m->header.value("seq", std::uint64_t{0}));
       return m->header.value("controls", json::object());
     }
   }
 
   TestClient client_;
+  std::uint64_t sent_seq_ = 0, applied_seq_ = 0;
 };
 
 // The longest wait between frames that arrived from `from` on (from `from` to the first included).
