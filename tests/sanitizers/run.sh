@@ -125,9 +125,10 @@ if [ "$which" != asan ]; then
   EPVIZ_TEST_SLOWDOWN=10 TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \
     build-tsan/tests/test_serve --gtest_filter=-ServeOrigin.AMalformedAllowOriginIsABadOption
   # The sweep's pool of threads, its batches and its row writer. Left out: the
-  # tests that run the epviz command (the atlas self-check's, and two of the
-  # energy-momentum maps'), which the Release and ASan passes run.
+  # tests that run the epviz command (the atlas self-check's, two of the
+  # energy-momentum maps' and merge's of forged rows), which the Release and
+  # ASan passes run.
   TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 build-tsan/tests/test_sweep \
-    --gtest_filter=-SelfCheckCommand.*:EnergyMomentum.KovalevskayaStaysNear*:EnergyMomentum.BadLevelKeys*
+    --gtest_filter=-SelfCheckCommand.*:EnergyMomentum.KovalevskayaStaysNear*:EnergyMomentum.BadLevelKeys*:ForgedRows.*
   stage_done "TSan tests"
 fi
