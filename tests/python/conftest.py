@@ -1,11 +1,14 @@
 """Shared helpers of the Python tests (tests/CMakeLists.txt runs each file
 as its own CTest test, with PYTHONPATH=build/python and EPVIZ_BINARY, the
 built command line, which is the oracle the module is compared with)."""
+import contextlib
 import csv
 import math
 import os
 import pathlib
 import subprocess
+import threading
+import time
 
 import numpy as np
 import pytest
@@ -47,3 +50,26 @@ def assert_column_equals_csv(array, fields, name=""):
 @pytest.fixture
 def source():
     return SOURCE
+
+
+@contextlib.contextmanager
+def ticking():
+    """Another thread records a tick every 5 ms while the body runs, and the
+    list of tick times is yielded: a call that held the GIL would stop it for
+    as long as it runs."""
+    done = threading.Event()
+    ticks = []
+
+    def count():
+        while True:
+            ticks.append(time.monotonic())
+            if done.wait(0.005):
+                break
+
+    counter = threading.Thread(target=count)
+    counter.start()
+    try:
+        yield ticks
+    finally:
+        done.set()
+        counter.join()

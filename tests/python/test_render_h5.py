@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 import epviz
-from conftest import SOURCE, assert_column_equals_csv, read_csv_columns, run_epviz
+from conftest import SOURCE, assert_column_equals_csv, read_csv_columns, run_epviz, ticking
 
 RUNS_JOB = {
     "title": "three runs to HDF5",
@@ -222,29 +222,16 @@ def test_a_job_without_a_cloud_is_a_value_error(tmp_path):
 def test_the_gil_is_released_and_ctrl_c_interrupts_a_cloud():
     big = {**CLOUD_JOB, "cloud": {"members": 100000, "radius": 0.05},
            "simulation": {**CLOUD_JOB["simulation"], "t_end": 400}, "duration": 0.2}
-    done = threading.Event()
-    ticks = []
-
-    def count():
-        # A tick every 5 ms while the call runs: only if it lets go of the GIL.
-        while True:
-            ticks.append(time.monotonic())
-            if done.wait(0.005):
-                break
-
-    counter = threading.Thread(target=count)
-    counter.start()
     timer = threading.Timer(1.0, _thread.interrupt_main)
-    start = time.monotonic()
-    timer.start()
-    try:
-        with pytest.raises(KeyboardInterrupt):
-            epviz.cloud(big)
-        end = time.monotonic()
-    finally:
-        done.set()
-        counter.join()
-        timer.cancel()
+    with ticking() as ticks:
+        start = time.monotonic()
+        timer.start()
+        try:
+            with pytest.raises(KeyboardInterrupt):
+                epviz.cloud(big)
+            end = time.monotonic()
+        finally:
+            timer.cancel()
     assert end - start < 15
     during = [t for t in ticks if start < t < end]
     assert len(during) > 20, f"{len(during)} ticks in {end - start:.2f} s"

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 import epviz
-from conftest import assert_column_equals_csv, read_csv_columns, run_epviz
+from conftest import assert_column_equals_csv, read_csv_columns, run_epviz, ticking
 
 
 def cli_run(tmp_path, *args):
@@ -145,25 +145,10 @@ def test_help_lists_every_field_of_the_command_line():
 def test_the_gil_is_released_while_integrating():
     # Another thread keeps running while a run integrates in this one. A
     # call that held the GIL would stop it for the whole run.
-    done = threading.Event()
-    ticks = []
-
-    def count():
-        # A tick every 5 ms while the call runs: only if it lets go of the GIL.
-        while True:
-            ticks.append(time.monotonic())
-            if done.wait(0.005):
-                break
-
-    counter = threading.Thread(target=count)
-    counter.start()
-    try:
+    with ticking() as ticks:
         start = time.monotonic()
         epviz.simulate(case="kovalevskaya", tol=1e-13, t_end=1e5, samples=1000)
         end = time.monotonic()
-    finally:
-        done.set()
-        counter.join()
     assert end - start > 0.3, "the run is too short to tell"
     during = [t for t in ticks if start < t < end]
     assert len(during) > 10, f"{len(during)} ticks in {end - start:.2f} s"
