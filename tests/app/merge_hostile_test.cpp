@@ -12,16 +12,13 @@
 
 #include "support/cli.hpp"
 #include "support/temp_dir.hpp"
+#include "support/tiny_sweep.hpp"
 
 namespace epviz::test {
 namespace {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
-
-const char* kTinySweep = R"({
-  "simulation": {"case": "generic", "t_end": 1, "samples": 2},
-  "axes": [{"field": "energy", "values": [1.5, 3.0]}]})";
 
 // "shards" holding one lawful, completed shard (0 of 1) of a sweep of two
 // points, whose merge would write shards/rows.jsonl.
@@ -33,15 +30,7 @@ class MergeHostile : public ::testing::Test {
   fs::path manifest_;
 
   void SetUp() override {
-    std::ofstream(d_ / "s.sweep.json") << kTinySweep;
-    fs::create_directories(shards_);
-    ASSERT_EQ(run_epviz("sweep " + (d_ / "s.sweep.json").string() + " --out " + merged_.string() +
-                            " --shard 0/1",
-                        d_)
-                  .exit_code,
-              0);
-    for (const auto& e : fs::directory_iterator(shards_))
-      if (e.path().string().ends_with(".manifest.json")) manifest_ = e.path();
+    manifest_ = run_tiny_sweep_shard(d_, shards_);  // its rows named merged_
     ASSERT_FALSE(manifest_.empty());
   }
   void edit(const std::function<void(Json&)>& change) {

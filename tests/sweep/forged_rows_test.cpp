@@ -9,6 +9,7 @@
 
 #include "shard/manifest.hpp"
 #include "support/cli.hpp"
+#include "support/tiny_sweep.hpp"
 #include "sweep/ftle_curves.hpp"
 
 namespace epviz::test {
@@ -17,37 +18,27 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
-const char* kTinySweep = R"({
-  "simulation": {"case": "generic", "t_end": 1, "samples": 2},
-  "axes": [{"field": "energy", "values": [1.5, 3.0]}]})";
-
 // One shard (0 of 1) of a two-point sweep in dir/shards, its first row given
 // `curve` as its ftle_curve and its manifest made to match (size, checksum),
 // as a forger would.
 fs::path forged_shard(const TempDir& dir, const Json& curve) {
-  const auto sweep = dir.write("s.sweep.json", kTinySweep);
   const fs::path shards = dir / "shards";
-  fs::create_directories(shards);
-  const auto r = run_epviz(
-      "sweep " + sweep.string() + " --out " + (shards / "rows.jsonl").string() + " --shard 0/1",
-      dir);
-  EXPECT_EQ(r.exit_code, 0) << r.err;
-  for (const auto& e : fs::directory_iterator(shards)) {
-    if (!e.path().string().ends_with(".manifest.json")) continue;
-    shard::Manifest m = shard::read_manifest(e.path());
-    const fs::path rows = shards / m.files.at(0).path;
-    std::ifstream in(rows);
-    std::string text, line;
-    for (int n = 0; std::getline(in, line); ++n) {
-      Json row = Json::parse(line);
-      if (n == 0) row["ftle_curve"] = curve;
-      text += row.dump() + "\n";
-    }
-    std::ofstream(rows, std::ios::trunc) << text;
-    m.files.clear();
-    shard::add_file(m, shards, rows);
-    shard::write_manifest(e.path(), m);
+  const fs::path manifest = run_tiny_sweep_shard(dir, shards);
+  if (manifest.empty()) return shards;
+  shard::Manifest m = shard::read_manifest(manifest);
+  const fs::path rows = shards / m.files.at(0).path;
+  std::ifstream in(rows);
+  std::string text, line;
+  for (int n = 0; std::getline(in, line); ++n) {
+    Json row = Json::parse(line);
+    if (n == 0) row["ftle_curve"] = curve;
+    text += row.dump() + "\n";
   }
+  in.close();
+  std::ofstream(rows, std::ios::trunc) << text;
+  m.files.clear();
+  shard::add_file(m, shards, rows);
+  shard::write_manifest(manifest, m);
   return shards;
 }
 
