@@ -58,7 +58,10 @@ struct ProcessRun {
 // `dir`/samples.csv) and waits for it with wait4, for its resources.
 ProcessRun run_epviz(const std::vector<std::string>& args, const fs::path& dir, bool read_csv) {
   const fs::path report = dir / "report.json", csv = dir / "samples.csv";
-  std::vector<std::string> all{EPVIZ_BINARY, "simulate"};
+  // EPVIZ_SIMULATE_BINARY: another build's epviz, to compare two commits on
+  // one machine in one run (docs/benchmarks.md).
+  const char* other = std::getenv("EPVIZ_SIMULATE_BINARY");
+  std::vector<std::string> all{other && *other ? other : EPVIZ_BINARY, "simulate"};
   all.insert(all.end(), args.begin(), args.end());
   all.insert(all.end(), {"--report-json", report.string()});
   if (read_csv) all.insert(all.end(), {"--csv", csv.string()});
