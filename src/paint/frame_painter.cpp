@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iterator>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -69,8 +70,8 @@ render::Camera camera_for(const scene::Frame& f, const render::Viewport& view) {
 }
 
 FramePainter::FramePainter(render::GlContext& context, int width, int height,
-                           PainterOptions options)
-    : context_(context), options_(options) {
+                           PainterOptions options, scene::PageLayout page)
+    : context_(context), options_(options), page_(page) {
   context_.make_current();
   render::RendererOptions ro;
   ro.width = width;
@@ -78,8 +79,9 @@ FramePainter::FramePainter(render::GlContext& context, int width, int height,
   ro.msaa_samples = options.msaa_samples;
   ro.overlay = true;
   ro.overlay_options.builtin_font = options.builtin_font;
-  ro.overlay_options.font_size_px = scene::overlay_font_px(height);
-  ro.overlay_options.ui_scale = scene::ui_scale(height);
+  const int type_height = page.type_height_for(height);
+  ro.overlay_options.font_size_px = scene::overlay_font_px(type_height);
+  ro.overlay_options.ui_scale = scene::ui_scale(type_height);
   renderer_ = std::make_unique<render::Renderer>(context_, ro);
   glass_ = render::GpuMesh(render::make_uv_sphere(1.0f, 72, 36));
   arrow_ = render::GpuMesh(render::make_arrow(1.0f, 0.018f, 0.045f, 0.12f, 20));
@@ -346,10 +348,11 @@ std::array<std::string, 3> FramePainter::drift_key() {
 
 Box FramePainter::info_window_box(const scene::Frame& f, const scene::FrameLayout& layout,
                                   float px) {
-  const scene::Rect where = layout.overlay_in_column ? *layout.panel_column
-                            : layout.view_3d         ? *layout.view_3d
-                            : layout.panel_column    ? *layout.panel_column
-                                                     : scene::Rect{0, 0, width(), height()};
+  const scene::Rect where = layout.overlay_area        ? *layout.overlay_area
+                            : layout.overlay_in_column ? *layout.panel_column
+                            : layout.view_3d           ? *layout.view_3d
+                            : layout.panel_column      ? *layout.panel_column
+                                                       : scene::Rect{0, 0, width(), height()};
   // The window's size is computed from this frame's text: ImGui's auto-fit
   // would use the previous frame's, which belongs to another job in a gallery.
   const int shown = overlay_lines_shown(f.overlay, height());
@@ -375,7 +378,7 @@ Box FramePainter::info_window_box(const scene::Frame& f, const scene::FrameLayou
   // grows to the left instead of being cut at the image's edge. Over the 3D
   // view: at its top left corner, away from the panel.
   const glm::vec2 top_left =
-      layout.overlay_in_column
+      layout.overlay_in_column && !layout.overlay_area
           ? glm::vec2(float(where.x + where.width) - 6 * px - size.x, float(where.y) + 6 * px)
           : glm::vec2(float(where.x) + 6 * px, float(where.y) + 6 * px);
   return {top_left, top_left + size};
@@ -448,8 +451,10 @@ const render::RgbaImage& FramePainter::paint(const scene::Frame& f,
                                              const std::function<void()>& extra_ui) {
   context_.make_current();
   const int w = renderer_->width(), h = renderer_->height();
-  const float px =
-      std::max(1.0f, float(h) / 360.0f);  // line widths and marks scale with the picture
+  if (f.page.type_height != page_.type_height)
+    throw std::logic_error("FramePainter: the frame's type size is not the painter's");
+  // Line widths and marks scale with the type.
+  const float px = std::max(1.0f, float(f.page.type_height_for(h)) / 360.0f);
   const scene::FrameLayout layout = layout_for(f, w, h, reserved_left_);
   annotations_ = {};
   annotations_.map_top = ink_for(f).trail_map_top;

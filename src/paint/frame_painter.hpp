@@ -81,7 +81,10 @@ struct PaintedAnnotations {
 class FramePainter {
  public:
   // `context` must outlive the painter; it is made current here.
-  FramePainter(render::GlContext& context, int width, int height, PainterOptions options = {});
+  // `page`: the type's size and the parts' arrangement (scene::PageLayout);
+  // the frames painted must have the same (their text is set in its font).
+  FramePainter(render::GlContext& context, int width, int height, PainterOptions options = {},
+               scene::PageLayout page = {});
   ~FramePainter();
 
   void resize(int width, int height);
@@ -162,6 +165,7 @@ class FramePainter {
 
   render::GlContext& context_;
   PainterOptions options_;
+  scene::PageLayout page_;
   std::unique_ptr<render::Renderer> renderer_;
   render::GpuMesh glass_, arrow_, marker_sphere_;
   std::optional<render::GpuMesh> box_;

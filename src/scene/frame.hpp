@@ -99,6 +99,20 @@ struct RunTrace {
   std::optional<float> untrue_age;
 };
 
+// How a picture sets its type and arranges its parts. A screen picture sizes
+// its text, lines and paddings from its height and puts the panels beside the
+// 3D view; a figure at a printed size (`--figure-width`, io::PrintSize) sizes
+// them from the font asked for and stacks its parts in one column (the 3D
+// view, the legend, the overlay's text, the panels), so that a column of a
+// journal holds it with its text at the size asked.
+struct PageLayout {
+  // The picture height whose type this picture uses (overlay_font_px and
+  // ui_scale of it); 0: its own height.
+  int type_height = 0;
+  bool stacked = false;
+  int type_height_for(int height) const { return type_height > 0 ? type_height : height; }
+};
+
 // What a comparison scene (a job's "runs") adds to a frame.
 struct Comparison {
   // Legend rows, one per run, the first run first: "rk4, step 0.2".
@@ -168,6 +182,7 @@ struct Frame {
 
   // A line under the picture naming what it shows (gallery tiles); empty: none.
   std::string caption;
+  PageLayout page;  // SceneSettings::page
 };
 
 }  // namespace epviz::scene

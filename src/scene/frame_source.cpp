@@ -142,6 +142,7 @@ Frame FrameSource::compose(int index) const {
   f.colours = settings_.colours;
   f.body = shape_;
   f.plane_extent = settings_.plane_extent;
+  f.page = settings_.page;
 
   const double window = trail_window();
   auto age = [&](double t) { return float(std::clamp((last.t - t) / window, 0.0, 1.0)); };

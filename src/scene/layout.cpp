@@ -10,19 +10,125 @@ namespace {
 // this height shows, the drift table's heading, its rows and its key. Fixed
 // (kOverlayReserved), not this frame's: the plot must stay put from job to
 // job so that the tiles of a gallery line up.
-int overlay_height(int height, int runs) {
+int overlay_height(int height, int type_height, int runs) {
   // A comparison of more runs than kOverlayReserved has drift rows gets room
   // for each run's row.
   const OverlayShape o{kOverlayReserved.lines, std::max(kOverlayReserved.drifts, runs)};
   const int rows = 1 + overlay_lines_shown(o.lines, height) + 2 + o.drifts;
-  return int(std::ceil(overlay_font_px(height) * 1.36f * float(rows) + 18.0f * ui_scale(height)));
+  return int(std::ceil(overlay_font_px(type_height) * 1.36f * float(rows) +
+                       18.0f * ui_scale(type_height)));
+}
+
+int overlay_height_for(const LayoutRequest& q) {
+  return overlay_height(q.height, q.page.type_height_for(q.height),
+                        q.legend_rows > 0 ? comparison_runs(q.legend_rows) : 0);
+}
+
+// The margins around a plot of the panel column: room for its title above,
+// its tick labels and caption (and a comparison's chart) below.
+struct PlotMargins {
+  int top = 0, bottom = 0, left = 0, right = 0;
+};
+PlotMargins plot_margins(const LayoutRequest& q, int slot_width) {
+  const int th = q.page.type_height_for(q.height);
+  return {std::max(22, th / 14),
+          std::max(int(std::ceil(overlay_font_px(th) * 2.9f)), th / 9) + q.chart_height,
+          std::max(30, slot_width / 8), std::max(10, slot_width / 20)};
+}
+
+int column_slots(const LayoutRequest& q) {
+  return (q.layers.riccati ? 1 : 0) + (q.section_panel ? 1 : 0);
+}
+
+// The column's plots side by side, each in a slot of its own (the Riccati
+// plane, then the section), squares of side `side` placed from `top`.
+void place_plots(const LayoutRequest& q, FrameLayout& l, int top, int side, const PlotMargins& m) {
+  const auto& c = *l.panel_column;
+  const int slots = column_slots(q);
+  const int slot_width = c.width / slots;
+  auto plot_in_slot = [&](int slot) {
+    const int x0 = c.x + slot * slot_width;
+    return Rect{x0 + m.left + (slot_width - m.left - m.right - side) / 2, top, side, side};
+  };
+  if (q.layers.riccati) {
+    l.plot_area = plot_in_slot(0);
+    const int x = l.plot_area->x;
+    if (q.chart_height > 0)  // below the plot's tick labels
+      l.chart_area = Rect{x, top + side + m.bottom - q.chart_height, side, q.chart_height * 4 / 5};
+    l.plane_px_per_unit = double(side) / (2.0 * double(q.plane_extent));
+  }
+  if (q.section_panel) l.section_area = plot_in_slot(slots - 1);
+}
+
+// The legend of a comparison: a strip of `rows` under `above`.
+int legend_strip_height(const LayoutRequest& q) {
+  const int th = q.page.type_height_for(q.height);
+  return q.legend_rows * legend_row_height(th) + int(std::ceil(8.0f * ui_scale(th)));
+}
+
+// A stacked page: the caption, the 3D view across the width (4:3), its
+// legend, the overlay's band, then the panels' column, each part as tall as
+// it needs, whatever the picture's height (stacked_height is the sum).
+FrameLayout layout_stacked(const LayoutRequest& q, int width) {
+  const int th = q.page.type_height_for(q.height);
+  FrameLayout l;
+  int y = 0;
+  if (q.caption) {
+    l.caption_area = Rect{0, 0, width, legend_row_height(th)};
+    y = l.caption_area->bottom();
+  }
+  const bool three_d = q.layers.body || q.layers.sphere;
+  if (three_d) {
+    l.view_3d = Rect{0, y, width, width * 3 / 4};
+    y = l.view_3d->bottom();
+    if (q.legend_rows > 0) {
+      l.legend_area = Rect{0, y, width, legend_strip_height(q)};
+      y = l.legend_area->bottom();
+    }
+  }
+  if (q.layers.overlay) {
+    l.overlay_area = Rect{0, y, width, overlay_height_for(q)};
+    l.overlay_in_column = true;
+    y = l.overlay_area->bottom();
+  }
+  const int slots = column_slots(q);
+  if (slots > 0) {
+    const int slot_width = width / slots;
+    const PlotMargins m = plot_margins(q, slot_width);
+    // One plot alone is kept to two thirds of the width: a page's column
+    // gains nothing from a plane as wide as the sphere's view.
+    const int side = std::max(16, std::min(slot_width - m.left - m.right, width * 2 / 3));
+    l.panel_column = Rect{0, y, width, m.top + side + m.bottom};
+    place_plots(q, l, y + m.top, side, m);
+    if (!three_d && q.legend_rows > 0) {
+      const int bottom = y + m.top + side + m.bottom;
+      l.legend_area = Rect{0, bottom, width, legend_strip_height(q)};
+    }
+  }
+  if (l.view_3d) {
+    const double half_tan = std::tan(double(kFovDegrees) * M_PI / 360.0);
+    const float aspect = float(l.view_3d->width) / float(l.view_3d->height);
+    l.sphere_px_per_unit = 0.5 * double(l.view_3d->height) /
+                           (double(camera_distance_for(q.camera_distance, aspect)) * half_tan);
+  }
+  return l;
+}
+
+int bottom_of(const FrameLayout& l) {
+  int bottom = 0;
+  for (const auto* r : {&l.view_3d, &l.panel_column, &l.plot_area, &l.chart_area, &l.legend_area,
+                        &l.caption_area, &l.section_area, &l.overlay_area})
+    if (*r) bottom = std::max(bottom, (*r)->bottom());
+  return bottom;
 }
 
 FrameLayout layout_in_width(const LayoutRequest& q, int width) {
+  if (q.page.stacked) return layout_stacked(q, width);
   const int height = q.height;
+  const int th = q.page.type_height_for(height);
   FrameLayout l;
   // A caption takes a line across the top; everything else goes below it.
-  const int top = q.caption ? legend_row_height(height) : 0;
+  const int top = q.caption ? legend_row_height(th) : 0;
   if (q.caption) l.caption_area = Rect{0, 0, width, top};
   const int h = height - top;
   const bool three_d = q.layers.body || q.layers.sphere;
@@ -42,8 +148,7 @@ FrameLayout layout_in_width(const LayoutRequest& q, int width) {
   // without one), so that it never covers the sphere or a mark.
   if (q.legend_rows > 0 && (l.view_3d || l.panel_column)) {
     Rect& above = l.view_3d ? *l.view_3d : *l.panel_column;
-    const int strip = std::min(above.height / 2, q.legend_rows * legend_row_height(height) +
-                                                     int(std::ceil(8.0f * ui_scale(height))));
+    const int strip = std::min(above.height / 2, legend_strip_height(q));
     above.height -= strip;
     l.legend_area = Rect{above.x, above.bottom(), above.width, strip};
   }
@@ -51,47 +156,23 @@ FrameLayout layout_in_width(const LayoutRequest& q, int width) {
     const auto& c = *l.panel_column;
     // The column's plots side by side, each in a slot of its own: the
     // Riccati plane, then the section.
-    const int slots = (q.layers.riccati ? 1 : 0) + (q.section_panel ? 1 : 0);
+    const int slots = column_slots(q);
     const int slot_width = c.width / slots;
-    // Room for the title above and the tick labels and legend below.
-    // Below the plot: the tick labels and the projection's caption, two lines
-    // at least, and the separation chart of a comparison scene.
-    const int margin_bottom =
-        std::max(int(std::ceil(overlay_font_px(height) * 2.9f)), height / 9) + q.chart_height;
-    const int margin_top_base = std::max(22, height / 14);
-    const int margin_left = std::max(30, slot_width / 8),
-              margin_right = std::max(10, slot_width / 20);
+    const PlotMargins m = plot_margins(q, slot_width);
     auto side_for = [&](int margin_top) {
-      return std::min(slot_width - margin_left - margin_right,
-                      c.height - margin_top - margin_bottom);
+      return std::min(slot_width - m.left - m.right, c.height - margin_top - m.bottom);
     };
     // The overlay takes the top of the panel's column when the plot keeps at
     // least 35 % of the height there (a quarter beside a section panel), so
     // that it does not cover the sphere; otherwise (small pictures) it floats
     // over the 3D view's corner.
-    const int overlay_px =
-        l.view_3d && q.layers.overlay
-            ? overlay_height(height, q.legend_rows > 0 ? comparison_runs(q.legend_rows) : 0)
-            : 0;
+    const int overlay_px = l.view_3d && q.layers.overlay ? overlay_height_for(q) : 0;
     const int least_side = height * (slots > 1 ? 25 : 35) / 100;
-    l.overlay_in_column = overlay_px > 0 && side_for(margin_top_base + overlay_px) >= least_side;
-    const int margin_top = margin_top_base + (l.overlay_in_column ? overlay_px : 0);
+    l.overlay_in_column = overlay_px > 0 && side_for(m.top + overlay_px) >= least_side;
+    const int margin_top = m.top + (l.overlay_in_column ? overlay_px : 0);
     const int side = std::max(16, side_for(margin_top));
-    const int y = c.y + margin_top + (c.height - margin_top - margin_bottom - side) / 2;
-    auto plot_in_slot = [&](int slot) {
-      const int x0 = c.x + slot * slot_width;
-      return Rect{x0 + margin_left + (slot_width - margin_left - margin_right - side) / 2, y, side,
-                  side};
-    };
-    if (q.layers.riccati) {
-      l.plot_area = plot_in_slot(0);
-      const int x = l.plot_area->x;
-      if (q.chart_height > 0)  // below the plot's tick labels
-        l.chart_area =
-            Rect{x, y + side + margin_bottom - q.chart_height, side, q.chart_height * 4 / 5};
-      l.plane_px_per_unit = double(side) / (2.0 * double(q.plane_extent));
-    }
-    if (q.section_panel) l.section_area = plot_in_slot(slots - 1);
+    const int y = c.y + margin_top + (c.height - margin_top - m.bottom - side) / 2;
+    place_plots(q, l, y, side, m);
   }
   if (l.view_3d) {
     // The perspective scale at the sphere's centre: half the view's height
@@ -113,9 +194,11 @@ OverlayShape overlay_shape(const OverlayText& o) {
 
 // Text grows with the picture (a 4K still reads like the 720p one scaled up);
 // below 13 px it would not read at all.
-float overlay_font_px(int height) { return std::max(float(height) / 48.0f, 13.0f); }
+float overlay_font_px(int type_height) { return std::max(float(type_height) / 48.0f, 13.0f); }
 
-float ui_scale(int height) { return std::max(1.0f, float(height) / 720.0f); }
+int type_height_for_font(float font_px) { return int(std::lround(font_px * 48.0f)); }
+
+float ui_scale(int type_height) { return std::max(1.0f, float(type_height) / 720.0f); }
 
 int overlay_lines_shown(int lines, int height) { return std::min(lines, height < 480 ? 2 : lines); }
 
@@ -126,13 +209,15 @@ float camera_distance_for(double distance_setting, float aspect) {
   return float(distance_setting) * (1.22f / half) / 3.4f;
 }
 
-int comparison_chart_height(int height) { return std::max(60, height / 5); }
+int comparison_chart_height(int type_height) { return std::max(60, type_height / 5); }
 
 int comparison_legend_rows(int runs) { return runs + 2; }
 
 int comparison_runs(int legend_rows) { return legend_rows - 2; }
 
-int legend_row_height(int height) { return int(std::ceil(overlay_font_px(height) * 1.45f)); }
+int legend_row_height(int type_height) {
+  return int(std::ceil(overlay_font_px(type_height) * 1.45f));
+}
 
 LayoutRequest layout_request(const Frame& f, int width, int height, int reserved_left) {
   return {width,
@@ -142,10 +227,20 @@ LayoutRequest layout_request(const Frame& f, int width, int height, int reserved
           f.camera.distance,
           f.plane_extent,
           reserved_left,
-          f.comparison ? comparison_chart_height(height) : 0,
+          f.comparison ? comparison_chart_height(f.page.type_height_for(height)) : 0,
           f.comparison ? comparison_legend_rows(int(f.comparison->labels.size())) : 0,
           !f.caption.empty(),
-          f.section.has_value()};
+          f.section.has_value(),
+          f.page};
+}
+
+int stacked_height(const LayoutRequest& request) {
+  LayoutRequest q = request;
+  q.page.stacked = true;
+  // Tall enough that the overlay shows all its lines; a stacked page's parts
+  // take what they need whatever the height.
+  q.height = std::max(q.height, 480);
+  return std::max(1, bottom_of(layout_in_width(q, q.width)));
 }
 
 FrameLayout frame_layout(const LayoutRequest& q) {
@@ -153,7 +248,7 @@ FrameLayout frame_layout(const LayoutRequest& q) {
   FrameLayout l = layout_in_width(q, q.width - reserved_left);
   if (reserved_left == 0) return l;
   for (auto* r : {&l.view_3d, &l.panel_column, &l.plot_area, &l.chart_area, &l.legend_area,
-                  &l.caption_area, &l.section_area})
+                  &l.caption_area, &l.section_area, &l.overlay_area})
     if (*r) (*r)->x += reserved_left;
   return l;
 }

@@ -41,6 +41,7 @@ struct LayoutRequest {
   // A section panel (Frame::section) beside the Riccati plane: the column
   // takes half the width, and its plots sit side by side.
   bool section_panel = false;
+  PageLayout page;  // the type's size and whether the parts stack (Frame::page)
 };
 
 struct FrameLayout {
@@ -54,6 +55,9 @@ struct FrameLayout {
   std::optional<Rect> caption_area;  // the caption's line across the top
   std::optional<Rect> section_area;  // the section panel's square plot, right of the plane's
   bool overlay_in_column = false;    // the overlay sits above the plot (else over the 3D view)
+  // A stacked page: the overlay's own band across the page, between the 3D
+  // view (with its legend) and the panels.
+  std::optional<Rect> overlay_area;
   // Pixels per unit of gamma at the sphere's centre, and per unit of a or b in
   // the plot; 0 where the picture has no such part.
   double sphere_px_per_unit = 0.0;
@@ -61,14 +65,18 @@ struct FrameLayout {
 };
 
 FrameLayout frame_layout(const LayoutRequest& request);
-// The separation chart's height in a comparison scene of this picture height.
-int comparison_chart_height(int height);
+// The height a stacked page of the request's width needs for its parts
+// (request.height is not read): what a figure at a printed size is given.
+int stacked_height(const LayoutRequest& request);
+// The separation chart's height in a comparison scene of this type height
+// (PageLayout::type_height_for the picture's height).
+int comparison_chart_height(int type_height);
 // The legend's rows in a comparison scene of `runs` runs: one per run, the
 // key of the line drawn after a run's pixel-true time, and the trail's caption.
 int comparison_legend_rows(int runs);
 int comparison_runs(int legend_rows);  // the inverse
-// The height of one legend row, and of the caption's line, at this picture height.
-int legend_row_height(int height);
+// The height of one legend row, and of the caption's line, at this type height.
+int legend_row_height(int type_height);
 // What a frame asks of a picture of this size.
 LayoutRequest layout_request(const Frame& frame, int width, int height, int reserved_left = 0);
 
@@ -78,12 +86,16 @@ LayoutRequest layout_request(const Frame& frame, int width, int height, int rese
 constexpr float kFovDegrees = 30.0f;
 float camera_distance_for(double distance_setting, float aspect);
 
-// The overlay's font size at this picture height, and how many of its lines
-// fit (below 480 rows, gallery tiles, only the time and the method).
-float overlay_font_px(int height);
-// What line widths, marks and paddings are multiplied by at this picture
+// The overlay's font size at this type height (a picture's height, or
+// PageLayout::type_height), and how many of its lines fit a picture of this
+// height (below 480 rows, gallery tiles, only the time and the method).
+float overlay_font_px(int type_height);
+// The type height that gives the overlay's font this size (the inverse of
+// overlay_font_px above 13 px): what a figure at a printed size asks for.
+int type_height_for_font(float font_px);
+// What line widths, marks and paddings are multiplied by at this type
 // height: 1 up to 720 rows, then in proportion (3 at 2160).
-float ui_scale(int height);
+float ui_scale(int type_height);
 int overlay_lines_shown(int lines, int height);
 
 }  // namespace epviz::scene

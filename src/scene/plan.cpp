@@ -21,7 +21,9 @@ FrameLayout planned_layout(const SceneSettings& s, const sim::RunSpec& run) {
   return planned_layout(s, std::vector<sim::RunSpec>{run});
 }
 
-FrameLayout planned_layout(const SceneSettings& s, const std::vector<sim::RunSpec>& runs) {
+namespace {
+
+LayoutRequest planned_request(const SceneSettings& s, const std::vector<sim::RunSpec>& runs) {
   LayoutRequest q;
   q.width = s.width;
   q.height = s.height;
@@ -29,10 +31,25 @@ FrameLayout planned_layout(const SceneSettings& s, const std::vector<sim::RunSpe
   q.overlay = {kOverlayLines, overlay_drift_rows(runs)};
   q.camera_distance = s.camera.distance;
   q.plane_extent = s.plane_extent;
-  q.chart_height = runs.size() > 1 ? comparison_chart_height(s.height) : 0;
+  q.chart_height = runs.size() > 1 ? comparison_chart_height(s.page.type_height_for(s.height)) : 0;
   q.legend_rows = runs.size() > 1 ? comparison_legend_rows(int(runs.size())) : 0;
   q.section_panel = s.section.has_value();
-  return frame_layout(q);
+  q.page = s.page;
+  return q;
+}
+
+}  // namespace
+
+FrameLayout planned_layout(const SceneSettings& s, const std::vector<sim::RunSpec>& runs) {
+  return frame_layout(planned_request(s, runs));
+}
+
+void set_printed_size(SceneSettings& s, const std::vector<sim::RunSpec>& runs, int width,
+                      float font_px) {
+  s.width = width;
+  s.page = {type_height_for_font(font_px), true};
+  // Even, so that a video encoder takes it too.
+  s.height = (stacked_height(planned_request(s, runs)) + 1) / 2 * 2;
 }
 
 void trail_pixel_scales(const SceneSettings& s, double& sphere_px, double& plane_px) {
@@ -41,6 +58,7 @@ void trail_pixel_scales(const SceneSettings& s, double& sphere_px, double& plane
   q.height = s.height;
   q.camera_distance = s.camera.distance;
   q.plane_extent = s.plane_extent;
+  q.page = s.page;
   q.layers = Layers::only({Layer::sphere});
   sphere_px = frame_layout(q).sphere_px_per_unit;
   q.layers = Layers::only({Layer::riccati});

@@ -68,6 +68,10 @@ FrameLayout planned_layout(const SceneSettings& s, const sim::RunSpec& run);
 // The same for a comparison scene of these runs (the overlay's drift rows per
 // run, the separation chart under the plane).
 FrameLayout planned_layout(const SceneSettings& s, const std::vector<sim::RunSpec>& runs);
+// A figure at a printed size: `width` pixels wide, its text `font_px` tall,
+// its parts stacked (PageLayout) and as tall as they need.
+void set_printed_size(SceneSettings& s, const std::vector<sim::RunSpec>& runs, int width,
+                      float font_px);
 
 // The largest scale the sphere and the plane take in a picture of this size:
 // each alone in it. Trails are decimated for these, so that a layer switched

@@ -26,6 +26,7 @@ struct SceneSettings {
   int trace_axis = 3;              // space view: the body axis (1, 2 or 3) the trail follows
   CloudSettings cloud;             // an ensemble launched with the first run (scene/cloud.hpp)
   std::optional<SectionPanelSettings> section;  // a section panel beside the plane
+  PageLayout page;                              // a screen picture, or a figure at a printed size
 
   int frame_count() const;  // round(fps * duration), at least 1
 };

@@ -145,5 +145,90 @@ TEST(Layout, TextAndMarksScaleWithThePicture) {
   EXPECT_EQ(scene::ui_scale(240), 1.0f);
 }
 
+// A figure at a printed size: 85 mm at 300 dpi (1004 px), its text 8 pt
+// (33.3 px). Its parts stack in one column, each across the width, none over
+// another, in the order the eye reads them; the page is as tall as they are.
+scene::LayoutRequest printed(scene::Layers layers, int legend_rows, bool section) {
+  auto q = request(1004, 0, layers);
+  q.page = {scene::type_height_for_font(8.0f * 300.0f / 72.0f), true};
+  q.legend_rows = legend_rows;
+  q.chart_height = legend_rows > 0 ? scene::comparison_chart_height(q.page.type_height) : 0;
+  q.section_panel = section;
+  q.height = scene::stacked_height(q);
+  return q;
+}
+
+TEST(PrintedLayout, PartsStackAcrossTheWidthInReadingOrder) {
+  for (const auto& [legend, section] : {std::pair{0, false}, {5, false}, {0, true}}) {
+    const auto q = printed({}, legend, section);
+    const auto l = scene::frame_layout(q);
+    ASSERT_TRUE(l.view_3d && l.overlay_area && l.panel_column && l.plot_area);
+    std::vector<Rect> parts{*l.view_3d, *l.overlay_area, *l.plot_area};
+    if (legend > 0) {
+      ASSERT_TRUE(l.legend_area && l.chart_area);
+      parts.push_back(*l.legend_area);
+      // The legend between the view and the overlay's text.
+      EXPECT_EQ(l.legend_area->y, l.view_3d->bottom());
+      EXPECT_EQ(l.overlay_area->y, l.legend_area->bottom());
+    } else {
+      EXPECT_EQ(l.overlay_area->y, l.view_3d->bottom());
+    }
+    if (section) {
+      ASSERT_TRUE(l.section_area);
+      parts.push_back(*l.section_area);
+      EXPECT_EQ(l.section_area->y, l.plot_area->y);  // side by side under the text
+    }
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      EXPECT_TRUE(inside(parts[i], 0, q.width, q.height)) << i;
+      for (std::size_t j = i + 1; j < parts.size(); ++j)
+        EXPECT_FALSE(overlap(parts[i], parts[j])) << i << " " << j;
+    }
+    EXPECT_EQ(l.view_3d->width, q.width);
+    EXPECT_EQ(l.overlay_area->width, q.width);
+    EXPECT_GE(l.plot_area->y, l.overlay_area->bottom());
+    // As tall as its parts: the column's bottom is the page's.
+    EXPECT_EQ(l.panel_column->bottom(), q.height);
+  }
+}
+
+// The type follows the font asked for, not the page's height: the same
+// figure twice as tall has the same text, and the overlay's band holds its
+// reserved rows at that font.
+TEST(PrintedLayout, TypeFollowsTheFontAskedNotThePageHeight) {
+  const auto q = printed({}, 0, false);
+  const float font = scene::overlay_font_px(q.page.type_height);
+  EXPECT_NEAR(font, 8.0f * 300.0f / 72.0f, 0.05f);
+  const int rows = 1 + scene::kOverlayReserved.lines + 2 + scene::kOverlayReserved.drifts;
+  const auto l = scene::frame_layout(q);
+  EXPECT_GE(l.overlay_area->height, int(font * 1.3f * float(rows)));
+  auto taller = q;
+  taller.height = 2 * q.height;
+  const auto lt = scene::frame_layout(taller);
+  EXPECT_EQ(lt.overlay_area->height, l.overlay_area->height);
+  EXPECT_EQ(lt.plot_area->width, l.plot_area->width);
+  // Twice the font: the text's parts grow, the view (the width's) does not.
+  auto bigger = q;
+  bigger.page.type_height *= 2;
+  const auto lb = scene::frame_layout(bigger);
+  EXPECT_EQ(lb.view_3d->height, l.view_3d->height);
+  EXPECT_GT(lb.overlay_area->height, l.overlay_area->height * 3 / 2);
+}
+
+// Without a 3D view the panels come first; without panels the page ends
+// with the overlay's text.
+TEST(PrintedLayout, MissingPartsLeaveNoGap) {
+  const auto plane_only = scene::frame_layout(
+      printed(scene::Layers::only({scene::Layer::riccati, scene::Layer::overlay}), 0, false));
+  ASSERT_TRUE(plane_only.overlay_area && plane_only.plot_area);
+  EXPECT_FALSE(plane_only.view_3d);
+  EXPECT_EQ(plane_only.overlay_area->y, 0);
+  const auto q =
+      printed(scene::Layers::only({scene::Layer::sphere, scene::Layer::overlay}), 0, false);
+  const auto sphere_only = scene::frame_layout(q);
+  EXPECT_FALSE(sphere_only.panel_column);
+  ASSERT_TRUE(sphere_only.overlay_area);
+  EXPECT_EQ(sphere_only.overlay_area->bottom(), q.height);
+}
+
 }  // namespace
 }  // namespace epviz
