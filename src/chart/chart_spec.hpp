@@ -76,7 +76,9 @@ struct ChartSpec {
 // A grid of values, rows by columns, each cell coloured by its value on a
 // sequential colour map with a colour bar to read it (e.g. method x regime,
 // the largest stable step; a sweep's metric over two of its axes). NaN (or a
-// value <= 0 on a log scale): no value, drawn grey with `missing`.
+// value <= 0 on a log scale): no value, drawn grey with `missing`. A value
+// beyond a fixed range takes the end colour and a triangle in its cell (up:
+// above, down: below), so that a clipped value never passes for the end value.
 //
 // Rows are listed top to bottom as drawn, columns left to right. A numeric
 // y axis that should read upwards (small values at the bottom) therefore
@@ -110,6 +112,11 @@ struct HeatMapSpec {
   // and in a key under the grid, unlike the grey of a cell without a value.
   std::vector<std::vector<bool>> undecided;
   std::string undecided_label = "undecided";
+  // Maps shown together (a sweep's atlas): the room their labels, colour bar
+  // and keys need is taken in as well, so that every map of the set has the
+  // same plot rectangle (as ChartSpec::axis_extent shares axes). Their own
+  // margin_peers are not read.
+  std::vector<HeatMapSpec> margin_peers;
 };
 
 struct TableSpec {

@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "paint/figure_drawing.hpp"
+#include "paint/heat_map_range.hpp"
 #include "render/colour_map.hpp"
 #include "render/draw_list.hpp"
 
@@ -74,24 +75,22 @@ void keep_apart(std::vector<GridTick>& ticks, float cell,
 
 std::string heat_value_text(double v) { return print_number(v, 3); }
 
-}  // namespace
+// Dark ink on a light fill, white on a dark one.
+glm::vec4 contrasting_ink(const glm::vec4& fill) {
+  const bool light = 0.299f * fill.r + 0.587f * fill.g + 0.114f * fill.b > 0.55f;
+  return light ? kInk : glm::vec4(1.0f);
+}
 
-HeatMapLayout heat_map_layout(const HeatMapSpec& spec, int width, int height,
-                              const ChartFont& font) {
-  const float font_px = font.px;
-  HeatMapLayout l;
+// The colour bar's range in plotted units: the values' own (whole decades on
+// a log scale), or the spec's fixed ends.
+struct Range {
+  double lo = 0.0, hi = 1.0;
+};
+Range colour_range(const HeatMapSpec& spec) {
   Span span;
-  bool any_missing = false, any_undecided = false;
   for (std::size_t i = 0; i < spec.rows.size(); ++i)
-    for (std::size_t j = 0; j < spec.columns.size(); ++j) {
-      if (undecided(spec, i, j)) {
-        any_undecided = true;
-        continue;
-      }
-      const double v = plotted(spec, cell_value(spec, i, j));
-      span.add(v);
-      any_missing |= std::isnan(v);
-    }
+    for (std::size_t j = 0; j < spec.columns.size(); ++j)
+      if (!undecided(spec, i, j)) span.add(plotted(spec, cell_value(spec, i, j)));
   finish_span(span, spec.log_scale);
   if (!spec.log_scale && !span.empty()) {
     // finish_span pads a linear range; a colour scale wants the values' own ends.
@@ -104,41 +103,129 @@ HeatMapLayout heat_map_layout(const HeatMapSpec& spec, int width, int height,
   if (const double v = plotted(spec, spec.range_min); std::isfinite(v)) span.lo = v;
   if (const double v = plotted(spec, spec.range_max); std::isfinite(v)) span.hi = v;
   if (!(span.hi > span.lo)) span.hi = span.lo + 1.0;
-  l.lo = span.lo;
-  l.hi = span.hi;
+  return {span.lo, span.hi};
+}
 
+// The height of the colour bar's end triangle for values beyond its range.
+// (Its bound's label, level with its tip, keeps a line's distance from the
+// tick label at the bar's end.)
+int end_triangle(float font_px) { return int(std::ceil(font_px * 1.7f)); }
+
+// The room a map needs around its grid: left of it for the row labels and
+// the y title, right of it for the colour bar, its labels and title, and
+// under it (besides the column labels) for the x title, the note and `keys`
+// key lines. `at_most`: keys counts the key to grey cells wherever a value
+// is missing (drawn only on a grid without text, which the room decides).
+struct Room {
+  float left = 0.0f, right = 0.0f;
+  float text_lines = 0.0f;  // the x title under the grid, in pixels (the note's: note_room)
+  int keys = 0;
+  bool any_missing = false, any_undecided = false;
+  OutOfRangeCount beyond;
+};
+Room room_of(const HeatMapSpec& spec, const ChartFont& font, bool at_most) {
+  const float font_px = font.px;
   const float line = font_px * 1.35f;
+  Room room;
+  for (std::size_t i = 0; i < spec.rows.size(); ++i)
+    for (std::size_t j = 0; j < spec.columns.size(); ++j) {
+      if (undecided(spec, i, j)) {
+        room.any_undecided = true;
+        continue;
+      }
+      const double v = cell_value(spec, i, j);
+      room.any_missing |= std::isnan(plotted(spec, v));
+      const Beyond b = beyond_range(spec, v);
+      room.beyond.above += b == Beyond::above;
+      room.beyond.below += b == Beyond::below;
+    }
+  room.keys = int(room.any_undecided) + int(room.beyond.above > 0) + int(room.beyond.below > 0) +
+              int(at_most && room.any_missing);
+  room.text_lines = spec.x_label.empty() ? 0.0f : line * 1.2f;
   // A numeric axis's labels are measured at the finest ticks it may get
   // (the most decimals); an axis of names by its names.
-  constexpr int kMostTicks = 10;
-  const auto finest_rows = numeric_ticks(spec.row_values, spec.rows.size(), kMostTicks);
-  const auto finest_columns = numeric_ticks(spec.column_values, spec.columns.size(), kMostTicks);
+  const auto finest_rows = numeric_ticks(spec.row_values, spec.rows.size(), 10);
   float widest_row = font.width(spec.y_label);
   if (finest_rows.empty())
     for (const auto& r : spec.rows) widest_row = std::max(widest_row, font.width(r));
   for (const auto& t : finest_rows) widest_row = std::max(widest_row, font.width(t.label));
+  room.left = widest_row + font_px * 1.4f;
+  const Range range = colour_range(spec);
+  float widest_tick = 0.0f;
+  for (const auto& t : axis_ticks(range.lo, range.hi, spec.log_scale, 8))
+    widest_tick = std::max(widest_tick, font.width(t.label));
+  if (room.beyond.above > 0)
+    widest_tick = std::max(widest_tick, font.width(beyond_bound_text(spec, Beyond::above)));
+  if (room.beyond.below > 0)
+    widest_tick = std::max(widest_tick, font.width(beyond_bound_text(spec, Beyond::below)));
+  const float bar_w = font_px * 1.1f;
+  room.right =
+      std::max(font.width(spec.value_label), bar_w + font_px * 0.5f + widest_tick) + font_px * 2.5f;
+  return room;
+}
+
+// The note in lines from the grid's left edge `left` to a character short of
+// the picture's right edge.
+std::vector<std::string> note_lines(const HeatMapSpec& spec, const ChartFont& font, int width,
+                                    int left) {
+  return wrap_text(spec.note, font, std::max(font.px * 8.0f, float(width - left) - font.px));
+}
+// The height the note's lines take under the grid (0.4 line above them).
+float note_room(std::size_t lines, float line) {
+  return lines == 0 ? 0.0f : line * (0.4f + float(lines));
+}
+
+}  // namespace
+
+HeatMapLayout heat_map_layout(const HeatMapSpec& spec, int width, int height,
+                              const ChartFont& font) {
+  const float font_px = font.px;
+  const float line = font_px * 1.35f;
+  HeatMapLayout l;
+  const Range range = colour_range(spec);
+  l.lo = range.lo;
+  l.hi = range.hi;
+  const Room own = room_of(spec, font, false);
+  l.beyond = own.beyond;
+  Room room = own;
+  if (!spec.margin_peers.empty()) {
+    // A set of maps: each reserves what the most demanding one needs, every
+    // key line that any could draw included, so that all come out alike.
+    room = room_of(spec, font, true);
+    for (const auto& peer : spec.margin_peers) {
+      const Room r = room_of(peer, font, true);
+      room.left = std::max(room.left, r.left);
+      room.right = std::max(room.right, r.right);
+      room.keys = std::max(room.keys, r.keys);
+      room.text_lines = std::max(room.text_lines, r.text_lines);
+    }
+  }
+  constexpr int kMostTicks = 10;
+  const auto finest_rows = numeric_ticks(spec.row_values, spec.rows.size(), kMostTicks);
+  const auto finest_columns = numeric_ticks(spec.column_values, spec.columns.size(), kMostTicks);
   float widest_column = 0.0f;
   if (finest_columns.empty())
     for (const auto& c : spec.columns) widest_column = std::max(widest_column, font.width(c));
   float widest_column_tick = 0.0f;
   for (const auto& t : finest_columns)
     widest_column_tick = std::max(widest_column_tick, font.width(t.label));
-  float widest_tick = 0.0f;
-  for (const auto& t : axis_ticks(l.lo, l.hi, spec.log_scale, 8))
-    widest_tick = std::max(widest_tick, font.width(t.label));
   float widest_value = 0.0f;
   for (const auto& row : spec.values)
     for (double v : row)
       if (!std::isnan(plotted(spec, v)))
         widest_value = std::max(widest_value, font.width(heat_value_text(v)));
-  if (any_missing) widest_value = std::max(widest_value, font.width(spec.missing));
-  if (any_undecided) widest_value = std::max(widest_value, font.width(spec.undecided_label));
+  if (own.any_missing) widest_value = std::max(widest_value, font.width(spec.missing));
+  if (own.any_undecided) widest_value = std::max(widest_value, font.width(spec.undecided_label));
   const float bar_w = font_px * 1.1f;
-  const float right =
-      std::max(font.width(spec.value_label), bar_w + font_px * 0.5f + widest_tick) + font_px * 2.5f;
-  const int left = int(std::ceil(widest_row + font_px * 1.4f));
+  const int left = int(std::ceil(room.left));
+  // The note wrapped to the width; a set of maps reserves its longest note's lines.
+  l.note_lines = note_lines(spec, font, width, left);
+  std::size_t note_count = l.note_lines.size();
+  for (const auto& peer : spec.margin_peers)
+    note_count = std::max(note_count, note_lines(peer, font, width, left).size());
+  room.text_lines += note_room(note_count, line);
   const int top = int(std::ceil(font_px * 0.8f + line * 1.3f + line * 1.2f));
-  const int grid_w = std::max(16, width - left - int(std::ceil(right)));
+  const int grid_w = std::max(16, width - left - int(std::ceil(room.right)));
   const std::size_t columns = std::max<std::size_t>(1, spec.columns.size());
   const std::size_t rows = std::max<std::size_t>(1, spec.rows.size());
   const float cell_w = float(grid_w) / float(columns);
@@ -155,14 +242,15 @@ HeatMapLayout heat_map_layout(const HeatMapSpec& spec, int width, int height,
   // key to grey cells when they carry no text (known only once the rows'
   // height is: hence a second pass with that line when the first finds it needed).
   const float cell_h_max = font_px * 2.6f;
-  // The key to hatched cells is always there: a cell's text may not say it all.
-  l.undecided_key = any_undecided;
+  // The keys to hatched cells and to cells beyond the range are always
+  // there: a cell's text may not say it all.
+  l.undecided_key = own.any_undecided;
   auto place = [&](bool key) {
-    const int keys = int(key) + int(l.undecided_key);
+    // A set of maps reserves its most demanding member's lines (room.keys
+    // counts the key to grey cells whether or not it is drawn).
+    const int keys = spec.margin_peers.empty() ? int(key) + own.keys : room.keys;
     const float under = font_px * 0.6f + line * (l.staggered_columns ? 2.0f : 1.0f) +
-                        (spec.x_label.empty() ? 0.0f : line * 1.2f) +
-                        (spec.note.empty() ? 0.0f : line * 1.4f) + line * 1.4f * float(keys) +
-                        font_px * 0.6f;
+                        room.text_lines + line * 1.4f * float(keys) + font_px * 0.6f;
     const int bottom = int(std::ceil(under));
     const float cell_h =
         std::min(cell_h_max, float(std::max(16, height - top - bottom)) / float(rows));
@@ -170,7 +258,7 @@ HeatMapLayout heat_map_layout(const HeatMapSpec& spec, int width, int height,
     // All values as text or none: a grid where only some cells say their value
     // would read as if the others had none.
     l.value_text = widest_value + font_px * 0.4f <= cell_w && font_px * 1.15f <= cell_h;
-    l.missing_key = any_missing && !l.value_text;
+    l.missing_key = own.any_missing && !l.value_text;
     l.row_stride = std::size_t(std::ceil(line / std::max(cell_h, 1.0f) - 1e-4f));
     return cell_h;
   };
@@ -187,7 +275,13 @@ HeatMapLayout heat_map_layout(const HeatMapSpec& spec, int width, int height,
                 y1 = top + int(std::round(cell_h * float(i + 1)));
       l.cells[i].push_back({x0, y0, x1 - x0, y1 - y0});
     }
-  l.colour_bar = {left + grid_w + int(font_px * 1.5f), top, int(bar_w), grid_h};
+  // The colour bar beside the grid, shortened at an end that carries a
+  // triangle for values beyond it.
+  // (On a grid of a row or two the triangles take at most a quarter of it each.)
+  const int end = std::min(end_triangle(font_px), grid_h / 4);
+  const int cut_top = l.beyond.above > 0 ? end : 0, cut_bottom = l.beyond.below > 0 ? end : 0;
+  l.colour_bar = {left + grid_w + int(font_px * 1.5f), top + cut_top, int(bar_w),
+                  std::max(8, grid_h - cut_top - cut_bottom)};
   if (!finest_columns.empty()) {
     const float per_label = widest_column_tick + font_px * 2.0f;
     l.column_ticks = numeric_ticks(spec.column_values, spec.columns.size(),
@@ -212,6 +306,14 @@ std::optional<glm::vec4> heat_map_colour(const HeatMapSpec& spec, const HeatMapL
   if (!spec.larger_is_better) t = 1.0 - t;
   return heat_map()(float(t), 1.0f);
 }
+
+namespace {
+// A value at the colour bar's end on `side` (in values, not plotted units).
+double end_value(const HeatMapSpec& spec, const HeatMapLayout& l, Beyond side) {
+  const double v = side == Beyond::above ? l.hi : l.lo;
+  return spec.log_scale ? std::pow(10.0, v) : v;
+}
+}  // namespace
 
 FigureDrawing draw_heat_map(const HeatMapSpec& spec, const ChartOptions& options,
                             const ChartFont& font, bool fit_grid) {
@@ -274,10 +376,19 @@ FigureDrawing draw_heat_map(const HeatMapSpec& spec, const ChartOptions& options
       if (!l.value_text) {
         // No text to say so: a diagonal marks the grey as no value rather than a colour.
         if (!colour) list.add_line({a.x, b.y, 0}, {b.x, a.y, 0}, hatch, 1.0f);
+        // A value beyond the range: a triangle across most of the cell.
+        if (const Beyond side = beyond_range(spec, v); side != Beyond::no)
+          add_beyond_triangle(list, (a + b) * 0.5f, std::min(b.x - a.x, b.y - a.y) * 0.6f, side,
+                              contrasting_ink(fill));
         continue;
       }
-      const bool light = 0.299f * fill.r + 0.587f * fill.g + 0.114f * fill.b > 0.55f;
-      const glm::vec4 ink = light ? kInk : glm::vec4(1.0f);
+      const glm::vec4 ink = contrasting_ink(fill);
+      // A value beyond the range: a triangle in the cell's top right corner, clear of its text.
+      if (const Beyond side = beyond_range(spec, v); side != Beyond::no) {
+        const float size = std::clamp(std::min<float>(c.width, c.height) * 0.28f, 5.0f, font_px);
+        add_beyond_triangle(list, {b.x - size * 0.5f - 2.0f, a.y + size * 0.5f + 2.0f}, size, side,
+                            ink);
+      }
       list.add_text(label({float(c.x) + c.width * 0.5f, float(c.y) + c.height * 0.5f},
                           colour ? heat_value_text(v) : spec.missing, TextAnchor::centre,
                           colour ? ink : quiet_ink));
@@ -316,10 +427,11 @@ FigureDrawing draw_heat_map(const HeatMapSpec& spec, const ChartOptions& options
   if (!spec.y_label.empty())
     list.add_text(label({float(l.grid.x) - font_px * 0.5f, float(l.grid.y) - font_px * 0.9f},
                         spec.y_label, TextAnchor::bottom_right));
-  if (!spec.note.empty()) {
-    list.add_text(
-        label({float(l.grid.x), under + line * 0.4f}, spec.note, TextAnchor::top_left, quiet_ink));
-    under += line * 1.4f;
+  if (!l.note_lines.empty()) {
+    for (std::size_t i = 0; i < l.note_lines.size(); ++i)
+      list.add_text(label({float(l.grid.x), under + line * (0.4f + float(i))}, l.note_lines[i],
+                          TextAnchor::top_left, quiet_ink));
+    under += note_room(l.note_lines.size(), line);
   }
   if (l.missing_key) {
     const glm::vec2 a{float(l.grid.x), under + line * 0.4f};
@@ -337,6 +449,20 @@ FigureDrawing draw_heat_map(const HeatMapSpec& spec, const ChartOptions& options
     add_hatch(list, a, b, hatch, hatch_spacing * 0.6f);
     list.add_text(label({b.x + font_px * 0.5f, (a.y + b.y) * 0.5f}, spec.undecided_label,
                         TextAnchor::left, quiet_ink));
+    under += line * 1.4f;
+  }
+  // The keys to cells beyond the range: a swatch of the end colour with its triangle.
+  for (const Beyond side : {Beyond::above, Beyond::below}) {
+    const std::size_t n = side == Beyond::above ? l.beyond.above : l.beyond.below;
+    if (n == 0) continue;
+    const glm::vec2 a{float(l.grid.x), under + line * 0.4f};
+    const glm::vec2 b{a.x + font_px * 1.2f, a.y + font_px * 0.9f};
+    const glm::vec4 end = heat_map_colour(spec, l, end_value(spec, l, side)).value_or(missing);
+    list.add_rect(a, b, end);
+    add_beyond_triangle(list, (a + b) * 0.5f, font_px * 0.6f, side, contrasting_ink(end));
+    list.add_text(label({b.x + font_px * 0.5f, (a.y + b.y) * 0.5f}, beyond_key_text(spec, side, n),
+                        TextAnchor::left, quiet_ink));
+    under += line * 1.4f;
   }
   // The colour bar: 64 bands, low values at the bottom. Each band reaches
   // down to the bar's bottom and the higher ones are drawn first, so that no
@@ -362,6 +488,23 @@ FigureDrawing draw_heat_map(const HeatMapSpec& spec, const ChartOptions& options
                                          {float(b.x + b.width), float(b.y + b.height), 0},
                                          {float(b.x), float(b.y + b.height), 0}};
   list.add_polyline(bar_frame, kFrame, 1.0f, true);
+  // An end triangle for values beyond the bar, in its end colour, with its bound.
+  for (const Beyond side : {Beyond::above, Beyond::below}) {
+    if ((side == Beyond::above ? l.beyond.above : l.beyond.below) == 0) continue;
+    const bool above = side == Beyond::above;
+    const float tip = above ? float(l.grid.y) : float(l.grid.y + l.grid.height);
+    const float base = above ? float(b.y) : float(b.y + b.height);
+    const glm::vec4 end = heat_map_colour(spec, l, end_value(spec, l, side)).value_or(missing);
+    const float x0 = float(b.x), x1 = float(b.x + b.width), xm = (x0 + x1) * 0.5f;
+    const std::vector<render::ColouredVertex> triangle{
+        {{x0, base, 0}, end}, {{x1, base, 0}, end}, {{xm, tip, 0}, end}};
+    list.add_triangles(triangle);
+    const std::vector<glm::vec3> edge{{x0, base, 0}, {xm, tip, 0}, {x1, base, 0}};
+    list.add_polyline(edge, kFrame, 1.0f, false);
+    // The bound level with the tip, a line from the bar's end tick at the base.
+    list.add_text(
+        label({x1 + font_px * 0.45f, tip}, beyond_bound_text(spec, side), TextAnchor::left));
+  }
   const int max_labels = std::clamp(int(float(b.height) / (font_px * 1.6f)), 2, 8);
   for (const auto& t : axis_ticks(l.lo, l.hi, spec.log_scale, max_labels)) {
     if (t.label.empty()) continue;
@@ -370,8 +513,8 @@ FigureDrawing draw_heat_map(const HeatMapSpec& spec, const ChartOptions& options
                   kFrame, 1.0f);
     list.add_text(label({float(b.x + b.width) + font_px * 0.45f, y}, t.label, TextAnchor::left));
   }
-  list.add_text(
-      label({float(b.x), float(b.y) - font_px * 0.9f}, spec.value_label, TextAnchor::bottom_left));
+  list.add_text(label({float(b.x), float(l.grid.y) - font_px * 0.9f}, spec.value_label,
+                      TextAnchor::bottom_left));
   drawing.layers.push_back({std::move(list), std::nullopt});
   return drawing;
 }

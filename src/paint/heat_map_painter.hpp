@@ -2,7 +2,8 @@
 // Heat maps for papers: a grid of cells coloured by value (linear or log10
 // scale, optionally a fixed range), row and column labels, a colour bar, and
 // each cell's value as text where every value fits its cell. Cells the spec
-// marks undecided are hatched and labelled, unlike the grey of a missing value.
+// marks undecided are hatched and labelled, unlike the grey of a missing value;
+// values beyond a fixed range carry a triangle and are counted in a key.
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -11,6 +12,7 @@
 
 #include "paint/figure_common.hpp"
 #include "paint/grid_ticks.hpp"
+#include "paint/heat_map_range.hpp"
 #include "render/camera.hpp"
 #include "render/gl_context.hpp"
 #include "render/image.hpp"
@@ -34,7 +36,13 @@ struct HeatMapLayout {
   bool value_text = true;          // each cell shows its value (and `missing`) as text
   bool missing_key = false;        // a key under the grid says what a grey cell means
   bool undecided_key = false;      // ... and what a hatched one means (HeatMapSpec::undecided)
-  int natural_height = 0;          // the picture's height that fits the grid with no spare room
+  // Cells beyond the spec's fixed range (paint/heat_map_range.hpp), each
+  // side with a key under the grid and a triangle at that end of the colour
+  // bar, which is shortened by it (the bar's own range stays lo..hi).
+  OutOfRangeCount beyond;
+  int natural_height = 0;  // the picture's height that fits the grid with no spare room
+  // The note under the grid in lines that fit the picture's width.
+  std::vector<std::string> note_lines;
   // Numeric axes (the spec's column_values, row_values) of 8 cells or more:
   // labels at round values, none overlapping the one before; empty for an
   // axis of names or of fewer cells (labelled by the cells' own values).

@@ -83,6 +83,16 @@ std::vector<std::string> axis_names(const std::vector<Json>& rows) {
   return names;
 }
 
+// Each map takes the others as its margin peers (without theirs: one level deep).
+void share_plot_area(std::vector<AtlasFigure>& figures) {
+  for (auto& f : figures) f.heat_map.margin_peers.clear();
+  std::vector<chart::HeatMapSpec> all;
+  for (const auto& f : figures) all.push_back(f.heat_map);
+  for (std::size_t i = 0; i < figures.size() && figures.size() > 1; ++i)
+    for (std::size_t j = 0; j < all.size(); ++j)
+      if (j != i) figures[i].heat_map.margin_peers.push_back(all[j]);
+}
+
 }  // namespace
 
 AtlasRequest parse_atlas_option(const std::string& text) {
@@ -256,6 +266,18 @@ std::vector<AtlasFigure> atlas_figures(const std::vector<Json>& rows, const Atla
     f.file_name = safe("atlas_" + q.metric + "_" + q.x + "_" + q.y + key + ".png");
     out.push_back(std::move(f));
   }
+  share_plot_area(out);
+  return out;
+}
+
+std::vector<AtlasFigure> atlas_figure_set(const std::vector<Json>& rows,
+                                          const std::vector<AtlasRequest>& requests,
+                                          const std::optional<FtleSettings>& ftle,
+                                          const SelfCheck* check) {
+  std::vector<AtlasFigure> out;
+  for (const auto& q : requests)
+    for (auto& f : atlas_figures(rows, q, ftle, check)) out.push_back(std::move(f));
+  share_plot_area(out);
   return out;
 }
 

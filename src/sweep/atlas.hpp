@@ -54,4 +54,14 @@ std::vector<AtlasFigure> atlas_figures(const std::vector<nlohmann::json>& rows,
                                        const std::optional<FtleSettings>& ftle = std::nullopt,
                                        const SelfCheck* check = nullptr);
 
+// The figures of every request, each map with the others as its margin
+// peers (chart::HeatMapSpec::margin_peers): all maps of one sweep come out
+// with one plot rectangle, whatever their colour bars' labels and keys, so
+// that they compare side by side. (atlas_figures does this among the
+// figures of its one request.)
+std::vector<AtlasFigure> atlas_figure_set(const std::vector<nlohmann::json>& rows,
+                                          const std::vector<AtlasRequest>& requests,
+                                          const std::optional<FtleSettings>& ftle = std::nullopt,
+                                          const SelfCheck* check = nullptr);
+
 }  // namespace epviz::sweep
