@@ -9,6 +9,7 @@
 
 #include "app/cli_values.hpp"
 #include "app/gl_option.hpp"
+#include "app/print_options.hpp"
 #include "io/atomic_file.hpp"
 #include "io/bad_input.hpp"
 #include "io/json_reader.hpp"
@@ -79,7 +80,8 @@ double target_error(const BenchRequest& request) {
 }
 
 void write_outputs(const BenchRequest& request, const std::vector<study::StudyRow>& rows,
-                   double wall, const std::optional<study::Recommendation>& recommendation) {
+                   double wall, const std::optional<study::Recommendation>& recommendation,
+                   const std::optional<io::PrintSize>& print) {
   if (request.json.empty() && request.out.empty()) return;
   const std::string text =
       io::json_text(study::bench_document(rows, request.quick, wall, recommendation), 1) + "\n";
@@ -87,10 +89,13 @@ void write_outputs(const BenchRequest& request, const std::vector<study::StudyRo
   if (request.out.empty()) return;
   io::write_file_atomically(fs::path(request.out) / "bench.json", text);
 #ifdef EPVIZ_HAVE_RENDER
-  const auto written =
-      vector::write_figures(study::bench_figures(rows), request.out,
-                            vector::parse_figure_format(request.format), request.gl);
+  // The charts' usual 1280 x 800, or that aspect at the printed size.
+  const auto written = vector::write_figures(
+      study::bench_figures(rows), request.out, vector::parse_figure_format(request.format),
+      request.gl, chart_options({.width = 1280, .height = 800}, print));
   std::printf("%zu charts written to %s\n", written.size(), request.out.c_str());
+#else
+  (void)print;
 #endif
 }
 
@@ -103,6 +108,7 @@ int run_bench(const BenchRequest& request) {
   if (!request.job.empty()) opts.custom = job_problem(request.job);
   opts.cases = study::parse_case_list(request.cases, !request.job.empty());
   const double target = target_error(request);
+  const auto print = io::parse_print_size(request.print);
 #ifdef EPVIZ_HAVE_RENDER
   (void)vector::parse_figure_format(request.format);
   (void)render::GlChoice(request.gl);
@@ -131,7 +137,7 @@ int run_bench(const BenchRequest& request) {
     std::printf("\n%s", study::recommendation_text(*recommendation).c_str());
   }
   std::printf("\nbench finished in %.1f s\n", wall);
-  write_outputs(request, rows, wall, recommendation);
+  write_outputs(request, rows, wall, recommendation, print);
   return 0;
 }
 
@@ -147,6 +153,7 @@ std::function<int()> add_bench_command(cli::Command app) {
   cmd.add_option("--format", request->format,
                  "the charts' files with --out: png (GL), svg or pdf (cairo, vector; no GL "
                  "needed) (default png)");
+  add_print_options(cmd, request->print);
   cmd.add_option("--cases", request->cases,
                  "comma-separated presets for the work-precision and drift studies (default all; "
                  "none with --job unless named; custom: the --job body)");

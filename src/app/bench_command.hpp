@@ -5,6 +5,7 @@
 #include <string>
 
 #include "app/cli.hpp"
+#include "io/print_size.hpp"
 
 namespace epviz::app {
 
@@ -23,6 +24,7 @@ struct BenchRequest {
   std::string format;        // the charts' files: png, svg or pdf ("" for png)
   std::string job;           // a render or simulate job whose body to study too ("" for none)
   std::string target_error;  // with a job: the error the recommendation must reach ("" for 1e-8)
+  io::PrintSizeText print;   // the charts' printed size ("" each where not given)
 };
 int run_bench(const BenchRequest& request);
 

@@ -5,12 +5,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "app/cli_values.hpp"
 #include "app/diagram_figure.hpp"
 #include "app/gl_option.hpp"
+#include "app/print_options.hpp"
 #include "io/atomic_file.hpp"
 #include "io/bad_input.hpp"
 #include "io/output_paths.hpp"
@@ -30,6 +32,7 @@ namespace fs = std::filesystem;
 
 struct DiagramOptions {
   std::string case_name, area, energy_max, inertia, com, weight, samples, out = ".", format, gl;
+  io::PrintSizeText print;  // --figure-width, --font-size, --dpi
 };
 
 // The option a physics::InvalidInput's field came from.
@@ -65,9 +68,11 @@ struct OutputFile {
 };
 
 #ifdef EPVIZ_HAVE_RENDER
-OutputFile draw_diagram(const chart::Figure& figure, const DiagramOptions& o) {
+OutputFile draw_diagram(const chart::Figure& figure, const DiagramOptions& o,
+                        const std::optional<io::PrintSize>& print) {
   const auto format = vector::parse_figure_format(o.format);
-  const paint::ChartOptions size{.width = 1200, .height = 900, .font_px = 15.0f};
+  const paint::ChartOptions size =
+      chart_options({.width = 1200, .height = 900, .font_px = 15.0f}, print);
   OutputFile file{fs::path(o.out) / vector::figure_file_name(figure.file_name, format), {}};
   if (format == vector::FigureFormat::png) {
     const auto image = paint::paint_figure(*render::GlChoice(o.gl).open(), figure, size);
@@ -83,6 +88,7 @@ OutputFile draw_diagram(const chart::Figure& figure, const DiagramOptions& o) {
 int run_diagram(const DiagramOptions& o) {
   // Every option is checked before the searches, which take seconds.
   physics::DiagramRequest request = diagram_request(o);
+  const auto print = io::parse_print_size(o.print);
 #ifdef EPVIZ_HAVE_RENDER
   (void)vector::parse_figure_format(o.format);
   (void)render::GlChoice(o.gl);
@@ -100,8 +106,9 @@ int run_diagram(const DiagramOptions& o) {
   std::vector<OutputFile> files{{out / "diagram.csv", critical_curves_csv(diagram)},
                                 {out / "sampled.csv", sampled_values_csv(diagram)}};
 #ifdef EPVIZ_HAVE_RENDER
-  files.push_back(draw_diagram(diagram_figure(request, diagram), o));
+  files.push_back(draw_diagram(diagram_figure(request, diagram), o, print));
 #else
+  (void)print;
   std::fprintf(stderr, "epviz diagram: no figure (this epviz was built without the renderer)\n");
 #endif
   for (const auto& f : files) io::write_file_atomically(f.path, f.bytes);
@@ -144,6 +151,7 @@ std::function<int()> add_diagram_command(cli::Command app) {
                  "the figure's file: png (GL), svg or pdf (cairo, vector; no GL needed) "
                  "(default png)");
   add_gl_option(cmd, o->gl, "for the PNG");
+  add_print_options(cmd, o->print);
   return [o] { return run_diagram(*o); };
 }
 

@@ -7,6 +7,7 @@
 
 #include "app/gl_option.hpp"
 #include "app/h5_output.hpp"
+#include "app/print_options.hpp"
 #include "app/section_command.hpp"
 #include "h5/columns_file.hpp"
 #include "h5/json_rows.hpp"
@@ -39,6 +40,7 @@ using Json = nlohmann::json;
 struct MergeOptions {
   std::string dir, out, gl, format, resubmit;
   std::vector<std::string> atlases;
+  io::PrintSizeText print;  // --figure-width, --font-size, --dpi
   bool allow_unconverged = false;
   bool h5 = false;
 };
@@ -60,6 +62,9 @@ std::vector<std::string> merge_command_line(const MergeOptions& o) {
   if (!o.out.empty()) c.insert(c.end(), {"--out", absolute(o.out)});
   for (const auto& a : o.atlases) c.insert(c.end(), {"--atlas", a});
   if (!o.format.empty()) c.insert(c.end(), {"--format", o.format});
+  if (!o.print.width.empty()) c.insert(c.end(), {"--figure-width", o.print.width});
+  if (!o.print.font.empty()) c.insert(c.end(), {"--font-size", o.print.font});
+  if (!o.print.dpi.empty()) c.insert(c.end(), {"--dpi", o.print.dpi});
   if (!o.gl.empty()) c.insert(c.end(), {"--gl", o.gl});
   if (o.allow_unconverged) c.push_back("--allow-unconverged");
   if (o.h5) c.push_back("--h5");
@@ -72,9 +77,10 @@ void write_sweep_figures(const std::vector<chart::Figure>& figures, const char* 
                          const fs::path& out_dir, const MergeOptions& o) {
   if (figures.empty()) return;
 #ifdef EPVIZ_HAVE_RENDER
-  paint::ChartOptions options;
-  options.width = 1280;
-  options.height = 900;
+  // At a printed size a heat map is the width asked and as tall as its rows'
+  // labels need, not this aspect's height.
+  const paint::ChartOptions options =
+      chart_options({.width = 1280, .height = 900}, io::parse_print_size(o.print));
   for (const auto& path : vector::write_figures(
            figures, out_dir, vector::parse_figure_format(o.format), o.gl, options))
     std::printf("  %s %s\n", what, path.string().c_str());
@@ -235,6 +241,7 @@ int run_merge(const MergeOptions& o) {
   (void)vector::parse_figure_format(o.format);
 #endif
   for (const auto& a : o.atlases) (void)sweep::parse_atlas_option(a);
+  (void)io::parse_print_size(o.print);
   const fs::path dir = o.dir;
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
@@ -284,6 +291,8 @@ int run_merge(const MergeOptions& o) {
     else if (batches[i].kind == "section")
       sections[i] = section::read_section_shards(batches[i], dir, out_dir);
   require_separate_merge_files(batches, dir, out_dir, o, sections);
+  for (const auto& s : sections)
+    if (s) check_merged_section(*s, o.print);  // with the section files' own sizes
   // Every atlas is checked against its rows before anything is written.
   for (std::size_t i = 0; i < batches.size(); ++i)
     if (batches[i].kind == "sweep")
@@ -297,7 +306,8 @@ int run_merge(const MergeOptions& o) {
       unconverged += !merge_sweep(batches[i], rows[i], out_dir, o);
     else if (sections[i])
       write_merged_section(*sections[i], o.gl,
-                           o.h5 ? h5_beside(sections[i]->job.csv).string() : std::string());
+                           o.h5 ? h5_beside(sections[i]->job.csv).string() : std::string(),
+                           o.print);
     else
       merge_render(batches[i], dir, out_dir);
   }
@@ -330,6 +340,7 @@ std::function<int()> add_merge_command(cli::Command app) {
   cmd.add_option("--format", o->format,
                  "the atlases' files: png (GL), svg or pdf (cairo, vector; no GL needed) "
                  "(default png)");
+  add_print_options(cmd, o->print);  // the atlases', and over a section file's keys
   cmd.add_flag("--h5", o->h5,
                "also write each merged sweep's rows and section's crossings as HDF5 beside "
                "them (NAME.jsonl, NAME.csv -> NAME.h5), as sweep and section --h5 do");

@@ -12,6 +12,7 @@
 #include "app/cli_values.hpp"
 #include "app/gl_option.hpp"
 #include "app/h5_output.hpp"
+#include "app/print_options.hpp"
 #include "h5/columns_file.hpp"
 #include "io/atomic_file.hpp"
 #include "io/bad_input.hpp"
@@ -37,21 +38,30 @@ namespace {
 
 struct SectionOptions {
   std::string file, out, jobs, gl, shard, shard_count, h5;  // the section file, --out, -j, ...
+  io::PrintSizeText print;                                  // --figure-width, --font-size, --dpi
 };
+
+// The pictures' printed size: the command line's options over the file's keys.
+std::optional<io::PrintSize> section_print_size(const section::SectionJob& job,
+                                                const io::PrintSizeText& command_line) {
+  return print_size_over(command_line, job.print, section::print_key_names(job));
+}
 
 // One chart per method, side by side on the same axes when there are several;
 // the charts are built only when the file asks for a picture.
 void draw(const section::SectionJob& job, const std::vector<section::OrbitResult>& results,
-          const std::string& gl) {
+          const std::string& gl, const std::optional<io::PrintSize>& print) {
   if (job.png.empty() && job.svg.empty() && job.pdf.empty()) return;
   for (const auto& w : section::fold_warnings(job, results))
     std::fprintf(stderr, "%s\n", w.c_str());
 #ifdef EPVIZ_HAVE_RENDER
   auto charts = section::section_charts(job, results);
   const bool one = charts.size() == 1;
-  const paint::ChartOptions size{
-      .width = one ? 1100 : 760, .height = one ? 1000 : 720, .font_px = one ? 15.0f : 13.0f};
-  constexpr int kGap = 16;
+  // At a printed size the whole row of panels is the width asked.
+  const int gap = panel_gap(16, print);
+  const paint::ChartOptions size = chart_options(
+      {.width = one ? 1100 : 760, .height = one ? 1000 : 720, .font_px = one ? 15.0f : 13.0f},
+      print, int(charts.size()), gap);
   std::vector<chart::Figure> panels;
   for (auto& c : charts) panels.push_back({job.png, std::move(c)});
   if (!job.png.empty()) {
@@ -59,16 +69,16 @@ void draw(const section::SectionJob& job, const std::vector<section::OrbitResult
         paint::paint_drawing(*render::GlChoice(gl).open(), size, [&](const paint::ChartFont& font) {
           std::vector<paint::FigureDrawing> drawings;
           for (const auto& p : panels) drawings.push_back(paint::draw_figure(p, size, font));
-          return paint::side_by_side(drawings, kGap);
+          return paint::side_by_side(drawings, gap);
         });
     io::write_png_rgba(job.png, image.width, image.height, image.pixels);
   }
   if (!job.svg.empty())
-    vector::write_vector_panels(job.svg, panels, vector::FigureFormat::svg, size, kGap);
+    vector::write_vector_panels(job.svg, panels, vector::FigureFormat::svg, size, gap);
   if (!job.pdf.empty())
-    vector::write_vector_panels(job.pdf, panels, vector::FigureFormat::pdf, size, kGap);
+    vector::write_vector_panels(job.pdf, panels, vector::FigureFormat::pdf, size, gap);
 #else
-  (void)results, (void)gl;
+  (void)results, (void)gl, (void)print;
   throw io::BadInput(job.file +
                      ": keys 'png', 'svg', 'pdf': this epviz was built without the renderer");
 #endif
@@ -108,6 +118,7 @@ int run_section(const SectionOptions& o) {
   (void)render::GlChoice(o.gl);  // an unknown backend is refused before the CSV is written
 #endif
   if (!o.out.empty()) job.csv = o.out;
+  const auto print = section_print_size(job, o.print);
   h5::check_h5_output("--h5", o.h5);
   section::check_outputs(job, o.out.empty() ? "" : "--out", {{"--h5", o.h5}});
   const auto starts = section::section_starts(job);
@@ -122,7 +133,7 @@ int run_section(const SectionOptions& o) {
         "--h5: a shard writes only its crossings' CSV; give --h5 to the whole section instead");
   if (shard) part = section::plan_section_shard(job, runs, *shard, o.jobs);
 #ifndef EPVIZ_HAVE_RENDER
-  if (!part) draw(job, {}, o.gl);  // refuses pictures before any work
+  if (!part) draw(job, {}, o.gl, print);  // refuses pictures before any work
 #endif
   // As simulate and render: SIGINT and SIGTERM remove the temporaries being
   // written, and those a run killed with SIGKILL left are removed now.
@@ -165,7 +176,7 @@ int run_section(const SectionOptions& o) {
     section::write_crossings_csv(job, results);
     if (!o.h5.empty())
       write_section_h5(o.h5, job, results, {{"summary", done}, {"seconds", seconds}});
-    draw(job, results, o.gl);
+    draw(job, results, o.gl, print);
   }
   std::fprintf(job.csv == "-" ? stderr : stdout, "%s: %s in %.2f s (%d threads)\n", o.file.c_str(),
                done.c_str(), seconds, threads);
@@ -174,14 +185,18 @@ int run_section(const SectionOptions& o) {
 
 }  // namespace
 
+void check_merged_section(const section::MergedSection& merged, const io::PrintSizeText& print) {
+  (void)section_print_size(merged.job, print);
+}
+
 void write_merged_section(const section::MergedSection& merged, const std::string& gl,
-                          const std::string& h5) {
+                          const std::string& h5, const io::PrintSizeText& print) {
   io::write_file_atomically(merged.job.csv, merged.csv_text);
   if (!h5.empty()) {
     write_section_h5(h5, merged.job, merged.results, nlohmann::json::object());
     std::printf("section %s: crossings -> %s\n", merged.job.file.c_str(), h5.c_str());
   }
-  draw(merged.job, merged.results, gl);
+  draw(merged.job, merged.results, gl, section_print_size(merged.job, print));
   std::printf("section %s: %zu runs -> %s\n", merged.job.file.c_str(), merged.results.size(),
               merged.job.csv.c_str());
 }
@@ -207,6 +222,7 @@ std::function<int()> add_section_command(cli::Command app) {
                  "`epviz merge` joins the shards and draws the pictures");
   cmd.add_option("--shard-count", o->shard_count,
                  "N: the number of shards when the environment gives only the index");
+  add_print_options(cmd, o->print);  // over the file's "figure_width", "font_size", "dpi"
   return [o] {
     o->file = job::job_file_named(o->file, job::shipped_jobs_dir(), job::ShippedKind::section);
     return run_section(*o);

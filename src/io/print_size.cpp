@@ -35,8 +35,8 @@ double parse_length_pt(const std::string& option, const std::string& text) {
     const char* name;
     double pt;
   };
-  static constexpr Unit units[] = {{"mm", 72.0 / 25.4}, {"cm", 720.0 / 25.4}, {"in", 72.0},
-                                   {"pt", 1.0}};
+  static constexpr Unit units[] = {
+      {"mm", 72.0 / 25.4}, {"cm", 720.0 / 25.4}, {"in", 72.0}, {"pt", 1.0}};
   for (const auto& u : units) {
     const std::string suffix = u.name;
     if (text.size() <= suffix.size() || text.compare(text.size() - 2, 2, suffix) != 0) continue;
@@ -46,7 +46,12 @@ double parse_length_pt(const std::string& option, const std::string& text) {
     } catch (const BadInput&) {
       break;
     }
-    return in_range(option, text, number * u.pt, kMinFigureWidthPt, kMaxFigureWidthPt, "pt");
+    const double pt = number * u.pt;
+    if (!(pt >= kMinFigureWidthPt && pt <= kMaxFigureWidthPt))
+      throw BadInput(option + ": '" + printable(text) + "' is outside 1in to 20in (" +
+                     number_text(kMinFigureWidthPt) + "pt to " + number_text(kMaxFigureWidthPt) +
+                     "pt)");
+    return pt;
   }
   throw BadInput(option + ": expected a length such as 85mm, 8.5cm, 3.5in or 241pt, got '" +
                  printable(text) + "'");
@@ -65,7 +70,8 @@ std::optional<PrintSize> parse_print_size(const PrintSizeText& text,
                                           const std::string& font_option,
                                           const std::string& dpi_option) {
   if (text.width.empty()) {
-    for (const auto& [given, option] : {std::pair{&text.font, &font_option}, {&text.dpi, &dpi_option}})
+    for (const auto& [given, option] :
+         {std::pair{&text.font, &font_option}, {&text.dpi, &dpi_option}})
       if (!given->empty())
         throw BadInput(*option + ": applies to a figure of a printed size; give " + width_option +
                        " too");
@@ -75,6 +81,12 @@ std::optional<PrintSize> parse_print_size(const PrintSizeText& text,
   size.width_pt = parse_length_pt(width_option, text.width);
   if (!text.font.empty()) size.font_pt = parse_font_pt(font_option, text.font);
   if (!text.dpi.empty()) size.dpi = parse_dpi(dpi_option, text.dpi);
+  // A PNG wider than GL draws (and than memory allows at 20 in and 1200 dpi).
+  if (size.width_units() > kMaxWidthUnits)
+    throw BadInput((text.dpi.empty() ? width_option : dpi_option) + ": " + printable(text.width) +
+                   " at " + number_text(size.dpi) + " dpi is " +
+                   std::to_string(size.width_units()) + " pixels wide; at most " +
+                   std::to_string(kMaxWidthUnits) + " (a lower dpi or a narrower figure)");
   return size;
 }
 

@@ -30,6 +30,8 @@ inline constexpr double kMinFontPt = 5.0;
 inline constexpr double kMaxFontPt = 24.0;
 inline constexpr double kMinDpi = 72.0;
 inline constexpr double kMaxDpi = 1200.0;
+// The most units (PNG pixels) a figure's width may come to: width x dpi.
+inline constexpr int kMaxWidthUnits = 16384;
 
 // "85mm", "8.5cm", "3.5in", "241pt" (a number and its unit, no space) in
 // points, from 1 to 20 inches; anything else throws io::BadInput naming
@@ -42,7 +44,8 @@ double parse_dpi(const std::string& option, const std::string& text);
 
 // The three options as a command line gives them ("" where not given): none
 // given is no print size (a screen figure); a font size or dpi without a
-// width is refused naming --figure-width.
+// width is refused naming --figure-width, and so is a width that comes to
+// more than kMaxWidthUnits at the dpi (naming --dpi where one is given).
 struct PrintSizeText {
   std::string width, font, dpi;
 };

@@ -159,11 +159,21 @@ std::vector<LegendRow> legend_rows(const ChartSpec& spec) {
     }
   return rows;
 }
-float legend_height(const std::vector<LegendRow>& rows, float line, float font_px) {
-  float h = font_px * 0.8f;
-  for (const auto& r : rows) h += line * (r.gap_before ? 1.5f : 1.0f);
+// A legend row's name in lines: one, or wrapped to `name_width` when that is > 0.
+std::vector<std::string> name_lines(const LegendRow& row, const ChartFont& font, float name_width) {
+  if (name_width > 0.0f) return wrap_text(row.name, font, name_width);
+  return {row.name};
+}
+float legend_height(const std::vector<LegendRow>& rows, float line, const ChartFont& font,
+                    float name_width = 0.0f) {
+  float h = font.px * 0.8f;
+  for (const auto& r : rows)
+    h += line * (float(std::max<std::size_t>(1, name_lines(r, font, name_width).size())) +
+                 (r.gap_before ? 0.5f : 0.0f));
   return h;
 }
+// The legend's width besides its names: the line sample and the padding.
+float legend_frame_width(float font_px) { return font_px * 4.4f; }
 
 // Counts drawn points of the chart (vertices and samples along segments) inside a box.
 int points_inside(const ChartSpec& spec, const ChartLayout& l, const Viewport& box) {
@@ -283,8 +293,8 @@ ChartLayout chart_layout(const ChartSpec& spec, int width, int height, const Cha
   const auto rows = legend_rows(spec);
   float widest_name = 0.0f;
   for (const auto& r : rows) widest_name = std::max(widest_name, font.width(r.name));
-  const int legend_w = int(std::ceil(font_px * 3.6f + widest_name + font_px * 0.8f));
-  const int legend_h = int(std::ceil(legend_height(rows, line, font_px)));
+  const int legend_w = int(std::ceil(legend_frame_width(font_px) + widest_name));
+  const int legend_h = int(std::ceil(legend_height(rows, line, font)));
   l.plot_area = {left, top, width - left - right, height - top - bottom};
   if (spec.series.empty()) return l;
 
@@ -303,11 +313,24 @@ ChartLayout chart_layout(const ChartSpec& spec, int width, int height, const Cha
         l.legend = c;
         return l;
       }
-  // No free corner: the legend goes right of the plot, which narrows.
-  right = std::max(right, legend_w + pad * 2);
-  l.plot_area = {left, top, width - left - right, height - top - bottom};
-  l.legend = {l.plot_area.x + l.plot_area.width + pad, l.plot_area.y, legend_w, legend_h};
+  // No free corner: the legend goes right of the plot, which narrows; but
+  // not to under half the picture (a column's width at a printed size),
+  // where it goes under the x label instead, its names wrapped to the width.
   l.legend_outside = true;
+  const int beside_right = std::max(right, legend_w + pad * 2);
+  if (width - left - beside_right >= width / 2) {
+    l.plot_area = {left, top, width - left - beside_right, height - top - bottom};
+    l.legend = {l.plot_area.x + l.plot_area.width + pad, l.plot_area.y, legend_w, legend_h};
+    return l;
+  }
+  l.legend_below = true;
+  const int below_w = std::min(legend_w, width - left - right);
+  l.legend_name_width = float(below_w) - legend_frame_width(font_px);
+  const int below_h = int(std::ceil(legend_height(rows, line, font, l.legend_name_width)));
+  const int gap = pad;
+  l.plot_area = {left, top, width - left - right,
+                 std::max(1, height - top - bottom - below_h - gap)};
+  l.legend = {left, l.plot_area.y + l.plot_area.height + bottom + gap, below_w, below_h};
   return l;
 }
 
@@ -320,7 +343,11 @@ FigureDrawing draw_chart(const ChartSpec& spec, const ChartOptions& requested,
   const float font_px = font.px;
   ChartLayout l = chart_layout(spec, options.width, options.height, font);
   const int legend_bottom = l.legend.y + l.legend.height + int(font_px);
-  if (l.legend_outside && legend_bottom > options.height) {
+  if (l.legend_below) {
+    // The plot keeps the height it would have had without the legend.
+    options.height += l.legend.height + int(font_px * 0.6f) + int(font_px);
+    l = chart_layout(spec, options.width, options.height, font);
+  } else if (l.legend_outside && legend_bottom > options.height) {
     options.height = legend_bottom;
     l = chart_layout(spec, options.width, options.height, font);
   }
@@ -329,6 +356,7 @@ FigureDrawing draw_chart(const ChartSpec& spec, const ChartOptions& requested,
   const float line = font_px * 1.35f;
   const float tick = std::max(4.0f, font_px * 0.45f);
   const float stroke = std::max(1.5f, font_px * 0.14f);
+  const float thin = options.thin_line;  // grid, ticks, frames
 
   DrawList axes;
   const float x0 = float(a.x), x1 = float(a.x + a.width), y0 = float(a.y),
@@ -344,24 +372,24 @@ FigureDrawing draw_chart(const ChartSpec& spec, const ChartOptions& requested,
   for (const auto& t : axis_ticks(l.range.x_min, l.range.x_max, l.log_x, max_x_labels)) {
     const float x = px_x(t.at);
     if (x < x0 - 0.5f || x > x1 + 0.5f) continue;
-    axes.add_line({x, y0, 0}, {x, y1, 0}, t.major ? kGrid : kGridMinor, 1.0f);
+    axes.add_line({x, y0, 0}, {x, y1, 0}, t.major ? kGrid : kGridMinor, thin);
     const float len = t.major ? tick : tick * 0.55f;
-    axes.add_line({x, y1, 0}, {x, y1 - len, 0}, kFrame, 1.0f);
-    axes.add_line({x, y0, 0}, {x, y0 + len, 0}, kFrame, 1.0f);
+    axes.add_line({x, y1, 0}, {x, y1 - len, 0}, kFrame, thin);
+    axes.add_line({x, y0, 0}, {x, y0 + len, 0}, kFrame, thin);
     if (!t.label.empty()) axes.add_text(label({x, y1 + font_px * 0.45f}, t.label, TextAnchor::top));
   }
   for (const auto& t : axis_ticks(l.range.y_min, l.range.y_max, l.log_y, max_y_labels)) {
     const float y = px_y(t.at);
     if (y < y0 - 0.5f || y > y1 + 0.5f) continue;
-    axes.add_line({x0, y, 0}, {x1, y, 0}, t.major ? kGrid : kGridMinor, 1.0f);
+    axes.add_line({x0, y, 0}, {x1, y, 0}, t.major ? kGrid : kGridMinor, thin);
     const float len = t.major ? tick : tick * 0.55f;
-    axes.add_line({x0, y, 0}, {x0 + len, y, 0}, kFrame, 1.0f);
-    axes.add_line({x1, y, 0}, {x1 - len, y, 0}, kFrame, 1.0f);
+    axes.add_line({x0, y, 0}, {x0 + len, y, 0}, kFrame, thin);
+    axes.add_line({x1, y, 0}, {x1 - len, y, 0}, kFrame, thin);
     if (!t.label.empty())
       axes.add_text(label({x0 - font_px * 0.45f, y}, t.label, TextAnchor::right));
   }
   const std::vector<glm::vec3> frame{{x0, y0, 0}, {x1, y0, 0}, {x1, y1, 0}, {x0, y1, 0}};
-  axes.add_polyline(frame, kFrame, 1.25f, true);
+  axes.add_polyline(frame, kFrame, 1.25f * thin, true);
   if (!spec.title.empty())
     axes.add_text(
         label({float(options.width) * 0.5f, font_px * 0.6f}, spec.title, TextAnchor::top));
@@ -423,20 +451,25 @@ FigureDrawing draw_chart(const ChartSpec& spec, const ChartOptions& requested,
                                      {float(b.x + b.width), float(b.y), 0},
                                      {float(b.x + b.width), float(b.y + b.height), 0},
                                      {float(b.x), float(b.y + b.height), 0}};
-    legend.add_polyline(box, {0.0f, 0.0f, 0.0f, 0.5f}, 1.0f, true);  // 3:1 on paper, for print
+    legend.add_polyline(box, {0.0f, 0.0f, 0.0f, 0.5f}, thin, true);  // 3:1 on paper, for print
     float top = float(b.y) + font_px * 0.4f;
     const glm::vec4 grey{0.45f, 0.45f, 0.47f, 1.0f};  // marker-only rows: the shape, no colour
     for (const auto& r : legend_rows(spec)) {
       if (r.gap_before) top += line * 0.5f;
       const float cy = top + line * 0.5f;
-      top += line;
+      const auto names = name_lines(r, font, l.legend_name_width);
       const float lx0 = float(b.x) + font_px * 0.6f, lx1 = lx0 + font_px * 2.4f;
       const glm::vec4 colour = r.colour >= 0 ? series_colour(std::size_t(r.colour)) : grey;
       if (r.line) legend.add_line({lx0, cy, 0}, {lx1, cy, 0}, colour, stroke);
       if (r.marker >= 0)
         add_shape(legend, {(lx0 + lx1) * 0.5f, cy}, series_marker(std::size_t(r.marker)),
                   marker_look(r.marker_size, font_px), colour);
-      legend.add_text(label({lx1 + font_px * 0.6f, cy}, r.name, TextAnchor::left));
+      // A wrapped name's further lines under its first, beside nothing.
+      for (const auto& name : names) {
+        legend.add_text(label({lx1 + font_px * 0.6f, top + line * 0.5f}, name, TextAnchor::left));
+        top += line;
+      }
+      if (names.empty()) top += line;
     }
     drawing.layers.push_back({std::move(legend), std::nullopt});
   }

@@ -36,8 +36,10 @@ struct ChartLayout {
   render::DataRange range;
   bool log_x = false;
   bool log_y = false;
-  bool legend_outside = false;  // the legend sits right of the plot
-  render::Viewport legend;      // the legend's box in image pixels
+  bool legend_outside = false;     // the legend sits right of the plot, or under it:
+  bool legend_below = false;       // a narrow picture (a printed column) puts it under the x label
+  render::Viewport legend;         // the legend's box in image pixels
+  float legend_name_width = 0.0f;  // > 0: the legend's names wrap to lines this wide
   // Image pixel of a data point (given unlogged); NaN for points a log axis cannot show.
   glm::vec2 to_pixel(double x, double y) const;
 };
@@ -46,7 +48,7 @@ ChartLayout chart_layout(const ChartSpec& spec, int width, int height, const Cha
 
 // Renders a chart (draw_chart in figure_drawing.hpp) with GL; `context` must be
 // current (any size). The picture grows downwards when a legend beside the
-// plot is taller than it.
+// plot is taller than it, or by the legend's height when it goes under the plot.
 render::RgbaImage paint_chart(render::GlContext& context, const ChartSpec& spec,
                               const ChartOptions& options = {});
 

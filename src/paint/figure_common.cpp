@@ -133,6 +133,94 @@ void draw_axes_in_print(const render::Panel2D& plot, render::DrawList& list,
   }
 }
 
+namespace {
+
+// `word` cut into pieces no wider than `max_width`, each at least one
+// character (a UTF-8 sequence is never split).
+std::vector<std::string> break_characters(const std::string& word, const ChartFont& font,
+                                          float max_width) {
+  std::vector<std::string> pieces;
+  std::string piece;
+  for (std::size_t i = 0; i < word.size();) {
+    std::size_t n = 1;
+    while (i + n < word.size() && (static_cast<unsigned char>(word[i + n]) & 0xC0) == 0x80) ++n;
+    const std::string ch = word.substr(i, n);
+    if (!piece.empty() && font.width(piece + ch) > max_width) {
+      pieces.push_back(piece);
+      piece.clear();
+    }
+    piece += ch;
+    i += n;
+  }
+  if (!piece.empty()) pieces.push_back(piece);
+  return pieces;
+}
+
+// `word` cut after its soft breaks into pieces no wider than `max_width`,
+// joined again where they fit; a piece too wide alone broken between characters.
+std::vector<std::string> break_word(const std::string& word, const ChartFont& font,
+                                    float max_width) {
+  std::vector<std::string> soft;
+  std::string piece;
+  for (char c : word) {
+    piece += c;
+    if (is_soft_break(c)) {
+      soft.push_back(piece);
+      piece.clear();
+    }
+  }
+  if (!piece.empty()) soft.push_back(piece);
+  std::vector<std::string> pieces;
+  std::string current;
+  for (const auto& s : soft) {
+    if (font.width(current + s) <= max_width) {
+      current += s;
+      continue;
+    }
+    if (!current.empty()) pieces.push_back(current);
+    current.clear();
+    auto chars = break_characters(s, font, max_width);
+    current = chars.back();
+    chars.pop_back();
+    pieces.insert(pieces.end(), chars.begin(), chars.end());
+  }
+  if (!current.empty()) pieces.push_back(current);
+  return pieces;
+}
+
+}  // namespace
+
+bool is_soft_break(char c) { return c == '_' || c == '-' || c == '+' || c == ',' || c == '/'; }
+
+std::vector<std::string> wrap_text(const std::string& text, const ChartFont& font,
+                                   float max_width) {
+  if (text.empty()) return {};
+  if (font.width(text) <= max_width) return {text};
+  std::vector<std::string> lines;
+  std::string current;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t space = text.find(' ', start);
+    const std::string word =
+        text.substr(start, space == std::string::npos ? std::string::npos : space - start);
+    start = space == std::string::npos ? text.size() + 1 : space + 1;
+    if (word.empty()) continue;
+    const std::string joined = current.empty() ? word : current + " " + word;
+    if (font.width(joined) <= max_width) {
+      current = joined;
+      continue;
+    }
+    if (!current.empty()) lines.push_back(current);
+    current.clear();
+    auto pieces = break_word(word, font, max_width);
+    current = pieces.back();
+    pieces.pop_back();
+    lines.insert(lines.end(), pieces.begin(), pieces.end());
+  }
+  if (!current.empty()) lines.push_back(current);
+  return lines;
+}
+
 render::TextLabel label(glm::vec2 at, std::string text, render::TextAnchor anchor,
                         glm::vec4 colour) {
   render::TextLabel l;

@@ -33,6 +33,18 @@ struct ChartOptions {
   // size that follows the picture's height.
   bool builtin_font = false;
   float font_px = 0.0f;  // > 0: this TTF size whatever the height
+  // Points of an SVG or PDF page per unit of the layout: 1 draws a unit per
+  // point (the page as many points as the PNG has pixels); a figure of a
+  // printed size (io/print_size.hpp) lays out in 1/dpi inch and sets 72/dpi,
+  // so that the page is as wide as asked and its text the size asked.
+  double page_pt_per_unit = 1.0;
+  // The width of the thinnest lines (grid, ticks, frames, rules) in units:
+  // a pixel on screen; at a printed size half a point, so that they show in print.
+  float thin_line = 1.0f;
+  // A heat map as tall as its grid needs for a line of text per row (every
+  // row named, each cell's value legible) rather than the height above: a
+  // figure at a printed size, whose height follows its width.
+  bool grid_rows_of_text = false;
 };
 
 // The font size the painters use for a picture of this height.
@@ -97,5 +109,14 @@ void draw_axes_in_print(const render::Panel2D& plot, render::DrawList& list,
 
 render::TextLabel label(glm::vec2 at, std::string text, render::TextAnchor anchor,
                         glm::vec4 colour = kInk);
+
+// Characters a long word may be broken after: "_", "-", "+", ",", "/".
+bool is_soft_break(char c);
+// `text` in lines no wider than `max_width` as `font` measures them, broken
+// at spaces, and a word wider than a line after one of its soft breaks
+// (is_soft_break), else between its characters (a narrow figure at a
+// printed size: a table's cell, a note, a legend's name).
+// One line, `text` itself, when it fits; none for "".
+std::vector<std::string> wrap_text(const std::string& text, const ChartFont& font, float max_width);
 
 }  // namespace epviz::paint

@@ -222,7 +222,34 @@ std::optional<SheetChoice> read_sheet(io::ObjectReader& r, const SectionJob& job
   return sheet;
 }
 
+// "figure_width": "85mm", "font_size": 8, "dpi": 300, checked as the
+// command line's options are (io/print_size.hpp) but named by their keys.
+void read_print_size(io::ObjectReader& r, SectionJob& job) {
+  // The numbers as text (15 digits, as typed), for the options' parsers.
+  const auto text = [](double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.15g", v);
+    return std::string(buf);
+  };
+  if (auto width = r.string("figure_width")) job.print.width = *width;
+  if (auto font = r.number("font_size")) job.print.font = text(*font);
+  if (auto dpi = r.number("dpi")) job.print.dpi = text(*dpi);
+  if (job.print.width.empty())
+    for (const char* key : {"font_size", "dpi"})
+      if (r.has(key))
+        r.fail(key, "applies to a figure of a printed size; give \"figure_width\" too");
+  const io::PrintSizeText names = print_key_names(job);
+  (void)io::parse_print_size(job.print, names.width, names.font, names.dpi);
+}
+
 }  // namespace
+
+// Named as ObjectReader names a key of the file's top level.
+io::PrintSizeText print_key_names(const SectionJob& job) {
+  static const nlohmann::json top = nlohmann::json::object();
+  const io::ObjectReader r(top, job.file);
+  return {r.where("figure_width"), r.where("font_size"), r.where("dpi")};
+}
 
 SectionRun section_run_of(long run, std::size_t starts) {
   return {std::size_t(run) / starts, std::size_t(run) % starts};
@@ -281,6 +308,7 @@ SectionJob read_section_object(const nlohmann::json& doc, const std::string& nam
   job.sheet = read_sheet(r, job);
   for (auto [key, path] : {std::pair{"png", &job.png}, {"svg", &job.svg}, {"pdf", &job.pdf}})
     if (auto given = r.string(key)) *path = *given;
+  read_print_size(r, job);
   const auto csv = r.string("csv");
   if (needs_csv && (!csv || csv->empty())) r.fail("csv", "is required: the crossings' CSV file");
   if (csv) job.csv = *csv;

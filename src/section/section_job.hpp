@@ -12,6 +12,7 @@
 
 #include "io/json_reader.hpp"
 #include "io/output_paths.hpp"
+#include "io/print_size.hpp"
 #include "physics/body.hpp"
 #include "physics/cases.hpp"
 #include "physics/level_set.hpp"
@@ -67,7 +68,11 @@ struct SectionJob {
   std::optional<SheetChoice> sheet;  // none: every crossing on one plane
   std::string csv;
   std::string png, svg, pdf;  // optional pictures of the crossings
-  std::string hash;           // of the file's parsed content: the shards of one section share it
+  // The pictures' printed size: "figure_width", "font_size", "dpi" as given
+  // ("" where not), checked when read. Kept as text so that a command's
+  // --figure-width/--font-size/--dpi can replace each one (print_key_names).
+  io::PrintSizeText print;
+  std::string hash;  // of the file's parsed content: the shards of one section share it
 };
 
 // The keys a section surface and its plot are given by, wherever one is read
@@ -87,6 +92,9 @@ std::array<sim::StateComponent, 2> read_coords(io::ObjectReader& r, sim::StateCo
 inline constexpr double kSurfaceValueLimit = 1e6;
 std::vector<std::string> state_function_names();
 std::string surface_value_range();
+
+// The keys of SectionJob::print as messages name them ("FILE: key 'dpi'").
+io::PrintSizeText print_key_names(const SectionJob& job);
 
 // Throws io::BadInput.
 SectionJob read_section_job(const std::filesystem::path& file);

@@ -130,10 +130,11 @@ std::string_view method_family(const std::string& method) {
 
 // The names of the integrals a drift series follows, as the renders and
 // atlases write them (physics/notation.hpp): marker key 0 the energy C₁, 1
-// the case's own fourth integral (K, Ω₃, ...).
-constexpr int kEnergyKey = 0, kExtraKey = 1;
+// the case's own fourth integral (K, Ω₃, ...), 2 the geometric integral |γ|².
+constexpr int kEnergyKey = 0, kExtraKey = 1, kGammaKey = 2;
 std::string integral_name(const std::string& case_name, int key) {
   if (key == kEnergyKey) return std::string(physics::symbol::energy);
+  if (key == kGammaKey) return std::string(physics::symbol::gamma_norm2);
   const auto c = physics::case_from_name(case_name);
   const std::string_view symbol = c ? physics::integral_symbol(*c) : std::string_view();
   return symbol.empty() ? "fourth integral" : std::string(symbol);
@@ -344,8 +345,9 @@ std::vector<chart::Figure> bench_figures(const std::vector<StudyRow>& rows) {
     if (r->run.rhs_evals > 0) by_evals.points.push_back({double(r->run.rhs_evals), r->error});
   }
   for (const auto* r : rows_of<DriftRow>(rows)) {
-    for (const auto& [values, key] : {std::pair{&r->series_drift_C1, kEnergyKey},
-                                      std::pair{&r->series_drift_extra, kExtraKey}}) {
+    for (const auto& [values, key] :
+         {std::pair{&r->series_drift_C1, kEnergyKey}, std::pair{&r->series_drift_extra, kExtraKey},
+          std::pair{&r->series_drift_gamma_norm2, kGammaKey}}) {
       ChartSeries s;
       s.name = series_name(r->run) + ", " + integral_name(r->run.case_name, key);
       s.colour_key = keys.colour(r->run.method);
@@ -353,6 +355,8 @@ std::vector<chart::Figure> bench_figures(const std::vector<StudyRow>& rows) {
       for (std::size_t i = 0; i < std::min(r->series_t.size(), values->size()); ++i)
         if (std::isfinite(r->series_t[i]) && std::isfinite((*values)[i]))
           s.points.push_back({r->series_t[i], std::abs((*values)[i])});
+      // A row without a series of |γ|² draws none (nor names it).
+      if (key == kGammaKey && s.points.empty()) continue;
       drift[r->run.case_name].push_back(std::move(s));
     }
   }

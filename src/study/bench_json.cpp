@@ -90,6 +90,7 @@ json to_json(const DriftRow& r) {
   j["series_t"] = series(r.series_t);
   j["series_drift_C1"] = series(r.series_drift_C1);
   j["series_drift_extra"] = series(r.series_drift_extra);
+  j["series_drift_gamma_norm2"] = series(r.series_drift_gamma_norm2);
   return j;
 }
 

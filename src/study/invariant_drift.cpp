@@ -57,6 +57,7 @@ std::vector<DriftRow> drift_study(const StudyOptions& o) {
         row.series_t.push_back(s.t);
         row.series_drift_C1.push_back(rd.energy);
         row.series_drift_extra.push_back(rd.extra.value_or(kNaN));
+        row.series_drift_gamma_norm2.push_back(rd.gamma_norm2);
       }
       rows.push_back(std::move(row));
     }

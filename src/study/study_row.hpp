@@ -71,8 +71,8 @@ struct DriftRow {
   RunRecord run;
   double budget_evals_per_time = 0.0;
   double drift_gamma_norm2 = kNaN, drift_C0 = kNaN, drift_C1 = kNaN, drift_extra = kNaN;
-  std::vector<double> series_t{}, series_drift_C1{},
-      series_drift_extra{};  // relative drift at sample times
+  std::vector<double> series_t{}, series_drift_C1{}, series_drift_extra{},
+      series_drift_gamma_norm2{};  // relative drift at sample times
 };
 
 // The cheapest accuracy setting keeping C1 and the fourth integral within target.

@@ -17,12 +17,17 @@ const std::string& title_of(const chart::Figure& figure) {
                     figure.content);
 }
 
-// The drawing (measured in `font`) as the file's bytes; `title` names it in
-// a PDF's metadata and `name` in messages.
+// The drawing (measured in `font`) as the file's bytes, `pt_per_unit`
+// points a unit; `title` names it in a PDF's metadata and `name` in messages.
 std::string drawing_bytes(const paint::FigureDrawing& drawing, const CairoFont& font,
-                          FigureFormat format, const std::string& title, const std::string& name) {
-  return page_bytes({drawing.width, drawing.height, title, name}, format,
-                    [&](cairo_t* cr) { paint_drawing(cr, drawing, font); });
+                          FigureFormat format, double pt_per_unit, const std::string& title,
+                          const std::string& name) {
+  return page_bytes({.width = drawing.width,
+                     .height = drawing.height,
+                     .title = title,
+                     .name = name,
+                     .pt_per_unit = pt_per_unit},
+                    format, [&](cairo_t* cr) { paint_drawing(cr, drawing, font); });
 }
 
 }  // namespace
@@ -33,7 +38,8 @@ std::string vector_figure_bytes(const chart::Figure& figure, FigureFormat format
     throw std::invalid_argument("vector_figure_bytes: PNG is painted with GL, not cairo");
   const CairoFont font(paint::chart_font_px(options));
   const paint::FigureDrawing drawing = paint::draw_figure(figure, options, font.chart_font());
-  return drawing_bytes(drawing, font, format, title_of(figure), figure.file_name);
+  return drawing_bytes(drawing, font, format, options.page_pt_per_unit, title_of(figure),
+                       figure.file_name);
 }
 
 void write_vector_panels(const std::filesystem::path& path,
@@ -46,8 +52,8 @@ void write_vector_panels(const std::filesystem::path& path,
   for (const auto& f : panels)
     drawings.push_back(paint::draw_figure(f, options, font.chart_font()));
   const std::string title = panels.empty() ? std::string() : title_of(panels.front());
-  io::write_file_atomically(
-      path, drawing_bytes(paint::side_by_side(drawings, gap), font, format, title, path.string()));
+  io::write_file_atomically(path, drawing_bytes(paint::side_by_side(drawings, gap), font, format,
+                                                options.page_pt_per_unit, title, path.string()));
 }
 
 void write_vector_figure(const std::filesystem::path& path, const chart::Figure& figure,

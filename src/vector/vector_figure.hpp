@@ -1,8 +1,9 @@
 #pragma once
 // Figures as vector files: a chart, heat map or table (chart/chart_spec.hpp)
 // drawn with cairo into an SVG or PDF with the same layout as the PNG the GL
-// painter makes of it (paint/figure_drawing.hpp lays out both), one unit of
-// the page per pixel of the PNG. A PDF holds its labels as text (a reader can
+// painter makes of it (paint/figure_drawing.hpp lays out both), a pixel of
+// the PNG options.page_pt_per_unit points of the page (1, or 72/dpi for a
+// figure of a printed size). A PDF holds its labels as text (a reader can
 // select and search them, the font embedded); cairo's SVG holds them as glyph
 // outlines, which look the same everywhere.
 //
