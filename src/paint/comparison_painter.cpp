@@ -186,7 +186,7 @@ std::vector<Box> draw_ghosts(
   for (std::size_t i = 0; i < c.others.size(); ++i)
     if (auto p = project(to_glm(c.others[i].current))) {
       add_diamond(flat, *p, r, to_glm(c.colours[i + 1]), to_glm(f.colours.background), px);
-      boxes.push_back(box_around(*p, glm::vec2(2.0f * r + 4.0f * px)));
+      boxes.push_back(box_around(*p, ghost_mark_size(px)));
     }
   return boxes;
 }

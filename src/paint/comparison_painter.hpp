@@ -61,6 +61,8 @@ PlaneMarksDrawn draw_paths_plane(render::DrawList& flat, const render::Panel2D& 
 // A hollow diamond of `radius` pixels, on a halo of the background's colour.
 void add_diamond(render::DrawList& flat, glm::vec2 centre, float radius, const glm::vec4& colour,
                  const glm::vec4& halo, float px);
+// The room a run's diamond takes (its halo and a gap) at this line scale.
+inline glm::vec2 ghost_mark_size(float px) { return glm::vec2(2.0f * 6.5f * px + 4.0f * px); }
 // The other runs' current points over the 3D view (image pixels): their boxes.
 std::vector<Box> draw_ghosts(
     render::DrawList& flat, const scene::Frame& f,

@@ -46,7 +46,24 @@ void add_arrow_2d(DrawList& list, glm::vec2 from, glm::vec2 dir, float length, f
   list.add_triangles(tri);
 }
 
+// The room the current point's marker takes, with a gap, at this line scale.
+glm::vec2 current_mark_size(float px) { return glm::vec2(2.0f * (5.0f * px + 3.0f * px)); }
+
 }  // namespace
+
+std::vector<Box> FramePainter::run_mark_boxes(const scene::Frame& f, const render::Camera& camera,
+                                              const render::Viewport& view, float px) {
+  std::vector<Box> boxes;
+  if (!f.layers.sphere) return boxes;
+  auto at = [&](const Eigen::Vector3f& point, glm::vec2 size) {
+    if (auto p = render::project_to_pixel(camera, view, to_glm(point)))
+      boxes.push_back(box_around(glm::vec2(*p), size));
+  };
+  at(f.current, current_mark_size(px));
+  if (f.comparison)
+    for (const auto& other : f.comparison->others) at(other.current, ghost_mark_size(px));
+  return boxes;
+}
 
 void FramePainter::add_placed_labels(DrawList& flat, const std::vector<LabelRequest>& requests,
                                      const std::vector<glm::vec4>& colours,
@@ -205,8 +222,10 @@ void FramePainter::draw_view_annotations(const scene::Frame& f, const render::Ca
   // (drawn here as diamonds), the fixed point and the centre of mass (these
   // two drawn here, on top of the body that hides them).
   if (f.layers.sphere) {
-    if (auto p = project(to_glm(f.current)))
-      obstacles.push_back(box_around(*p, glm::vec2(2.0f * (5.0f * px + 3.0f * px))));
+    if (auto p = project(to_glm(f.current))) {
+      annotations_.current_mark = box_around(*p, current_mark_size(px));
+      obstacles.push_back(*annotations_.current_mark);
+    }
     annotations_.ghosts = draw_ghosts(flat, f, project, px);
     obstacles.insert(obstacles.end(), annotations_.ghosts.begin(), annotations_.ghosts.end());
     // The sphere's outline: the circle where the lines from the eye touch it.

@@ -381,7 +381,35 @@ Box FramePainter::info_window_box(const scene::Frame& f, const scene::FrameLayou
       layout.overlay_in_column && !layout.overlay_area
           ? glm::vec2(float(where.x + where.width) - 6 * px - size.x, float(where.y) + 6 * px)
           : glm::vec2(float(where.x) + 6 * px, float(where.y) + 6 * px);
-  return {top_left, top_left + size};
+  const bool floating = layout.view_3d && !layout.overlay_in_column && !layout.overlay_area;
+  if (!floating) return {top_left, top_left + size};
+  // Floating over the 3D view (small pictures): at the view's left edge (else
+  // its right), as high as it can be without covering a run's current point; above
+  // the trail's key and a single run's horizon note at the bottom. Where no
+  // place is clear, the one that covers least.
+  const render::Viewport view = to_viewport(*layout.view_3d);
+  const auto marks = run_mark_boxes(f, camera_for(f, view), view, px);
+  auto covered = [&](glm::vec2 at) {
+    float area = 0.0f;
+    for (const Box& m : marks) area += Box{at, at + size}.overlap_area(m);
+    return area;
+  };
+  const float line = gui().label_font_px() * 1.45f;
+  const float lowest = std::max(
+      top_left.y, float(where.y + where.height) - 6 * px - size.y -
+                      float(2 + horizon_note_rows(f)) * std::max(line, horizon_note_line(px)));
+  const float right_x = float(where.x + where.width) - 6 * px - size.x;
+  glm::vec2 best = top_left;
+  float least = covered(top_left);
+  // The left edge first (the window's usual place; the key of the marks
+  // holds the top right), then the right.
+  for (const float x : {top_left.x, right_x})
+    for (float y = top_left.y; y <= lowest && least > 0.0f; y += 2 * px)
+      if (const float c = covered({x, y}); c < least) {
+        least = c;
+        best = {x, y};
+      }
+  return {best, best + size};
 }
 
 void FramePainter::draw_info_window(const scene::Frame& f, const scene::FrameLayout& layout,

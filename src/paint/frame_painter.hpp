@@ -72,6 +72,8 @@ struct PaintedAnnotations {
   std::optional<Disc> sphere;
   // The other runs' current points (diamonds) over the 3D view.
   std::vector<Box> ghosts;
+  // The (first) run's current point over the 3D view, as the labels keep clear of it.
+  std::optional<Box> current_mark;
   // The key of the marks (gravity, fixed point, centre of mass) at the 3D view's top right.
   std::optional<Box> marks_key;
   // The overlay window (title, lines, drift table), where the overlay layer is on.
@@ -129,6 +131,10 @@ class FramePainter {
   // Over the 3D view, in image pixels and after it (so never hidden by the
   // body): the fixed point and the centre of mass, the labels of the axes and
   // poles placed clear of each other, the key, the colour bar and the caption.
+  // Where each run's current point is drawn over the 3D view (the first
+  // run's, then the others'), with the room the labels leave around it.
+  static std::vector<Box> run_mark_boxes(const scene::Frame& f, const render::Camera& camera,
+                                         const render::Viewport& view, float px);
   void draw_view_annotations(const scene::Frame& f, const render::Camera& camera,
                              const render::Viewport& view, float px);
   // The time colour bar and the trail's caption along the view's bottom edge;
