@@ -172,6 +172,10 @@ float legend_height(const std::vector<LegendRow>& rows, float line, const ChartF
                  (r.gap_before ? 0.5f : 0.0f));
   return h;
 }
+// The chart's title in lines no wider than the picture, less a character each side.
+std::vector<std::string> title_lines(const ChartSpec& spec, int width, const ChartFont& font) {
+  return wrap_text(spec.title, font, float(width) - 2.0f * font.px);
+}
 // The legend's width besides its names: the line sample and the padding.
 float legend_frame_width(float font_px) { return font_px * 4.4f; }
 
@@ -278,8 +282,10 @@ ChartLayout chart_layout(const ChartSpec& spec, int width, int height, const Cha
     widest_y = std::max(widest_y, font.width(t.label));
   const float line = font_px * 1.35f;
   const int left = int(std::ceil(widest_y + font_px * 1.6f));
-  const int top = int(std::ceil(font_px * 0.8f + (spec.title.empty() ? 0.0f : line * 1.3f) +
-                                (spec.y_label.empty() ? 0.0f : line)));
+  const auto title = title_lines(spec, width, font);
+  const int top =
+      int(std::ceil(font_px * 0.8f + (title.empty() ? 0.0f : line * (float(title.size()) + 0.3f)) +
+                    (spec.y_label.empty() ? 0.0f : line)));
   const int bottom =
       int(std::ceil(font_px * 0.9f + line + (spec.x_label.empty() ? 0.0f : line * 1.1f)));
   // Room on the right for half the last x tick label, which is centred on the
@@ -390,9 +396,10 @@ FigureDrawing draw_chart(const ChartSpec& spec, const ChartOptions& requested,
   }
   const std::vector<glm::vec3> frame{{x0, y0, 0}, {x1, y0, 0}, {x1, y1, 0}, {x0, y1, 0}};
   axes.add_polyline(frame, kFrame, 1.25f * thin, true);
-  if (!spec.title.empty())
-    axes.add_text(
-        label({float(options.width) * 0.5f, font_px * 0.6f}, spec.title, TextAnchor::top));
+  const auto title = title_lines(spec, options.width, font);
+  for (std::size_t i = 0; i < title.size(); ++i)
+    axes.add_text(label({float(options.width) * 0.5f, font_px * 0.6f + line * float(i)}, title[i],
+                        TextAnchor::top));
   if (!spec.y_label.empty())
     axes.add_text(label({x0, y0 - font_px * 0.5f}, spec.y_label, TextAnchor::bottom_left));
   if (!spec.x_label.empty())
