@@ -35,6 +35,7 @@ struct ChartSeries {
   std::string name;
   std::vector<ChartPoint>
       points;  // drawn in this order; non-finite (or <= 0 on a log axis) points break the line
+               // (y <= 0 on a log y axis: marked under the plot, ChartSpec::nonpositive_label)
   // Series with the same colour key share a colour, with the same marker key a
   // marker shape (e.g. colour by method, marker by formulation); -1: by the
   // series' position in the chart.
@@ -65,6 +66,11 @@ struct ChartSpec {
   // Points the axes take in besides the series' (not drawn): charts side by
   // side share their axes by taking in each other's points.
   std::vector<ChartPoint> axis_extent;
+  // On a log y axis, points with y <= 0 (finite) have no place on it: they
+  // are marked, with their series' marker, in a row under the plot labelled
+  // this ("≤ 0" when empty), and a note under the x label counts them, so
+  // that none is dropped unsaid. (Small multiples' panels do not draw it.)
+  std::string nonpositive_label;
   // Small multiples: when given, the chart is these panels (each with its
   // title, series and legend) under this chart's title, `panel_columns` to a
   // row, every panel's axes taking in every panel's points; this chart's own

@@ -204,6 +204,22 @@ int points_inside(const ChartSpec& spec, const ChartLayout& l, const Viewport& b
   return n;
 }
 
+// Points a log y axis cannot show though their x is on its axis: finite y <= 0.
+bool off_log_y(const ChartSpec& spec, const ChartPoint& p) {
+  return spec.log_y && std::isfinite(p.y) && p.y <= 0.0 &&
+         std::isfinite(axis_value(p.x, spec.log_x));
+}
+std::size_t nonpositive_points(const ChartSpec& spec) {
+  std::size_t n = 0;
+  for (const auto& s : spec.series)
+    for (const auto& p : s.points) n += off_log_y(spec, p);
+  return n;
+}
+std::string nonpositive_label(const ChartSpec& spec) {
+  return spec.nonpositive_label.empty() ? "≤ 0" : spec.nonpositive_label;
+}
+int nonpositive_row_height(float font_px) { return int(std::ceil(font_px * 1.6f)); }
+
 }  // namespace
 
 glm::vec4 series_colour(std::size_t index) {
@@ -256,7 +272,9 @@ glm::vec2 ChartLayout::to_pixel(double x, double y) const {
           float(plot_area.y + (1.0 - fy) * plot_area.height)};
 }
 
-ChartLayout chart_layout(const ChartSpec& spec, int width, int height, const ChartFont& font) {
+namespace {
+ChartLayout chart_layout_without_row(const ChartSpec& spec, int width, int height,
+                                     const ChartFont& font) {
   const float font_px = font.px;
   ChartLayout l;
   l.log_x = spec.log_x;
@@ -275,11 +293,16 @@ ChartLayout chart_layout(const ChartSpec& spec, int width, int height, const Cha
   finish_span(sy, spec.log_y);
   l.range = {sx.lo, sx.hi, sy.lo, sy.hi};
 
+  l.nonpositive_points = nonpositive_points(spec);
   // Margins: y tick labels on the left, x tick labels and the x label below,
-  // title and the y label (written horizontally above the axis) on top.
+  // title and the y label (written horizontally above the axis) on top; and
+  // for points a log y axis cannot show, their row between the plot and the
+  // x tick labels, and a note line under the x label.
   float widest_y = 0.0f;
   for (const auto& t : axis_ticks(sy.lo, sy.hi, spec.log_y, 8))
     widest_y = std::max(widest_y, font.width(t.label));
+  const int row_h = l.nonpositive_points > 0 ? nonpositive_row_height(font_px) : 0;
+  if (row_h > 0) widest_y = std::max(widest_y, font.width(nonpositive_label(spec)));
   const float line = font_px * 1.35f;
   const int left = int(std::ceil(widest_y + font_px * 1.6f));
   const auto title = title_lines(spec, width, font);
@@ -287,7 +310,8 @@ ChartLayout chart_layout(const ChartSpec& spec, int width, int height, const Cha
       int(std::ceil(font_px * 0.8f + (title.empty() ? 0.0f : line * (float(title.size()) + 0.3f)) +
                     (spec.y_label.empty() ? 0.0f : line)));
   const int bottom =
-      int(std::ceil(font_px * 0.9f + line + (spec.x_label.empty() ? 0.0f : line * 1.1f)));
+      int(std::ceil(font_px * 0.9f + line + (spec.x_label.empty() ? 0.0f : line * 1.1f) +
+                    (row_h > 0 ? float(row_h) + line * 1.1f : 0.0f)));
   // Room on the right for half the last x tick label, which is centred on the
   // plot's right edge.
   float last_x_label = 0.0f;
@@ -340,6 +364,17 @@ ChartLayout chart_layout(const ChartSpec& spec, int width, int height, const Cha
   return l;
 }
 
+}  // namespace
+
+ChartLayout chart_layout(const ChartSpec& spec, int width, int height, const ChartFont& font) {
+  ChartLayout l = chart_layout_without_row(spec, width, height, font);
+  // The row of points off the log axis lies right under the plot, wherever the plot went.
+  if (l.nonpositive_points > 0)
+    l.nonpositive_row = {l.plot_area.x, l.plot_area.y + l.plot_area.height, l.plot_area.width,
+                         nonpositive_row_height(font.px)};
+  return l;
+}
+
 FigureDrawing draw_chart(const ChartSpec& spec, const ChartOptions& requested,
                          const ChartFont& font) {
   if (!spec.panels.empty()) return draw_small_multiples(spec, requested, font);
@@ -367,6 +402,8 @@ FigureDrawing draw_chart(const ChartSpec& spec, const ChartOptions& requested,
   DrawList axes;
   const float x0 = float(a.x), x1 = float(a.x + a.width), y0 = float(a.y),
               y1 = float(a.y + a.height);
+  // The x tick labels' line: under the row of points off a log y axis, if any.
+  const float under = y1 + float(l.nonpositive_row.height);
   auto px_x = [&](double v) {
     return float(a.x + (v - l.range.x_min) / (l.range.x_max - l.range.x_min) * a.width);
   };
@@ -382,7 +419,8 @@ FigureDrawing draw_chart(const ChartSpec& spec, const ChartOptions& requested,
     const float len = t.major ? tick : tick * 0.55f;
     axes.add_line({x, y1, 0}, {x, y1 - len, 0}, kFrame, thin);
     axes.add_line({x, y0, 0}, {x, y0 + len, 0}, kFrame, thin);
-    if (!t.label.empty()) axes.add_text(label({x, y1 + font_px * 0.45f}, t.label, TextAnchor::top));
+    if (!t.label.empty())
+      axes.add_text(label({x, under + font_px * 0.45f}, t.label, TextAnchor::top));
   }
   for (const auto& t : axis_ticks(l.range.y_min, l.range.y_max, l.log_y, max_y_labels)) {
     const float y = px_y(t.at);
@@ -404,7 +442,22 @@ FigureDrawing draw_chart(const ChartSpec& spec, const ChartOptions& requested,
     axes.add_text(label({x0, y0 - font_px * 0.5f}, spec.y_label, TextAnchor::bottom_left));
   if (!spec.x_label.empty())
     axes.add_text(
-        label({(x0 + x1) * 0.5f, y1 + font_px * 0.45f + line}, spec.x_label, TextAnchor::top));
+        label({(x0 + x1) * 0.5f, under + font_px * 0.45f + line}, spec.x_label, TextAnchor::top));
+  if (l.nonpositive_points > 0) {
+    const Viewport& r = l.nonpositive_row;
+    const float ry0 = float(r.y), ry1 = float(r.y + r.height);
+    const std::vector<glm::vec3> box{{x0, ry0, 0}, {x1, ry0, 0}, {x1, ry1, 0}, {x0, ry1, 0}};
+    axes.add_polyline(box, kFrame, thin, true);
+    axes.add_text(label({x0 - font_px * 0.45f, (ry0 + ry1) * 0.5f}, nonpositive_label(spec),
+                        TextAnchor::right));
+    const std::size_t n = l.nonpositive_points;
+    const float note_y = under + font_px * 0.45f + line * (spec.x_label.empty() ? 1.0f : 2.1f);
+    axes.add_text(label({x0, note_y},
+                        std::to_string(n) + (n == 1 ? " point" : " points") +
+                            " not on the log axis (" + nonpositive_label(spec) +
+                            "): marked in the row under the plot",
+                        TextAnchor::top_left, {0.35f, 0.35f, 0.38f, 1.0f}));
+  }
   drawing.layers.push_back({std::move(axes), std::nullopt});
 
   // Data, clipped to the plot area: lines first, then all markers on top.
@@ -444,9 +497,23 @@ FigureDrawing draw_chart(const ChartSpec& spec, const ChartOptions& requested,
       }
     }
   }
+  // Points off the log y axis: their series' marker in the row under the
+  // plot, at their x (a series drawn as a line alone gets its first shape).
+  if (l.nonpositive_points > 0) {
+    const float cy = float(l.nonpositive_row.y) + float(l.nonpositive_row.height) * 0.5f;
+    for (std::size_t i = 0; i < spec.series.size(); ++i)
+      for (const auto& p : spec.series[i].points)
+        if (off_log_y(spec, p)) {
+          const double fx =
+              (axis_value(p.x, l.log_x) - l.range.x_min) / (l.range.x_max - l.range.x_min);
+          add_shape(markers, {float(a.x + fx * a.width), cy}, marker_of(spec.series[i], i),
+                    marker_look(spec.series[i].marker_size, font_px), colour_of(spec.series[i], i));
+        }
+  }
   drawing.layers.push_back({std::move(lines), a});
-  const Viewport marker_clip =
-      a.inset(-int(marker_r) - 2, -int(marker_r) - 2, -int(marker_r) - 2, -int(marker_r) - 2);
+  // (Reaching down over the row of points off the log axis.)
+  const Viewport marker_clip = a.inset(-int(marker_r) - 2, -int(marker_r) - 2, -int(marker_r) - 2,
+                                       -int(marker_r) - 2 - l.nonpositive_row.height);
   drawing.layers.push_back({std::move(markers), marker_clip});
 
   if (!spec.series.empty()) {

@@ -40,6 +40,11 @@ struct ChartLayout {
   bool legend_below = false;       // a narrow picture (a printed column) puts it under the x label
   render::Viewport legend;         // the legend's box in image pixels
   float legend_name_width = 0.0f;  // > 0: the legend's names wrap to lines this wide
+  // Points a log y axis cannot show (finite y <= 0, x on its axis): marked in
+  // this row under the plot (height 0 when there are none), and counted in a
+  // note under the x label (ChartSpec::nonpositive_label).
+  render::Viewport nonpositive_row{0, 0, 0, 0};
+  std::size_t nonpositive_points = 0;
   // Image pixel of a data point (given unlogged); NaN for points a log axis cannot show.
   glm::vec2 to_pixel(double x, double y) const;
 };

@@ -74,6 +74,9 @@ std::optional<chart::Figure> ftle_curve_figure(const std::vector<Json>& rows,
                  io::number_text(ftle->separation, 2) + ")";
   c.y_label = "λ(T) (1/time)";
   c.log_x = c.log_y = true;
+  // A regular orbit's λ(T) may be negative at small T (neighbours first
+  // approach): those points are marked in a row of their own under the log axis.
+  c.nonpositive_label = "λ ≤ 0";
   // The guide goes through the lowest last point (the most regular orbit).
   double lowest = std::numeric_limits<double>::infinity(), lowest_t = 0.0, t_min = 0.0, t_max = 0.0;
   for (const auto& row : rows) {

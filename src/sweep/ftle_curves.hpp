@@ -16,7 +16,8 @@
 namespace epviz::sweep {
 
 // One line per row that has an `ftle_curve`, named by its axis values, on
-// log axes (λ <= 0 breaks its line there), and a dashed guide
+// log axes (λ <= 0 breaks its line there and is marked in a row "λ ≤ 0"
+// under the plot, with a note counting such points), and a dashed guide
 // c · ln T / T through the lowest line's last point. nullopt when no row has
 // a curve. The file name is "ftle_curves.png".
 // What is wrong with a row's `ftle_curve` ("" when it has none or a lawful

@@ -103,5 +103,22 @@ TEST(FtleCurve, TheChartHasALinePerPointAndTheGuide) {
   EXPECT_FALSE(ftle_curve_figure({c}, std::nullopt));
 }
 
+// A regular orbit's negative λ at small T stays in the series (the painter
+// marks it under the log axis, tests/paint/chart_nonpositive_test.cpp) and
+// the chart names that row.
+TEST(FtleCurve, NegativeLambdaIsKeptForTheRowUnderTheLogAxis) {
+  nlohmann::json a;
+  a["index"] = 0;
+  a["axes"] = {{"case", "lagrange"}};
+  a["ftle_curve"] = {{1.0, -0.16}, {2.0, -0.04}, {4.0, 0.0}, {8.0, 0.03}};
+  const auto f = ftle_curve_figure({a}, std::nullopt);
+  ASSERT_TRUE(f);
+  const auto& chart = std::get<chart::ChartSpec>(f->content);
+  int nonpositive = 0;
+  for (const auto& p : chart.series.at(0).points) nonpositive += p.y <= 0.0;
+  EXPECT_EQ(nonpositive, 3);
+  EXPECT_EQ(chart.nonpositive_label, "λ ≤ 0");
+}
+
 }  // namespace
 }  // namespace epviz::sweep
