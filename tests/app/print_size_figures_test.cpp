@@ -126,6 +126,33 @@ TEST(PrintSizeFigures, SectionPanelsSideBySideShareTheWidthAsked) {
   EXPECT_TRUE(has_word(words, "dop853")) << "the second panel's title";
 }
 
+TEST(PrintSizeFigures, MergedAtlasPdfIsAColumnWideWithPrintableText) {
+  if (!have_poppler()) GTEST_SKIP() << "no pdftotext/pdfinfo";
+  TempDir d;
+  const auto sweep = d.write("atlas.sweep.json", R"({
+    "simulation": {"case": "generic", "t_end": 5, "samples": 5, "max_drift": 0.1},
+    "axes": [{"field": "method", "values": ["rk4", "midpoint"]},
+             {"field": "step", "values": [1.0, 0.25, 0.05]},
+             {"field": "energy", "values": [1.5, 10]}],
+    "atlas": [{"metric": "largest_stable:step", "x": "energy", "y": "method"}]})");
+  fs::create_directories(d / "rows");
+  const auto s = run_epviz("sweep " + sweep.string() + " --out " +
+                               (d / "rows/rows.jsonl").string() + " --shard 0/1 --quiet",
+                           d);
+  ASSERT_EQ(s.exit_code, 0) << s.err;
+  const auto m =
+      run_epviz("merge " + (d / "rows").string() + " --format pdf --figure-width 85mm", d);
+  ASSERT_EQ(m.exit_code, 0) << m.err;
+  int pdfs = 0;
+  for (const auto& e : fs::directory_iterator(d / "rows"))
+    if (e.path().extension() == ".pdf") {
+      const auto words = expect_printed(e.path(), kColumnPt);
+      EXPECT_TRUE(has_word(words, "midpoint")) << "a row's name";
+      ++pdfs;
+    }
+  EXPECT_EQ(pdfs, 1);
+}
+
 // Each bad value: exit 2, one line naming the option and what is allowed,
 // before any work, nothing written.
 TEST(PrintSizeFigures, BadSizesAreRefusedBeforeAnyWork) {
