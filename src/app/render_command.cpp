@@ -16,7 +16,9 @@
 #include "io/bad_input.hpp"
 #include "io/frame_range.hpp"
 #include "io/json_text.hpp"
+#include "io/number_text.hpp"
 #include "io/output_paths.hpp"
+#include "io/print_size.hpp"
 #include "io/printable.hpp"
 #include "io/progress.hpp"
 #include "io/temp_name.hpp"
@@ -49,6 +51,7 @@ using job::RenderJob;
 
 struct RenderOptions {
   std::string job, out, frames, width, height, format, gl, report_json, shard, shard_count, h5;
+  io::PrintSizeText print;  // --figure-width, --font-size, --dpi
   bool resume = false, quiet = false, progress = false, list_jobs = false, help_job = false;
 };
 
@@ -59,6 +62,7 @@ struct PreparedJob {
   io::FrameRange range;
   std::string caption;                        // under every frame (gallery tiles)
   std::optional<vector::FigureFormat> still;  // --format svg|pdf: vector stills
+  std::optional<io::PrintSize> print;         // --figure-width
 };
 
 // --format svg|pdf: the frames as vector stills (vector/frame_still.hpp)
@@ -91,6 +95,21 @@ void format_option(const RenderOptions& o, std::optional<io::VideoFormat>& video
 PreparedJob prepare(RenderJob job, const RenderOptions& o) {
   if (!o.width.empty()) job.scene.width = int(parse_integer("--width", o.width, 16, 8192));
   if (!o.height.empty()) job.scene.height = int(parse_integer("--height", o.height, 16, 8192));
+  const auto print = io::parse_print_size(o.print);
+  if (print) {
+    if (!o.width.empty() || !o.height.empty())
+      throw io::BadInput(std::string(o.width.empty() ? "--height" : "--width") +
+                         ": a figure of a printed size (--figure-width) takes its pixels from "
+                         "--dpi; give one of them");
+    std::vector<sim::RunSpec> runs;
+    for (const auto& r : job::run_requests(job)) runs.push_back(r.run);
+    scene::set_printed_size(job.scene, runs, print->width_units(), print->font_units());
+    if (job.scene.width > 8192 || job.scene.height > 8192)
+      throw io::BadInput("--figure-width: at --dpi " + io::number_text(print->dpi, 6) +
+                         " the figure would be " + std::to_string(job.scene.width) + " x " +
+                         std::to_string(job.scene.height) +
+                         " pixels (at most 8192 a side); give a smaller --dpi");
+  }
   format_option(o, job.output.video);
   if (!o.out.empty()) job.output.dir = o.out;
   // Every output is checked before any work, so that nothing is written on exit 2.
@@ -110,6 +129,7 @@ PreparedJob prepare(RenderJob job, const RenderOptions& o) {
     throw io::BadInput("--resume: applies to PNG sequences only (a video is written whole)");
   PreparedJob p;
   p.still = still_format(o);
+  p.print = print;
   if (p.still && o.resume)
     throw io::BadInput("--resume: applies to PNG sequences only (--format " + o.format +
                        " writes each still whole)");
@@ -147,7 +167,9 @@ RenderStats render_frames(const PreparedJob& p, paint::FramePainter& painter,
   RenderStats stats;
   if (p.still) {
     stats.written = vector::write_frame_stills(
-        drawer, painter, p.range, {job.output.dir, job.output.name, *p.still}, progress);
+        drawer, painter, p.range,
+        {job.output.dir, job.output.name, *p.still, p.print ? p.print->pt_per_unit() : 1.0},
+        progress);
   } else {
     const paint::FrameFiles files{job.output.dir, job.output.name, job.output.video, job.scene.fps,
                                   o.resume};
@@ -239,7 +261,8 @@ int render_single(RenderJob job, const RenderOptions& o, const render::GlChoice&
     throw io::BadInput(
         "--h5: a shard draws only some frames; give --h5 to a render of the whole job instead");
   auto context = gl.open();
-  paint::FramePainter painter(*context, p.job.scene.width, p.job.scene.height);
+  paint::FramePainter painter(*context, p.job.scene.width, p.job.scene.height, {},
+                              p.job.scene.page);
   if (shard) shard::start_frame_shard(*shard);
   const auto st = render_frames(p, painter, o);
   if (shard && !st.written.failure) shard::finish_frame_shard(*shard, batch);
@@ -287,6 +310,10 @@ int render_gallery(GalleryJob g, const RenderOptions& o, const render::GlChoice&
     throw io::BadInput("--shard: a gallery renders whole jobs; shard a single job");
   if (!o.h5.empty())
     throw io::BadInput("--h5: writes one job's runs; give --h5 to a single job of the gallery");
+  if (!o.print.width.empty() || !o.print.font.empty() || !o.print.dpi.empty())
+    throw io::BadInput(
+        "--figure-width: a gallery's tiles are screen pictures; give a single job for a figure of "
+        "a printed size");
   if (!o.out.empty()) g.dir = o.out;
   // --width and --height size every tile (gallery.png, the grid video) and
   // every job's video, which is otherwise drawn at the size its job asks for.
@@ -417,6 +444,15 @@ std::function<int()> add_render_command(cli::Command app) {
   cmd.add_option("--format", o->format,
                  "png|mp4|webm|gif, or svg|pdf: vector stills of --frames (default: the last "
                  "frame)");
+  cmd.add_option("--figure-width", o->print.width,
+                 "a figure for print, this wide (85mm, 8.5cm, 3.5in, 241pt): its text at "
+                 "--font-size, its parts stacked in one column, as tall as they need; PNG "
+                 "frames at --dpi");
+  cmd.add_option("--font-size", o->print.font,
+                 "with --figure-width: the text's size in points (5 to 24; default 8)");
+  cmd.add_option("--dpi", o->print.dpi,
+                 "with --figure-width: pixels per inch of the PNG frames and of the 3D view "
+                 "embedded in an SVG or PDF (72 to 1200; default 300)");
   add_gl_option(cmd, o->gl);
   cmd.add_option("--report-json", o->report_json,
                  "write what was rendered (tolerance chosen, timings) as JSON ('-': standard "

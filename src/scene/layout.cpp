@@ -94,7 +94,10 @@ FrameLayout layout_stacked(const LayoutRequest& q, int width) {
   const int slots = column_slots(q);
   if (slots > 0) {
     const int slot_width = width / slots;
-    const PlotMargins m = plot_margins(q, slot_width);
+    PlotMargins m = plot_margins(q, slot_width);
+    // The tick labels left of a plot ("−2") take about three characters of
+    // the type asked, however narrow the slot.
+    m.left = std::max(m.left, int(std::ceil(overlay_font_px(th) * 2.6f)));
     // One plot alone is kept to two thirds of the width: a page's column
     // gains nothing from a plane as wide as the sphere's view.
     const int side = std::max(16, std::min(slot_width - m.left - m.right, width * 2 / 3));

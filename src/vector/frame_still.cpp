@@ -66,14 +66,16 @@ void paint_raster_part(cairo_t* cr, const render::RgbaImage& image, const scene:
 }  // namespace
 
 std::string frame_still_bytes(paint::FramePainter& painter, const scene::Frame& frame,
-                              FigureFormat format) {
+                              FigureFormat format, double pt_per_unit) {
   if (format == FigureFormat::png)
     throw std::invalid_argument("frame_still_bytes: PNG is painted with GL, not cairo");
   const SplitFrame split = paint_split(painter, frame);
   const int w = split.raster.width, h = split.raster.height;
   const scene::FrameLayout layout = paint::layout_for(frame, w, h);
   const CairoFont font(split.annotations.font_px);
-  return page_bytes({w, h, frame.overlay.title, frame.overlay.title}, format, [&](cairo_t* cr) {
+  PageInfo page{w, h, frame.overlay.title, frame.overlay.title};
+  page.pt_per_unit = pt_per_unit;
+  return page_bytes(page, format, [&](cairo_t* cr) {
     const glm::vec4 background = paint::to_glm(frame.colours.background);
     cairo_set_source_rgb(cr, background.r, background.g, background.b);
     cairo_paint(cr);
@@ -101,7 +103,8 @@ paint::FramesWritten write_frame_stills(paint::FrameDrawer& drawer, paint::Frame
     for (int i = range.first; i <= range.last; ++i) {
       const auto path =
           files.dir / io::frame_file_name(i, frame_count, files.name + "_", extension);
-      io::write_file_atomically(path, frame_still_bytes(painter, drawer.frame(i), files.format));
+      io::write_file_atomically(
+          path, frame_still_bytes(painter, drawer.frame(i), files.format, files.pt_per_unit));
       ++out.drawn;
       progress.advance();
     }

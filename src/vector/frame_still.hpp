@@ -23,15 +23,18 @@
 namespace epviz::vector {
 
 // The file's bytes; `format` must be svg or pdf (png throws
-// std::invalid_argument). The painter's size is the page's.
+// std::invalid_argument). The painter's size is the page's in units of
+// `pt_per_unit` points (a figure at a printed size: 72 / dpi, the 3D view
+// embedded at dpi).
 std::string frame_still_bytes(paint::FramePainter& painter, const scene::Frame& frame,
-                              FigureFormat format);
+                              FigureFormat format, double pt_per_unit = 1.0);
 
 // Where the stills go: dir/<name>_<frame>.svg or .pdf, numbered as the PNG frames are.
 struct StillFiles {
   std::filesystem::path dir;
   std::string name;
   FigureFormat format = FigureFormat::pdf;
+  double pt_per_unit = 1.0;  // frame_still_bytes
 };
 
 // Frames range.first..range.last into `files`, each written atomically (the
