@@ -126,6 +126,27 @@ std::string atlas_caption(const std::vector<const Json*>& rows, const std::strin
   } else if (metric == "ftle") {
     part("FTLE window unknown (the sweep file is gone or changed)");
   }
+  if (metric == "chaotic_share") {
+    // Orbits above the threshold that the share does not count as chaos
+    // (sweep/level_point.hpp): said, so that a map of zeros is not read as
+    // orbits that all kept a small FTLE.
+    long hyperbolic = 0, undecided = 0;
+    for (const Json* r : rows) {
+      if (const auto h = r->find("hyperbolic_orbits"); h != r->end() && h->is_number_integer())
+        hyperbolic += h->get<long>();
+      if (const auto u = r->find("undecided_orbits"); u != r->end() && u->is_number_integer())
+        undecided += u->get<long>();
+    }
+    const std::string above = "FTLE > " + io::number_text(kChaoticFtle, 4);
+    const std::string k = fourth_integral(rows);
+    if (hyperbolic > 0)
+      part(std::to_string(hyperbolic) + (hyperbolic == 1 ? " orbit" : " orbits") + " with " +
+           above + " kept " + k + ": hyperbolic, not chaotic");
+    if (undecided > 0)
+      part(std::to_string(undecided) + (undecided == 1 ? " orbit" : " orbits") + " with " + above +
+           " undecided (" + k + " not kept to " + io::number_text(kKeptIntegral, 2) +
+           "), left out of the share");
+  }
   return run;
 }
 

@@ -36,6 +36,9 @@ std::string metric_label(const std::string& metric,
 // share: one that varies is an axis), and for the ftle metric always the
 // window and separation of `ftle` (not in the rows; said to be unknown
 // without it). "T = 50, method gauss4, tol = 1e-10; FTLE window 0.5, separation 1e-08".
+// For chaotic_share it also counts the orbits above the threshold that the
+// share leaves out (sweep/level_point.hpp): hyperbolic ones, which kept the
+// case's fourth integral, and undecided ones.
 std::string atlas_caption(const std::vector<const nlohmann::json*>& rows, const std::string& metric,
                           const std::optional<FtleSettings>& ftle);
 

@@ -45,7 +45,7 @@ LevelMetrics level_metrics(const sim::RunSpec& run, const physics::Level& level,
   if (!m.admissible) return m;
   const auto states = spread_states(run.body, level, orbits);
   m.orbits = int(states.size());
-  int chaotic = 0, measured = 0;
+  int measured = 0;
   for (const auto& start : states) {
     sim::RunSpec one = run;
     one.initial = start;
@@ -67,12 +67,20 @@ LevelMetrics level_metrics(const sim::RunSpec& run, const physics::Level& level,
     }
     ++measured;
     m.largest_ftle = std::max(m.largest_ftle.value_or(-HUGE_VAL), *lambda);
-    if (*lambda > kChaoticFtle) ++chaotic;
-    if (scales && k_hi >= k_lo)
-      m.extra_integral_range =
-          std::max(m.extra_integral_range.value_or(0.0), (k_hi - k_lo) / *scales);
+    const std::optional<double> k_range =
+        scales && k_hi >= k_lo ? std::optional<double>((k_hi - k_lo) / *scales) : std::nullopt;
+    if (k_range) m.extra_integral_range = std::max(m.extra_integral_range.value_or(0.0), *k_range);
+    if (*lambda > kChaoticFtle) {
+      if (!scales)
+        ++m.chaotic;  // no fourth integral: the FTLE decides
+      else if (k_range && *k_range <= kKeptIntegral)
+        ++m.hyperbolic;  // confined by the fourth integral: not chaos
+      else
+        ++m.undecided;
+    }
   }
-  if (measured > 0) m.chaotic_share = double(chaotic) / double(measured);
+  if (const int decided = measured - m.undecided; decided > 0)
+    m.chaotic_share = double(m.chaotic) / double(decided);
   m.cpu_seconds = sim::thread_cpu_seconds() - cpu_start;
   return m;
 }
@@ -95,6 +103,8 @@ PointRow level_row(const PreparedPoint& point, const std::string& sweep_hash,
   row.key("lost_orbits").value(long(m.lost));
   row.key("ftle").value(m.largest_ftle);
   row.key("chaotic_share").value(m.chaotic_share);
+  row.key("hyperbolic_orbits").value(long(m.hyperbolic));
+  row.key("undecided_orbits").value(long(m.undecided));
   row.key("extra_integral_range").value(m.extra_integral_range);
   // A level is failed only when every orbit on it was lost.
   row.key("failure");

@@ -21,13 +21,29 @@ namespace epviz::sweep {
 // the generic body's chaotic levels keep 0.15 to 0.3.
 inline constexpr double kChaoticFtle = 0.1;
 
+// An FTLE alone cannot tell chaos from a hyperbolic set of an integrable top
+// (a separatrix, an unstable periodic orbit such as Kovalevskaya's planar
+// pendulum at C0 = 0): neighbours part exponentially from both. A case with
+// a fourth integral is integrable, and an orbit that keeps that integral lies
+// on a 2-dimensional set of (C0, C1, the integral), where no motion is chaotic:
+// its FTLE above kChaoticFtle counts as hyperbolic, not chaotic. Kept means a
+// largest relative range (max − min over the window ends, divided by its
+// scale) of at most this, 1e4 times what dop853 at tol 1e-12 leaves (1e-10);
+// beyond it the run is too coarse to say, and the orbit is undecided.
+inline constexpr double kKeptIntegral = 1e-6;
+
 struct LevelMetrics {
   bool admissible = false;
   double minimum_energy = 0.0;  // the least C1 at this C0
   int orbits = 0;  // states on the level (up to the sweep's level_orbits; level_point.cpp)
   int lost = 0;    // orbits whose FTLE is undefined (a failed integration)
-  std::optional<double> largest_ftle;   // over the orbits that were not lost
-  std::optional<double> chaotic_share;  // of those, the share above kChaoticFtle
+  std::optional<double> largest_ftle;  // over the orbits that were not lost
+  // Orbits not lost whose FTLE is above kChaoticFtle: in a case without a
+  // fourth integral chaotic; in one with it hyperbolic where the orbit kept it
+  // (to kKeptIntegral), else undecided.
+  int chaotic = 0, hyperbolic = 0, undecided = 0;
+  // chaotic / (orbits not lost and not undecided); nullopt when none is left.
+  std::optional<double> chaotic_share;
   // The case's fourth integral: the largest (max - min) / scale over an
   // orbit's window ends, over the orbits (invariant_scales); nullopt without one.
   std::optional<double> extra_integral_range;
