@@ -218,7 +218,18 @@ std::size_t nonpositive_points(const ChartSpec& spec) {
 std::string nonpositive_label(const ChartSpec& spec) {
   return spec.nonpositive_label.empty() ? "≤ 0" : spec.nonpositive_label;
 }
-int nonpositive_row_height(float font_px) { return int(std::ceil(font_px * 1.6f)); }
+// Tall enough that the row's label, centred on it, stays clear of the lowest
+// y tick label, centred on the plot's bottom edge just above.
+int nonpositive_row_height(float font_px) { return int(std::ceil(font_px * 2.2f)); }
+// The note under the x label that counts the points off the log axis, in
+// lines from the plot's left edge `left` to a character short of the
+// picture's right edge (a narrow figure at a printed size wraps it).
+std::vector<std::string> nonpositive_note(const ChartSpec& spec, std::size_t n, int width, int left,
+                                          const ChartFont& font) {
+  return wrap_text(std::to_string(n) + (n == 1 ? " point" : " points") + " not on the log axis (" +
+                       nonpositive_label(spec) + "): marked in the row under the plot",
+                   font, std::max(font.px * 8.0f, float(width - left) - font.px));
+}
 
 }  // namespace
 
@@ -309,9 +320,11 @@ ChartLayout chart_layout_without_row(const ChartSpec& spec, int width, int heigh
   const int top =
       int(std::ceil(font_px * 0.8f + (title.empty() ? 0.0f : line * (float(title.size()) + 0.3f)) +
                     (spec.y_label.empty() ? 0.0f : line)));
+  const std::size_t note_lines =
+      row_h > 0 ? nonpositive_note(spec, l.nonpositive_points, width, left, font).size() : 0;
   const int bottom =
       int(std::ceil(font_px * 0.9f + line + (spec.x_label.empty() ? 0.0f : line * 1.1f) +
-                    (row_h > 0 ? float(row_h) + line * 1.1f : 0.0f)));
+                    (row_h > 0 ? float(row_h) + line * (0.1f + float(note_lines)) : 0.0f)));
   // Room on the right for half the last x tick label, which is centred on the
   // plot's right edge.
   float last_x_label = 0.0f;
@@ -450,13 +463,11 @@ FigureDrawing draw_chart(const ChartSpec& spec, const ChartOptions& requested,
     axes.add_polyline(box, kFrame, thin, true);
     axes.add_text(label({x0 - font_px * 0.45f, (ry0 + ry1) * 0.5f}, nonpositive_label(spec),
                         TextAnchor::right));
-    const std::size_t n = l.nonpositive_points;
     const float note_y = under + font_px * 0.45f + line * (spec.x_label.empty() ? 1.0f : 2.1f);
-    axes.add_text(label({x0, note_y},
-                        std::to_string(n) + (n == 1 ? " point" : " points") +
-                            " not on the log axis (" + nonpositive_label(spec) +
-                            "): marked in the row under the plot",
-                        TextAnchor::top_left, {0.35f, 0.35f, 0.38f, 1.0f}));
+    const auto note = nonpositive_note(spec, l.nonpositive_points, options.width, a.x, font);
+    for (std::size_t i = 0; i < note.size(); ++i)
+      axes.add_text(label({x0, note_y + line * float(i)}, note[i], TextAnchor::top_left,
+                          {0.35f, 0.35f, 0.38f, 1.0f}));
   }
   drawing.layers.push_back({std::move(axes), std::nullopt});
 

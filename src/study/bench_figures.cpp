@@ -353,7 +353,10 @@ std::vector<chart::Figure> bench_figures(const std::vector<StudyRow>& rows) {
       s.colour_key = keys.colour(r->run.method);
       s.marker_key = key;
       for (std::size_t i = 0; i < std::min(r->series_t.size(), values->size()); ++i)
-        if (std::isfinite(r->series_t[i]) && std::isfinite((*values)[i]))
+        // The start's drift is 0 by definition: no point of the log axis,
+        // nor one of the row under it for values it cannot show.
+        if (std::isfinite(r->series_t[i]) && std::isfinite((*values)[i]) &&
+            !(i == 0 && (*values)[i] == 0.0))
           s.points.push_back({r->series_t[i], std::abs((*values)[i])});
       // A row without a series of |γ|² draws none (nor names it).
       if (key == kGammaKey && s.points.empty()) continue;

@@ -25,16 +25,23 @@ constexpr double kColumnPt = 85.0 / 25.4 * 72.0;  // 85 mm: 240.94 pt
 constexpr double kLeastWordPt = 6.0;
 
 // The page is `width_pt` wide (within half a point: the layout rounds the
-// width to whole units of 1/dpi inch), every word is at least 6 pt tall and
-// none overlaps another; the words, for more checks.
+// width to whole units of 1/dpi inch), every word is on it, at least 6 pt
+// tall, and none overlaps another; the words, for more checks.
 std::vector<PdfWord> expect_printed(const fs::path& pdf, double width_pt) {
   EXPECT_TRUE(fs::exists(pdf)) << pdf;
   if (!fs::exists(pdf)) return {};
-  EXPECT_NEAR(pdf_page_width_pt(pdf), width_pt, 0.5) << pdf;
+  const auto [page_width, page_height] = pdf_page_size_pt(pdf);
+  EXPECT_NEAR(page_width, width_pt, 0.5) << pdf;
   const auto words = pdf_words(pdf);
   EXPECT_GT(words.size(), 3u) << pdf;
-  for (const auto& w : words)
+  for (const auto& w : words) {
     EXPECT_GE(w.height(), kLeastWordPt) << pdf.filename() << ": '" << w.text << "'";
+    // On the page, not cut off at its edge.
+    EXPECT_TRUE(w.x0 >= -0.5 && w.x1 <= page_width + 0.5 && w.y0 >= -0.5 &&
+                w.y1 <= page_height + 0.5)
+        << pdf.filename() << ": '" << w.text << "' at (" << w.x0 << ", " << w.y0 << ")-(" << w.x1
+        << ", " << w.y1 << ") is off the " << page_width << " x " << page_height << " pt page";
+  }
   for (const auto& [a, b] : overlapping_words(words))
     ADD_FAILURE() << pdf.filename() << ": '" << a.text << "' (" << a.x0 << ", " << a.y0
                   << ") overlaps '" << b.text << "' (" << b.x0 << ", " << b.y0 << ")";

@@ -99,7 +99,8 @@ TEST(BenchFigures, ChartsFromRows) {
   EXPECT_EQ(drift.marker_legend[0].name, "C₁");
   EXPECT_EQ(drift.marker_legend[1].name, "K");
   EXPECT_DOUBLE_EQ(drift.series[0].points[0].y, 1e-10);  // drifts shown as magnitudes
-  EXPECT_EQ(drift.series[1].points.size(), 19u);         // the NaN point is left out
+  // The NaN point is left out, and so is the start's drift of 0 (t = 0).
+  EXPECT_EQ(drift.series[1].points.size(), 18u);
 }
 
 // A method whose cost is not counted in right-hand side evaluations (a
