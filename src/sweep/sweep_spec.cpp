@@ -138,8 +138,14 @@ std::vector<std::string> row_metrics() {
 }
 
 std::vector<std::string> level_row_metrics() {
-  return {"ftle",           "chaotic_share", "extra_integral_range",
-          "minimum_energy", "lost_orbits",   "cpu_seconds"};
+  return {"ftle",
+          "chaotic_share",
+          "hyperbolic_orbits",
+          "undecided_orbits",
+          "extra_integral_range",
+          "minimum_energy",
+          "lost_orbits",
+          "cpu_seconds"};
 }
 
 std::string atlas_metrics_allowed(bool reference, bool ftle, const std::vector<std::string>& axes) {
