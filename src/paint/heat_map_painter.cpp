@@ -170,6 +170,11 @@ std::vector<std::string> note_lines(const HeatMapSpec& spec, const ChartFont& fo
                                     int left) {
   return wrap_text(spec.note, font, std::max(font.px * 8.0f, float(width - left) - font.px));
 }
+// The title in lines no wider than the picture, less a character each side.
+std::vector<std::string> heat_title_lines(const HeatMapSpec& spec, int width,
+                                          const ChartFont& font) {
+  return wrap_text(spec.title, font, float(width) - 2.0f * font.px);
+}
 // The height the note's lines take under the grid (0.4 line above them).
 float note_room(std::size_t lines, float line) {
   return lines == 0 ? 0.0f : line * (0.4f + float(lines));
@@ -224,7 +229,12 @@ HeatMapLayout heat_map_layout(const HeatMapSpec& spec, int width, int height,
   for (const auto& peer : spec.margin_peers)
     note_count = std::max(note_count, note_lines(peer, font, width, left).size());
   room.text_lines += note_room(note_count, line);
-  const int top = int(std::ceil(font_px * 0.8f + line * 1.3f + line * 1.2f));
+  // A line for the title (more where it wraps), and one for the y label.
+  // A set of maps reserves its longest title's lines.
+  std::size_t title_lines = std::max<std::size_t>(1, heat_title_lines(spec, width, font).size());
+  for (const auto& peer : spec.margin_peers)
+    title_lines = std::max(title_lines, heat_title_lines(peer, width, font).size());
+  const int top = int(std::ceil(font_px * 0.8f + line * (float(title_lines) + 0.3f) + line * 1.2f));
   const int grid_w = std::max(16, width - left - int(std::ceil(room.right)));
   const std::size_t columns = std::max<std::size_t>(1, spec.columns.size());
   const std::size_t rows = std::max<std::size_t>(1, spec.rows.size());
@@ -326,9 +336,10 @@ FigureDrawing draw_heat_map(const HeatMapSpec& spec, const ChartOptions& options
     l = heat_map_layout(spec, options.width, l.natural_height, font);
   }
   DrawList list;
-  if (!spec.title.empty())
-    list.add_text(
-        label({float(options.width) * 0.5f, font_px * 0.6f}, spec.title, TextAnchor::top));
+  const auto title = heat_title_lines(spec, options.width, font);
+  for (std::size_t i = 0; i < title.size(); ++i)
+    list.add_text(label({float(options.width) * 0.5f, font_px * 0.6f + line * float(i)}, title[i],
+                        TextAnchor::top));
   const glm::vec4 missing{0.88f, 0.88f, 0.89f, 1.0f};
   const glm::vec4 hatch{0.62f, 0.62f, 0.64f, 1.0f};
   const glm::vec4 quiet_ink{0.35f, 0.35f, 0.38f, 1.0f};

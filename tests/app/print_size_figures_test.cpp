@@ -94,6 +94,28 @@ TEST(PrintSizeFigures, EveryBenchChartPdfIsAColumnWideWithPrintableText) {
     EXPECT_TRUE(has_word(drift, symbol)) << symbol << " not in the drift chart";
 }
 
+// Larger type on a narrower page: long titles and notes wrap rather than
+// run off the page.
+TEST(PrintSizeFigures, BenchChartsWithLargerTypeStillFitTheirPage) {
+  if (!have_poppler()) GTEST_SKIP() << "no pdftotext/pdfinfo";
+  TempDir d;
+  const auto out = d / "charts";
+  const auto r = run_epviz(
+      "bench --quick --cases kovalevskaya --format pdf --figure-width 3.5in "
+      "--font-size 10 --out " +
+          out.string(),
+      d);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  int pdfs = 0;
+  for (const auto& e : fs::directory_iterator(out))
+    if (e.path().extension() == ".pdf") {
+      for (const auto& w : expect_printed(e.path(), 252.0))
+        EXPECT_GE(w.height(), 9.5) << e.path().filename() << ": '" << w.text << "' (10 pt type)";
+      ++pdfs;
+    }
+  EXPECT_GE(pdfs, 5);
+}
+
 TEST(PrintSizeFigures, BenchPngIsThatManyInchesAtTheDpi) {
   TempDir d;
   const auto out = d / "charts";
