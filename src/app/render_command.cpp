@@ -92,10 +92,34 @@ void format_option(const RenderOptions& o, std::optional<io::VideoFormat>& video
   video = job::parse_output_format("--format", o.format);
 }
 
+// The job's figure_width, font_size and dpi with the options over them;
+// a size or dpi without a width refused naming where each came from.
+std::optional<io::PrintSize> print_size_of(const RenderJob& job, const RenderOptions& o) {
+  const auto& file = job.output.print;
+  if (file.width.empty() && o.print.width.empty()) {
+    const std::string key = !file.font.empty()  ? "output.font_size"
+                            : !file.dpi.empty() ? "output.dpi"
+                                                : "";
+    if (!key.empty() && o.print.font.empty() && o.print.dpi.empty())
+      throw io::BadInput(job.file.string() + ": " + key +
+                         ": applies to a figure of a printed size; give output.figure_width or "
+                         "--figure-width too");
+    return io::parse_print_size(o.print);  // refuses --font-size, --dpi alone
+  }
+  // Each value was checked where it came from (the file on reading); the
+  // options' names go to what is left to check (the pixels of --dpi).
+  io::PrintSizeText text = file;
+  for (auto [from, to] : {std::pair{&o.print.width, &text.width},
+                          {&o.print.font, &text.font},
+                          {&o.print.dpi, &text.dpi}})
+    if (!from->empty()) *to = *from;
+  return io::parse_print_size(text);
+}
+
 PreparedJob prepare(RenderJob job, const RenderOptions& o) {
   if (!o.width.empty()) job.scene.width = int(parse_integer("--width", o.width, 16, 8192));
   if (!o.height.empty()) job.scene.height = int(parse_integer("--height", o.height, 16, 8192));
-  const auto print = io::parse_print_size(o.print);
+  const auto print = print_size_of(job, o);
   if (print) {
     if (!o.width.empty() || !o.height.empty())
       throw io::BadInput(std::string(o.width.empty() ? "--height" : "--width") +
@@ -314,6 +338,11 @@ int render_gallery(GalleryJob g, const RenderOptions& o, const render::GlChoice&
     throw io::BadInput(
         "--figure-width: a gallery's tiles are screen pictures; give a single job for a figure of "
         "a printed size");
+  for (const auto& job : g.jobs)
+    if (const auto& p = job.output.print; !p.width.empty() || !p.font.empty() || !p.dpi.empty())
+      throw io::BadInput(job.file.string() +
+                         ": output.figure_width: a gallery's tiles are screen pictures; render "
+                         "this job alone for a figure of a printed size");
   if (!o.out.empty()) g.dir = o.out;
   // --width and --height size every tile (gallery.png, the grid video) and
   // every job's video, which is otherwise drawn at the size its job asks for.

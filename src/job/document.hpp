@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/print_size.hpp"
 #include "io/video_format.hpp"
 #include "scene/settings.hpp"
 
@@ -58,6 +59,10 @@ struct OutputSettings {
   std::optional<io::VideoFormat> video;  // empty: PNG frames
   std::string
       name;  // video file stem, or PNG frame prefix ("frame" -> frame_0042.png); empty: not given
+  // "figure_width", "font_size", "dpi": a figure at a printed size, as the
+  // file gives them (each checked on reading; "" where not given). The
+  // command's options of the same names go over them.
+  io::PrintSizeText print;
 };
 
 // One run of a comparison scene (a job's "runs" list): a label and the

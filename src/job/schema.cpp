@@ -499,6 +499,38 @@ const std::vector<Job>& job_entries() {
             [](const JobDocument& d, Json& j) {
               if (!d.output.name.empty()) j["name"] = d.output.name;
             }},
+           {{"figure_width", ValueType::text, "none (a screen picture)",
+             "a length from 1in to 20in: 85mm, 8.5cm, 3.5in, 241pt",
+             "a figure for print this wide, its text at font_size, its parts stacked (as "
+             "--figure-width)"},
+            [](io::ObjectReader& r, JobDocument& d) {
+              if (auto v = r.string("figure_width")) {
+                (void)io::parse_length_pt(r.where("figure_width"), *v);
+                d.output.print.width = *v;
+              }
+            },
+            [](const JobDocument& d, Json& j) {
+              if (!d.output.print.width.empty()) j["figure_width"] = d.output.print.width;
+            }},
+           {{"font_size", ValueType::number, "8", "5 to 24",
+             "with figure_width: the text's size in points"},
+            [](io::ObjectReader& r, JobDocument& d) {
+              if (auto v = r.number_in("font_size", io::kMinFontPt, io::kMaxFontPt,
+                                       "a size in points from 5 to 24"))
+                d.output.print.font = fmt(*v);
+            },
+            [](const JobDocument& d, Json& j) {
+              if (!d.output.print.font.empty()) j["font_size"] = std::stod(d.output.print.font);
+            }},
+           {{"dpi", ValueType::number, "300", "72 to 1200",
+             "with figure_width: pixels per inch of PNG frames and of an SVG or PDF's 3D view"},
+            [](io::ObjectReader& r, JobDocument& d) {
+              if (auto v = r.number_in("dpi", io::kMinDpi, io::kMaxDpi, "a number from 72 to 1200"))
+                d.output.print.dpi = fmt(*v);
+            },
+            [](const JobDocument& d, Json& j) {
+              if (!d.output.print.dpi.empty()) j["dpi"] = std::stod(d.output.print.dpi);
+            }},
        }},
   };
   return entries;

@@ -35,14 +35,14 @@ TEST(PrintSizeFrames, EachKindOfSceneIsAColumnWideWithPrintableText) {
   TempDir d;
   // What each scene must show in words: its overlay, a comparison's legend,
   // the section panel's title.
-  const std::pair<std::string, std::string> scenes[] = {
-      {"kovalevskaya", "drift"}, {"compare_methods", "midpoint"}, {"kovalevskaya_section_panel", "section"}};
+  const std::pair<std::string, std::string> scenes[] = {{"kovalevskaya", "drift"},
+                                                        {"compare_methods", "midpoint"},
+                                                        {"kovalevskaya_section_panel", "section"}};
   for (const auto& [job, word] : scenes) {
     SCOPED_TRACE(job);
     const auto out = d / job;
-    const auto r = run_epviz("render " + job + " --format pdf --figure-width 85mm --quiet --out " +
-                                 out.string(),
-                             d);
+    const auto r = run_epviz(
+        "render " + job + " --format pdf --figure-width 85mm --quiet --out " + out.string(), d);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const auto pdf = only_file(out, ".pdf");
     EXPECT_NEAR(pdf_page_width_pt(pdf), kColumnPt, 0.5);
@@ -118,6 +118,46 @@ TEST(PrintSizeFrames, WhatCannotGoTogetherIsRefusedBeforeAnyWork) {
     SCOPED_TRACE(args);
     expect_bad_input(run_epviz("render " + args + " --format pdf --out " + (d / "o").string(), d),
                      message);
+    EXPECT_FALSE(fs::exists(d / "o"));
+  }
+}
+
+// A job file's "output" keys ask for the same, and the options go over them.
+TEST(PrintSizeFrames, AJobsOutputKeysAskForTheSameAndTheOptionsWin) {
+  if (!have_poppler()) GTEST_SKIP() << "no pdftotext/pdfinfo";
+  TempDir d;
+  const auto job = d.write("j.json", R"({"simulation": {"case": "lagrange", "t_end": 5},
+    "output": {"figure_width": "3.5in", "font_size": 9}})");
+  auto r = run_epviz(
+      "render " + job.string() + " --format pdf --quiet --out " + (d / "file").string(), d);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto pdf = only_file(d / "file", ".pdf");
+  EXPECT_NEAR(pdf_page_width_pt(pdf), 252.0, 0.5);
+  double tallest = 0.0;
+  for (const auto& wd : pdf_words(pdf)) tallest = std::max(tallest, wd.height());
+  EXPECT_NEAR(tallest, 9.0, 0.3);
+  r = run_epviz("render " + job.string() + " --figure-width 85mm --format pdf --quiet --out " +
+                    (d / "option").string(),
+                d);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NEAR(pdf_page_width_pt(only_file(d / "option", ".pdf")), kColumnPt, 0.5);
+}
+
+TEST(PrintSizeFrames, AJobsBadOrLoneKeysAreNamedByFileAndKey) {
+  TempDir d;
+  const std::pair<std::string, std::string> refused[] = {
+      {R"("figure_width": "85")", "output.figure_width': expected a length such as 85mm"},
+      {R"("figure_width": "85mm", "font_size": 40)", "output.font_size"},
+      {R"("font_size": 9)", "output.font_size: applies to a figure of a printed size"},
+      {R"("dpi": 150)", "output.dpi: applies to a figure of a printed size"},
+  };
+  for (const auto& [keys, message] : refused) {
+    SCOPED_TRACE(keys);
+    const auto job = d.write("j.json", R"({"simulation": {"case": "lagrange", "t_end": 5},
+      "output": {)" + keys + "}}");
+    expect_bad_input(
+        run_epviz("render " + job.string() + " --format pdf --out " + (d / "o").string(), d),
+        message);
     EXPECT_FALSE(fs::exists(d / "o"));
   }
 }

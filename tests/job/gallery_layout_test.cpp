@@ -23,7 +23,7 @@ TEST(GalleryLayout, AStillIsATileAndAVideoTheJobsOwnSizeInTheGallerysDirectory) 
   RenderJob job;
   job.file = "jobs/euler.json";
   job.scene.width = 1280;
-  job.output = {"elsewhere", io::VideoFormat::mp4, "frame"};
+  job.output = {"elsewhere", io::VideoFormat::mp4, "frame", {}};
   const auto still = gallery_member(g, job, false);
   EXPECT_EQ(still.scene.width, 320);
   EXPECT_EQ(still.scene.height, 180);
