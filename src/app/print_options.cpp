@@ -37,6 +37,13 @@ int panel_gap(int screen_gap, const std::optional<io::PrintSize>& print) {
   return print ? int(std::lround(print->font_units())) : screen_gap;
 }
 
+int panel_columns(int panels, const std::optional<io::PrintSize>& print, int gap) {
+  if (!print || panels <= 1) return std::max(panels, 1);
+  const double least = 24.0 * print->font_units();
+  const int fit = int((print->width_units() + gap) / (least + gap));
+  return std::clamp(fit, 1, panels);
+}
+
 paint::ChartOptions chart_options(const paint::ChartOptions& screen,
                                   const std::optional<io::PrintSize>& print, int panels, int gap) {
   if (!print) return screen;

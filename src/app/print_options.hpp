@@ -31,6 +31,10 @@ std::optional<io::PrintSize> print_size_over(const io::PrintSizeText& command_li
 paint::ChartOptions chart_options(const paint::ChartOptions& screen,
                                   const std::optional<io::PrintSize>& print, int panels = 1,
                                   int gap = 0);
+// How many of `panels` go side by side: all of them without a print size;
+// at one, as many as are each at least 24 lines of text wide (a plot with
+// its tick labels and a title of a few lines), the others on more rows.
+int panel_columns(int panels, const std::optional<io::PrintSize>& print, int gap);
 // The gap between side-by-side panels: `screen_gap` pixels, or one line of
 // text at a print size (the screen gap is about that at its font).
 int panel_gap(int screen_gap, const std::optional<io::PrintSize>& print);

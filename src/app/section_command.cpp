@@ -57,11 +57,13 @@ void draw(const section::SectionJob& job, const std::vector<section::OrbitResult
 #ifdef EPVIZ_HAVE_RENDER
   auto charts = section::section_charts(job, results);
   const bool one = charts.size() == 1;
-  // At a printed size the whole row of panels is the width asked.
+  // At a printed size a row of panels is the width asked, as many panels to
+  // a row as are wide enough to read.
   const int gap = panel_gap(16, print);
+  const int columns = panel_columns(int(charts.size()), print, gap);
   const paint::ChartOptions size = chart_options(
       {.width = one ? 1100 : 760, .height = one ? 1000 : 720, .font_px = one ? 15.0f : 13.0f},
-      print, int(charts.size()), gap);
+      print, columns, gap);
   std::vector<chart::Figure> panels;
   for (auto& c : charts) panels.push_back({job.png, std::move(c)});
   if (!job.png.empty()) {
@@ -69,14 +71,14 @@ void draw(const section::SectionJob& job, const std::vector<section::OrbitResult
         paint::paint_drawing(*render::GlChoice(gl).open(), size, [&](const paint::ChartFont& font) {
           std::vector<paint::FigureDrawing> drawings;
           for (const auto& p : panels) drawings.push_back(paint::draw_figure(p, size, font));
-          return paint::side_by_side(drawings, gap);
+          return paint::panel_grid(drawings, columns, gap);
         });
     io::write_png_rgba(job.png, image.width, image.height, image.pixels);
   }
   if (!job.svg.empty())
-    vector::write_vector_panels(job.svg, panels, vector::FigureFormat::svg, size, gap);
+    vector::write_vector_panels(job.svg, panels, vector::FigureFormat::svg, size, gap, columns);
   if (!job.pdf.empty())
-    vector::write_vector_panels(job.pdf, panels, vector::FigureFormat::pdf, size, gap);
+    vector::write_vector_panels(job.pdf, panels, vector::FigureFormat::pdf, size, gap, columns);
 #else
   (void)results, (void)gl, (void)print;
   throw io::BadInput(job.file +

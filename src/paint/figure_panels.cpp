@@ -67,4 +67,14 @@ FigureDrawing stacked(const std::vector<FigureDrawing>& rows, int gap) {
   return placed(rows, gap, false);
 }
 
+FigureDrawing panel_grid(const std::vector<FigureDrawing>& panels, int columns, int gap) {
+  if (columns < 1 || std::size_t(columns) >= panels.size()) return side_by_side(panels, gap);
+  std::vector<FigureDrawing> rows;
+  for (std::size_t first = 0; first < panels.size(); first += std::size_t(columns)) {
+    const auto end = panels.begin() + std::ptrdiff_t(std::min(panels.size(), first + columns));
+    rows.push_back(side_by_side({panels.begin() + std::ptrdiff_t(first), end}, gap));
+  }
+  return stacked(rows, gap);
+}
+
 }  // namespace epviz::paint

@@ -44,7 +44,7 @@ std::string vector_figure_bytes(const chart::Figure& figure, FigureFormat format
 
 void write_vector_panels(const std::filesystem::path& path,
                          const std::vector<chart::Figure>& panels, FigureFormat format,
-                         const paint::ChartOptions& options, int gap) {
+                         const paint::ChartOptions& options, int gap, int columns) {
   if (format == FigureFormat::png)
     throw std::invalid_argument("write_vector_panels: PNG is painted with GL, not cairo");
   const CairoFont font(paint::chart_font_px(options));
@@ -52,8 +52,9 @@ void write_vector_panels(const std::filesystem::path& path,
   for (const auto& f : panels)
     drawings.push_back(paint::draw_figure(f, options, font.chart_font()));
   const std::string title = panels.empty() ? std::string() : title_of(panels.front());
-  io::write_file_atomically(path, drawing_bytes(paint::side_by_side(drawings, gap), font, format,
-                                                options.page_pt_per_unit, title, path.string()));
+  io::write_file_atomically(path,
+                            drawing_bytes(paint::panel_grid(drawings, columns, gap), font, format,
+                                          options.page_pt_per_unit, title, path.string()));
 }
 
 void write_vector_figure(const std::filesystem::path& path, const chart::Figure& figure,

@@ -26,9 +26,10 @@ void write_vector_figure(const std::filesystem::path& path, const chart::Figure&
                          FigureFormat format, const paint::ChartOptions& options = {});
 
 // Several figures side by side in one file (paint/figure_panels.hpp), each
-// laid out at the options' size, `gap` pixels apart; written atomically.
+// laid out at the options' size, `gap` pixels apart, in rows of `columns`
+// (0: all in one row); written atomically.
 void write_vector_panels(const std::filesystem::path& path,
                          const std::vector<chart::Figure>& panels, FigureFormat format,
-                         const paint::ChartOptions& options, int gap);
+                         const paint::ChartOptions& options, int gap, int columns = 0);
 
 }  // namespace epviz::vector

@@ -182,6 +182,22 @@ TEST(PrintSizeFigures, MergedAtlasPdfIsAColumnWideWithPrintableText) {
   EXPECT_EQ(pdfs, 1);
 }
 
+// Three methods' panels in a column 85 mm wide would be 26 mm each: they go
+// one under another instead, each the column's width.
+TEST(PrintSizeFigures, SectionPanelsTooNarrowSideBySideGoOnMoreRows) {
+  if (!have_poppler()) GTEST_SKIP() << "no pdftotext/pdfinfo";
+  TempDir d;
+  const auto file = d.write("s.section.json", section_file(d, R"(, "methods": [
+        {"method": "rk4", "step": 0.05}, {"method": "dop853", "tol": 1e-9},
+        {"method": "splitting", "step": 0.05}], "max_drift": 0.1, "figure_width": "85mm")"));
+  const auto r = run_epviz("section " + file.string() + " -j 2", d);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto words = expect_printed(d / "s.pdf", kColumnPt);
+  EXPECT_GT(pdf_page_size_pt(d / "s.pdf").second, 2.5 * kColumnPt) << "not stacked";
+  for (const char* method : {"rk4", "dop853", "splitting"})
+    EXPECT_TRUE(has_word(words, method)) << method << "'s panel";
+}
+
 // Each bad value: exit 2, one line naming the option and what is allowed,
 // before any work, nothing written.
 TEST(PrintSizeFigures, BadSizesAreRefusedBeforeAnyWork) {
