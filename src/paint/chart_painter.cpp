@@ -173,7 +173,8 @@ float legend_height(const std::vector<LegendRow>& rows, float line, const ChartF
   return h;
 }
 // The chart's title in lines no wider than the picture, less a character each side.
-std::vector<std::string> title_lines(const ChartSpec& spec, int width, const ChartFont& font) {
+std::vector<std::string> chart_title_lines(const ChartSpec& spec, int width,
+                                           const ChartFont& font) {
   return wrap_text(spec.title, font, float(width) - 2.0f * font.px);
 }
 // The legend's width besides its names: the line sample and the padding.
@@ -316,7 +317,7 @@ ChartLayout chart_layout_without_row(const ChartSpec& spec, int width, int heigh
   if (row_h > 0) widest_y = std::max(widest_y, font.width(nonpositive_label(spec)));
   const float line = font_px * 1.35f;
   const int left = int(std::ceil(widest_y + font_px * 1.6f));
-  const auto title = title_lines(spec, width, font);
+  const auto title = chart_title_lines(spec, width, font);
   const int top =
       int(std::ceil(font_px * 0.8f + (title.empty() ? 0.0f : line * (float(title.size()) + 0.3f)) +
                     (spec.y_label.empty() ? 0.0f : line)));
@@ -447,7 +448,7 @@ FigureDrawing draw_chart(const ChartSpec& spec, const ChartOptions& requested,
   }
   const std::vector<glm::vec3> frame{{x0, y0, 0}, {x1, y0, 0}, {x1, y1, 0}, {x0, y1, 0}};
   axes.add_polyline(frame, kFrame, 1.25f * thin, true);
-  const auto title = title_lines(spec, options.width, font);
+  const auto title = chart_title_lines(spec, options.width, font);
   for (std::size_t i = 0; i < title.size(); ++i)
     axes.add_text(label({float(options.width) * 0.5f, font_px * 0.6f + line * float(i)}, title[i],
                         TextAnchor::top));

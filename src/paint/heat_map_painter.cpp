@@ -166,8 +166,8 @@ Room room_of(const HeatMapSpec& spec, const ChartFont& font, bool at_most) {
 
 // The note in lines from the grid's left edge `left` to a character short of
 // the picture's right edge.
-std::vector<std::string> note_lines(const HeatMapSpec& spec, const ChartFont& font, int width,
-                                    int left) {
+std::vector<std::string> heat_note_lines(const HeatMapSpec& spec, const ChartFont& font, int width,
+                                         int left) {
   return wrap_text(spec.note, font, std::max(font.px * 8.0f, float(width - left) - font.px));
 }
 // The title in lines no wider than the picture, less a character each side.
@@ -224,10 +224,10 @@ HeatMapLayout heat_map_layout(const HeatMapSpec& spec, int width, int height,
   const float bar_w = font_px * 1.1f;
   const int left = int(std::ceil(room.left));
   // The note wrapped to the width; a set of maps reserves its longest note's lines.
-  l.note_lines = note_lines(spec, font, width, left);
+  l.note_lines = heat_note_lines(spec, font, width, left);
   std::size_t note_count = l.note_lines.size();
   for (const auto& peer : spec.margin_peers)
-    note_count = std::max(note_count, note_lines(peer, font, width, left).size());
+    note_count = std::max(note_count, heat_note_lines(peer, font, width, left).size());
   room.text_lines += note_room(note_count, line);
   // A line for the title (more where it wraps), and one for the y label.
   // A set of maps reserves its longest title's lines.

@@ -102,8 +102,8 @@ TableColumns table_columns(const TableSpec& spec, const ChartOptions& options,
 }
 
 // The title's lines, centred on the picture.
-std::vector<std::string> title_lines(const TableSpec& spec, const ChartOptions& options,
-                                     const ChartFont& font, float margin) {
+std::vector<std::string> table_title_lines(const TableSpec& spec, const ChartOptions& options,
+                                           const ChartFont& font, float margin) {
   return wrap_text(spec.title, font, float(options.width) - 2.0f * margin);
 }
 
@@ -116,7 +116,7 @@ int table_height(const TableSpec& spec, const ChartOptions& options, const Chart
   // of rows left out and room to spare as a table has always had (8 lines
   // for one line each of title and header: see draw_figure).
   std::size_t lines =
-      std::max<std::size_t>(1, title_lines(spec, options, font, t.margin).size()) + 6;
+      std::max<std::size_t>(1, table_title_lines(spec, options, font, t.margin).size()) + 6;
   lines += t.row_lines(spec.header, font);
   for (const auto& r : spec.rows) lines += t.row_lines(r, font);
   return int(std::ceil(line * float(lines)));
@@ -139,7 +139,7 @@ FigureDrawing draw_table(const TableSpec& spec, const ChartOptions& options,
   DrawList list;
   const float left = std::max(margin, (float(options.width) - total) * 0.5f);
   float y = font_px * 0.8f;
-  for (const auto& title_line : title_lines(spec, options, font, margin)) {
+  for (const auto& title_line : table_title_lines(spec, options, font, margin)) {
     list.add_text(label({float(options.width) * 0.5f, y}, title_line, TextAnchor::top));
     y += line;
   }
