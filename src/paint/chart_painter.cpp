@@ -164,13 +164,19 @@ std::vector<std::string> name_lines(const LegendRow& row, const ChartFont& font,
   if (name_width > 0.0f) return wrap_text(row.name, font, name_width);
   return {row.name};
 }
+// The legend's height, its rows in columns of `per_column` (0: one column;
+// the half line of space before a row is left out at a column's top).
 float legend_height(const std::vector<LegendRow>& rows, float line, const ChartFont& font,
-                    float name_width = 0.0f) {
-  float h = font.px * 0.8f;
-  for (const auto& r : rows)
-    h += line * (float(std::max<std::size_t>(1, name_lines(r, font, name_width).size())) +
-                 (r.gap_before ? 0.5f : 0.0f));
-  return h;
+                    float name_width = 0.0f, std::size_t per_column = 0) {
+  float tallest = 0.0f, h = 0.0f;
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const bool column_top = per_column > 0 && k % per_column == 0;
+    if (column_top) h = 0.0f;
+    h += line * (float(std::max<std::size_t>(1, name_lines(rows[k], font, name_width).size())) +
+                 (rows[k].gap_before && !column_top ? 0.5f : 0.0f));
+    tallest = std::max(tallest, h);
+  }
+  return font.px * 0.8f + tallest;
 }
 // The chart's title in lines no wider than the picture, less a character each side.
 std::vector<std::string> chart_title_lines(const ChartSpec& spec, int width,
@@ -370,11 +376,21 @@ ChartLayout chart_layout_without_row(const ChartSpec& spec, int width, int heigh
   l.legend_below = true;
   const int below_w = std::min(legend_w, width - left - right);
   l.legend_name_width = float(below_w) - legend_frame_width(font_px);
-  const int below_h = int(std::ceil(legend_height(rows, line, font, l.legend_name_width)));
+  // A long list of short names (a work-precision chart's methods) in as
+  // many columns as fit across, up to three, rather than one tall column.
+  int below_width = below_w;
+  const int columns = std::min(3, (width - left - right) / std::max(1, legend_w));
+  if (columns > 1 && rows.size() > 4) {
+    l.legend_per_column = (rows.size() + std::size_t(columns) - 1) / std::size_t(columns);
+    l.legend_column_width = legend_w;
+    below_width = legend_w * int((rows.size() + l.legend_per_column - 1) / l.legend_per_column);
+  }
+  const int below_h =
+      int(std::ceil(legend_height(rows, line, font, l.legend_name_width, l.legend_per_column)));
   const int gap = pad;
   l.plot_area = {left, top, width - left - right,
                  std::max(1, height - top - bottom - below_h - gap)};
-  l.legend = {left, l.plot_area.y + l.plot_area.height + bottom + gap, below_w, below_h};
+  l.legend = {left, l.plot_area.y + l.plot_area.height + bottom + gap, below_width, below_h};
   return l;
 }
 
@@ -540,11 +556,18 @@ FigureDrawing draw_chart(const ChartSpec& spec, const ChartOptions& requested,
     legend.add_polyline(box, {0.0f, 0.0f, 0.0f, 0.5f}, thin, true);  // 3:1 on paper, for print
     float top = float(b.y) + font_px * 0.4f;
     const glm::vec4 grey{0.45f, 0.45f, 0.47f, 1.0f};  // marker-only rows: the shape, no colour
-    for (const auto& r : legend_rows(spec)) {
-      if (r.gap_before) top += line * 0.5f;
+    const auto rows = legend_rows(spec);
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      const auto& r = rows[k];
+      // Columns side by side where the layout made them, each from the top.
+      const std::size_t column = l.legend_per_column > 0 ? k / l.legend_per_column : 0;
+      const bool column_top = l.legend_per_column > 0 && k % l.legend_per_column == 0;
+      if (column_top) top = float(b.y) + font_px * 0.4f;
+      if (r.gap_before && !column_top) top += line * 0.5f;
       const float cy = top + line * 0.5f;
       const auto names = name_lines(r, font, l.legend_name_width);
-      const float lx0 = float(b.x) + font_px * 0.6f, lx1 = lx0 + font_px * 2.4f;
+      const float lx0 = float(b.x + int(column) * l.legend_column_width) + font_px * 0.6f,
+                  lx1 = lx0 + font_px * 2.4f;
       const glm::vec4 colour = r.colour >= 0 ? series_colour(std::size_t(r.colour)) : grey;
       if (r.line) legend.add_line({lx0, cy, 0}, {lx1, cy, 0}, colour, stroke);
       if (r.marker >= 0)

@@ -40,6 +40,10 @@ struct ChartLayout {
   bool legend_below = false;       // a narrow picture (a printed column) puts it under the x label
   render::Viewport legend;         // the legend's box in image pixels
   float legend_name_width = 0.0f;  // > 0: the legend's names wrap to lines this wide
+  // A legend under the plot with room across for more than one column of
+  // rows: `legend_per_column` rows to a column, each column this wide.
+  std::size_t legend_per_column = 0;  // 0: one column
+  int legend_column_width = 0;
   // Points a log y axis cannot show (finite y <= 0, x on its axis): marked in
   // this row under the plot (height 0 when there are none), and counted in a
   // note under the x label (ChartSpec::nonpositive_label).
