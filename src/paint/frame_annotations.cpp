@@ -172,6 +172,10 @@ std::optional<Box> FramePainter::draw_marks_key(DrawList& flat, const scene::Fra
     top = floating_overlay_->max.y + 8 * px;
     if (top + height > float(view.y + view.height) * 0.5f) return std::nullopt;
   }
+  // Left out rather than drawn over a run's current point.
+  const Box placed{{at_top.min.x, top}, {right, top + height}};
+  for (const Box& mark : run_mark_boxes(f, camera, view, px))
+    if (placed.intersects(mark)) return std::nullopt;
   float y = top + line * 0.5f;
   for (const auto& r : rows) {
     if (r == "gravity") {

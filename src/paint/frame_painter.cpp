@@ -319,6 +319,31 @@ std::vector<std::string> FramePainter::drift_table_row(const scene::Frame& f, st
   return values;
 }
 
+std::vector<FramePainter::DriftPiece> FramePainter::drift_line(const scene::Frame& f) {
+  if (f.overlay.drifts.empty()) return {};
+  // The worst row over the drawn states: a NaN is the worst there is.
+  std::size_t worst = 0;
+  for (std::size_t r = 1; r < f.overlay.drifts.size(); ++r) {
+    const double v = f.overlay.drifts[r].second, w = f.overlay.drifts[worst].second;
+    if (std::isnan(w)) break;
+    if (std::isnan(v) || v > w) worst = r;
+  }
+  const double drawn = f.overlay.drifts[worst].second;
+  // The integral's symbol only ("C₁", not "C₁ (energy)"): one line is short.
+  const std::string& name = f.overlay.drifts[worst].first;
+  std::vector<DriftPiece> line{{"drift " + name.substr(0, name.find(" (")) + " ", {}},
+                               {print_scientific(drawn), drawn}};
+  if (with_step_drifts(f)) {
+    const double steps = f.overlay.step_drifts[worst];
+    line.push_back({" drawn, ", {}});
+    line.push_back({print_scientific(steps), steps});
+    line.push_back({" steps", {}});
+  } else {
+    line.push_back({" drawn", {}});
+  }
+  return line;
+}
+
 float FramePainter::drift_table_column_width() {
   render::ImGuiContextScope scope(gui().context());
   return gui().text_size(kWidestDrift).x + ImGui::GetStyle().ItemSpacing.x;
@@ -361,7 +386,12 @@ Box FramePainter::info_window_box(const scene::Frame& f, const scene::FrameLayou
   float text_w = gui().text_size(f.overlay.title).x;
   for (int i = 0; i < shown; ++i)
     text_w = std::max(text_w, gui().text_size(f.overlay.lines[std::size_t(i)]).x);
-  if (!f.overlay.drifts.empty()) {  // the names, then the value columns; the key
+  const bool one_line = scene::overlay_drifts_in_one_line(height());
+  if (!f.overlay.drifts.empty() && one_line) {
+    std::string whole;
+    for (const auto& piece : drift_line(f)) whole += piece.text;
+    text_w = std::max(text_w, gui().text_size(whole).x);
+  } else if (!f.overlay.drifts.empty()) {  // the names, then the value columns; the key
     const auto columns = drift_table_columns(f);
     float values_w = float(columns.size() - 1) * drift_table_column_width();
     values_w += std::max(gui().text_size(kWidestDrift).x, gui().text_size(columns.back()).x);
@@ -369,7 +399,10 @@ Box FramePainter::info_window_box(const scene::Frame& f, const scene::FrameLayou
                        gui().text_size(drift_key_text(drift_key())).x});
   }
   // Title, lines, then the drifts' heading, their rows and the key of their colours.
-  const int rows = 1 + shown + (f.overlay.drifts.empty() ? 0 : 2 + int(f.overlay.drifts.size()));
+  const int rows = 1 + shown +
+                   (f.overlay.drifts.empty() ? 0
+                    : one_line               ? 1
+                                             : 2 + int(f.overlay.drifts.size()));
   const float h = 2 * st.WindowPadding.y +
                   float(rows) * (gui().label_font_px() + st.ItemSpacing.y) +
                   (f.overlay.drifts.empty() ? 0.0f : st.ItemSpacing.y + 1.0f);
@@ -381,13 +414,24 @@ Box FramePainter::info_window_box(const scene::Frame& f, const scene::FrameLayou
       layout.overlay_in_column && !layout.overlay_area
           ? glm::vec2(float(where.x + where.width) - 6 * px - size.x, float(where.y) + 6 * px)
           : glm::vec2(float(where.x) + 6 * px, float(where.y) + 6 * px);
-  const bool floating = layout.view_3d && !layout.overlay_in_column && !layout.overlay_area;
-  if (!floating) return {top_left, top_left + size};
-  // Floating over the 3D view (small pictures): at the view's left edge (else
-  // its right), as high as it can be without covering a run's current point; above
-  // the trail's key and a single run's horizon note at the bottom. Where no
-  // place is clear, the one that covers least.
-  const render::Viewport view = to_viewport(*layout.view_3d);
+  if (!layout.view_3d || layout.overlay_area) return {top_left, top_left + size};
+  const scene::Rect& v = *layout.view_3d;
+  const Box view_box{{float(v.x), float(v.y)}, {float(v.right()), float(v.bottom())}};
+  // In the column unless a long text widens it into the 3D view: it then
+  // floats there as in small pictures.
+  if (layout.overlay_in_column && !Box{top_left, top_left + size}.intersects(view_box))
+    return {top_left, top_left + size};
+  return floating_window_box(f, v, size, px);
+}
+
+Box FramePainter::floating_window_box(const scene::Frame& f, const scene::Rect& where,
+                                      glm::vec2 size, float px) {
+  // Floating over the 3D view: at the view's left edge, as high as it can be
+  // without covering a run's current point; above the trail's key and a
+  // single run's horizon note at the bottom. Where no place is clear, the
+  // one that covers least.
+  const glm::vec2 top_left(float(where.x) + 6 * px, float(where.y) + 6 * px);
+  const render::Viewport view = to_viewport(where);
   const auto marks = run_mark_boxes(f, camera_for(f, view), view, px);
   auto covered = [&](glm::vec2 at) {
     float area = 0.0f;
@@ -398,17 +442,17 @@ Box FramePainter::info_window_box(const scene::Frame& f, const scene::FrameLayou
   const float lowest = std::max(
       top_left.y, float(where.y + where.height) - 6 * px - size.y -
                       float(2 + horizon_note_rows(f)) * std::max(line, horizon_note_line(px)));
-  const float right_x = float(where.x + where.width) - 6 * px - size.x;
+  // At the left edge only: the key of the marks holds the top right.
   glm::vec2 best = top_left;
+  // A window wider than the view (tiny pictures) covers the column's titles
+  // and labels wherever it goes lower: it keeps the top.
+  if (size.x > float(where.width) - 12 * px) return {best, best + size};
   float least = covered(top_left);
-  // The left edge first (the window's usual place; the key of the marks
-  // holds the top right), then the right.
-  for (const float x : {top_left.x, right_x})
-    for (float y = top_left.y; y <= lowest && least > 0.0f; y += 2 * px)
-      if (const float c = covered({x, y}); c < least) {
-        least = c;
-        best = {x, y};
-      }
+  for (float y = top_left.y; y <= lowest && least > 0.0f; y += 2 * px)
+    if (const float c = covered({top_left.x, y}); c < least) {
+      least = c;
+      best = {top_left.x, y};
+    }
   return {best, best + size};
 }
 
@@ -446,7 +490,19 @@ void FramePainter::draw_info_window(const scene::Frame& f, const scene::FrameLay
     text(f.overlay.title);
     ImGui::PopStyleColor();
     for (int i = 0; i < shown; ++i) text(f.overlay.lines[std::size_t(i)]);
-    if (!f.overlay.drifts.empty()) {
+    if (!f.overlay.drifts.empty() && scene::overlay_drifts_in_one_line(height())) {
+      ImGui::Separator();
+      bool first = true;
+      for (const auto& piece : drift_line(f)) {
+        if (!first) ImGui::SameLine(0.0f, 0.0f);
+        first = false;
+        const std::string drawn = render::drawable_text(piece.text);
+        if (piece.drift)
+          ImGui::TextColored(to_imgui(ink.drift_colour(*piece.drift)), "%s", drawn.c_str());
+        else
+          ImGui::TextDisabled("%s", drawn.c_str());
+      }
+    } else if (!f.overlay.drifts.empty()) {
       ImGui::Separator();
       const float values_x = ImGui::GetStyle().WindowPadding.x + drift_table_values_x(f);
       const float column_w = drift_table_column_width();
@@ -491,8 +547,13 @@ const render::RgbaImage& FramePainter::paint(const scene::Frame& f,
   // everything: the view's labels keep out of it.
   floating_overlay_.reset();
   if (f.layers.overlay) annotations_.overlay_window = info_window_box(f, layout, px);
-  if (annotations_.overlay_window && layout.view_3d && !layout.overlay_in_column)
-    floating_overlay_ = annotations_.overlay_window;
+  // So does a window in the column that a long title widens into the view.
+  if (annotations_.overlay_window && layout.view_3d) {
+    const scene::Rect& v = *layout.view_3d;
+    const Box view{{float(v.x), float(v.y)}, {float(v.right()), float(v.bottom())}};
+    if (!layout.overlay_in_column || annotations_.overlay_window->intersects(view))
+      floating_overlay_ = annotations_.overlay_window;
+  }
 
   renderer_->begin_frame(to_glm(f.colours.background));
   if (layout.view_3d) {

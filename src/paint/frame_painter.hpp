@@ -123,6 +123,15 @@ class FramePainter {
   // A row's values, one per column; and how far apart the columns start.
   static std::vector<std::string> drift_table_row(const scene::Frame& f, std::size_t row);
   float drift_table_column_width();
+  // A small picture's drift table in one line (scene::overlay_drifts_in_one_line):
+  // the largest drift named, over the drawn states and where the frame has
+  // it at the steps ("drift C₁ 2.6×10⁻⁴ drawn, 8.0×10⁻¹⁶ steps"),
+  // in pieces: a value's piece is coloured by its drift, the others are not.
+  struct DriftPiece {
+    std::string text;
+    std::optional<double> drift;
+  };
+  static std::vector<DriftPiece> drift_line(const scene::Frame& f);
 
  private:
   void draw_body(render::DrawList& list, const scene::Frame& f, float px);
@@ -133,6 +142,10 @@ class FramePainter {
   // poles placed clear of each other, the key, the colour bar and the caption.
   // Where each run's current point is drawn over the 3D view (the first
   // run's, then the others'), with the room the labels leave around it.
+  // The overlay window of `size` floating over the 3D view `where`, clear of
+  // the runs' points where it can be.
+  Box floating_window_box(const scene::Frame& f, const scene::Rect& where, glm::vec2 size,
+                          float px);
   static std::vector<Box> run_mark_boxes(const scene::Frame& f, const render::Camera& camera,
                                          const render::Viewport& view, float px);
   void draw_view_annotations(const scene::Frame& f, const render::Camera& camera,

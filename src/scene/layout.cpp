@@ -14,7 +14,8 @@ int overlay_height(int height, int type_height, int runs) {
   // A comparison of more runs than kOverlayReserved has drift rows gets room
   // for each run's row.
   const OverlayShape o{kOverlayReserved.lines, std::max(kOverlayReserved.drifts, runs)};
-  const int rows = 1 + overlay_lines_shown(o.lines, height) + 2 + o.drifts;
+  const int rows = 1 + overlay_lines_shown(o.lines, height) +
+                   (overlay_drifts_in_one_line(height) ? 1 : 2 + o.drifts);
   return int(std::ceil(overlay_font_px(type_height) * 1.36f * float(rows) +
                        18.0f * ui_scale(type_height)));
 }
@@ -171,7 +172,10 @@ FrameLayout layout_in_width(const LayoutRequest& q, int width) {
     // over the 3D view's corner.
     const int overlay_px = l.view_3d && q.layers.overlay ? overlay_height_for(q) : 0;
     const int least_side = height * (slots > 1 ? 25 : 35) / 100;
-    l.overlay_in_column = overlay_px > 0 && side_for(m.top + overlay_px) >= least_side;
+    // Small pictures (their drift table in one line) float it: their column
+    // is too narrow for its lines.
+    l.overlay_in_column = overlay_px > 0 && !overlay_drifts_in_one_line(height) &&
+                          side_for(m.top + overlay_px) >= least_side;
     const int margin_top = m.top + (l.overlay_in_column ? overlay_px : 0);
     const int side = std::max(16, side_for(margin_top));
     const int y = c.y + margin_top + (c.height - margin_top - m.bottom - side) / 2;
@@ -204,6 +208,8 @@ int type_height_for_font(float font_px) { return int(std::lround(font_px * 48.0f
 float ui_scale(int type_height) { return std::max(1.0f, float(type_height) / 720.0f); }
 
 int overlay_lines_shown(int lines, int height) { return std::min(lines, height < 480 ? 2 : lines); }
+
+bool overlay_drifts_in_one_line(int height) { return height < 480; }
 
 float camera_distance_for(double distance_setting, float aspect) {
   // Degrees to radians as glm::radians does, so that the painter's camera is unchanged to the bit.

@@ -97,5 +97,9 @@ int type_height_for_font(float font_px);
 // height: 1 up to 720 rows, then in proportion (3 at 2160).
 float ui_scale(int type_height);
 int overlay_lines_shown(int lines, int height);
+// Whether a picture of this height shows the drift table as one line (the
+// largest drift, named), not a row per integral with its key: below 480
+// rows, where the overlay floats over the 3D view and must leave it room.
+bool overlay_drifts_in_one_line(int height);
 
 }  // namespace epviz::scene

@@ -11,6 +11,7 @@
 #include "paint/painter_common.hpp"
 #include "render/gui_overlay.hpp"
 #include "render/imgui_context_scope.hpp"
+#include "scene/layout.hpp"
 #include "scene/theme.hpp"
 
 namespace epviz::vector {
@@ -123,6 +124,13 @@ void draw_overlay_window(cairo_t* cr, paint::FramePainter& painter, const scene:
   set_imgui_colour(cr, st.separator);
   cairo_set_line_width(cr, 1.0);
   cairo_stroke(cr);
+  if (scene::overlay_drifts_in_one_line(painter.height())) {
+    float x = 0.0f;
+    for (const auto& piece : paint::FramePainter::drift_line(frame))
+      x += line.put(piece.text,
+                    piece.drift ? to_imgui(ink.drift_colour(*piece.drift)) : st.text_disabled, x);
+    return;
+  }
   // The painter's columns: the names, then the values where it puts them,
   // each headed by what it measures.
   const float values_x = painter.drift_table_values_x(frame);

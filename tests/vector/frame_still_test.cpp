@@ -107,12 +107,13 @@ TEST_F(StillCommand, PdfIsOnePageOfTextWithTheViewAsItsOneImage) {
   const auto info = et::run_tool("pdfinfo '" + pdf + "'");
   EXPECT_EQ(field(info.out, "Pages"), "1") << info.out;
   EXPECT_EQ(field(info.out, "Page size"), "640 x 360 pts") << info.out;
-  // Text from every part: the overlay window (the job's title, the drift
-  // table's key), the 3D view's labels and key, the plane's panel and the legend.
+  // Text from every part: the overlay window (the job's title, the drift in
+  // one line at this size, of the drawn states), the 3D view's labels and
+  // key, the plane's panel and the legend.
   const auto text = et::run_tool("pdftotext -enc UTF-8 '" + pdf + "' -").out;
   for (const char* expected :
-       {"Kovalevskaya top: three integrators", "t = ", "≥10⁻²", "|γ|²", "fixed point", "e2",
-        "equator", "Riccati", "reference: dop853", "over t"})
+       {"Kovalevskaya top: three integrators", "t = ", "drift", "drawn", "|γ|²", "fixed point",
+        "e2", "equator", "Riccati", "reference: dop853", "over t"})
     EXPECT_NE(text.find(expected), std::string::npos) << expected << " not in:\n" << text;
   // One raster, the 3D view's pixels: pdfimages lists it after two header lines.
   const auto images = et::run_tool("pdfimages -list '" + pdf + "'").out;
