@@ -98,9 +98,9 @@ void draw_atlases(const std::vector<Json>& rows, const std::vector<sweep::AtlasR
                   const fs::path& out_dir, const MergeOptions& o) {
   // As figures: no taller than the grid needs (a few rows leave no blank band).
   std::vector<chart::Figure> figures;
-  for (const auto& q : requests)
-    for (auto& f : sweep::atlas_figures(rows, q, ftle, check))
-      figures.push_back({std::move(f.file_name), std::move(f.heat_map)});
+  // One set: every map of the sweep gets the same plot rectangle.
+  for (auto& f : sweep::atlas_figure_set(rows, requests, ftle, check))
+    figures.push_back({std::move(f.file_name), std::move(f.heat_map)});
   write_sweep_figures(figures, "atlas", out_dir, o);
 }
 
