@@ -93,9 +93,14 @@ void add_line_sample(render::DrawList& flat, glm::vec2 from, float length, scene
   }
 }
 
-std::string until_note(double until) {
-  char note[64];
-  std::snprintf(note, sizeof note, "  (pixel-true to t = %.3g)", until);
+// The run's pixel-true horizon, and where it fits, the picture size it
+// holds for (a larger picture has an earlier one).
+std::string until_note(double until, int width = 0, int height = 0) {
+  char note[96];
+  if (width > 0)
+    std::snprintf(note, sizeof note, "  (pixel-true to t = %.3g at %d×%d)", until, width, height);
+  else
+    std::snprintf(note, sizeof note, "  (pixel-true to t = %.3g)", until);
   return note;
 }
 
@@ -276,7 +281,8 @@ std::vector<AnnotationBox> draw_run_annotations(render::DrawList& flat, const sc
                                                 const scene::FrameLayout& layout,
                                                 const scene::Theme& ink, float px,
                                                 const TextMeasure& measure,
-                                                std::optional<float> note_bottom) {
+                                                std::optional<float> note_bottom,
+                                                glm::ivec2 picture) {
   std::vector<AnnotationBox> drawn;
   auto add_text = [&](glm::vec2 left_middle, const std::string& text, const glm::vec4& colour) {
     const glm::vec2 size = measure(text);
@@ -316,8 +322,12 @@ std::vector<AnnotationBox> draw_run_annotations(render::DrawList& flat, const sc
         add_diamond(flat, end, 5.5f * px, colour, to_glm(f.colours.background), px);
       std::string text = std::to_string(i + 1) + "  " + c.labels[i];
       if (const auto& until = pixel_true_until_of(f, i)) {
-        const std::string with_note = text + until_note(*until);
-        if (measure(with_note).x <= room) text = with_note;
+        for (const std::string& with_note :
+             {text + until_note(*until, picture.x, picture.y), text + until_note(*until)})
+          if (measure(with_note).x <= room) {
+            text = with_note;
+            break;
+          }
       }
       text = fitted(text, room, measure);
       Box box = add_text({text_x, y}, text, colour);

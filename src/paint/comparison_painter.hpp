@@ -78,11 +78,14 @@ using TextMeasure = std::function<glm::vec2(const std::string&)>;
 // The caption in its line, the comparison's legend in its strip
 // (layout.legend_area), a single run's horizon note at the 3D view's bottom
 // left with its last row's bottom at `note_bottom`, and the separation chart.
+// `picture`: the picture's size in pixels, which the runs' pixel-true
+// horizons in the legend are of.
 std::vector<AnnotationBox> draw_run_annotations(render::DrawList& flat, const scene::Frame& f,
                                                 const scene::FrameLayout& layout,
                                                 const scene::Theme& ink, float px,
                                                 const TextMeasure& measure,
-                                                std::optional<float> note_bottom);
+                                                std::optional<float> note_bottom,
+                                                glm::ivec2 picture);
 
 // The single run's horizon note, the room it takes over the 3D view: its rows and their height.
 int horizon_note_rows(const scene::Frame& f);

@@ -585,7 +585,7 @@ const render::RgbaImage& FramePainter::paint(const scene::Frame& f,
     const auto drawn = draw_run_annotations(
         notes, f, layout, ink_for(f), px,
         [&](const std::string& text) { return gui().text_size(text); },
-        layout.view_3d ? annotations_.legend_bottom : std::nullopt);
+        layout.view_3d ? annotations_.legend_bottom : std::nullopt, glm::ivec2(w, h));
     for (const auto& d : drawn) annotations_.legend.push_back({d.text, d.box, {}});
     draw_flat(notes);
   }

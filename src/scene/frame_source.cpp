@@ -59,12 +59,13 @@ std::string run_legend(const std::string& label, const sim::RunSpec& run,
   return s;
 }
 
-std::string pixel_true_note(double until, const sim::RunSpec& run) {
+std::string pixel_true_note(double until, const sim::RunSpec& run, int width, int height) {
   // An error-controlled run that still parts from its shadow does so because
   // the motion amplifies every small error; a fixed step's error is its own.
-  char line[120];
-  std::snprintf(line, sizeof line, "beyond t = %.3g: not pixel-accurate (%s)", until,
-                sim::is_adaptive(run.method) ? "chaos" : "step too coarse");
+  // The horizon is of this picture's pixels: a larger one has an earlier one.
+  char line[160];
+  std::snprintf(line, sizeof line, "beyond t = %.3g: not pixel-accurate at %d×%d (%s)", until,
+                width, height, sim::is_adaptive(run.method) ? "chaos" : "step too coarse");
   return line;
 }
 
@@ -203,7 +204,7 @@ Frame FrameSource::compose(int index) const {
   if (const auto& until = tracks_.front()->pixel_true_until()) {
     f.pixel_true_until = *until;
     f.untrue_age = age(*until);
-    f.pixel_true_note = pixel_true_note(*until, run);
+    f.pixel_true_note = pixel_true_note(*until, run, settings_.width, settings_.height);
   }
   if (plan_.comparison()) {
     compose_comparison(f);

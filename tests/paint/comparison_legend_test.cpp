@@ -44,7 +44,7 @@ std::vector<paint::AnnotationBox> legend_of(const scene::Frame& f) {
     return glm::vec2(7.0f * float(s.size()), 12.0f);
   };
   return paint::draw_run_annotations(flat, f, layout, scene::dark_theme(), 1.0f, measure,
-                                     std::nullopt);
+                                     std::nullopt, glm::ivec2(W, H));
 }
 
 const paint::AnnotationBox* find(const std::vector<paint::AnnotationBox>& rows,
@@ -93,6 +93,17 @@ TEST(ComparisonLegend, WithoutTheKeyTheCaptionMovesUpIntoItsRow) {
     ASSERT_TRUE(find(without, run));
     EXPECT_FLOAT_EQ(middle_y(*find(without, run)), middle_y(*find(with_key, run)));
   }
+}
+
+// A run's horizon in the legend names the picture size it holds for: a
+// larger picture resolves smaller errors and has an earlier one.
+TEST(ComparisonLegend, AHorizonNamesThePictureSizeItHoldsFor) {
+  const auto rows = legend_of(two_runs(10.0, std::nullopt, 4.0));
+  const std::string note =
+      "(pixel-true to t = 4 at " + std::to_string(W) + "×" + std::to_string(H) + ")";
+  const auto* second = find(rows, "2  rk4, step 0.2");
+  ASSERT_TRUE(second);
+  EXPECT_NE(second->text.find(note), std::string::npos) << second->text;
 }
 
 }  // namespace
