@@ -8,50 +8,90 @@
 #include "paint/dash_pattern.hpp"
 #include "paint/figure_common.hpp"
 #include "paint/painter_common.hpp"
+#include "paint/small_chart_axes.hpp"
 #include "physics/notation.hpp"
 #include "render/panel_2d.hpp"
 
 namespace epviz::paint {
 namespace {
 
-// Separations below this are shown at it: identical runs (zero) stay on the chart.
-constexpr double kFloor = 1e-16;
+// The lowest decade the chart goes down to: below it (and at zero, runs
+// that agree exactly) a separation is drawn on the bottom edge, marked.
+constexpr int kLowestDecade = -16;
 
 }  // namespace
+
+SeparationRange separation_range(const scene::Comparison& c) {
+  double smallest = INFINITY, largest = 0.0;
+  for (const auto& run : c.others)
+    for (const auto& p : run.separation)
+      if (const double v = p.y(); std::isfinite(v) && v > 0.0) {
+        smallest = std::min(smallest, v);
+        largest = std::max(largest, v);
+      }
+  SeparationRange r;
+  // Two unit vectors are at most 2 apart; a decade above the largest value
+  // if a run's γ ever left the sphere that far.
+  r.hi = std::max(std::log10(2.0), largest > 0.0 ? std::log10(largest) : 0.0);
+  const int data_lo = std::isfinite(smallest) ? int(std::floor(std::log10(smallest))) : -3;
+  // At least three decades, so that a chart of runs that agree to 10⁻¹ still
+  // reads as a log scale.
+  r.lo = std::max(std::min(data_lo, -3), kLowestDecade);
+  return r;
+}
 
 void draw_separation_chart(render::DrawList& flat, const scene::Comparison& c,
                            const scene::Rect& area, const scene::Theme& ink, float px,
                            const std::function<glm::vec2(const std::string&)>& measure) {
   if (area.width < 40 || area.height < 30 || c.others.empty()) return;
-  // Log scale: from the smallest separation drawn (a decade below) to |Δγ| = 2.
-  double lo = 0.0;
-  for (const auto& run : c.others)
-    for (const auto& p : run.separation)
-      lo = std::min(lo, std::floor(std::log10(std::max(double(p.y()), kFloor))));
-  lo = std::max(std::min(lo, -3.0), std::log10(kFloor));
-  const double hi = std::log10(2.0);
-  // The title above, the time axis's labels below.
-  const int title_px = int(14 * px), ticks_px = int(14 * px);
-  const render::Viewport plot_area{area.x, area.y + title_px, area.width,
-                                   std::max(10, area.height - title_px - ticks_px)};
-  const render::Panel2D plot(plot_area, {0.0, std::max(c.t_end, 1e-9), lo, hi}, false);
+  const SeparationRange range = separation_range(c);
+  const float text_h = measure("10⁻⁸").y;
+  const float gap = 2.0f * px, tick = 3.0f * px;
+  // The title's line on top, from the plot's left edge: the top decade's
+  // label, left of the plot, may rise beside it. The time labels underneath.
+  const float plot_top = float(area.y) + text_h + gap;
+  const float plot_bottom = float(area.bottom()) - tick - 1.0f * px - text_h;
+  const float plot_h = std::max(10.0f, plot_bottom - plot_top);
+  const auto y_ticks =
+      decade_ticks(range.lo, int(std::floor(range.hi)), plot_h / float(range.hi - range.lo), text_h,
+                   [](int e) { return decade_label(e); });
+  const float left = y_label_room(y_ticks, measure, px);
+  // The last time label is centred on the right edge: half of it inside.
+  const float right = 0.5f * measure(render::format_tick(c.t_end, c.t_end)).x + 1.0f * px;
+  const float plot_w = std::max(10.0f, float(area.width) - left - right);
+  const render::Viewport plot_area{int(std::lround(float(area.x) + left)),
+                                   int(std::lround(plot_top)), int(plot_w), int(plot_h)};
+  const double t_end = std::max(c.t_end, 1e-9);
+  const render::Panel2D plot(plot_area, {0.0, t_end, double(range.lo), range.hi}, false);
   render::PanelStyle style;
   style.background = to_glm(ink.panel_background);
   style.frame = to_glm(ink.panel_frame);
-  style.grid = to_glm(ink.panel_grid);
   style.axis = {0, 0, 0, 0};
-  style.text = to_glm(ink.panel_text);
-  style.tick_length = 3.0f * px;
+  style.tick_labels = false;
+  style.grid_lines = false;
+  style.tick_length = 0.0f;
   style.frame_width = 1.0f * px;
-  style.tick_count = 4;
-  style.min_tick_spacing_px = 12.0f * px;
   draw_axes_in_print(plot, flat, style);
+  SmallChartStyle ticks;
+  ticks.text = to_glm(ink.panel_text);
+  ticks.grid = to_glm(ink.panel_grid);
+  ticks.tick = to_glm(ink.panel_frame);
+  ticks.px = px;
+  draw_small_chart_ticks(flat, plot, time_ticks(t_end, plot_w, measure), y_ticks, ticks, measure);
+
   for (std::size_t i = 0; i < c.others.size(); ++i) {
     const auto& sep = c.others[i].separation;
     std::vector<glm::dvec2> points;
     points.reserve(sep.size());
-    for (const auto& p : sep)
-      points.emplace_back(p.x(), std::log10(std::max(double(p.y()), kFloor)));
+    std::vector<double> below;  // times at which a stretch under the range begins
+    bool was_below = false;
+    for (const auto& p : sep) {
+      const double v = p.y();
+      const bool under = !(v > 0.0) || std::log10(v) < double(range.lo);
+      if (under && !was_below) below.push_back(p.x());
+      was_below = under;
+      points.emplace_back(p.x(), under ? double(range.lo) : std::min(std::log10(v), range.hi));
+    }
     const glm::vec4 colour = to_glm(c.colours[std::min(i + 1, c.colours.size() - 1)]);
     // In the run's line style too, as on the sphere and the plane.
     const scene::LineStyle line = i + 1 < c.lines.size() ? c.lines[i + 1] : scene::LineStyle::solid;
@@ -65,15 +105,31 @@ void draw_separation_chart(render::DrawList& flat, const scene::Comparison& c,
           });
       plot.draw_polyline(flat, piece, std::span(&colour, 1), width);
     }
+    // Where the run is below the range (zero: the runs agree to the last
+    // bit): a small arrow down on the bottom edge, in the run's colour.
+    for (double t : below) {
+      const glm::vec2 at = plot.to_pixel({t, double(range.lo)});
+      const float a = 3.0f * px;
+      const glm::vec3 arrow[] = {
+          {at.x - a, at.y - a, 0.0f}, {at.x, at.y, 0.0f}, {at.x + a, at.y - a, 0.0f}};
+      flat.add_polyline(arrow, colour, 1.2f * px);
+    }
   }
-  // |Δγ|, the distance of a run's γ from run 1's, on a log scale; what Δγ is where there is room.
-  const std::string title = "log₁₀ " + std::string(physics::symbol::separation) + " over t";
-  const std::string gamma(physics::symbol::gamma);
-  const std::string defined = title + ",  Δ" + gamma + " = " + gamma + " − " + gamma + " of run 1";
-  flat.add_text({{float(area.x), float(area.y), 0.0f},
-                 measure(defined).x <= float(area.width) ? defined : title,
-                 style.text,
-                 render::TextAnchor::top_left});
+  // What is plotted: |Δγ| against t, and what Δγ is where there is room.
+  const std::string sep(physics::symbol::separation), gamma(physics::symbol::gamma);
+  const std::string title = sep + " against t, log scale";
+  const std::string defined =
+      sep + " against t,  Δ" + gamma + " = " + gamma + " − " + gamma + " of run 1,  log scale";
+  const std::string shortest = sep + " against t";
+  std::string text = shortest;
+  const float room = float(area.right()) - float(plot_area.x);
+  for (const auto& candidate : {defined, title})
+    if (measure(candidate).x <= room) {
+      text = candidate;
+      break;
+    }
+  flat.add_text(
+      {{float(plot_area.x), float(area.y), 0.0f}, text, ticks.text, render::TextAnchor::top_left});
 }
 
 }  // namespace epviz::paint
