@@ -61,7 +61,16 @@ void place_plots(const LayoutRequest& q, FrameLayout& l, int top, int side, cons
   if (q.section_panel) l.section_area = plot_in_slot(slots - 1);
 }
 
-// The legend of a comparison: a strip of `rows` under `above`.
+// The perspective scale at the sphere's centre in the 3D view `view`: half
+// the view's height spans tan(fov / 2) at the camera's distance.
+double sphere_px_per_unit(const LayoutRequest& q, const Rect& view) {
+  const float aspect = view.height > 0 ? float(view.width) / float(view.height) : 1.0f;
+  const double half_tan = std::tan(double(kFovDegrees) * M_PI / 360.0);
+  return 0.5 * double(view.height) /
+         (double(camera_distance_for(q.camera_distance, aspect)) * half_tan);
+}
+
+// The height of a comparison's legend: its rows and a margin.
 int legend_strip_height(const LayoutRequest& q) {
   const int th = q.page.type_height_for(q.height);
   return q.legend_rows * legend_row_height(th) + int(std::ceil(8.0f * ui_scale(th)));
@@ -109,12 +118,7 @@ FrameLayout layout_stacked(const LayoutRequest& q, int width) {
       l.legend_area = Rect{0, bottom, width, legend_strip_height(q)};
     }
   }
-  if (l.view_3d) {
-    const double half_tan = std::tan(double(kFovDegrees) * M_PI / 360.0);
-    const float aspect = float(l.view_3d->width) / float(l.view_3d->height);
-    l.sphere_px_per_unit = 0.5 * double(l.view_3d->height) /
-                           (double(camera_distance_for(q.camera_distance, aspect)) * half_tan);
-  }
+  if (l.view_3d) l.sphere_px_per_unit = sphere_px_per_unit(q, *l.view_3d);
   return l;
 }
 
@@ -181,15 +185,7 @@ FrameLayout layout_in_width(const LayoutRequest& q, int width) {
     const int y = c.y + margin_top + (c.height - margin_top - m.bottom - side) / 2;
     place_plots(q, l, y, side, m);
   }
-  if (l.view_3d) {
-    // The perspective scale at the sphere's centre: half the view's height
-    // spans tan(fov / 2) at the camera's distance.
-    const float aspect =
-        l.view_3d->height > 0 ? float(l.view_3d->width) / float(l.view_3d->height) : 1.0f;
-    const double half_tan = std::tan(double(kFovDegrees) * M_PI / 360.0);
-    l.sphere_px_per_unit = 0.5 * double(l.view_3d->height) /
-                           (double(camera_distance_for(q.camera_distance, aspect)) * half_tan);
-  }
+  if (l.view_3d) l.sphere_px_per_unit = sphere_px_per_unit(q, *l.view_3d);
   return l;
 }
 
