@@ -13,6 +13,7 @@
 #include "scene/plane_path.hpp"
 #include "scene/run_palette.hpp"
 #include "scene/theme.hpp"
+#include "sim/section.hpp"
 
 namespace epviz::scene {
 namespace {
@@ -93,9 +94,17 @@ FrameSource::FrameSource(const ScenePlan& plan, const SceneSettings& settings)
 FrameSource::~FrameSource() = default;
 
 void FrameSource::find_crossings() {
-  std::vector<sim::RunSpec> runs{plan_.run};
-  for (const auto& other : plan_.others) runs.push_back(other.run);
-  section_ = std::make_unique<SectionCrossings>(*settings_.section, runs);
+  // The panel's axes take in every crossing of the whole run, so that no dot
+  // moves as frames go: each run is integrated to its end before the first
+  // frame, once, its crossings found on its own steps as they are taken
+  // (sim::SectionObserver), and its samples kept for the frames.
+  std::vector<std::vector<sim::Crossing>> crossings;
+  for (auto& track : tracks_) {
+    sim::SectionObserver section(track->spec(), settings_.section->surface);
+    track->run_ahead([&section](const sim::DenseStep& step) { section.step(step); });
+    crossings.push_back(section.crossings());
+  }
+  section_ = std::make_unique<SectionCrossings>(*settings_.section, std::move(crossings));
 }
 
 void FrameSource::advance() {
@@ -109,9 +118,9 @@ void FrameSource::advance() {
 }
 
 Frame FrameSource::frame(int index) {
-  // The section's crossings: found once, to each run's end, with its own
-  // method and tolerance (renders only, as the cloud), at the first frame, so
-  // that a section run that loses the motion is a numerical failure there.
+  // The section's crossings: found at the first frame, from each run
+  // integrated to its end (renders only, as the cloud); a crossing that loses
+  // the motion ends the run there, a numerical failure at that frame.
   if (settings_.section && !section_ && !plan_.open_ended) find_crossings();
   const long target = long(index) * plan_.samples_per_frame;
   while (sample_index_ < target) advance();

@@ -55,7 +55,7 @@ class FrameSource {
 
  private:
   void advance();
-  void find_crossings();  // section_, for a job with a "section"
+  void find_crossings();  // section_, for a job with a "section": runs every track ahead
   Frame compose(int index) const;
   void compose_comparison(Frame& f) const;
   double trail_window() const;  // simulation time the trail covers

@@ -25,9 +25,39 @@ Eigen::Vector3d RunTrack::on_sphere(const sim::Sample& s) const {
   return view_ == View::space && s.attitude ? Eigen::Vector3d(*s.attitude * traced_axis_) : s.gamma;
 }
 
+void RunTrack::run_ahead(const sim::Trajectory::DenseStepObserver& on_step) {
+  trajectory_->observe_dense_steps(on_step);
+  try {
+    for (long k = 1; k <= spec_.samples; ++k) {
+      sim::Sample s = trajectory_->next();
+      ahead_.push_back({std::move(s), drifts_.drifts().steps});
+    }
+  } catch (const numerics::IntegrationError& e) {
+    ahead_failure_ = e.failure();
+  } catch (...) {
+    trajectory_->observe_dense_steps(nullptr);
+    throw;
+  }
+  trajectory_->observe_dense_steps(nullptr);  // `on_step` need not outlive this call
+  ahead_step_drifts_ = drifts_.drifts().steps;
+}
+
+sim::Sample RunTrack::next_sample() {
+  if (!ahead_step_drifts_) return trajectory_->next();
+  if (ahead_.empty()) {
+    if (ahead_failure_) throw numerics::IntegrationError(*ahead_failure_);
+    ahead_step_drifts_.reset();  // past the run's end: on as without run_ahead
+    return trajectory_->next();
+  }
+  AheadSample a = std::move(ahead_.front());
+  ahead_.pop_front();
+  ahead_step_drifts_ = a.step_drifts;
+  return a.sample;
+}
+
 const sim::Sample& RunTrack::advance() {
   try {
-    take(trajectory_->next());
+    take(next_sample());
   } catch (const numerics::IntegrationError& e) {
     failure_ = e.failure();
     throw;
@@ -39,6 +69,8 @@ const sim::Sample& RunTrack::advance() {
 void RunTrack::take(const sim::Sample& s) {
   latest_ = s;
   drifts_.output(s);
+  drifts_shown_.output = drifts_.drifts().output;
+  drifts_shown_.steps = ahead_step_drifts_ ? *ahead_step_drifts_ : drifts_.drifts().steps;
   HistoryPoint p;
   p.t = s.t;
   p.sphere = on_sphere(s).cast<float>();

@@ -2,6 +2,7 @@
 // One run of a scene as the frame source follows it: its trajectory, the
 // drifts of its steps and of the states it draws, its trail history, and a shadow run that estimates how
 // far its picture is from the true motion.
+#include <deque>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -29,6 +30,14 @@ class RunTrack {
   // Advances to the next sample time. Throws numerics::IntegrationError from
   // the run (a failing shadow only ends the error estimate).
   const sim::Sample& advance();
+  // Before the first advance(): integrates the run through its last sample now, each accepted step shown
+  // to `on_step` with its dense output, and keeps the samples (with the
+  // drift at the steps up to each) for advance() to hand out in turn: a
+  // scene that must know the whole run before its first frame (the section
+  // panel's fixed axes) integrates it once. The memory is a sample's worth
+  // per sample, whatever the steps between them. A failure, the observer's
+  // too, ends the run there: advance() throws it on reaching it.
+  void run_ahead(const sim::Trajectory::DenseStepObserver& on_step);
   // The run's own failure, once advance() has thrown it (which run of a
   // comparison stopped the scene).
   const std::optional<numerics::Failure>& failure() const { return failure_; }
@@ -39,7 +48,7 @@ class RunTrack {
   sim::Trajectory& trajectory() { return *trajectory_; }
   // At the integrator's steps and over the samples drawn (sim::RunDrifts):
   // the picture shows the second.
-  const sim::RunDrifts& drifts() const { return drifts_.drifts(); }
+  const sim::RunDrifts& drifts() const { return drifts_shown_; }
   const sim::Sample& latest() const { return latest_; }
   const TrailHistory& history() const { return history_; }
   // The point drawn on the sphere for a sample (gamma, or the apex in the space view).
@@ -55,6 +64,12 @@ class RunTrack {
   const sim::Trajectory* shadow() const { return shadow_.get(); }
 
  private:
+  // A sample integrated ahead, with the largest drift at the steps up to it.
+  struct AheadSample {
+    sim::Sample sample;
+    sim::Drifts step_drifts;
+  };
+  sim::Sample next_sample();
   void take(const sim::Sample& s);
   void compare_with_shadow(const sim::Sample& s);
 
@@ -66,6 +81,10 @@ class RunTrack {
   bool shadow_failed_ = false;
   double error_scale_px_;  // estimated error in pixels per unit of |run - shadow|
   sim::RunDriftMonitor drifts_;
+  sim::RunDrifts drifts_shown_;                     // up to the latest sample handed out
+  std::deque<AheadSample> ahead_;                   // run_ahead's samples not handed out yet
+  std::optional<numerics::Failure> ahead_failure_;  // what ended run_ahead's run
+  std::optional<sim::Drifts> ahead_step_drifts_;    // the latest sample's, once run ahead
   TrailHistory history_;
   sim::Sample latest_;
   std::optional<double> pixel_true_until_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "physics/format.hpp"
 
@@ -39,14 +40,12 @@ std::string section_title(const sim::SectionSurface& surface) {
 }
 
 SectionCrossings::SectionCrossings(const SectionPanelSettings& settings,
-                                   const std::vector<sim::RunSpec>& runs)
-    : settings_(settings) {
+                                   std::vector<std::vector<sim::Crossing>> crossings)
+    : settings_(settings), crossings_(std::move(crossings)) {
   double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   double hi[2] = {-lo[0], -lo[1]};
-  for (const auto& run : runs) {
-    crossings_.push_back(
-        sim::section_crossings(run, settings.surface, std::numeric_limits<int>::max()));
-    for (const auto& c : crossings_.back()) {
+  for (const auto& run : crossings_) {
+    for (const auto& c : run) {
       const Eigen::Vector2d p = plotted(c, settings.coords);
       for (int k = 0; k < 2; ++k) {
         lo[k] = std::min(lo[k], p[k]);

@@ -1,12 +1,12 @@
 #pragma once
 // A render job's section panel: the crossings of a section surface by each
-// run, found once from the run's own method and tolerance by the section
-// code (sim/section.hpp), and handed to each frame up to its time.
+// run, found on the run's own steps by the section code's search
+// (sim::SectionObserver, FrameSource), and handed to each frame up to its
+// time, on axes fixed by all of them.
 #include <array>
 #include <vector>
 
 #include "scene/frame.hpp"
-#include "sim/run_spec.hpp"
 #include "sim/section.hpp"
 
 namespace epviz::scene {
@@ -24,10 +24,10 @@ std::string section_title(const sim::SectionSurface& surface);
 
 class SectionCrossings {
  public:
-  // Every crossing of each run up to its t_end (the runs of a scene: the
-  // first, then the others). Throws numerics::IntegrationError as
-  // sim::section_crossings does.
-  SectionCrossings(const SectionPanelSettings& settings, const std::vector<sim::RunSpec>& runs);
+  // Every crossing of each run (the runs of a scene: the first, then the
+  // others), in time order.
+  SectionCrossings(const SectionPanelSettings& settings,
+                   std::vector<std::vector<sim::Crossing>> crossings);
 
   // The panel at time `t`: each run's crossings at or before it, in `colours` (one per run).
   SectionPanel panel_at(double t, const std::vector<Rgba>& colours) const;

@@ -10,6 +10,7 @@
 #include "physics/notation.hpp"
 #include "sim/drift.hpp"
 #include "sim/ensemble.hpp"
+#include "sim/rhs_tally.hpp"
 #include "sim/steppers.hpp"
 
 namespace epviz::sim {
@@ -72,10 +73,13 @@ class FixedSteps {
   }
   double t() const { return t0_ + double(n_) * h_; }
   const State& state() const { return x1_; }
+  // The method's evaluations and the interpolant's.
+  long rhs_evals() const { return stepper_.stats().rhs_evals + interpolation_evals_; }
   State dense(double t_at) const {
     if (!have_derivatives_) {
       equations_.rhs(t() - h_, x0_, d0_);
       equations_.rhs(t(), x1_, d1_);
+      interpolation_evals_ += 2;
       have_derivatives_ = true;
     }
     const double s = (t_at - (t() - h_)) / h_, r = 1.0 - s;
@@ -93,7 +97,16 @@ class FixedSteps {
   State x0_, x1_;
   mutable State d0_, d1_;
   mutable bool have_derivatives_ = false;
+  mutable long interpolation_evals_ = 0;
 };
+
+template <class Stepper>
+long rhs_evals_of(const Stepper& stepper) {
+  if constexpr (requires { stepper.rhs_evals(); })
+    return stepper.rhs_evals();
+  else
+    return stepper.stats().rhs_evals;
+}
 
 // A step's dense output as the crossing search reads it, at times within the
 // step: the section function (all the search needs while it iterates) and
@@ -272,6 +285,7 @@ class OrbitSection {
   }
 
   std::vector<Crossing>& crossings() { return found_; }
+  const std::vector<Crossing>& crossings() const { return found_; }
 
  private:
   SectionSurface surface_;
@@ -284,6 +298,14 @@ class OrbitSection {
   std::vector<Crossing> found_;
 };
 
+// Adds a stepper's evaluations to the process's tally (sim/rhs_tally.hpp)
+// when its section ends, however it ends.
+template <class Stepper>
+struct TallyOnExit {
+  const Stepper& stepper;
+  ~TallyOnExit() { tally_rhs_evals(rhs_evals_of(stepper)); }
+};
+
 template <class Stepper>
 std::vector<Crossing> run_section(Stepper stepper, const RunSpec& run,
                                   const SectionSurface& surface, int max_crossings) {
@@ -291,6 +313,7 @@ std::vector<Crossing> run_section(Stepper stepper, const RunSpec& run,
   const auto fail_on = [](std::optional<numerics::Failure> failure) {
     if (failure) throw numerics::IntegrationError(*failure);
   };
+  const TallyOnExit<Stepper> tally{stepper};
   StepperDense<Stepper> dense(stepper, surface);
   stepper.init(0.0, physics::DirectSystem::pack(run.initial));
   State x_prev = stepper.state();
@@ -304,6 +327,26 @@ std::vector<Crossing> run_section(Stepper stepper, const RunSpec& run,
   fail_on(section.motion_failure(stepper.t(), stepper.state()));
   return std::move(section.crossings());
 }
+
+// A step shown to a SectionObserver: the run's dense output as the search
+// reads it, the state kept for the state asked at the same time.
+class ShownDense final : public DenseOutput {
+ public:
+  ShownDense(const DenseStep& step, const SectionSurface& surface)
+      : step_(step), surface_(surface) {}
+  double level(double t) override {
+    t_ = t;
+    x_ = step_.at(t);
+    return level_of(surface_, x_);
+  }
+  State state(double t) override { return t == t_ ? x_ : step_.at(t); }
+
+ private:
+  const DenseStep& step_;
+  const SectionSurface& surface_;
+  double t_ = std::numeric_limits<double>::quiet_NaN();
+  State x_;
+};
 
 State state_of(const std::array<double, 6>& x) {
   State s;
@@ -408,6 +451,30 @@ std::vector<Crossing> section_crossings(const RunSpec& run, const SectionSurface
       return run_section(FixedSteps<decltype(stepper)>(std::move(stepper), run.step, run.body), run,
                          surface, max_crossings);
   });
+}
+
+struct SectionObserver::Search {
+  SectionSurface surface;
+  OrbitSection section;
+};
+
+SectionObserver::SectionObserver(const RunSpec& run, const SectionSurface& surface)
+    : search_(std::make_unique<Search>(
+          Search{surface, OrbitSection(run, surface, std::numeric_limits<int>::max())})) {}
+
+SectionObserver::~SectionObserver() = default;
+
+void SectionObserver::step(const DenseStep& step) {
+  OrbitSection& section = search_->section;
+  // As run_section's loop: the dense output only for a step that may hold a crossing.
+  if (section.done() || !section.may_cross(step.x0, step.x1)) return;
+  ShownDense dense(step, search_->surface);
+  if (auto failure = section.scan(step.t0, step.x0, step.t1, step.x1, dense))
+    throw numerics::IntegrationError(*failure);
+}
+
+const std::vector<Crossing>& SectionObserver::crossings() const {
+  return search_->section.crossings();
 }
 
 bool sections_batched(const RunSpec& run) { return batchable(run); }

@@ -2,6 +2,7 @@
 // Poincaré sections of one orbit: the instants where a state function crosses
 // a value in a chosen direction, each located on the dense output of the step
 // that brackets it (docs/sections.md).
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -9,6 +10,7 @@
 
 #include "numerics/failure.hpp"
 #include "physics/body.hpp"
+#include "sim/dense_step.hpp"
 #include "sim/run_spec.hpp"
 
 namespace epviz::sim {
@@ -57,6 +59,30 @@ struct Crossing {
 // (a failed step, a non-finite state, drift past the limit).
 std::vector<Crossing> section_crossings(const RunSpec& run, const SectionSurface& surface,
                                         int max_crossings);
+
+// One orbit's crossings found from a run as it goes, with no integration of
+// its own (a render's section panel, drawn from the run it draws): shown
+// each accepted step of the run with its dense output
+// (sim::Trajectory::observe_dense_steps), it locates and checks the
+// crossings in it as section_crossings does for its own steps, and keeps
+// those up to run.t_end. Shown the steps section_crossings takes, it finds
+// bitwise its crossings.
+class SectionObserver {
+ public:
+  SectionObserver(const RunSpec& run, const SectionSurface& surface);
+  ~SectionObserver();
+  SectionObserver(const SectionObserver&) = delete;
+  SectionObserver& operator=(const SectionObserver&) = delete;
+
+  // Throws numerics::IntegrationError for a crossing that loses the motion
+  // (sim::MotionCheck with run.max_drift).
+  void step(const DenseStep& step);
+  const std::vector<Crossing>& crossings() const;
+
+ private:
+  struct Search;  // the crossing search section_crossings runs
+  std::unique_ptr<Search> search_;
+};
 
 // Whether section_crossings_batched gives `run` the crossings
 // section_crossings gives it: dop853 (the batch integrator's method). Other

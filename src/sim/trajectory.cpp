@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "sim/drift.hpp"
+#include "sim/rhs_tally.hpp"
 #include "sim/trajectory_start.hpp"
 
 namespace epviz::sim {
@@ -24,7 +25,7 @@ class CheckedTrajectory final : public Trajectory {
 
   Sample initial() const override { return inner_->initial(); }
   Sample next() override {
-    Sample s = inner_->next();
+    Sample s = next_tallied();
     if (auto f = check_.failure(s, method_)) [[unlikely]]
       throw numerics::IntegrationError(std::move(*f));
     return s;
@@ -34,11 +35,33 @@ class CheckedTrajectory final : public Trajectory {
   double effective_step() const override { return inner_->effective_step(); }
   long interpolation_evals() const override { return inner_->interpolation_evals(); }
   void observe_steps(StepObserver observer) override { inner_->observe_steps(std::move(observer)); }
+  void observe_dense_steps(DenseStepObserver observer) override {
+    inner_->observe_dense_steps(std::move(observer));
+  }
 
  private:
+  // The inner run's next sample, its evaluations added to the process's
+  // tally (sim/rhs_tally.hpp), a failed step's too.
+  Sample next_tallied() {
+    try {
+      Sample s = inner_->next();
+      tally();
+      return s;
+    } catch (...) {
+      tally();
+      throw;
+    }
+  }
+  void tally() {
+    const long spent = inner_->stats().rhs_evals + inner_->interpolation_evals();
+    tally_rhs_evals(spent - tallied_);
+    tallied_ = spent;
+  }
+
   std::unique_ptr<Trajectory> inner_;
   MotionCheck check_;
   std::string method_;
+  long tallied_ = 0;
 };
 
 std::unique_ptr<Trajectory> start_unchecked(const RunSpec& spec) {

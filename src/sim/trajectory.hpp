@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "numerics/system.hpp"
+#include "sim/dense_step.hpp"
 #include "sim/run_spec.hpp"
 #include "sim/simulate.hpp"
 
@@ -37,6 +38,12 @@ class Trajectory {
   // does not depend on the output spacing (sim::RunDriftMonitor).
   using StepObserver = std::function<void(const Sample&)>;
   virtual void observe_steps(StepObserver observer) { step_observer_ = std::move(observer); }
+  // Called after every accepted step with the step and its dense output
+  // (sim/dense_step.hpp), before the output time that needed it is handed
+  // out: a Poincaré section found from the run itself. The first step shown
+  // is the next one taken; an empty observer stops the showing.
+  using DenseStepObserver = std::function<void(const DenseStep&)>;
+  virtual void observe_dense_steps(DenseStepObserver observer) = 0;
   double spacing() const { return spacing_; }
 
   // Output spacing spec.t_end / spec.samples. Throws std::invalid_argument for

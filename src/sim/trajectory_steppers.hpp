@@ -25,6 +25,25 @@ Sample make_sample(const Sys& sys, double t, const typename Sys::State& x) {
   return s;
 }
 
+// The direct formulation's state (Omega, gamma) of a state of `sys`.
+template <class Sys>
+DenseStep::State direct_state(const Sys& sys, const typename Sys::State& x) {
+  DenseStep::State d;
+  d << sys.omega(x), sys.gamma(x);
+  return d;
+}
+
+// A step shown to a dense step observer: its dense output is `at`'s.
+template <class At>
+class DenseStepOf final : public DenseStep {
+ public:
+  explicit DenseStepOf(const At& at) : at_(at) {}
+  State at(double t) const override { return at_(t); }
+
+ private:
+  const At& at_;
+};
+
 template <class Sys>
 long chart_switches_of(const Sys& sys) {
   if constexpr (requires { sys.chart_switches(); })
@@ -63,9 +82,27 @@ class FixedStepTrajectory final : public Trajectory {
   long chart_switches() const override { return chart_switches_of(stepper_.system()); }
   double effective_step() const override { return h_; }
   long interpolation_evals() const override { return interpolation_evals_; }
+  void observe_dense_steps(DenseStepObserver observer) override {
+    dense_observer_ = std::move(observer);
+    x_shown_ = direct_state(stepper_.system(), x1_);
+  }
 
  private:
   double t1() const { return double(n_) * h_; }
+
+  // The step just taken, with the interpolant the samples use (its
+  // derivatives evaluated only if the observer asks within the step).
+  void show_step() {
+    DenseStep::State x1 = direct_state(stepper_.system(), x1_);
+    const auto at = [this](double t) { return direct_state(stepper_.system(), hermite(t)); };
+    DenseStepOf step(at);
+    step.t0 = t1() - h_;
+    step.t1 = t1();
+    step.x0 = x_shown_;
+    step.x1 = x1;
+    dense_observer_(step);
+    x_shown_ = x1;
+  }
 
   void advance() {
     const double t0 = t1();
@@ -90,6 +127,7 @@ class FixedStepTrajectory final : public Trajectory {
     }
     ++n_;
     if (observing_steps()) notify_step(make_sample(stepper_.system(), t1(), x1_));
+    if (dense_observer_) show_step();
   }
 
   State hermite(double t) {
@@ -118,6 +156,8 @@ class FixedStepTrajectory final : public Trajectory {
   long n_ = 0;  // steps taken: x1_ is the state at n_ * h_
   long k_ = 0;  // output times handed out
   long interpolation_evals_ = 0;
+  DenseStepObserver dense_observer_;
+  DenseStep::State x_shown_;  // the direct state at the end of the last step shown
 };
 
 // Adaptive methods: steps as the error control wants; output by dense output.
@@ -132,9 +172,11 @@ class AdaptiveTrajectory final : public Trajectory {
   Sample next() override {
     const double t = double(++k_) * spacing_;
     while (stepper_.t() < t) {
+      const double t0 = stepper_.t();
       stepper_.step();
       if (observing_steps())
         notify_step(make_sample(stepper_.system(), stepper_.t(), stepper_.state()));
+      if (dense_observer_) show_step(t0);
     }
     // The system's chart is the one the last step ran in, so the dense state
     // and the chart agree.
@@ -143,10 +185,31 @@ class AdaptiveTrajectory final : public Trajectory {
   numerics::Stats stats() const override { return stepper_.stats(); }
   long chart_switches() const override { return chart_switches_of(stepper_.system()); }
   double effective_step() const override { return 0.0; }
+  void observe_dense_steps(DenseStepObserver observer) override {
+    dense_observer_ = std::move(observer);
+    x_shown_ = direct_state(stepper_.system(), stepper_.state());
+  }
 
  private:
+  // The step just taken from t0, with the stepper's dense output (in the
+  // chart the step ran in, as for the samples).
+  void show_step(double t0) {
+    const auto& sys = stepper_.system();
+    DenseStep::State x1 = direct_state(sys, stepper_.state());
+    const auto at = [this](double t) { return direct_state(stepper_.system(), stepper_.dense(t)); };
+    DenseStepOf step(at);
+    step.t0 = t0;
+    step.t1 = stepper_.t();
+    step.x0 = x_shown_;
+    step.x1 = x1;
+    dense_observer_(step);
+    x_shown_ = x1;
+  }
+
   Stepper stepper_;
   long k_ = 0;
+  DenseStepObserver dense_observer_;
+  DenseStep::State x_shown_;  // the direct state at the end of the last step shown
 };
 
 template <class Stepper>

@@ -10,9 +10,12 @@
 #include "job/job_plan.hpp"
 #include "job/schema.hpp"
 #include "scene/frame_source.hpp"
+#include "scene/plan.hpp"
 #include "section/section_job.hpp"
 #include "section/section_run.hpp"
+#include "sim/rhs_tally.hpp"
 #include "sim/section.hpp"
+#include "sim/trajectory.hpp"
 #include "support/cli.hpp"
 
 namespace epviz {
@@ -162,6 +165,77 @@ TEST(SectionPanel, ComparisonScenesShowEachRunsCrossingsInItsColour) {
   ASSERT_EQ(f.section->runs[1].size(), rk4.size());
   for (std::size_t k = 0; k < rk4.size(); ++k)
     EXPECT_EQ(f.section->runs[1][k].x(), rk4[k].gamma.x());
+}
+
+// The right-hand-side evaluations of `spec` integrated alone through its
+// samples, as a render without a section panel integrates it.
+long evals_alone(const sim::RunSpec& spec) {
+  auto t = sim::Trajectory::start(spec);
+  for (long k = 1; k <= spec.samples; ++k) t->next();
+  return t->stats().rhs_evals + t->interpolation_evals();
+}
+
+TEST(SectionPanel, EachRunIsIntegratedOncePlusItsShadow) {
+  // One run, and a comparison whose second run takes fixed steps.
+  auto comparison = kovalevskaya_job(nlohmann::json::object());
+  comparison["runs"] = {{{"label", "fine"}}, {{"label", "rk4"}, {"method", "rk4"}, {"step", 0.05}}};
+  for (const auto& j : {kovalevskaya_job(nlohmann::json::object()), comparison}) {
+    const auto job = render_job(j);
+    const auto plan = job::plan_job(job);
+    std::vector<sim::RunSpec> runs{plan.run};
+    for (const auto& other : plan.others) runs.push_back(other.run);
+    SCOPED_TRACE(runs.size());
+    long alone = 0;  // every run and its shadow, each integrated once
+    for (const auto& run : runs) alone += evals_alone(run) + evals_alone(scene::shadow_run(run));
+
+    const long before = sim::rhs_evals_tallied();
+    scene::FrameSource source(plan, job.scene);
+    scene::Frame last;
+    for (int i = 0; i < source.frame_count(); ++i) last = source.frame(i);
+    const long spent = sim::rhs_evals_tallied() - before;
+    ASSERT_TRUE(last.section);
+    long crossings = 0;
+    for (const auto& dots : last.section->runs) crossings += long(dots.size());
+    ASSERT_GT(crossings, 10);
+    // A step that holds a crossing may need the dense output that no sample
+    // in it asked for: DOP853's three more stages, or the two derivatives of
+    // a fixed step's interpolant. Another pass over a run would cost
+    // thousands.
+    EXPECT_GE(spent, alone);
+    EXPECT_LE(spent, alone + 3 * crossings) << "alone " << alone << ", spent " << spent;
+  }
+}
+
+TEST(SectionPanel, CrossingsOfASpinorRunAreThoseOfAMuchTighterDirectSection) {
+  // The space view integrates the spinor formulation: its crossings, found
+  // on its own dense output, against `epviz section`'s direct formulation at
+  // a hundredth of the tolerance.
+  auto j = kovalevskaya_job(nlohmann::json::object());
+  j["view"] = "space";
+  j["simulation"]["tol"] = 1e-12;
+  const auto job = render_job(j);
+  const auto plan = job::plan_job(job);
+  ASSERT_EQ(plan.run.formulation, sim::Formulation::spinor);
+  scene::FrameSource source(plan, job.scene);
+  scene::Frame last;
+  for (int i = 0; i < source.frame_count(); ++i) last = source.frame(i);
+  ASSERT_TRUE(last.section);
+  sim::RunSpec tight = plan.run;
+  tight.formulation = sim::Formulation::direct;
+  tight.tol = plan.run.tol * 1e-2;
+  const auto expected = section_code_crossings(tight, job.scene.section->surface);
+  const auto& dots = last.section->runs.front();
+  ASSERT_GT(expected.size(), 10u);
+  ASSERT_EQ(dots.size(), expected.size());
+  double worst = 0;
+  for (std::size_t k = 0; k < dots.size(); ++k) {
+    SCOPED_TRACE(k);
+    worst = std::max({worst, std::abs(dots[k].x() - expected[k].gamma.x()),
+                      std::abs(dots[k].y() - expected[k].omega.z())});
+    EXPECT_NEAR(dots[k].x(), expected[k].gamma.x(), 1e-7);
+    EXPECT_NEAR(dots[k].y(), expected[k].omega.z(), 1e-7);
+  }
+  std::printf("worst %g n %zu\n", worst, dots.size());
 }
 
 TEST(SectionPanel, ASectionRunThatLosesTheMotionIsANumericalFailure) {
