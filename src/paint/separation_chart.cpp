@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,11 +48,12 @@ void draw_separation_chart(render::DrawList& flat, const scene::Comparison& c,
   const SeparationRange range = separation_range(c);
   const float text_h = measure("10⁻⁸").y;
   const float gap = 2.0f * px, tick = 3.0f * px;
-  // The title's line on top, from the plot's left edge: the top decade's
-  // label, left of the plot, may rise beside it. The time labels underneath.
-  const float plot_top = float(area.y) + text_h + gap;
+  // The title's line on top, the time labels underneath; with no room for
+  // both and a plot, the plot takes the title's line.
   const float plot_bottom = float(area.bottom()) - tick - 1.0f * px - text_h;
-  const float plot_h = std::max(10.0f, plot_bottom - plot_top);
+  const bool title_line = plot_bottom - (float(area.y) + text_h + gap) >= 8.0f * px;
+  const float plot_top = title_line ? float(area.y) + text_h + gap : float(area.y) + 0.5f * text_h;
+  const float plot_h = std::max(1.0f, plot_bottom - plot_top);
   const auto y_ticks =
       decade_ticks(range.lo, int(std::floor(range.hi)), plot_h / float(range.hi - range.lo), text_h,
                    [](int e) { return decade_label(e); });
@@ -61,6 +63,28 @@ void draw_separation_chart(render::DrawList& flat, const scene::Comparison& c,
   const float plot_w = std::max(10.0f, float(area.width) - left - right);
   const render::Viewport plot_area{int(std::lround(float(area.x) + left)),
                                    int(std::lround(plot_top)), int(plot_w), int(plot_h)};
+
+  // What is plotted: |Δγ| against t, and what Δγ is where there is room;
+  // from the plot's left edge (the top decade's label may rise beside it),
+  // else from the area's, the labels it would cover left out.
+  const std::string sep(physics::symbol::separation), gamma(physics::symbol::gamma);
+  const std::string shortest = sep + " against t";
+  const std::string candidates[] = {
+      sep + " against t,  Δ" + gamma + " = " + gamma + " − " + gamma + " of run 1,  log scale",
+      shortest + ", log scale", shortest};
+  std::optional<render::TextLabel> title;
+  for (const float x : {float(plot_area.x), float(area.x)}) {
+    for (const auto& text : candidates)
+      if (title_line && measure(text).x <= float(area.right()) - x) {
+        title = render::TextLabel{
+            {x, float(area.y), 0.0f}, text, to_glm(ink.panel_text), render::TextAnchor::top_left};
+        break;
+      }
+    if (title) break;
+  }
+  std::vector<TextBox> keep_out;
+  if (title) keep_out.push_back(text_box(*title, measure(title->text)));
+
   const double t_end = std::max(c.t_end, 1e-9);
   const render::Panel2D plot(plot_area, {0.0, t_end, double(range.lo), range.hi}, false);
   render::PanelStyle style;
@@ -77,15 +101,17 @@ void draw_separation_chart(render::DrawList& flat, const scene::Comparison& c,
   ticks.grid = to_glm(ink.panel_grid);
   ticks.tick = to_glm(ink.panel_frame);
   ticks.px = px;
-  draw_small_chart_ticks(flat, plot, time_ticks(t_end, plot_w, measure), y_ticks, ticks, measure);
+  draw_small_chart_ticks(flat, plot, time_ticks(t_end, plot_w, measure), y_ticks, ticks, measure,
+                         keep_out);
+  if (title) flat.add_text(*title);
 
   for (std::size_t i = 0; i < c.others.size(); ++i) {
-    const auto& sep = c.others[i].separation;
+    const auto& samples = c.others[i].separation;
     std::vector<glm::dvec2> points;
-    points.reserve(sep.size());
+    points.reserve(samples.size());
     std::vector<double> below;  // times at which a stretch under the range begins
     bool was_below = false;
-    for (const auto& p : sep) {
+    for (const auto& p : samples) {
       const double v = p.y();
       const bool under = !(v > 0.0) || std::log10(v) < double(range.lo);
       if (under && !was_below) below.push_back(p.x());
@@ -115,21 +141,6 @@ void draw_separation_chart(render::DrawList& flat, const scene::Comparison& c,
       flat.add_polyline(arrow, colour, 1.2f * px);
     }
   }
-  // What is plotted: |Δγ| against t, and what Δγ is where there is room.
-  const std::string sep(physics::symbol::separation), gamma(physics::symbol::gamma);
-  const std::string title = sep + " against t, log scale";
-  const std::string defined =
-      sep + " against t,  Δ" + gamma + " = " + gamma + " − " + gamma + " of run 1,  log scale";
-  const std::string shortest = sep + " against t";
-  std::string text = shortest;
-  const float room = float(area.right()) - float(plot_area.x);
-  for (const auto& candidate : {defined, title})
-    if (measure(candidate).x <= room) {
-      text = candidate;
-      break;
-    }
-  flat.add_text(
-      {{float(plot_area.x), float(area.y), 0.0f}, text, ticks.text, render::TextAnchor::top_left});
 }
 
 }  // namespace epviz::paint

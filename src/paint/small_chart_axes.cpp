@@ -58,7 +58,8 @@ float y_label_room(const std::vector<AxisTick>& y, const MeasureText& measure, f
 
 void draw_small_chart_ticks(render::DrawList& list, const render::Panel2D& plot,
                             const std::vector<AxisTick>& x, const std::vector<AxisTick>& y,
-                            const SmallChartStyle& style, const MeasureText& measure) {
+                            const SmallChartStyle& style, const MeasureText& measure,
+                            std::vector<TextBox> keep_out) {
   const auto& area = plot.plot_area();
   const float left = float(area.x), right = float(area.x + area.width);
   const float top = float(area.y), bottom = float(area.y + area.height);
@@ -66,7 +67,6 @@ void draw_small_chart_ticks(render::DrawList& list, const render::Panel2D& plot,
   auto line = [&](glm::vec2 a, glm::vec2 b, const glm::vec4& colour) {
     list.add_line(glm::vec3(a, 0.0f), glm::vec3(b, 0.0f), colour, width);
   };
-  std::vector<TextBox> x_boxes;
   for (const auto& t : x) {
     const float at = plot.to_pixel({t.at, plot.range().y_min}).x;
     if (at > left + 0.5f && at < right - 0.5f) line({at, top}, {at, bottom}, style.grid);
@@ -74,7 +74,7 @@ void draw_small_chart_ticks(render::DrawList& list, const render::Panel2D& plot,
     if (t.label.empty()) continue;
     render::TextLabel l{
         {at, bottom + tick + 1.0f * style.px, 0.0f}, t.label, style.text, render::TextAnchor::top};
-    x_boxes.push_back(text_box(l, measure(l.text)));
+    keep_out.push_back(text_box(l, measure(l.text)));
     list.add_text(std::move(l));
   }
   for (const auto& t : y) {
@@ -86,7 +86,7 @@ void draw_small_chart_ticks(render::DrawList& list, const render::Panel2D& plot,
     render::TextLabel l{
         {left - tick - 2.0f * style.px, at, 0.0f}, t.label, style.text, render::TextAnchor::right};
     const TextBox box = text_box(l, measure(l.text));
-    if (std::any_of(x_boxes.begin(), x_boxes.end(),
+    if (std::any_of(keep_out.begin(), keep_out.end(),
                     [&](const TextBox& b) { return b.intersects(box); }))
       continue;
     list.add_text(std::move(l));

@@ -53,9 +53,10 @@ float y_label_room(const std::vector<AxisTick>& y, const MeasureText& measure, f
 
 // Ticks, grid lines and labels of `x` (under the plot) and `y` (left of
 // it) on `plot`. A y label that would overlap an x label (at the bottom
-// left corner) is left out, its tick kept.
+// left corner) or a box of `keep_out` (a title) is left out, its tick kept.
 void draw_small_chart_ticks(render::DrawList& list, const render::Panel2D& plot,
                             const std::vector<AxisTick>& x, const std::vector<AxisTick>& y,
-                            const SmallChartStyle& style, const MeasureText& measure);
+                            const SmallChartStyle& style, const MeasureText& measure,
+                            std::vector<TextBox> keep_out = {});
 
 }  // namespace epviz::paint
