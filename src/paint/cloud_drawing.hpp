@@ -26,8 +26,10 @@ void draw_cloud_sphere(render::DrawList& list, const scene::CloudFrame& cloud,
                        const render::Viewport& view, float px);
 void draw_cloud_plane(render::DrawList& flat, const render::Panel2D& plot,
                       const scene::CloudFrame& cloud, const glm::vec4& colour, float px);
-// The spread chart, at the bottom right of `view` (image pixels): log10 of the
-// fraction of the sphere covered against time, with the value now.
+// The spread chart, at the bottom right of `view` (image pixels): the share
+// of the sphere covered against time, with the value now, its text sized
+// from `px` (paint/cloud_spread_chart.hpp draws it).
+// Defined in cloud_spread_chart.cpp.
 void draw_cloud_spread(render::DrawList& flat, const render::Viewport& view,
                        const scene::CloudFrame& cloud, const glm::vec4& colour,
                        const scene::Theme& ink, float px);

@@ -10,6 +10,7 @@ FrameDrawer::FrameDrawer(const scene::ScenePlan& plan, const scene::SceneSetting
 scene::Frame FrameDrawer::frame(int index) {
   scene::Frame frame = source_.frame(index);
   frame.caption = caption_;
+  if (frame.cloud && cloud_chart_t_end_ > 0.0) frame.cloud->chart_t_end = cloud_chart_t_end_;
   // A single run's overlay shows its drift at the steps beside the drawn
   // states' (a comparison's rows are its runs, one figure each).
   // Empty where the rows are not those of the column.
@@ -18,6 +19,11 @@ scene::Frame FrameDrawer::frame(int index) {
     if (column.size() == frame.overlay.drifts.size()) frame.overlay.step_drifts = std::move(column);
   }
   return frame;
+}
+
+double cloud_chart_t_end(const scene::ScenePlan& plan, const scene::SceneSettings& settings) {
+  if (!settings.cloud.enabled() || plan.open_ended || plan.frames < 1) return 0.0;
+  return plan.frame_time(plan.frames - 1);
 }
 
 const render::RgbaImage& FrameDrawer::draw(int index, FramePainter& painter,

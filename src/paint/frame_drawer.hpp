@@ -31,11 +31,19 @@ class FrameDrawer {
   const scene::FrameSource& source() const { return source_; }
   // A caption drawn under every frame (gallery tiles).
   void set_caption(std::string caption) { caption_ = std::move(caption); }
+  // The end of the cloud's spread chart's time axis (a gallery's tiles: the
+  // longest of theirs); 0: each scene's own.
+  void set_cloud_chart_t_end(double t) { cloud_chart_t_end_ = t; }
 
  private:
   scene::FrameSource source_;
   std::string caption_;
+  double cloud_chart_t_end_ = 0.0;
 };
+
+// The time a scene's cloud ends at (its last frame's), 0 without a cloud:
+// what a gallery's tiles share as the spread chart's time axis.
+double cloud_chart_t_end(const scene::ScenePlan& plan, const scene::SceneSettings& settings);
 
 // Frames `frames` (increasing) of a scene, each handed to `on_frame` as soon
 // as it is drawn (valid during the call only), so that no frame need be kept.

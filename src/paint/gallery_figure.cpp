@@ -1,5 +1,6 @@
 #include "paint/gallery_figure.hpp"
 
+#include <algorithm>
 #include <vector>
 
 #include "io/png_writer.hpp"
@@ -13,9 +14,15 @@ GalleryFigureWritten write_gallery_figure(
     const std::function<void(const numerics::Failure&)>& on_failure) {
   GalleryFigureWritten out;
   std::vector<render::RgbaImage> tiles;
+  // The clouds' spread charts on one time axis, so that tiles compare.
+  double cloud_t_end = 0.0;
+  for (const auto& still : stills)
+    cloud_t_end =
+        std::max(cloud_t_end, cloud_chart_t_end(*still.scene.plan, *still.scene.settings));
   for (const auto& still : stills) {
     FrameDrawer drawer(*still.scene.plan, *still.scene.settings);
     drawer.set_caption(still.scene.caption);
+    drawer.set_cloud_chart_t_end(cloud_t_end);
     auto options = progress;
     options.label = still.label;
     auto written = write_frames(drawer, painter, {still.frame, still.frame}, std::nullopt, options);

@@ -17,9 +17,14 @@ GridVideoWritten write_grid_video(std::span<const GridScene> scenes, const GridV
   std::vector<std::unique_ptr<FrameDrawer>> drawers;
   std::vector<render::RgbaImage> tiles;
   std::vector<bool> failed(scenes.size(), false);
+  // The clouds' spread charts on one time axis, as in the gallery's figure.
+  double cloud_t_end = 0.0;
+  for (const auto& s : scenes)
+    cloud_t_end = std::max(cloud_t_end, cloud_chart_t_end(*s.plan, *s.settings));
   for (const auto& s : scenes) {
     drawers.push_back(std::make_unique<FrameDrawer>(*s.plan, *s.settings));
     drawers.back()->set_caption(s.caption);
+    drawers.back()->set_cloud_chart_t_end(cloud_t_end);
     tiles.push_back(
         {video.tile_width, video.tile_height,
          std::vector<std::uint8_t>(std::size_t(video.tile_width) * video.tile_height * 4, 0)});

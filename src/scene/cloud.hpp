@@ -29,6 +29,9 @@ struct CloudFrame {
   std::vector<Eigen::Vector2f> spread;
   int members = 0;     // launched (those that failed are no longer drawn)
   double t_end = 0.0;  // the last frame's time (the spread chart's axis)
+  // > 0: the spread chart's time axis ends here instead, so that a gallery's
+  // tiles of runs of different lengths share one scale (paint::FrameDrawer).
+  double chart_t_end = 0.0;
 };
 
 }  // namespace epviz::scene
