@@ -113,7 +113,7 @@ TEST_F(StillCommand, PdfIsOnePageOfTextWithTheViewAsItsOneImage) {
   const auto text = et::run_tool("pdftotext -enc UTF-8 '" + pdf + "' -").out;
   for (const char* expected :
        {"Kovalevskaya top: three integrators", "t = ", "drift", "drawn", "|γ|²", "fixed point",
-        "e2", "equator", "Riccati", "reference: dop853", "over t"})
+        "e2", "equator", "Riccati", "reference: dop853", "against t"})
     EXPECT_NE(text.find(expected), std::string::npos) << expected << " not in:\n" << text;
   // One raster, the 3D view's pixels: pdfimages lists it after two header lines.
   const auto images = et::run_tool("pdfimages -list '" + pdf + "'").out;
