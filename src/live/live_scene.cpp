@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "numerics/failure.hpp"
+#include "paint/frame_typesetting.hpp"
 #include "scene/plan.hpp"
 #include "sim/failure_advice.hpp"
 
@@ -163,6 +164,7 @@ void LiveScene::advance_to(double wanted) {
   const long steps_before = steps_taken();
   try {
     frame_ = source_->frame_at_time(t);
+    paint::typeset_frame_text(frame_);
   } catch (const numerics::IntegrationError& e) {
     // The last good frame stays on screen with the report; nothing after it
     // is drawn. In a comparison the run that failed is named, in the report

@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include "paint/frame_typesetting.hpp"
+
 namespace epviz::paint {
 
 FrameDrawer::FrameDrawer(const scene::ScenePlan& plan, const scene::SceneSettings& settings)
@@ -10,6 +12,7 @@ FrameDrawer::FrameDrawer(const scene::ScenePlan& plan, const scene::SceneSetting
 scene::Frame FrameDrawer::frame(int index) {
   scene::Frame frame = source_.frame(index);
   frame.caption = caption_;
+  typeset_frame_text(frame);
   if (frame.cloud && cloud_chart_t_end_ > 0.0) frame.cloud->chart_t_end = cloud_chart_t_end_;
   // A single run's overlay shows its drift at the steps beside the drawn
   // states' (a comparison's rows are its runs, one figure each).

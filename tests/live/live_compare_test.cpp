@@ -60,7 +60,8 @@ TEST(LiveCompare, ThreeRunsFromThePanelAreDrawnWithTheirLegendAndSeparationChart
   ASSERT_EQ(c->labels.size(), 3u);
   ASSERT_EQ(c->others.size(), 2u);
   EXPECT_EQ(c->labels[1].rfind("rk4, step", 0), 0u) << c->labels[1];
-  EXPECT_EQ(c->labels[2].rfind("nudged 1e-06: dop853", 0), 0u) << c->labels[2];
+  // As drawn: the nudge in print (paint/frame_typesetting.hpp).
+  EXPECT_EQ(c->labels[2].rfind("nudged 10⁻⁶: dop853", 0), 0u) << c->labels[2];
   for (const auto& other : c->others) EXPECT_FALSE(other.separation.empty());
   // The nudged run starts |delta gamma| = 2 sin(nudge / 2) from the first
   // (one sample later it has not moved away yet).
