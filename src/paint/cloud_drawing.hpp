@@ -26,12 +26,6 @@ void draw_cloud_sphere(render::DrawList& list, const scene::CloudFrame& cloud,
                        const render::Viewport& view, float px);
 void draw_cloud_plane(render::DrawList& flat, const render::Panel2D& plot,
                       const scene::CloudFrame& cloud, const glm::vec4& colour, float px);
-// The spread chart, at the bottom right of `view` (image pixels): the share
-// of the sphere covered against time, with the value now, its text sized
-// from `px` (paint/cloud_spread_chart.hpp draws it).
-// Defined in cloud_spread_chart.cpp.
-void draw_cloud_spread(render::DrawList& flat, const render::Viewport& view,
-                       const scene::CloudFrame& cloud, const glm::vec4& colour,
-                       const scene::Theme& ink, float px);
+// The spread chart, at the bottom right of the view: paint/cloud_spread_chart.hpp.
 
 }  // namespace epviz::paint

@@ -47,13 +47,6 @@ std::vector<std::string> caption_for(const scene::CloudFrame& cloud, float room,
 
 }  // namespace
 
-glm::vec2 estimated_text_size(const std::string& text, float px) {
-  const float font = scene::overlay_font_px(int(std::lround(360.0f * px)));
-  int chars = 0;
-  for (unsigned char c : text) chars += (c & 0xC0) != 0x80;
-  return {0.5f * font * float(chars), font};
-}
-
 CloudSpreadBoxes draw_cloud_spread_chart(render::DrawList& flat, const render::Viewport& view,
                                          const scene::CloudFrame& cloud, const glm::vec4& colour,
                                          const scene::Theme& ink, float px,
@@ -129,13 +122,6 @@ CloudSpreadBoxes draw_cloud_spread_chart(render::DrawList& flat, const render::V
   const glm::vec2 top_left{float(area.x), float(area.y)};
   return {
       panel, {top_left, top_left + glm::vec2(float(area.width), float(area.height))}, caption_box};
-}
-
-void draw_cloud_spread(render::DrawList& flat, const render::Viewport& view,
-                       const scene::CloudFrame& cloud, const glm::vec4& colour,
-                       const scene::Theme& ink, float px) {
-  draw_cloud_spread_chart(flat, view, cloud, colour, ink, px,
-                          [px](const std::string& text) { return estimated_text_size(text, px); });
 }
 
 }  // namespace epviz::paint

@@ -33,9 +33,4 @@ CloudSpreadBoxes draw_cloud_spread_chart(render::DrawList& flat, const render::V
                                          const scene::Theme& ink, float px,
                                          const MeasureText& measure);
 
-// The text size draw_cloud_spread measures with when it is given no font:
-// the overlay's font at this line-width scale, a character half its size
-// wide (a little over the proportional font's average).
-glm::vec2 estimated_text_size(const std::string& text, float px);
-
 }  // namespace epviz::paint

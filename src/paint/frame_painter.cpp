@@ -16,6 +16,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "paint/cloud_drawing.hpp"
+#include "paint/cloud_spread_chart.hpp"
 #include "paint/comparison_painter.hpp"
 #include "paint/figure_common.hpp"
 #include "paint/painter_common.hpp"
@@ -567,7 +568,9 @@ const render::RgbaImage& FramePainter::paint(const scene::Frame& f,
     renderer_->draw_3d(scene3d, camera, view);
     draw_view_annotations(f, camera, view, px);
     if (DrawList chart; f.cloud && f.layers.overlay) {  // the cloud's spread
-      draw_cloud_spread(chart, view, *f.cloud, cloud_colour(f), ink_for(f), px);
+      // Its text measured in the font it is drawn with.
+      draw_cloud_spread_chart(chart, view, *f.cloud, cloud_colour(f), ink_for(f), px,
+                              [&](const std::string& text) { return gui().text_size(text); });
       draw_flat(chart);
     }
   }
