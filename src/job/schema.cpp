@@ -267,6 +267,20 @@ const std::vector<Job>& job_entries() {
        [](const JobDocument& d, Json& j) {
          if (d.scene.trace_axis != 3) j["trace_axis"] = d.scene.trace_axis;
        }},
+      {{"overlay_place", ValueType::choice, "auto",
+        "auto, beside, top-left, top-right, bottom-left, bottom-right",
+        "where the overlay's window goes: auto (beside the 3D view where the panel keeps room, "
+        "else over the view clear of the runs' points), beside (always, the panel smaller), or a "
+        "corner of the 3D view; a figure at a printed size gives it a band of its own"},
+       [](io::ObjectReader& r, JobDocument& d) {
+         if (auto v = r.choice("overlay_place", {"auto", "beside", "top-left", "top-right",
+                                                 "bottom-left", "bottom-right"}))
+           d.scene.page.overlay = *scene::overlay_place_from_name(*v);
+       },
+       [](const JobDocument& d, Json& j) {
+         if (d.scene.page.overlay != scene::OverlayPlace::automatic)
+           j["overlay_place"] = std::string(scene::name(d.scene.page.overlay));
+       }},
       {{"theme", ValueType::choice, "dark", "dark, light",
         "the colour set; \"colours\" override its defaults"},
        [](io::ObjectReader& r, JobDocument& d) {

@@ -432,6 +432,21 @@ Box FramePainter::floating_window_box(const scene::Frame& f, const scene::Rect& 
   // single run's horizon note at the bottom. Where no place is clear, the
   // one that covers least.
   const glm::vec2 top_left(float(where.x) + 6 * px, float(where.y) + 6 * px);
+  const float line = gui().label_font_px() * 1.45f;
+  const float lowest = std::max(
+      top_left.y, float(where.y + where.height) - 6 * px - size.y -
+                      float(2 + horizon_note_rows(f)) * std::max(line, horizon_note_line(px)));
+  // A corner the job asks for (scene::OverlayPlace), whatever it covers.
+  if (const scene::OverlayPlace place = f.page.overlay; scene::is_corner(place)) {
+    const bool right =
+        place == scene::OverlayPlace::top_right || place == scene::OverlayPlace::bottom_right;
+    const bool bottom =
+        place == scene::OverlayPlace::bottom_left || place == scene::OverlayPlace::bottom_right;
+    const glm::vec2 at(
+        right ? std::max(top_left.x, float(where.x + where.width) - 6 * px - size.x) : top_left.x,
+        bottom ? lowest : top_left.y);
+    return {at, at + size};
+  }
   const render::Viewport view = to_viewport(where);
   const auto marks = run_mark_boxes(f, camera_for(f, view), view, px);
   auto covered = [&](glm::vec2 at) {
@@ -439,10 +454,6 @@ Box FramePainter::floating_window_box(const scene::Frame& f, const scene::Rect& 
     for (const Box& m : marks) area += Box{at, at + size}.overlap_area(m);
     return area;
   };
-  const float line = gui().label_font_px() * 1.45f;
-  const float lowest = std::max(
-      top_left.y, float(where.y + where.height) - 6 * px - size.y -
-                      float(2 + horizon_note_rows(f)) * std::max(line, horizon_note_line(px)));
   // At the left edge only: the key of the marks holds the top right.
   glm::vec2 best = top_left;
   // A window wider than the view (tiny pictures) covers the column's titles

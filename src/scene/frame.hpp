@@ -7,6 +7,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "scene/cloud.hpp"  // the cloud
@@ -105,11 +106,25 @@ struct RunTrace {
 // them from the font asked for and stacks its parts in one column (the 3D
 // view, the legend, the overlay's text, the panels), so that a column of a
 // journal holds it with its text at the size asked.
+// Where the overlay's window goes on a screen picture (a job's
+// "overlay_place"): `automatic` puts it in the panel column above the plot
+// where the plot keeps room, else over the 3D view's left edge clear of the
+// runs' current points; `beside` always in the column (the plot smaller);
+// a corner over the 3D view. A stacked page gives it a band of its own.
+enum class OverlayPlace { automatic, beside, top_left, top_right, bottom_left, bottom_right };
+// "auto", "beside", "top-left", "top-right", "bottom-left", "bottom-right".
+std::string_view name(OverlayPlace place);
+std::optional<OverlayPlace> overlay_place_from_name(std::string_view name);
+inline bool is_corner(OverlayPlace p) {
+  return p != OverlayPlace::automatic && p != OverlayPlace::beside;
+}
+
 struct PageLayout {
   // The picture height whose type this picture uses (overlay_font_px and
   // ui_scale of it); 0: its own height.
   int type_height = 0;
   bool stacked = false;
+  OverlayPlace overlay = OverlayPlace::automatic;
   int type_height_for(int height) const { return type_height > 0 ? type_height : height; }
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace epviz::scene {
 namespace {
@@ -173,13 +174,16 @@ FrameLayout layout_in_width(const LayoutRequest& q, int width) {
     // The overlay takes the top of the panel's column when the plot keeps at
     // least 35 % of the height there (a quarter beside a section panel), so
     // that it does not cover the sphere; otherwise (small pictures) it floats
-    // over the 3D view's corner.
+    // over the 3D view. A place the job asks for (OverlayPlace) decides instead.
     const int overlay_px = l.view_3d && q.layers.overlay ? overlay_height_for(q) : 0;
     const int least_side = height * (slots > 1 ? 25 : 35) / 100;
     // Small pictures (their drift table in one line) float it: their column
     // is too narrow for its lines.
-    l.overlay_in_column = overlay_px > 0 && !overlay_drifts_in_one_line(height) &&
-                          side_for(m.top + overlay_px) >= least_side;
+    const OverlayPlace place = q.page.overlay;
+    l.overlay_in_column = overlay_px > 0 && (place == OverlayPlace::beside ||
+                                             (place == OverlayPlace::automatic &&
+                                              !overlay_drifts_in_one_line(height) &&
+                                              side_for(m.top + overlay_px) >= least_side));
     const int margin_top = m.top + (l.overlay_in_column ? overlay_px : 0);
     const int side = std::max(16, side_for(margin_top));
     const int y = c.y + margin_top + (c.height - margin_top - m.bottom - side) / 2;
@@ -190,6 +194,25 @@ FrameLayout layout_in_width(const LayoutRequest& q, int width) {
 }
 
 }  // namespace
+
+namespace {
+constexpr std::pair<OverlayPlace, std::string_view> kOverlayPlaceNames[] = {
+    {OverlayPlace::automatic, "auto"},          {OverlayPlace::beside, "beside"},
+    {OverlayPlace::top_left, "top-left"},       {OverlayPlace::top_right, "top-right"},
+    {OverlayPlace::bottom_left, "bottom-left"}, {OverlayPlace::bottom_right, "bottom-right"}};
+}  // namespace
+
+std::string_view name(OverlayPlace place) {
+  for (const auto& [p, n] : kOverlayPlaceNames)
+    if (p == place) return n;
+  return "auto";
+}
+
+std::optional<OverlayPlace> overlay_place_from_name(std::string_view text) {
+  for (const auto& [p, n] : kOverlayPlaceNames)
+    if (n == text) return p;
+  return std::nullopt;
+}
 
 OverlayShape overlay_shape(const OverlayText& o) {
   return {int(o.lines.size()), int(o.drifts.size())};

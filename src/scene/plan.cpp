@@ -47,7 +47,8 @@ FrameLayout planned_layout(const SceneSettings& s, const std::vector<sim::RunSpe
 void set_printed_size(SceneSettings& s, const std::vector<sim::RunSpec>& runs, int width,
                       float font_px) {
   s.width = width;
-  s.page = {type_height_for_font(font_px), true};
+  s.page.type_height = type_height_for_font(font_px);
+  s.page.stacked = true;
   // Even, so that a video encoder takes it too.
   s.height = (stacked_height(planned_request(s, runs)) + 1) / 2 * 2;
 }

@@ -161,5 +161,36 @@ TEST(FrameAnnotations, AGalleryTilesCaptionHasItsOwnLineAndTheSphereFitsTheTile)
   }
 }
 
+// The overlay in the corner of the 3D view a job asks for: inside the view,
+// against that corner's edges (the bottom ones above the trail's key).
+TEST(FrameAnnotations, TheOverlayGoesToTheCornerAsked) {
+  for (const auto place : {scene::OverlayPlace::top_left, scene::OverlayPlace::top_right,
+                           scene::OverlayPlace::bottom_left, scene::OverlayPlace::bottom_right}) {
+    auto f = frame_of(physics::Case::kovalevskaya, scene::View::body, 1280, 720);
+    f.page.overlay = place;
+    painter_720().paint(f);
+    const auto& a = painter_720().annotations();
+    const auto layout = paint::layout_for(f, 1280, 720);
+    ASSERT_TRUE(a.overlay_window && layout.view_3d);
+    const paint::Box view = box_of(*layout.view_3d), w = *a.overlay_window;
+    EXPECT_TRUE(view.contains(w)) << scene::name(place);
+    const bool right =
+        place == scene::OverlayPlace::top_right || place == scene::OverlayPlace::bottom_right;
+    const bool bottom =
+        place == scene::OverlayPlace::bottom_left || place == scene::OverlayPlace::bottom_right;
+    // Against the edges of its corner: within a margin of them.
+    EXPECT_LT(right ? view.max.x - w.max.x : w.min.x - view.min.x, 20.0f) << scene::name(place);
+    if (bottom)
+      EXPECT_GT(w.max.y, 0.5f * (view.min.y + view.max.y)) << scene::name(place);
+    else
+      EXPECT_LT(w.min.y - view.min.y, 20.0f) << scene::name(place);
+    // The labels and the marks' key keep out of it.
+    for (const auto& l : a.labels) EXPECT_FALSE(l.box.intersects(w)) << l.text;
+    if (a.marks_key) {
+      EXPECT_FALSE(a.marks_key->intersects(w));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace epviz

@@ -85,6 +85,27 @@ TEST(Layout, OverlayTakesTheColumnTopOnlyWhereThePlotStaysLarge) {
   EXPECT_GT(scene::frame_layout(q).plot_area->width, large.plot_area->width);
 }
 
+// A place the job asks for decides over the room: beside the view even in a
+// small picture, over a corner of the view even where the column has room.
+TEST(Layout, TheOverlayPlaceAskedForDecides) {
+  auto beside = request(640, 360);
+  beside.page.overlay = scene::OverlayPlace::beside;
+  EXPECT_FALSE(scene::frame_layout(request(640, 360)).overlay_in_column);
+  const auto b = scene::frame_layout(beside);
+  EXPECT_TRUE(b.overlay_in_column);
+  EXPECT_LT(b.plot_area->width, scene::frame_layout(request(640, 360)).plot_area->width);
+  for (const auto place : {scene::OverlayPlace::top_left, scene::OverlayPlace::top_right,
+                           scene::OverlayPlace::bottom_left, scene::OverlayPlace::bottom_right}) {
+    auto corner = request(1280, 720);
+    corner.page.overlay = place;
+    EXPECT_FALSE(scene::frame_layout(corner).overlay_in_column) << scene::name(place);
+  }
+  for (const auto place : {scene::OverlayPlace::automatic, scene::OverlayPlace::beside,
+                           scene::OverlayPlace::bottom_right})
+    EXPECT_EQ(scene::overlay_place_from_name(scene::name(place)), place);
+  EXPECT_FALSE(scene::overlay_place_from_name("middle"));
+}
+
 TEST(Layout, SphereScaleFramesTheSphereWithItsLabels) {
   // At the nominal distance of 3.4 radii a sphere of radius 1.22 (the sphere
   // and its pole labels) just fits the narrower side of the 3D view.
