@@ -13,8 +13,7 @@ TEST(FrameTypesetting, ExponentsBecomePowersOfTen) {
   EXPECT_EQ(print_numbers_in("dop853, tol 6.7e-06 (auto)"), "dop853, tol 6.7×10⁻⁶ (auto)");
   EXPECT_EQ(print_numbers_in("tol 1e-10"), "tol 10⁻¹⁰");
   EXPECT_EQ(print_numbers_in("2E+03 and 1.5e3"), "2×10³ and 1.5×10³");
-  EXPECT_EQ(print_numbers_in("tol 2.6e-07 (auto, tightened)"),
-            "tol 2.6×10⁻⁷ (auto, tightened)");
+  EXPECT_EQ(print_numbers_in("tol 2.6e-07 (auto, tightened)"), "tol 2.6×10⁻⁷ (auto, tightened)");
 }
 
 TEST(FrameTypesetting, HyphensBeforeNumbersBecomeMinusSigns) {
@@ -24,8 +23,8 @@ TEST(FrameTypesetting, HyphensBeforeNumbersBecomeMinusSigns) {
 }
 
 TEST(FrameTypesetting, NamesWithDigitsAreLeftAlone) {
-  for (const char* name : {"dop853", "rk4, step 0.25", "Gauss-4", "exact-split4, step 0.1",
-                           "rkf78", "1280x720", "t = 40.000 / 40", "e3", "x2e5y"})
+  for (const char* name : {"dop853", "rk4, step 0.25", "Gauss-4", "exact-split4, step 0.1", "rkf78",
+                           "1280x720", "t = 40.000 / 40", "e3", "x2e5y"})
     EXPECT_EQ(print_numbers_in(name), name);
 }
 
