@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
 
 namespace epviz::scene {
 namespace {
@@ -194,25 +193,6 @@ FrameLayout layout_in_width(const LayoutRequest& q, int width) {
 }
 
 }  // namespace
-
-namespace {
-constexpr std::pair<OverlayPlace, std::string_view> kOverlayPlaceNames[] = {
-    {OverlayPlace::automatic, "auto"},          {OverlayPlace::beside, "beside"},
-    {OverlayPlace::top_left, "top-left"},       {OverlayPlace::top_right, "top-right"},
-    {OverlayPlace::bottom_left, "bottom-left"}, {OverlayPlace::bottom_right, "bottom-right"}};
-}  // namespace
-
-std::string_view name(OverlayPlace place) {
-  for (const auto& [p, n] : kOverlayPlaceNames)
-    if (p == place) return n;
-  return "auto";
-}
-
-std::optional<OverlayPlace> overlay_place_from_name(std::string_view text) {
-  for (const auto& [p, n] : kOverlayPlaceNames)
-    if (n == text) return p;
-  return std::nullopt;
-}
 
 OverlayShape overlay_shape(const OverlayText& o) {
   return {int(o.lines.size()), int(o.drifts.size())};
