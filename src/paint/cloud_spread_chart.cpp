@@ -8,12 +8,10 @@
 
 #include "paint/cloud_drawing.hpp"
 #include "paint/figure_common.hpp"
-#include "scene/layout.hpp"
+#include "paint/painter_common.hpp"
 
 namespace epviz::paint {
 namespace {
-
-glm::vec4 rgba(const scene::Rgba& c) { return {c[0], c[1], c[2], c[3]}; }
 
 double log_spread(float fraction) {
   return std::clamp(std::log10(std::max(double(fraction), 1e-12)), kLogSpreadMin, kLogSpreadMax);
@@ -83,23 +81,10 @@ CloudSpreadBoxes draw_cloud_spread_chart(render::DrawList& flat, const render::V
   const render::Panel2D plot(area, {0.0, t_axis, kLogSpreadMin, kLogSpreadMax}, false);
 
   // The panel, opaque: the cloud's dots under it do not show through the text.
-  glm::vec4 background = rgba(ink.panel_background);
+  glm::vec4 background = to_glm(ink.panel_background);
   background.a = 1.0f;
   flat.add_rect(panel.min, panel.max, background);
-  render::PanelStyle s;
-  s.background = background;
-  s.frame = rgba(ink.panel_frame);
-  s.axis = {0, 0, 0, 0};
-  s.tick_labels = false;
-  s.grid_lines = false;
-  s.tick_length = 0.0f;
-  s.frame_width = 1.0f * px;
-  draw_axes_in_print(plot, flat, s);
-  SmallChartStyle ticks;
-  ticks.text = rgba(ink.panel_text);
-  ticks.grid = rgba(ink.panel_grid);
-  ticks.tick = rgba(ink.panel_frame);
-  ticks.px = px;
+  const SmallChartStyle ticks = draw_small_chart_frame(flat, plot, background, ink, px);
   std::vector<render::TextLabel> lines;
   TextBox caption_box{panel.min + glm::vec2(pad), panel.min + glm::vec2(pad)};
   for (std::size_t i = 0; i < caption.size(); ++i) {

@@ -87,20 +87,8 @@ void draw_separation_chart(render::DrawList& flat, const scene::Comparison& c,
 
   const double t_end = std::max(c.t_end, 1e-9);
   const render::Panel2D plot(plot_area, {0.0, t_end, double(range.lo), range.hi}, false);
-  render::PanelStyle style;
-  style.background = to_glm(ink.panel_background);
-  style.frame = to_glm(ink.panel_frame);
-  style.axis = {0, 0, 0, 0};
-  style.tick_labels = false;
-  style.grid_lines = false;
-  style.tick_length = 0.0f;
-  style.frame_width = 1.0f * px;
-  draw_axes_in_print(plot, flat, style);
-  SmallChartStyle ticks;
-  ticks.text = to_glm(ink.panel_text);
-  ticks.grid = to_glm(ink.panel_grid);
-  ticks.tick = to_glm(ink.panel_frame);
-  ticks.px = px;
+  const SmallChartStyle ticks =
+      draw_small_chart_frame(flat, plot, to_glm(ink.panel_background), ink, px);
   draw_small_chart_ticks(flat, plot, time_ticks(t_end, plot_w, measure), y_ticks, ticks, measure,
                          keep_out);
   if (title) flat.add_text(*title);

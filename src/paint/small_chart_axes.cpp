@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "paint/figure_common.hpp"
+#include "paint/painter_common.hpp"
 #include "render/gui_overlay.hpp"
 
 namespace epviz::paint {
@@ -47,6 +48,26 @@ TextBox text_box(const render::TextLabel& label, glm::vec2 size) {
   const glm::vec2 at = glm::vec2(label.position) + label.offset_px;
   const glm::vec2 top_left = render::anchored_top_left(at, size, label.anchor);
   return {top_left, top_left + size};
+}
+
+SmallChartStyle draw_small_chart_frame(render::DrawList& list, const render::Panel2D& plot,
+                                       const glm::vec4& background, const scene::Theme& ink,
+                                       float px) {
+  render::PanelStyle frame;
+  frame.background = background;
+  frame.frame = to_glm(ink.panel_frame);
+  frame.axis = {0, 0, 0, 0};
+  frame.tick_labels = false;
+  frame.grid_lines = false;
+  frame.tick_length = 0.0f;
+  frame.frame_width = 1.0f * px;
+  draw_axes_in_print(plot, list, frame);
+  SmallChartStyle ticks;
+  ticks.text = to_glm(ink.panel_text);
+  ticks.grid = to_glm(ink.panel_grid);
+  ticks.tick = to_glm(ink.panel_frame);
+  ticks.px = px;
+  return ticks;
 }
 
 float y_label_room(const std::vector<AxisTick>& y, const MeasureText& measure, float px) {

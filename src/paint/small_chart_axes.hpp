@@ -11,6 +11,7 @@
 
 #include "render/draw_list.hpp"
 #include "render/panel_2d.hpp"
+#include "scene/theme.hpp"
 
 namespace epviz::paint {
 
@@ -46,6 +47,13 @@ struct SmallChartStyle {
   glm::vec4 text{1.0f}, grid{1.0f, 1.0f, 1.0f, 0.08f}, tick{1.0f};
   float px = 1.0f;  // the picture's line-width scale
 };
+
+// The plot's frame, in the theme's panel colours on `background` (no axes,
+// grid or ticks of its own: draw_small_chart_ticks adds those), and the
+// style those ticks take from the theme.
+SmallChartStyle draw_small_chart_frame(render::DrawList& list, const render::Panel2D& plot,
+                                       const glm::vec4& background, const scene::Theme& ink,
+                                       float px);
 
 // The room the y labels need left of the plot: the widest label, a tick
 // and a gap.

@@ -10,17 +10,14 @@
 #include <vector>
 
 #include "paint/cloud_spread_chart.hpp"
+#include "paint/fixed_width_font.hpp"
 #include "scene/theme.hpp"
 
 namespace epviz {
 namespace {
 
-// A stand-in for the font: 7 px per character (UTF-8 sequence), 13 px tall.
-glm::vec2 measure(const std::string& text) {
-  int chars = 0;
-  for (unsigned char c : text) chars += (c & 0xC0) != 0x80;
-  return {7.0f * float(chars), 13.0f};
-}
+// A stand-in for the font: 7 px per character, 13 px tall.
+const auto& measure = epviz::testing::fixed_width_measure;
 
 const glm::vec4 kCurve{1.0f, 0.0f, 1.0f, 1.0f};    // a colour nothing else in the chart has
 const render::Viewport kTileView{0, 0, 420, 360};  // a gallery tile's 3D view

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "paint/figure_common.hpp"
+#include "paint/fixed_width_font.hpp"
 #include "paint/separation_chart.hpp"
 #include "paint/small_chart_axes.hpp"
 #include "scene/theme.hpp"
@@ -18,12 +19,8 @@
 namespace epviz {
 namespace {
 
-// A stand-in for the font: 7 px per character (UTF-8 sequence), 13 px tall.
-glm::vec2 measure(const std::string& text) {
-  int chars = 0;
-  for (unsigned char c : text) chars += (c & 0xC0) != 0x80;
-  return {7.0f * float(chars), 13.0f};
-}
+// A stand-in for the font: 7 px per character, 13 px tall.
+const auto& measure = epviz::testing::fixed_width_measure;
 
 // Two runs beyond the first whose separation grows from `from` to `to`
 // (log-evenly) over t in [0, 40].
