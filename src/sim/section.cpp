@@ -120,22 +120,23 @@ class DenseOutput {
   ~DenseOutput() = default;
 };
 
-// A scalar stepper's: its dense output gives the whole state, which is kept
-// for the state asked at the same time.
-template <class Stepper>
-class StepperDense final : public DenseOutput {
+// A dense output that gives the whole state (a scalar stepper's, or a step
+// shown to a SectionObserver): `state_at(t)`, the state found for the
+// section function kept for the state asked at the same time.
+template <class StateAt>
+class WholeStateDense final : public DenseOutput {
  public:
-  StepperDense(const Stepper& stepper, const SectionSurface& surface)
-      : stepper_(stepper), surface_(surface) {}
+  WholeStateDense(StateAt state_at, const SectionSurface& surface)
+      : state_at_(std::move(state_at)), surface_(surface) {}
   double level(double t) override {
     t_ = t;
-    x_ = stepper_.dense(t);
+    x_ = state_at_(t);
     return level_of(surface_, x_);
   }
-  State state(double t) override { return t == t_ ? x_ : State(stepper_.dense(t)); }
+  State state(double t) override { return t == t_ ? x_ : State(state_at_(t)); }
 
  private:
-  const Stepper& stepper_;
+  StateAt state_at_;
   const SectionSurface& surface_;
   double t_ = std::numeric_limits<double>::quiet_NaN();
   State x_;
@@ -314,7 +315,7 @@ std::vector<Crossing> run_section(Stepper stepper, const RunSpec& run,
     if (failure) throw numerics::IntegrationError(*failure);
   };
   const TallyOnExit<Stepper> tally{stepper};
-  StepperDense<Stepper> dense(stepper, surface);
+  WholeStateDense dense([&stepper](double t) { return State(stepper.dense(t)); }, surface);
   stepper.init(0.0, physics::DirectSystem::pack(run.initial));
   State x_prev = stepper.state();
   while (!section.done() && stepper.t() < run.t_end) {
@@ -327,26 +328,6 @@ std::vector<Crossing> run_section(Stepper stepper, const RunSpec& run,
   fail_on(section.motion_failure(stepper.t(), stepper.state()));
   return std::move(section.crossings());
 }
-
-// A step shown to a SectionObserver: the run's dense output as the search
-// reads it, the state kept for the state asked at the same time.
-class ShownDense final : public DenseOutput {
- public:
-  ShownDense(const DenseStep& step, const SectionSurface& surface)
-      : step_(step), surface_(surface) {}
-  double level(double t) override {
-    t_ = t;
-    x_ = step_.at(t);
-    return level_of(surface_, x_);
-  }
-  State state(double t) override { return t == t_ ? x_ : step_.at(t); }
-
- private:
-  const DenseStep& step_;
-  const SectionSurface& surface_;
-  double t_ = std::numeric_limits<double>::quiet_NaN();
-  State x_;
-};
 
 State state_of(const std::array<double, 6>& x) {
   State s;
@@ -468,7 +449,7 @@ void SectionObserver::step(const DenseStep& step) {
   OrbitSection& section = search_->section;
   // As run_section's loop: the dense output only for a step that may hold a crossing.
   if (section.done() || !section.may_cross(step.x0, step.x1)) return;
-  ShownDense dense(step, search_->surface);
+  WholeStateDense dense([&step](double t) { return step.at(t); }, search_->surface);
   if (auto failure = section.scan(step.t0, step.x0, step.t1, step.x1, dense))
     throw numerics::IntegrationError(*failure);
 }
