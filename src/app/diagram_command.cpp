@@ -11,6 +11,8 @@
 
 #include "app/cli_values.hpp"
 #include "app/diagram_figure.hpp"
+#include "app/diagram_regions.hpp"
+#include "app/diagram_sections.hpp"
 #include "app/gl_option.hpp"
 #include "app/print_options.hpp"
 #include "io/atomic_file.hpp"
@@ -18,6 +20,8 @@
 #include "io/output_paths.hpp"
 #include "physics/cases.hpp"
 #include "physics/critical_values.hpp"
+#include "section/section_csv.hpp"
+#include "section/section_run.hpp"
 #ifdef EPVIZ_HAVE_RENDER
 #include "io/png_writer.hpp"
 #include "paint/figure_painter.hpp"
@@ -32,7 +36,8 @@ namespace fs = std::filesystem;
 
 struct DiagramOptions {
   std::string case_name, area, energy_max, inertia, com, weight, samples, out = ".", format, gl;
-  io::PrintSizeText print;  // --figure-width, --font-size, --dpi
+  std::string sections, section_crossings;  // --sections ORBITS, --section-crossings
+  io::PrintSizeText print;                  // --figure-width, --font-size, --dpi
 };
 
 // The option a physics::InvalidInput's field came from.
@@ -60,6 +65,32 @@ physics::DiagramRequest diagram_request(const DiagramOptions& o) {
   return r;
 }
 
+// --sections: orbits per region (0: no sections); --section-crossings: per orbit.
+struct SectionsRequest {
+  int orbits = 0;
+  int crossings = 200;
+};
+
+// The regions are found from the sampled states: fewer than this leave thin
+// regions without a sample (docs/diagram.md).
+constexpr int kSectionsMinSamples = 2000;
+
+SectionsRequest sections_request(const DiagramOptions& o, const physics::DiagramRequest& r) {
+  SectionsRequest s;
+  if (!o.sections.empty()) s.orbits = int(parse_integer("--sections", o.sections, 1, 64));
+  if (!o.section_crossings.empty()) {
+    if (o.sections.empty())
+      throw io::BadInput("--section-crossings: only with --sections (orbits per region)");
+    s.crossings = int(parse_integer("--section-crossings", o.section_crossings, 1, 100000));
+  }
+  if (s.orbits > 0 && r.samples < kSectionsMinSamples)
+    throw io::BadInput(
+        "--samples: --sections finds the regions from the sampled states; give at "
+        "least " +
+        std::to_string(kSectionsMinSamples) + " (default 20000)");
+  return s;
+}
+
 // A file to write, its bytes made first: the figure is drawn in memory so that
 // nothing is written when drawing fails.
 struct OutputFile {
@@ -69,10 +100,12 @@ struct OutputFile {
 
 #ifdef EPVIZ_HAVE_RENDER
 OutputFile draw_diagram(const chart::Figure& figure, const DiagramOptions& o,
-                        const std::optional<io::PrintSize>& print) {
+                        const std::optional<io::PrintSize>& print, int panels = 1) {
   const auto format = vector::parse_figure_format(o.format);
+  // A section's two sheets side by side, each about the diagram's height.
   const paint::ChartOptions size =
-      chart_options({.width = 1200, .height = 900, .font_px = 15.0f}, print);
+      panels == 1 ? chart_options({.width = 1200, .height = 900, .font_px = 15.0f}, print)
+                  : chart_options({.width = 700 * panels, .height = 760, .font_px = 14.0f}, print);
   OutputFile file{fs::path(o.out) / vector::figure_file_name(figure.file_name, format), {}};
   if (format == vector::FigureFormat::png) {
     const auto image = paint::paint_figure(*render::GlChoice(o.gl).open(), figure, size);
@@ -88,6 +121,7 @@ OutputFile draw_diagram(const chart::Figure& figure, const DiagramOptions& o,
 int run_diagram(const DiagramOptions& o) {
   // Every option is checked before the searches, which take seconds.
   physics::DiagramRequest request = diagram_request(o);
+  const SectionsRequest sections = sections_request(o, request);
   const auto print = io::parse_print_size(o.print);
 #ifdef EPVIZ_HAVE_RENDER
   (void)vector::parse_figure_format(o.format);
@@ -105,8 +139,43 @@ int run_diagram(const DiagramOptions& o) {
   const fs::path out(o.out);
   std::vector<OutputFile> files{{out / "diagram.csv", critical_curves_csv(diagram)},
                                 {out / "sampled.csv", sampled_values_csv(diagram)}};
+  std::vector<DiagramRegion> regions;
+  std::vector<std::string> region_lines;
+  if (sections.orbits > 0) {
+    regions = diagram_regions(diagram);
+    for (const auto& region : regions) {
+      const auto starts = region_starts(request, region.point, sections.orbits);
+      if (starts.empty()) {
+        std::fprintf(stderr,
+                     "epviz: error: --sections: region %s at (%.6g, %.6g): no state of the level "
+                     "was moved onto that value of the integral (nothing written)\n",
+                     region.label.c_str(), region.point.energy, region.point.integral);
+        return 3;
+      }
+      const fs::path csv = out / ("section_" + region.label + ".csv");
+      const section::SectionJob job =
+          region_section_job(request, starts, sections.crossings, csv.string());
+      const auto results = section::run_section(job, starts, section::thread_count(0));
+      if (const std::string lost = section::lost_orbits_line(job, results); !lost.empty()) {
+        std::fprintf(stderr, "epviz: error: --sections: region %s: %s (nothing written)\n",
+                     region.label.c_str(), lost.c_str());
+        return 3;
+      }
+      files.push_back({csv, section::crossings_csv(job, results)});
 #ifdef EPVIZ_HAVE_RENDER
-  files.push_back(draw_diagram(diagram_figure(request, diagram), o, print));
+      const auto figure = region_section_figure(request, region, job, results);
+      files.push_back(draw_diagram(figure, o, print,
+                                   int(std::get<chart::ChartSpec>(figure.content).panels.size())));
+#endif
+      char line[200];
+      std::snprintf(line, sizeof line, "region %s at (%.6g, %.6g), %zu sampled states: %s",
+                    region.label.c_str(), region.point.energy, region.point.integral,
+                    region.samples, section::summary(job, starts.size(), results).c_str());
+      region_lines.push_back(line);
+    }
+  }
+#ifdef EPVIZ_HAVE_RENDER
+  files.push_back(draw_diagram(diagram_figure(request, diagram, regions), o, print));
 #else
   (void)print;
   std::fprintf(stderr, "epviz diagram: no figure (this epviz was built without the renderer)\n");
@@ -125,6 +194,8 @@ int run_diagram(const DiagramOptions& o) {
       diagram.energy_max, drawn, points, diagram.sampled.size());
   for (const auto& f : files) std::printf(" %s", f.path.c_str());
   std::printf("\n");
+  if (sections.orbits > 0) std::printf("%zu regions\n", regions.size());
+  for (const auto& l : region_lines) std::printf("%s\n", l.c_str());
   return 0;
 }
 
@@ -150,6 +221,13 @@ std::function<int()> add_diagram_command(cli::Command app) {
   cmd.add_option("--format", o->format,
                  "the figure's file: png (GL), svg or pdf (cairo, vector; no GL needed) "
                  "(default png)");
+  cmd.add_option("--sections", o->sections,
+                 "ORBITS (1 to 64): for each region the critical curves cut the level's image "
+                 "into, a Poincare section (gamma3 = 0 upward) of this many orbits on the value "
+                 "(C1, integral) of a point inside it: section_<region>.csv and a figure; the "
+                 "points are marked on the diagram");
+  cmd.add_option("--section-crossings", o->section_crossings,
+                 "crossings per orbit of --sections (1 to 100000, default 200)");
   add_gl_option(cmd, o->gl, "for the PNG");
   add_print_options(cmd, o->print);
   return [o] { return run_diagram(*o); };

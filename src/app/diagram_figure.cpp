@@ -21,6 +21,7 @@ std::string diagram_number(double x, int digits) {
 // reddish purple, near black, wine).
 constexpr int kDotsColour = 12;
 constexpr std::array<int, 6> kCurveColours{1, 0, 2, 3, 6, 7};
+constexpr int kRegionColour = 6;  // near black: the regions' points
 
 chart::ChartSeries dot_series(int colour) {
   chart::ChartSeries s;
@@ -73,10 +74,60 @@ chart::ChartSeries trace_over_dots(const chart::ChartSeries& line, int colour, E
   return trace;
 }
 
+// A region's label as straight strokes in a box 2% of the chart's width
+// wide and 3% of its height high, up and to the right of its point, as a line
+// series (NaN points lift the pen); the chart has no text of its own to
+// place there. Labels past N are named in no letter (the legend still
+// counts them).
+chart::ChartSeries region_letter(const DiagramRegion& region, Extent e) {
+  static const std::array<const char*, 14> strokes{
+      "0,0 5,10 10,0|2.5,5 7.5,5",                          // A
+      "0,0 0,10 7,10 10,8 7,5.5 0,5.5|7,5.5 10,3 7,0 0,0",  // B
+      "10,10 0,10 0,0 10,0",                                // C
+      "0,0 0,10 6,10 10,7 10,3 6,0 0,0",                    // D
+      "10,10 0,10 0,0 10,0|0,5 7,5",                        // E
+      "10,10 0,10 0,0|0,5 7,5",                             // F
+      "10,10 0,10 0,0 10,0 10,5 5,5",                       // G
+      "0,0 0,10|10,0 10,10|0,5 10,5",                       // H
+      "5,0 5,10|2,10 8,10|2,0 8,0",                         // I
+      "2,10 10,10 10,0 0,0 0,3",                            // J
+      "0,0 0,10|10,10 0,5 10,0",                            // K
+      "0,10 0,0 10,0",                                      // L
+      "0,0 0,10 5,5 10,10 10,0",                            // M
+      "0,0 0,10 10,0 10,10",                                // N
+  };
+  chart::ChartSeries s;
+  if (region.label.size() != 1 || region.label[0] < 'A' ||
+      std::size_t(region.label[0] - 'A') >= strokes.size())
+    return s;
+  const double x0 = region.point.energy + 0.012 * e.dx, y0 = region.point.integral + 0.012 * e.dy;
+  const double sx = 0.002 * e.dx, sy = 0.003 * e.dy;  // per tenth of the box
+  const std::string text = strokes[std::size_t(region.label[0] - 'A')];
+  std::size_t i = 0;
+  while (i < text.size()) {
+    if (text[i] == '|') {
+      s.points.push_back({NAN, NAN});
+      ++i;
+      continue;
+    }
+    if (text[i] == ' ') {
+      ++i;
+      continue;
+    }
+    double x = 0, y = 0;
+    const auto rx = std::from_chars(text.data() + i, text.data() + text.size(), x);
+    const auto ry = std::from_chars(rx.ptr + 1, text.data() + text.size(), y);
+    i = std::size_t(ry.ptr - text.data());
+    s.points.push_back({x0 + sx * x, y0 + sy * y});
+  }
+  return s;
+}
+
 }  // namespace
 
 chart::Figure diagram_figure(const physics::DiagramRequest& request,
-                             const physics::BifurcationDiagram& diagram) {
+                             const physics::BifurcationDiagram& diagram,
+                             const std::vector<DiagramRegion>& regions) {
   chart::ChartSpec c;
   c.title = "Bifurcation diagram, ";
   c.title += physics::preset(request.case_id).title;
@@ -107,6 +158,24 @@ chart::Figure diagram_figure(const physics::DiagramRequest& request,
     for (const auto& p : curve.points) s.points.push_back({p.energy, p.integral});
     if (!curve.isolated) c.series.push_back(trace_over_dots(s, colour, extent));
     c.series.push_back(std::move(s));
+  }
+  // The regions' points last, over everything, each with its letter.
+  for (const auto& region : regions) {
+    chart::ChartSeries m;
+    m.style = chart::SeriesStyle::markers;
+    m.colour_key = kRegionColour;
+    m.marker_key = 0;
+    m.points.push_back({region.point.energy, region.point.integral});
+    c.series.push_back(std::move(m));
+    chart::ChartSeries letter = region_letter(region, extent);
+    if (!letter.points.empty()) c.series.push_back(trace_over_dots(letter, kRegionColour, extent));
+  }
+  if (!regions.empty()) {
+    std::string name = "region ";
+    name += regions.front().label;
+    if (regions.size() > 1) name += " to " + regions.back().label;
+    name += ": the point whose level section_<region> shows";
+    c.colour_legend.push_back({name, kRegionColour});
   }
   return {"diagram.png", std::move(c)};
 }

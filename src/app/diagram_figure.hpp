@@ -4,6 +4,7 @@
 // points as CSV text (docs/diagram.md).
 #include <string>
 
+#include "app/diagram_regions.hpp"
 #include "chart/chart_spec.hpp"
 #include "physics/critical_values.hpp"
 
@@ -11,9 +12,12 @@ namespace epviz::app {
 
 // The chart "diagram.png": the sampled values as small dots, each critical
 // curve as a named line over them (single critical values as markers); axes
-// C₁ and the case's integral; the title names the case and C₀.
+// C₁ and the case's integral; the title names the case and C₀. Each of
+// `regions` (--sections) is a black marker at its point, a shape of its own,
+// named in the legend by its label and point.
 chart::Figure diagram_figure(const physics::DiagramRequest& request,
-                             const physics::BifurcationDiagram& diagram);
+                             const physics::BifurcationDiagram& diagram,
+                             const std::vector<DiagramRegion>& regions = {});
 
 // "curve,energy,integral" and a row per drawn point of the critical curves,
 // curve by curve, in order along each (the breaks between attained parts are
