@@ -193,6 +193,53 @@ Entry<JobDocument> section_key(const char* key, ValueType type, std::string defa
           }};
 }
 
+// "orbits" of a job's "section": starts on the section's surface, in full.
+void read_section_orbits(io::ObjectReader& r, scene::SectionPanelSettings& p) {
+  const auto* list = r.raw("orbits");
+  if (!list) return;
+  const std::string allowed = "an array of up to " + std::to_string(scene::kMaxSectionOrbits) +
+                              " objects with \"omega\" and \"gamma\"";
+  if (!list->is_array() || list->size() > std::size_t(scene::kMaxSectionOrbits))
+    r.fail("orbits", "expected " + allowed + ", got " + io::describe(*list));
+  const std::string here = r.where("orbits");
+  const std::string file = here.substr(0, here.rfind(": key '"));
+  p.orbits.clear();
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const std::string item = "item " + std::to_string(i) + ": ";
+    if (!(*list)[i].is_object()) r.fail("orbits", item + "expected " + allowed);
+    io::ObjectReader o((*list)[i], file, "section.orbits[" + std::to_string(i) + "]");
+    physics::InitialState s;
+    const auto omega = o.vec3("omega");
+    const auto gamma = o.vec3("gamma");
+    if (!omega || !gamma) r.fail("orbits", item + "needs both \"omega\" and \"gamma\"");
+    o.finish();
+    s.omega = {(*omega)[0], (*omega)[1], (*omega)[2]};
+    s.gamma = {(*gamma)[0], (*gamma)[1], (*gamma)[2]};
+    try {
+      s = physics::validate_initial_state(s, false);
+    } catch (const physics::InvalidInput& e) {
+      r.fail("orbits", item + e.what());
+    }
+    const double off = sim::value_of(p.surface.function, s.omega, s.gamma) - p.surface.value;
+    if (!(std::abs(off) <= 1e-9)) {
+      char why[160];
+      std::snprintf(why, sizeof why, "must start on the surface %s = %g (off it by %.3g)",
+                    std::string(sim::name(p.surface.function)).c_str(), p.surface.value, off);
+      r.fail("orbits", item + why);
+    }
+    p.orbits.push_back(s);
+  }
+}
+
+void write_section_orbits(const scene::SectionPanelSettings& p, Json& j) {
+  if (p.orbits.empty()) return;
+  Json list = Json::array();
+  for (const auto& s : p.orbits)
+    list.push_back({{"omega", {s.omega.x(), s.omega.y(), s.omega.z()}},
+                    {"gamma", {s.gamma.x(), s.gamma.y(), s.gamma.z()}}});
+  j["orbits"] = std::move(list);
+}
+
 std::string cloud_members_allowed() {
   std::string s = std::to_string(scene::kMinCloudMembers);
   s += " to ";
@@ -437,6 +484,14 @@ const std::vector<Job>& job_entries() {
                [](const scene::SectionPanelSettings& p, Json& j) {
                  j["coords"] = {sim::name(p.coords[0]), sim::name(p.coords[1])};
                }),
+           // After the surface's keys: each start must lie on the surface.
+           section_key("orbits", ValueType::text, "none",
+                       "an array of up to " + std::to_string(scene::kMaxSectionOrbits) +
+                           " objects {\"omega\": [3 numbers], \"gamma\": [3 numbers, unit]} on "
+                           "the surface",
+                       "further orbits (run as the first run) whose crossings the panel shows, "
+                       "each in its own colour; the live mode's clicks on the panel add them",
+                       read_section_orbits, write_section_orbits),
        }},
       {{"plane", ValueType::object, "", "", "the Riccati (a, b) panel"},
        {},

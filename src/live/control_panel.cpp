@@ -15,6 +15,7 @@
 #include "scene/frame_source.hpp"
 #include "scene/run_palette.hpp"
 #include "scene/theme.hpp"
+#include "sim/section_chart_inverse.hpp"
 
 namespace epviz::live {
 namespace {
@@ -127,6 +128,9 @@ PanelActions ControlPanel::draw(const LiveScene& scene, const render::Viewport& 
     if (header("Integrator", "header:integrator", false)) draw_integrator(scene, out);
     if (header("Compare runs", "header:runs", false)) draw_runs(scene, out);
     if (header("View", "header:view", false)) draw_view(scene, out);
+    static const std::string section_title = render::drawable_text("Poincaré section");
+    if (header(section_title.c_str(), "header:section", bool(scene.section())))
+      draw_section(scene, out);
     if (header("Invariant drift", "header:drift", true)) draw_drift(scene);
     ImGui::PopItemWidth();
   }
@@ -361,6 +365,44 @@ void ControlPanel::draw_view(const LiveScene& scene, PanelActions& out) {
   }
   ImGui::SameLine();
   ImGui::TextDisabled("drag: orbit, wheel: zoom");
+}
+
+void ControlPanel::draw_section(const LiveScene& scene, PanelActions& out) {
+  const LiveSetup& s = scene.setup();
+  if (s.scene.section) last_section_ = s.scene.section;
+  bool shown = s.scene.section.has_value();
+  if (ImGui::Checkbox("show the section panel", &shown)) {
+    LiveSetup e = s;
+    if (shown)
+      e.scene.section = last_section_.value_or(scene::SectionPanelSettings{});
+    else
+      e.scene.section.reset();
+    out.view = e;
+  }
+  note_item("section");
+  const LiveSection* section = scene.section();
+  if (!section) return;
+  if (auto why = section->clicks_refused()) {
+    ImGui::TextWrapped("%s", render::drawable_text(*why).c_str());
+    return;
+  }
+  ImGui::TextWrapped("%s", render::drawable_text("A click on the panel starts an orbit there, on "
+                                                 "this run's level of C₁ and C₀.")
+                               .c_str());
+  const auto sheet =
+      sim::chart_sheet_component(section->settings().surface, section->settings().coords);
+  const std::string name(sim::symbol(*sheet));
+  ImGui::TextUnformatted("on");
+  ImGui::SameLine();
+  ImGui::RadioButton(render::drawable_text(name + " > 0").c_str(), &click_sheet_, 1);
+  note_item("sheet:+");
+  ImGui::SameLine();
+  ImGui::RadioButton(render::drawable_text(name + " < 0").c_str(), &click_sheet_, -1);
+  note_item("sheet:-");
+  ImGui::Text("orbits: %d of %d", section->orbit_count(), scene::kMaxSectionOrbits);
+  ImGui::SameLine();
+  if (ImGui::Button("Clear orbits")) out.clear_orbits = true;
+  note_item("clear_orbits");
 }
 
 void ControlPanel::draw_drift(const LiveScene& scene) {

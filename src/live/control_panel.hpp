@@ -21,6 +21,7 @@ struct PanelActions {
   std::optional<LiveSetup> view;           // edits of layers, camera, speed, trail: no new run
   bool save_frame = false;
   bool save_job = false;
+  bool clear_orbits = false;  // the section panel's clicked orbits
 };
 
 using Rect = std::array<float, 4>;  // x, y, width, height in frame pixels
@@ -45,6 +46,8 @@ class ControlPanel {
   // "save_frame", "save_job", the runs section's "run:<n>" (legend rows),
   // "remove:<n>" (n = 2, 3, ...), "new_method", "new_method:<name>",
   // "list:new_method", "new_step" / "new_tol", "add_run", "nudge", "add_nudged",
+  // the section's "header:section", "section" (the panel shown), "sheet:+" /
+  // "sheet:-" (the sheet a click starts on), "clear_orbits",
   // and "panel" (the whole window).
   const std::map<std::string, Rect>& controls() const { return controls_; }
   // Whether (x, y) is on the panel (a press there is the panel's, not an orbit).
@@ -56,6 +59,9 @@ class ControlPanel {
   sim::Formulation shown_formulation() const { return shown_formulation_; }
   // The file name stem for saved frames and jobs (editable in the panel).
   const std::string& save_name() const { return save_name_; }
+  // The sheet a click on the section panel starts an orbit on: +1 or -1, the
+  // sign of the component the chart leaves out (gamma2 for gamma3 = 0 at (gamma1, Omega3)).
+  int click_sheet() const { return click_sheet_; }
 
  private:
   void note_item(const char* name);    // records the last item's rectangle
@@ -66,6 +72,7 @@ class ControlPanel {
   void draw_view(const LiveScene& scene, PanelActions& out);
   void draw_drift(const LiveScene& scene);
   void draw_runs(const LiveScene& scene, PanelActions& out);
+  void draw_section(const LiveScene& scene, PanelActions& out);
   void draw_save();
 
   std::map<std::string, Rect> controls_;
@@ -80,6 +87,9 @@ class ControlPanel {
   std::optional<sim::Method> new_method_;
   double new_step_ = 0.25, new_tol_ = 1e-8;  // a coarse step, as compare_methods.json shows RK4
   double nudge_ = 1e-6;
+  int click_sheet_ = 1;
+  // The section last shown (a loaded job's own surface and axes), shown again when switched on.
+  std::optional<scene::SectionPanelSettings> last_section_;
 };
 
 }  // namespace epviz::live

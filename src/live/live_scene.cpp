@@ -8,6 +8,7 @@
 #include "numerics/failure.hpp"
 #include "paint/frame_typesetting.hpp"
 #include "scene/plan.hpp"
+#include "scene/theme.hpp"
 #include "sim/failure_advice.hpp"
 
 namespace epviz::live {
@@ -108,8 +109,10 @@ void LiveScene::restart(const LiveSetup& setup) {
   auto source = make_source(setup, steps_per_sample);  // may throw: keep the old scene then
   const auto& run = source->plan().run;
   monitor_ = std::make_unique<sim::InvariantMonitor>(run.body, run.case_id, run.initial);
+  section_.reset();  // stops following the old runs before they go
   source_ = std::move(source);
   setup_ = setup;
+  follow_section();
   steps_per_sample_ = steps_per_sample;
   pace_ = 1.0;
   failure_.reset();
@@ -123,6 +126,48 @@ void LiveScene::set_view(const scene::SceneSettings& s, double speed) {
   setup_.scene.colours = s.colours;
   setup_.speed = speed;
   show_view_settings();
+  // The section panel shown or hidden: its crossings from the next step on.
+  if (s.section.has_value() != setup_.scene.section.has_value()) {
+    setup_.scene.section = s.section;
+    follow_section();
+    fill_section();
+  }
+}
+
+void LiveScene::follow_section() {
+  section_.reset();
+  if (setup_.scene.section)
+    section_ = std::make_unique<LiveSection>(*setup_.scene.section, *source_);
+}
+
+void LiveScene::fill_section() {
+  if (!section_) {
+    frame_.section.reset();
+    return;
+  }
+  section_->catch_up(frame_.t, kSectionStepBudget);
+  frame_.section = section_->panel(frame_.t, scene::is_light(setup_.scene.colours.background));
+}
+
+LiveSection::Added LiveScene::add_section_orbit(double x, double y, int sheet) {
+  if (!section_) return {false, "no orbit started: the section panel is not shown"};
+  LiveSection::Added added = section_->add_orbit(x, y, sheet);
+  if (added.added) {
+    setup_.scene.section->orbits = section_->settings().orbits;
+    fill_section();
+  }
+  return added;
+}
+
+void LiveScene::clear_section_orbits() {
+  if (!section_) return;
+  section_->clear_orbits();
+  setup_.scene.section->orbits.clear();
+  fill_section();
+}
+
+std::vector<std::string> LiveScene::take_section_notices() {
+  return section_ ? section_->take_failures() : std::vector<std::string>{};
 }
 
 void LiveScene::show_view_settings() {
@@ -132,7 +177,10 @@ void LiveScene::show_view_settings() {
 }
 
 const scene::Frame& LiveScene::update(double wall_seconds) {
-  if (playing_) advance_to(frame_.t + wall_seconds * setup_.speed);
+  if (playing_)
+    advance_to(frame_.t + wall_seconds * setup_.speed);
+  else if (section_filling())
+    fill_section();  // paused: the clicked orbits still catch up
   return frame_;
 }
 
@@ -185,6 +233,7 @@ void LiveScene::advance_to(double wanted) {
   show_separation_so_far();
   drift_history_.push_back({frame_.t, monitor_->relative_drift(monitor_->at(source_->latest()))});
   if (drift_history_.size() > kDriftHistory) drift_history_.pop_front();
+  fill_section();
 }
 
 void LiveScene::mark_failed_run() {

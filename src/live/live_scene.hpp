@@ -16,6 +16,7 @@
 #include <optional>
 #include <string>
 
+#include "live/live_section.hpp"
 #include "live/live_setup.hpp"
 #include "scene/frame_source.hpp"
 #include "scene/separation_history.hpp"
@@ -90,6 +91,22 @@ class LiveScene {
   // Integrator steps (accepted and rejected) of every run since t = 0.
   long steps_taken() const;
 
+  // The section panel (setup().scene.section; live_section.hpp), or nullptr.
+  const LiveSection* section() const { return section_.get(); }
+  // A click at the panel's point (x, y): an orbit from there on the first
+  // run's level, kept in setup().scene.section's orbits (so that a restart
+  // and a saved job have it); the notice says which state, or why none.
+  LiveSection::Added add_section_orbit(double x, double y, int sheet);
+  void clear_section_orbits();
+  // Whether a clicked orbit has yet to reach the scene's time: frames are
+  // wanted while it fills in, paused or not.
+  bool section_filling() const { return section_ && section_->behind(frame_.t); }
+  // Clicked orbits that stopped (a numerical failure), each said once.
+  std::vector<std::string> take_section_notices();
+  // The steps the clicked orbits may take in one frame, all together: half
+  // the runs' budget, so that a frame costs at most half as much again.
+  static constexpr long kSectionStepBudget = kFrameStepBudget / 2;
+
  private:
   static std::unique_ptr<scene::FrameSource> make_source(const LiveSetup& setup,
                                                          double& steps_per_sample);
@@ -100,9 +117,15 @@ class LiveScene {
   void show_separation_so_far();
   // The view settings live in the setup (they change without a restart).
   void show_view_settings();
+  // The section panel for setup_.scene.section, following source_ from now.
+  void follow_section();
+  // Brings the clicked orbits towards the scene's time and puts the panel in the frame.
+  void fill_section();
 
   LiveSetup setup_;
   std::unique_ptr<scene::FrameSource> source_;
+  // After source_, whose runs it follows: destroyed first.
+  std::unique_ptr<LiveSection> section_;
   std::unique_ptr<sim::InvariantMonitor> monitor_;
   scene::Frame frame_;
   bool playing_ = false;

@@ -14,6 +14,7 @@
 #include "live/camera_control.hpp"
 #include "live/job_file.hpp"
 #include "live/setup_limits.hpp"
+#include "paint/section_panel_drawing.hpp"
 #include "render/framebuffer.hpp"
 #include "render/imgui_context_scope.hpp"
 
@@ -68,8 +69,8 @@ void LiveSession::resize(int width, int height) {
 void LiveSession::input(const render::InputEvent& event) { gui_input_.push(event); }
 
 bool LiveSession::wants_frame() const {
-  return painter_ &&
-         (settle_frames_ > 0 || gui_input_.pending() || scene_.playing() || save_frame_pending_);
+  return painter_ && (settle_frames_ > 0 || gui_input_.pending() || scene_.playing() ||
+                      save_frame_pending_ || scene_.section_filling());
 }
 
 double LiveSession::wall_seconds_since_last_frame() {
@@ -90,6 +91,12 @@ void LiveSession::observe(const render::InputEvent& e) {
   switch (e.kind) {
     case Kind::mouse_button:
       if (e.button != 0) break;
+      // The section panel by position: ImGui's wish to capture the mouse is
+      // of the last frame's pointer, which may have been on the panels.
+      if (e.down && !panel_.contains(e.x, e.y) &&
+          !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel) &&
+          click_section(e.x, e.y))
+        break;
       if (e.down && !gui_owns && inside(view_3d_, e.x, e.y)) drag_.emplace(e.x, e.y);
       if (!e.down) drag_.reset();
       break;
@@ -147,6 +154,7 @@ const render::RgbaImage& LiveSession::render() {
   const auto simulate_start = Clock::now();
   scene_.update(dt);
   stages_.simulate_ms = ms_since(simulate_start);
+  for (const std::string& note : scene_.take_section_notices()) notify(note, true);
   const scene::Frame& frame = scene_.frame();
   // The scene moves right of the expanded panel when the window is wide
   // enough to keep most of it; in a narrow window the panel floats over it.
@@ -177,9 +185,24 @@ const render::RgbaImage& LiveSession::render() {
   return image;
 }
 
+bool LiveSession::click_section(float x, float y) {
+  const auto& panel = scene_.frame().section;
+  if (!panel || !layout_.section_area) return false;
+  const auto at = paint::section_point_at(*panel, paint::to_viewport(*layout_.section_area), x, y);
+  if (!at) return false;
+  const LiveSection::Added added = scene_.add_section_orbit(at->x, at->y, panel_.click_sheet());
+  notify(added.notice, !added.added);
+  return true;
+}
+
+void LiveSession::notify(const std::string& note, bool error) {
+  panel_.set_message(note, error);
+  notices_.push_back(note);
+}
+
 void LiveSession::apply(const PanelActions& a) {
   const bool any = a.toggle_play || a.step || a.restart || a.load_case || a.rerun || a.view ||
-                   a.save_frame || a.save_job;
+                   a.save_frame || a.save_job || a.clear_orbits;
   if (!any) return;
   settle_frames_ = kSettleFrames;
   if (a.toggle_play) scene_.set_playing(!scene_.playing());
@@ -195,18 +218,35 @@ void LiveSession::apply(const PanelActions& a) {
   if (a.load_case) {
     LiveSetup s = options_.presets(*a.load_case);
     s.scene.layers = scene_.setup().scene.layers;  // the user's layers stay as chosen
+    if (!s.scene.section) s.scene.section = scene_.setup().scene.section;  // and the section
     // The runs compared that are relative to the first stay; those a served
     // job gave in full belong to its body and state.
     for (const auto& c : scene_.setup().compared)
       if (!c.given) s.compared.push_back(c);
     rerun(s);
   }
+  if (a.clear_orbits) scene_.clear_section_orbits();
   if (a.save_frame) save_frame_pending_ = true;
   if (a.save_job) save_job();
 }
 
-void LiveSession::rerun(const LiveSetup& s) {
+// Whether two runs start from one body and state (so on one level).
+static bool same_start(const sim::RunSpec& a, const sim::RunSpec& b) {
+  return a.body.inertia == b.body.inertia && a.body.com == b.body.com &&
+         a.body.weight == b.body.weight && a.initial.omega == b.initial.omega &&
+         a.initial.gamma == b.initial.gamma;
+}
+
+void LiveSession::rerun(const LiveSetup& given) {
   const bool was_playing = scene_.playing();
+  LiveSetup s = given;
+  // Clicked orbits lie on the first run's level: another body or start leaves them.
+  bool orbits_left = false;
+  if (s.scene.section && !s.scene.section->orbits.empty() &&
+      !same_start(s.run, scene_.setup().run)) {
+    s.scene.section->orbits.clear();
+    orbits_left = true;
+  }
   // Every value the page could have typed, against its range, before any work.
   if (auto why = out_of_range(s, scene_.setup())) {
     panel_.set_message("not applied: " + *why, true);
@@ -217,7 +257,8 @@ void LiveSession::rerun(const LiveSetup& s) {
     (void)physics::validate_initial_state(s.run.initial, false);
     scene_.restart(s);
     scene_.set_playing(was_playing);
-    panel_.set_message("");
+    panel_.set_message(orbits_left ? "the section's orbits were cleared: they lay on the old level"
+                                   : "");
   } catch (const std::exception& e) {
     // The running scene is kept; the panel says why the edit was refused.
     panel_.set_message(std::string("not applied: ") + e.what(), true);
@@ -296,6 +337,13 @@ std::string LiveSession::controls_json() const {
   nlohmann::json j = nlohmann::json::object();
   for (const auto& [name, r] : panel_.controls()) j[name] = {r[0], r[1], r[2], r[3]};
   j["view3d"] = {view_3d_.x, view_3d_.y, view_3d_.width, view_3d_.height};
+  // The section panel's plot (clicks there start orbits) and how many
+  // crossings each of its runs and orbits shows: an object, not a rectangle.
+  if (const auto& a = layout_.section_area; a && scene_.frame().section) {
+    nlohmann::json dots = nlohmann::json::array();
+    for (const auto& run : scene_.frame().section->runs) dots.push_back(run.size());
+    j["section"] = {{"plot", {a->x, a->y, a->width, a->height}}, {"dots", std::move(dots)}};
+  }
   return io::json_text(j);
 }
 

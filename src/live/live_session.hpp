@@ -63,6 +63,10 @@ class LiveSession : public serve::Session {
   void observe(
       const render::InputEvent& e);  // the scene's own use of input: orbit, zoom, shortcuts
   void apply(const PanelActions& a);
+  // A press at (x, y): on the section panel's plot it starts an orbit from
+  // that point (or says why none); returns whether it was there.
+  bool click_section(float x, float y);
+  void notify(const std::string& note, bool error);
   void rerun(const LiveSetup& s);
   void save_frame();
   void save_job();

@@ -25,7 +25,7 @@ void draw_section_panel(render::DrawList& flat, const scene::SectionPanel& panel
                         const render::Viewport& area, const scene::Theme& ink, float px,
                         const std::function<glm::vec2(const std::string&)>& measure) {
   const auto& r = panel.range;
-  // Each axis its own scale: the coordinates may be of different kinds (an
+  // Each axis its own scale (section_point_at inverts this plot): the coordinates may be of different kinds (an
   // angular velocity against a component of gamma).
   const render::Panel2D plot(area, {r[0], r[1], r[2], r[3]}, false);
   render::PanelStyle style = column_panel_style(ink, px);
@@ -80,6 +80,16 @@ void draw_section_panel(render::DrawList& flat, const scene::SectionPanel& panel
                  render::TextAnchor::top_left,
                  {0, 0},
                  style.background});
+}
+
+std::optional<glm::dvec2> section_point_at(const scene::SectionPanel& panel,
+                                           const render::Viewport& area, float x, float y) {
+  if (area.width <= 0 || area.height <= 0) return std::nullopt;
+  const double u = (double(x) - area.x) / area.width;
+  const double v = 1.0 - (double(y) - area.y) / area.height;  // pixel rows run down
+  if (!(u >= 0.0 && u <= 1.0 && v >= 0.0 && v <= 1.0)) return std::nullopt;
+  const auto& r = panel.range;
+  return glm::dvec2(r[0] + u * (r[1] - r[0]), r[2] + v * (r[3] - r[2]));
 }
 
 }  // namespace epviz::paint

@@ -4,6 +4,7 @@
 // marked, the surface in the title and the coordinates' symbols on the axes.
 // Plain values in, a 2D draw list out: no physics here.
 #include <functional>
+#include <optional>
 #include <string>
 
 #include <glm/vec2.hpp>
@@ -24,5 +25,11 @@ render::PanelStyle column_panel_style(const scene::Theme& ink, float px);
 void draw_section_panel(render::DrawList& flat, const scene::SectionPanel& panel,
                         const render::Viewport& area, const scene::Theme& ink, float px,
                         const std::function<glm::vec2(const std::string&)>& measure);
+
+// The inverse of the panel's plot: the data point (x on axes[0], y on
+// axes[1]) under image pixel (x, y) of the panel drawn into `area`, or
+// nullopt off its plot (a click there is no point of the section).
+std::optional<glm::dvec2> section_point_at(const scene::SectionPanel& panel,
+                                           const render::Viewport& area, float x, float y);
 
 }  // namespace epviz::paint

@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 #include "physics/format.hpp"
@@ -104,6 +105,12 @@ void FrameSource::find_crossings() {
     track->run_ahead([&section](const sim::DenseStep& step) { section.step(step); });
     crossings.push_back(section.crossings());
   }
+  // The orbits started from the live panel's points, run as the first run.
+  for (const auto& start : settings_.section->orbits) {
+    SectionOrbit orbit(plan_.run, start, settings_.section->surface);
+    orbit.advance_to(plan_.run.t_end, std::numeric_limits<long>::max());
+    crossings.push_back(orbit.crossings());
+  }
   section_ = std::make_unique<SectionCrossings>(*settings_.section, std::move(crossings));
 }
 
@@ -189,7 +196,7 @@ Frame FrameSource::compose(int index) const {
     const bool light = is_light(settings_.colours.background);
     std::vector<Rgba> colours;
     for (int i = 0; i < run_count(); ++i) colours.push_back(run_colour(i, light));
-    f.section = section_->panel_at(last.t, colours);
+    f.section = section_->panel_at(last.t, colours, light);
   }
 
   const auto& run = plan_.run;

@@ -50,6 +50,8 @@ class FrameSource {
   // Every run: the first, then plan().others in order.
   int run_count() const { return int(tracks_.size()); }
   const RunTrack& run(int i) const { return *tracks_[std::size_t(i)]; }
+  // The same to follow its steps (the live mode's section panel observes them).
+  RunTrack& run(int i) { return *tracks_[std::size_t(i)]; }
   // Each run's crossings of the job's section surface (nullptr without a "section").
   const SectionCrossings* section() const { return section_.get(); }
 

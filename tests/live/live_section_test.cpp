@@ -1,0 +1,225 @@
+// The live mode's section panel: shown from the panel, filled from the run's
+// own steps as it plays, a click on it starting an orbit from that point on
+// the run's level (or saying why none starts), and "Save job" keeping the
+// orbits so that a render of the job draws the same crossings.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "job/job_file.hpp"
+#include "job/job_plan.hpp"
+#include "job/schema.hpp"
+#include "physics/direct.hpp"
+#include "physics/invariants.hpp"
+#include "scene/frame_source.hpp"
+#include "session_driver.hpp"
+
+namespace epviz::live::testing {
+namespace {
+
+// A Kovalevskaya top with the section panel (gamma3 = 0 upward at (gamma1, Omega3)).
+SessionOptions with_section() {
+  SessionOptions o = starting_with(physics::Case::kovalevskaya);
+  o.initial.scene.section = scene::SectionPanelSettings{};
+  return o;
+}
+
+// The picture's pixel of the panel's point (x, y): the forward map of the plot.
+std::pair<float, float> pixel_of(const LiveSession& s, double x, double y) {
+  const auto& a = *s.layout().section_area;
+  const auto& r = s.scene().frame().section->range;
+  return {float(a.x + (x - r[0]) / (r[1] - r[0]) * a.width),
+          float(a.y + (1.0 - (y - r[2]) / (r[3] - r[2])) * a.height)};
+}
+
+// Every crossing lies on gamma3 = 0, crosses it upward (by the direct
+// equations' right-hand side) and keeps the level of the run it belongs to.
+void expect_crossings_of_level(const physics::Body& body, const physics::Level& level,
+                               const std::vector<sim::Crossing>& crossings) {
+  physics::DirectSystem sys(body);
+  for (const auto& c : crossings) {
+    EXPECT_LE(std::abs(c.gamma.z()), 1e-12) << "crossing " << c.number;
+    physics::DirectSystem::State x, dx;
+    x << c.omega, c.gamma;
+    sys.rhs(0.0, x, dx);
+    EXPECT_GT(dx[5], 0.0) << "crossing " << c.number;
+    const auto inv = physics::invariants(body, physics::Case::custom, c.omega, c.gamma);
+    EXPECT_NEAR(inv.energy, level.energy, 1e-6 * std::max(1.0, std::abs(level.energy)));
+    EXPECT_NEAR(inv.area, level.area, 1e-6 * std::max(1.0, std::abs(level.area)));
+  }
+}
+
+TEST(LiveSection, ShownFromThePanelAndFilledAsTheRunPlays) {
+  SessionDriver d(starting_with(physics::Case::kovalevskaya));
+  EXPECT_FALSE(d.session->scene().frame().section);
+  EXPECT_FALSE(d.session->layout().section_area);
+  d.click("header:section");
+  d.click("section");
+  ASSERT_TRUE(d.session->scene().section());
+  ASSERT_TRUE(d.session->scene().frame().section);
+  ASSERT_TRUE(d.session->layout().section_area) << "the frame is laid out with the panel";
+  d.click("play");
+  d.frames(150);
+  d.click("play");
+  const LiveSection& section = *d.session->scene().section();
+  const auto& crossings = section.run_crossings(0);
+  ASSERT_GE(crossings.size(), 2u) << "t = " << d.session->scene().time();
+  expect_crossings_of_level(d.session->scene().setup().run.body, section.level(), crossings);
+  // The frame shows them all: the scene's time is past every one found.
+  EXPECT_EQ(d.session->scene().frame().section->runs.at(0).size(), crossings.size());
+  const auto c = nlohmann::json::parse(d.session->controls_json());
+  EXPECT_EQ(c["section"]["plot"].size(), 4u);
+  EXPECT_EQ(c["section"]["dots"][0], crossings.size());
+  // Switched off, the panel goes.
+  d.click("section");
+  EXPECT_FALSE(d.session->scene().frame().section);
+}
+
+TEST(LiveSection, AClickOnThePanelStartsAnOrbitWhoseCrossingsFillIn) {
+  SessionDriver d(with_section());
+  d.click("header:case");  // closed: the section's controls come into the panel's view
+  d.click("play");
+  d.frames(150);
+  d.click("play");
+  const LiveSection& section = *d.session->scene().section();
+  ASSERT_GE(section.run_crossings(0).size(), 1u);
+  // A point of the level: the run's first crossing, on the sheet it lies on.
+  const sim::Crossing& at = section.run_crossings(0).front();
+  if (at.gamma.y() < 0.0) d.click("sheet:-");
+  EXPECT_EQ(d.session->panel().click_sheet(), at.gamma.y() < 0.0 ? -1 : 1);
+  (void)d.session->take_notices();
+  const auto [px, py] = pixel_of(*d.session, at.gamma.x(), at.omega.z());
+  d.click_at(px, py);
+  ASSERT_EQ(section.orbit_count(), 1) << d.session->panel().message();
+  const auto notices = d.session->take_notices();
+  ASSERT_EQ(notices.size(), 1u);
+  EXPECT_NE(notices[0].find("orbit 1 from"), std::string::npos) << notices[0];
+  EXPECT_FALSE(d.session->panel().message_is_error());
+  // Paused, the orbit catches up to the scene's time frame by frame.
+  d.settle(400);
+  EXPECT_FALSE(d.session->scene().section_filling());
+  const auto& orbit = section.orbit(0);
+  EXPECT_NEAR(orbit.time(), d.session->scene().time(), d.session->scene().sample_spacing());
+  ASSERT_GE(orbit.crossings().size(), 2u) << "its start and at least one crossing";
+  // Started within a pixel of the run's own crossing, on its level.
+  const auto& start = orbit.crossings().front();
+  EXPECT_EQ(start.t, 0.0);
+  EXPECT_NEAR(start.gamma.x(), at.gamma.x(), 0.02);
+  EXPECT_NEAR(start.omega.z(), at.omega.z(), 0.05);
+  expect_crossings_of_level(d.session->scene().setup().run.body, section.level(),
+                            orbit.crossings());
+  // Drawn: the panel's second list is the orbit's, every crossing up to its time.
+  const auto& panel = *d.session->scene().frame().section;
+  ASSERT_EQ(panel.runs.size(), 2u);
+  EXPECT_EQ(panel.runs[1].size(), orbit.crossings().size());
+  EXPECT_NE(panel.colours[1], panel.colours[0]);
+  // Kept in the setup (a restart runs it again), and cleared by the button.
+  EXPECT_EQ(d.session->scene().setup().scene.section->orbits.size(), 1u);
+  d.click("clear_orbits");
+  EXPECT_EQ(section.orbit_count(), 0);
+  EXPECT_TRUE(d.session->scene().setup().scene.section->orbits.empty());
+}
+
+// Started exactly at the run's k-th crossing, an orbit is the run itself
+// shifted in time: its crossings are the run's next ones.
+TEST(LiveSection, AnOrbitFromTheRunsOwnCrossingRetracesTheRun) {
+  LiveSetup setup = with_section().initial;
+  LiveScene scene(setup);
+  scene.set_playing(true);
+  for (int i = 0; i < 300; ++i) scene.update(1.0 / 30.0);
+  scene.set_playing(false);
+  const auto run = scene.section()->run_crossings(0);
+  ASSERT_GE(run.size(), 2u);
+  const sim::Crossing& k = run.front();
+  const auto added = scene.add_section_orbit(k.gamma.x(), k.omega.z(), k.gamma.y() > 0 ? 1 : -1);
+  ASSERT_TRUE(added.added) << added.notice;
+  for (int i = 0; i < 400 && scene.section_filling(); ++i) scene.update(1.0 / 30.0);
+  const auto& orbit = scene.section()->orbit(0).crossings();
+  ASSERT_GE(orbit.size(), 2u);
+  // The same point of the panel; the rest of the state from the run's
+  // level, which the crossing keeps to the run's drift (1e-8 or so).
+  EXPECT_EQ(orbit[0].gamma.x(), k.gamma.x());
+  EXPECT_EQ(orbit[0].omega.z(), k.omega.z());
+  EXPECT_LT((orbit[0].omega - k.omega).norm(), 1e-6);
+  EXPECT_LT((orbit[0].gamma - k.gamma).norm(), 1e-6);
+  for (std::size_t j = 1; j < orbit.size() && j < run.size(); ++j) {
+    EXPECT_NEAR(orbit[j].t + k.t, run[j].t, 1e-4) << j;
+    EXPECT_LT((orbit[j].gamma - run[j].gamma).norm(), 1e-4) << j;
+    EXPECT_LT((orbit[j].omega - run[j].omega).norm(), 1e-4) << j;
+  }
+}
+
+TEST(LiveSection, AClickWhereTheLevelHasNoStateSaysSo) {
+  SessionDriver d(with_section());
+  const auto& r = d.session->scene().frame().section->range;
+  (void)d.session->take_notices();
+  // gamma1 beyond 1 (the plot's margin right of the level's reach): no unit gamma on gamma3 = 0.
+  const auto [px, py] = pixel_of(*d.session, 0.5 * (1.0 + r[1]), 0.0);
+  d.click_at(px, py);
+  EXPECT_EQ(d.session->scene().section()->orbit_count(), 0);
+  const auto notices = d.session->take_notices();
+  ASSERT_EQ(notices.size(), 1u);
+  EXPECT_NE(notices[0].find("no orbit started"), std::string::npos) << notices[0];
+  EXPECT_TRUE(d.session->panel().message_is_error());
+  // Omega3 at the top of the plot: more kinetic energy than the level has.
+  const auto [qx, qy] = pixel_of(*d.session, 0.0, 0.99 * r[3]);
+  d.click_at(qx, qy);
+  EXPECT_EQ(d.session->scene().section()->orbit_count(), 0);
+  const auto more = d.session->take_notices();
+  ASSERT_EQ(more.size(), 1u);
+  EXPECT_NE(more[0].find("lacks"), std::string::npos) << more[0];
+  // Not a camera drag either.
+  EXPECT_FALSE(d.session->dragging());
+}
+
+TEST(LiveSection, SaveJobKeepsTheOrbitsAndARenderDrawsTheirCrossings) {
+  SessionDriver d(with_section());
+  d.click("header:case");
+  d.click("play");
+  d.frames(150);
+  d.click("play");
+  const LiveSection& section = *d.session->scene().section();
+  ASSERT_GE(section.run_crossings(0).size(), 1u);
+  const sim::Crossing& at = section.run_crossings(0).front();
+  // A point near the run's crossing, on the other sheet: another orbit.
+  if (at.gamma.y() > 0.0) d.click("sheet:-");
+  const auto [px, py] = pixel_of(*d.session, 0.9 * at.gamma.x(), at.omega.z());
+  d.click_at(px, py);
+  ASSERT_EQ(section.orbit_count(), 1) << d.session->panel().message();
+  d.settle(400);
+  ASSERT_FALSE(d.session->scene().section_filling());
+  (void)d.session->take_downloads();
+  d.click("save_job");
+  const auto downloads = d.session->take_downloads();
+  ASSERT_EQ(downloads.size(), 1u) << d.session->panel().message();
+  const auto json = nlohmann::json::parse(downloads[0].bytes.begin(), downloads[0].bytes.end());
+  ASSERT_EQ(json["section"]["orbits"].size(), 1u) << json.dump();
+  const auto& start = section.orbit(0).crossings().front();
+  EXPECT_EQ(json["section"]["orbits"][0]["omega"][2].get<double>(), start.omega.z());
+  EXPECT_EQ(json["section"]["orbits"][0]["gamma"][0].get<double>(), start.gamma.x());
+
+  // The job as `epviz render` reads and plans it; its last frame's panel.
+  job::JobDocument doc = job::read_job(json, "saved.json");
+  job::RenderJob job{"saved.json", std::move(doc.simulation), std::move(doc.runs),
+                     std::move(doc.scene), std::move(doc.output)};
+  const scene::ScenePlan plan = job::plan_job(job);
+  scene::FrameSource source(plan, job.scene);
+  const scene::Frame last = source.frame(plan.frames - 1);
+  ASSERT_TRUE(last.section);
+  const auto& live = *d.session->scene().frame().section;
+  ASSERT_EQ(last.section->runs.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const auto& a = live.runs[i];
+    const auto& b = last.section->runs[i];
+    // The same crossings; the last may fall either side of the end by rounding.
+    EXPECT_LE(std::abs(long(a.size()) - long(b.size())), 1) << "list " << i;
+    EXPECT_GE(b.size(), 2u) << "list " << i;
+    for (std::size_t j = 0; j < std::min(a.size(), b.size()); ++j)
+      EXPECT_LT((a[j] - b[j]).norm(), 1e-6) << "list " << i << " crossing " << j;
+  }
+  EXPECT_NE(last.section->colours[1], last.section->colours[0]);
+}
+
+}  // namespace
+}  // namespace epviz::live::testing
