@@ -21,7 +21,7 @@ std::string title(const SectionJob& job, const SectionMethod& m) {
   std::string t = "Poincaré section, ";
   t += physics::preset(job.case_id).title;
   t += ": ";
-  t += sim::symbol(job.surface.function);
+  t += sim::surface_function_symbol(job.surface);
   t += " = ";
   t += chart_number(job.surface.value);
   t += " ";
@@ -83,6 +83,15 @@ std::string sheet_label(const SectionJob& job, const Panel& p) {
   return t;
 }
 
+// The crossing at the plot's two coordinates; none where one is undefined
+// (an Andoyer angle on its singular set).
+std::optional<chart::ChartPoint> point_of(const SectionJob& job, const sim::Crossing& c) {
+  const auto x = value_of(job.coords[0], job.body, c.omega, c.gamma);
+  const auto y = value_of(job.coords[1], job.body, c.omega, c.gamma);
+  if (!x || !y) return std::nullopt;
+  return chart::ChartPoint{*x, *y};
+}
+
 // The panel's crossings as plotted, with their states, for measure_folds.
 std::vector<PlottedCrossing> plotted(const SectionJob& job, const Panel& p,
                                      const std::vector<OrbitResult>& orbits) {
@@ -91,9 +100,11 @@ std::vector<PlottedCrossing> plotted(const SectionJob& job, const Panel& p,
     if (o.method != p.method || o.failure) continue;
     for (const auto& c : o.crossings) {
       if (!on_side(job, p, c)) continue;
+      const auto at = point_of(job, c);
+      if (!at) continue;
       out.push_back(
-          {sim::value_of(job.coords[0], c.omega, c.gamma),
-           sim::value_of(job.coords[1], c.omega, c.gamma),
+          {at->x,
+           at->y,
            {c.omega.x(), c.omega.y(), c.omega.z(), c.gamma.x(), c.gamma.y(), c.gamma.z()}});
     }
   }
@@ -125,8 +136,9 @@ std::vector<chart::ChartSpec> section_charts(const SectionJob& job,
     if (folds.far_pairs > 0)
       chart.title += "; two sheets folded (" + std::to_string(folds.far_pairs) + " of " +
                      std::to_string(folds.close_pairs) + " close pairs)";
-    chart.x_label = sim::symbol(job.coords[0]);
-    chart.y_label = sim::symbol(job.coords[1]);
+    chart.x_label = symbol(job.coords[0]);
+    chart.y_label = symbol(job.coords[1]);
+    long undefined = 0;  // crossings with a coordinate undefined there: not drawn, counted
     // An orbit is a scatter of small dots (the painter's `markers` style:
     // every point, no line), its colour keyed by its orbit; the legend is one
     // row for all of them.
@@ -138,16 +150,22 @@ std::vector<chart::ChartSpec> section_charts(const SectionJob& job,
       s.colour_key = o.orbit - 1;
       s.marker_key = 0;
       s.points.reserve(o.crossings.size());
-      for (const auto& c : o.crossings)
-        if (on_side(job, p, c))
-          s.points.push_back({sim::value_of(job.coords[0], c.omega, c.gamma),
-                              sim::value_of(job.coords[1], c.omega, c.gamma)});
+      for (const auto& c : o.crossings) {
+        if (!on_side(job, p, c)) continue;
+        if (const auto at = point_of(job, c))
+          s.points.push_back(*at);
+        else
+          ++undefined;
+      }
       if (panels.size() > 1) extent.insert(extent.end(), s.points.begin(), s.points.end());
       chart.series.push_back(std::move(s));
     }
     std::string legend = "crossings, one colour per orbit (";
     legend += std::to_string(runs[p.method]);
     legend += " orbits)";
+    if (undefined > 0)
+      legend +=
+          "; " + std::to_string(undefined) + " on the Andoyer variables' singular set, not drawn";
     chart.marker_legend.push_back({legend, 0});
   }
   if (panels.size() > 1)

@@ -37,12 +37,25 @@ bool parse(std::string_view text, T& value) {
   return r.ec == std::errc{} && r.ptr == text.data() + text.size();
 }
 
+// The plotted Andoyer–Deprit variables, each once: the CSV's last columns.
+std::vector<PlotCoord> andoyer_columns(const SectionJob& job) {
+  std::vector<PlotCoord> v;
+  for (const PlotCoord& c : job.coords)
+    if (is_andoyer(c) && (v.empty() || !(v.front() == c))) v.push_back(c);
+  return v;
+}
+
 }  // namespace
 
 std::string crossings_csv_header(const SectionJob& job) {
   std::string h = several_methods(job) ? "method," : "";
   h += "orbit,crossing,t,omega1,omega2,omega3,gamma1,gamma2,gamma3,energy,area,gamma_norm_error,"
-       "extra_integral\n";
+       "extra_integral";
+  for (const PlotCoord& c : andoyer_columns(job)) {
+    h += ',';
+    h += name(c);
+  }
+  h += '\n';
   return h;
 }
 
@@ -64,6 +77,10 @@ std::string crossings_csv(const SectionJob& job, const std::vector<OrbitResult>&
       }
       out += ',';
       if (inv.extra) put(out, *inv.extra);
+      for (const PlotCoord& a : andoyer_columns(job)) {  // empty where undefined
+        out += ',';
+        if (const auto v = value_of(a, job.body, c.omega, c.gamma)) put(out, *v);
+      }
       out += '\n';
     }
   }
@@ -92,6 +109,9 @@ void for_each_crossing_row(const SectionJob& job, const std::vector<OrbitResult>
                        std::sqrt(inv.gamma_norm2) - 1.0})
         values.push_back(x);
       values.push_back(inv.extra ? *inv.extra : std::numeric_limits<double>::quiet_NaN());
+      for (const PlotCoord& a : andoyer_columns(job))
+        values.push_back(value_of(a, job.body, c.omega, c.gamma)
+                             .value_or(std::numeric_limits<double>::quiet_NaN()));
       row(values);
     }
   }
@@ -119,7 +139,7 @@ std::vector<OrbitResult> crossings_from_csv(const SectionJob& job, std::string_v
     if (end == std::string_view::npos) fail("cut short (no newline)");
     const auto f = fields_of(text.substr(at, end - at));
     at = end + 1;
-    if (f.size() != first_field + 13) fail("expected as many fields as the header");
+    if (f.size() != columns.size()) fail("expected as many fields as the header");
     std::size_t method = 0;
     if (several_methods(job)) {
       while (method < job.methods.size() && method_label(job.methods[method]) != f[0]) ++method;
@@ -129,10 +149,11 @@ std::vector<OrbitResult> crossings_from_csv(const SectionJob& job, std::string_v
     // Every value a number the merge can draw and join: "nan" or "inf" parse
     // as doubles but are no crossing's (extra_integral is empty where the
     // case has none).
-    const std::size_t last = f.size() - 1;
-    for (std::size_t k = first_field + 2; k <= last; ++k) {
+    // extra_integral and the Andoyer–Deprit columns after it may be empty.
+    const std::size_t first_optional = first_field + 12;
+    for (std::size_t k = first_field + 2; k < f.size(); ++k) {
       double x = 0.0;
-      if (k == last && f[k].empty()) continue;
+      if (k >= first_optional && f[k].empty()) continue;
       if (!parse(f[k], x) || !std::isfinite(x))
         fail("column '" + columns[k] + "': expected a finite number, got '" + io::printable(f[k]) +
              "'");

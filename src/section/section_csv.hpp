@@ -5,7 +5,8 @@
 // with a first column `method` ("rk4 step 0.05", method_label) when the
 // section lists several methods. energy is C1, area C0, gamma_norm_error
 // |gamma| - 1, extra_integral the case's fourth integral (empty without
-// one). Numbers are the shortest text that reads back as the same double,
+// one), and after it a column for each plotted Andoyer–Deprit variable
+// (andoyer_l, ..., empty where it is undefined). Numbers are the shortest text that reads back as the same double,
 // so that the CSV read back (crossings_from_csv) gives the same crossings.
 #include <functional>
 #include <span>
@@ -28,7 +29,8 @@ std::string crossings_csv(const SectionJob& job, const std::vector<OrbitResult>&
 // The same crossings as numbers (an HDF5 file's datasets, Python's arrays):
 // the CSV's column names, and each row's values in that order. The method
 // column (several methods only) holds the method's index into job.methods
-// (0, 1, ...); extra_integral is NaN where the CSV's field is empty. Orbits
+// (0, 1, ...); extra_integral and the Andoyer–Deprit columns are NaN where
+// the CSV's field is empty. Orbits
 // with a failure are left out, as from the CSV.
 std::vector<std::string> crossing_columns(const SectionJob& job);
 void for_each_crossing_row(const SectionJob& job, const std::vector<OrbitResult>& orbits,

@@ -189,6 +189,42 @@ std::array<sim::StateComponent, 2> read_coords(io::ObjectReader& r, sim::StateCo
   return coords;
 }
 
+void read_section_function(io::ObjectReader& r, sim::SectionSurface& s) {
+  std::vector<std::string> names = function_names();
+  for (auto a : {physics::AndoyerAngle::l, physics::AndoyerAngle::g})
+    names.emplace_back(sim::name(a));
+  const auto f = r.choice("function", names);
+  if (!f) return;
+  s.angle = sim::andoyer_angle_from_name(*f);
+  if (!s.angle) s.function = *sim::state_component_from_name(*f);
+}
+
+PlotCoords default_section_coords(const sim::SectionSurface& s) {
+  if (!s.angle) {
+    const auto c = default_coords(s.function);
+    return {c[0], c[1]};
+  }
+  if (*s.angle == physics::AndoyerAngle::g) return {AndoyerCoord::l, AndoyerCoord::L_over_G};
+  return {AndoyerCoord::g, AndoyerCoord::G};
+}
+
+PlotCoords read_section_coords(io::ObjectReader& r, const sim::SectionSurface& s) {
+  PlotCoords coords = default_section_coords(s);
+  if (const auto* given = r.raw("coords")) {
+    std::vector<std::string> names;
+    for (const PlotCoord& c : all_plot_coords()) names.emplace_back(name(c));
+    const std::string allowed = "two of " + join(names);
+    if (!given->is_array() || given->size() != 2) r.fail("coords", "must be " + allowed);
+    for (std::size_t i = 0; i < 2; ++i) {
+      const auto c = (*given)[i].is_string() ? plot_coord_from_name((*given)[i].get<std::string>())
+                                             : std::nullopt;
+      if (!c) r.fail("coords", "must be " + allowed + ", got " + io::describe(*given));
+      coords[i] = *c;
+    }
+  }
+  return coords;
+}
+
 namespace {
 
 // "sheet": "COMPONENT > 0" or "COMPONENT < 0", or "sheets": "COMPONENT": a
@@ -202,7 +238,8 @@ std::optional<SheetChoice> read_sheet(io::ObjectReader& r, const SectionJob& job
   const char* key = one ? "sheet" : "sheets";
   std::string free;  // the components a sheet may be told apart by
   for (auto c : sim::all_state_components())
-    if (c != job.surface.function && c != job.coords[0] && c != job.coords[1])
+    if ((job.surface.angle || c != job.surface.function) && c != job.coords[0] &&
+        c != job.coords[1])
       free += (free.empty() ? "" : ", ") + std::string(sim::name(c));
   const std::string allowed = one ? "\"C > 0\" or \"C < 0\", C one of " + free : "one of " + free;
   std::string text = one ? *one : *both;
@@ -216,7 +253,8 @@ std::optional<SheetChoice> read_sheet(io::ObjectReader& r, const SectionJob& job
     text = text.substr(0, space);
   }
   const auto c = sim::state_component_from_name(text);
-  if (!c || *c == job.surface.function || *c == job.coords[0] || *c == job.coords[1])
+  if (!c || (!job.surface.angle && *c == job.surface.function) || *c == job.coords[0] ||
+      *c == job.coords[1])
     r.fail(key, "must be " + allowed + ", got " + io::quoted(one ? *one : *both));
   sheet.component = *c;
   return sheet;
@@ -287,7 +325,9 @@ SectionJob read_section_object(const nlohmann::json& doc, const std::string& nam
   if (auto k = r.integer("crossings", 1, 1000000)) job.crossings = int(*k);
   if (auto t = r.number_in("t_end", 1e-6, 1e9, "1e-6 to 1e9")) job.t_end = *t;
   if (auto s = r.object("section")) {
-    read_surface(*s, job.surface);
+    read_section_function(*s, job.surface);
+    read_surface_value(*s, job.surface);
+    read_surface_direction(*s, job.surface);
     s->finish();
   }
   read_methods(r, job);
@@ -304,7 +344,7 @@ SectionJob read_section_object(const nlohmann::json& doc, const std::string& nam
     r.fail("crossings", got);
   }
   if (auto d = r.number_in("max_drift", 1e-14, 1.0, "1e-14 to 1")) job.max_drift = *d;
-  job.coords = read_coords(r, job.surface.function);
+  job.coords = read_section_coords(r, job.surface);
   job.sheet = read_sheet(r, job);
   for (auto [key, path] : {std::pair{"png", &job.png}, {"svg", &job.svg}, {"pdf", &job.pdf}})
     if (auto given = r.string(key)) *path = *given;

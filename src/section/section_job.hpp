@@ -16,6 +16,7 @@
 #include "physics/body.hpp"
 #include "physics/cases.hpp"
 #include "physics/level_set.hpp"
+#include "section/section_coords.hpp"
 #include "sim/section.hpp"
 
 namespace epviz::section {
@@ -61,10 +62,9 @@ struct SectionJob {
   // running every orbit: a panel each in the figure, side by side.
   std::vector<SectionMethod> methods{SectionMethod{}};
   double max_drift = 1e-6;  // relative drift of C1 or |gamma|^2 that loses an orbit
-  // The plot's axes: two state components (default gamma1, omega3 for a
-  // gamma3 section, else the first two components the surface leaves free).
-  std::array<sim::StateComponent, 2> coords{sim::StateComponent::gamma1,
-                                            sim::StateComponent::omega3};
+  // The plot's axes: two state components or Andoyer–Deprit variables
+  // (default_section_coords).
+  PlotCoords coords{sim::StateComponent::gamma1, sim::StateComponent::omega3};
   std::optional<SheetChoice> sheet;  // none: every crossing on one plane
   std::string csv;
   std::string png, svg, pdf;  // optional pictures of the crossings
@@ -87,6 +87,14 @@ void read_surface(io::ObjectReader& r, sim::SectionSurface& s);            // al
 std::array<sim::StateComponent, 2> default_coords(sim::StateComponent surface);
 // "coords" of `r`'s object: two state components, default_coords(surface) when absent.
 std::array<sim::StateComponent, 2> read_coords(io::ObjectReader& r, sim::StateComponent surface);
+// A section file's surface and axes, which may also be Andoyer–Deprit
+// variables (docs/sections.md, "Andoyer–Deprit variables"): "function" one
+// of state_function_names() or "andoyer_l", "andoyer_g"; "coords" two of
+// all_plot_coords(), by default (l, L/G) on a g surface, (g, G) on an l
+// surface, else default_coords.
+void read_section_function(io::ObjectReader& r, sim::SectionSurface& s);
+PlotCoords default_section_coords(const sim::SectionSurface& s);
+PlotCoords read_section_coords(io::ObjectReader& r, const sim::SectionSurface& s);
 // For help: the state functions' names ("omega1" ... "gamma3") and the
 // surface value's range ("-1e6 to 1e6").
 inline constexpr double kSurfaceValueLimit = 1e6;

@@ -39,6 +39,40 @@ double level_of(const SectionSurface& s, const X& x) {
   return x[std::size_t(s.function)] - s.value;
 }
 
+// The section function of a whole state for any surface: a component's
+// level_of, or for an Andoyer angle r sin(angle − value) with its half
+// cos(angle − value) > 0 (SectionSurface::angle).
+class SurfaceFunction {
+ public:
+  SurfaceFunction(const SectionSurface& s, const physics::Body& body)
+      : surface_(s), body_(body), cos_c_(std::cos(s.value)), sin_c_(std::sin(s.value)) {}
+  bool is_angle() const { return surface_.angle.has_value(); }
+  double level(const State& x) const {
+    if (!is_angle()) return level_of(surface_, x);
+    const auto a = physics::andoyer_angle_sides(*surface_.angle, body_, x.head<3>(), x.tail<3>());
+    return a.sine * cos_c_ - a.cosine * sin_c_;
+  }
+  // d level / dt at x moving at dx.
+  double rate(const State& x, const State& dx) const {
+    if (!is_angle()) return dx[Eigen::Index(surface_.function)];
+    const auto a = physics::andoyer_angle_sides_rate(*surface_.angle, body_, x.head<3>(),
+                                                     x.tail<3>(), dx.head<3>(), dx.tail<3>());
+    return a.sine * cos_c_ - a.cosine * sin_c_;
+  }
+  // Whether a zero of level() at x is on the surface: for an angle, not the
+  // opposite one (angle = value + π) where r sin(angle − value) vanishes too.
+  bool on_surface(const State& x) const {
+    if (!is_angle()) return true;
+    const auto a = physics::andoyer_angle_sides(*surface_.angle, body_, x.head<3>(), x.tail<3>());
+    return a.sine * sin_c_ + a.cosine * cos_c_ > 0.0;
+  }
+
+ private:
+  SectionSurface surface_;
+  physics::Body body_;
+  double cos_c_, sin_c_;
+};
+
 bool crosses(CrossingDirection d, double before, double after) {
   const bool up = before < 0.0 && after >= 0.0;
   const bool down = before > 0.0 && after <= 0.0;
@@ -126,18 +160,18 @@ class DenseOutput {
 template <class StateAt>
 class WholeStateDense final : public DenseOutput {
  public:
-  WholeStateDense(StateAt state_at, const SectionSurface& surface)
+  WholeStateDense(StateAt state_at, const SurfaceFunction& surface)
       : state_at_(std::move(state_at)), surface_(surface) {}
   double level(double t) override {
     t_ = t;
     x_ = state_at_(t);
-    return level_of(surface_, x_);
+    return surface_.level(x_);
   }
   State state(double t) override { return t == t_ ? x_ : State(state_at_(t)); }
 
  private:
   StateAt state_at_;
-  const SectionSurface& surface_;
+  const SurfaceFunction& surface_;
   double t_ = std::numeric_limits<double>::quiet_NaN();
   State x_;
 };
@@ -209,22 +243,23 @@ double turning_point(DenseOutput& dense, const Rate& rate, double t0, double r0,
 class OrbitSection {
  public:
   OrbitSection(const RunSpec& run, const SectionSurface& surface, int max_crossings)
-      : surface_(surface),
+      : surface_(surface, run.body),
         equations_(run.body),
         check_(run.body, run.initial, run.max_drift),
         method_(name(run.method)),
         t_end_(run.t_end),
-        max_crossings_(max_crossings) {}
+        max_crossings_(max_crossings),
+        direction_(surface.direction) {}
 
-  double level(const State& x) const { return level_of(surface_, x); }
-  // The rate of the section function at x: its component of the direct
-  // equations' right-hand side.
+  double level(const State& x) const { return surface_.level(x); }
+  // The rate of the section function at x along the direct equations.
   double rate(const State& x) const {
     State dx;
     equations_.rhs(0.0, x, dx);
-    return dx[Eigen::Index(surface_.function)];
+    return surface_.rate(x, dx);
   }
-  bool crosses(double g0, double g1) const { return sim::crosses(surface_.direction, g0, g1); }
+  bool crosses(double g0, double g1) const { return sim::crosses(direction_, g0, g1); }
+  const SurfaceFunction& function() const { return surface_; }
   // A step whose ends lie on one side of the surface, the first moving
   // towards it and the second away: the section function turns inside the
   // step and may pass through the surface and back within it (a grazing
@@ -271,6 +306,7 @@ class OrbitSection {
       done_ = true;
       return std::nullopt;
     }
+    if (!surface_.on_surface(x)) return std::nullopt;  // an angle's opposite half
     if (auto failure = motion_failure(t, x)) return failure;
     found_.push_back({int(found_.size()) + 1, t, x.template head<3>(), x.template tail<3>()});
     return std::nullopt;
@@ -289,12 +325,13 @@ class OrbitSection {
   const std::vector<Crossing>& crossings() const { return found_; }
 
  private:
-  SectionSurface surface_;
+  SurfaceFunction surface_;
   physics::DirectSystem equations_;
   MotionCheck check_;
   std::string method_;
   double t_end_;
   int max_crossings_;
+  CrossingDirection direction_;
   bool done_ = false;
   std::vector<Crossing> found_;
 };
@@ -315,7 +352,8 @@ std::vector<Crossing> run_section(Stepper stepper, const RunSpec& run,
     if (failure) throw numerics::IntegrationError(*failure);
   };
   const TallyOnExit<Stepper> tally{stepper};
-  WholeStateDense dense([&stepper](double t) { return State(stepper.dense(t)); }, surface);
+  WholeStateDense dense([&stepper](double t) { return State(stepper.dense(t)); },
+                        section.function());
   stepper.init(0.0, physics::DirectSystem::pack(run.initial));
   State x_prev = stepper.state();
   while (!section.done() && stepper.t() < run.t_end) {
@@ -335,12 +373,15 @@ State state_of(const std::array<double, 6>& x) {
   return s;
 }
 
-// A batch lane's: the section function from the one component it is of.
+// A batch lane's: the section function from the one component it is of,
+// or for an angle from the whole state.
 class LaneDense final : public DenseOutput {
  public:
-  LaneDense(const numerics::BatchDense<6>& dense, const SectionSurface& surface)
-      : dense_(dense), surface_(surface) {}
+  LaneDense(const numerics::BatchDense<6>& dense, const SectionSurface& surface,
+            const SurfaceFunction& function)
+      : dense_(dense), surface_(surface), function_(function) {}
   double level(double t) override {
+    if (function_.is_angle()) return function_.level(state(t));
     return level_of(surface_, Component{dense_.component(int(surface_.function), t)});
   }
   State state(double t) override { return state_of(dense_(t)); }
@@ -353,6 +394,7 @@ class LaneDense final : public DenseOutput {
   };
   const numerics::BatchDense<6>& dense_;
   const SectionSurface& surface_;
+  const SurfaceFunction& function_;
 };
 
 // The step hook that shows every orbit's steps to its OrbitSection (sections
@@ -373,7 +415,7 @@ numerics::BatchStepHook<6> section_hook(std::vector<OrbitSection>& sections,
     const State x0 = state_of(step.x_prev), x1 = state_of(step.x);
     numerics::BatchStepVerdict verdict;
     if (section.may_cross(x0, x1)) {
-      LaneDense at(dense, surface);
+      LaneDense at(dense, surface, section.function());
       verdict.failure = section.scan(step.t_prev, x0, step.t, x1, at);
       if (verdict.failure) return verdict;
     }
@@ -415,6 +457,25 @@ double value_of(StateComponent c, const physics::Vector3d& omega, const physics:
   return i < 3 ? omega[i] : gamma[i - 3];
 }
 
+std::string_view name(physics::AndoyerAngle a) {
+  return a == physics::AndoyerAngle::l ? "andoyer_l" : "andoyer_g";
+}
+
+std::optional<physics::AndoyerAngle> andoyer_angle_from_name(std::string_view s) {
+  for (auto a : {physics::AndoyerAngle::l, physics::AndoyerAngle::g})
+    if (name(a) == s) return a;
+  return std::nullopt;
+}
+
+std::string_view surface_function_name(const SectionSurface& s) {
+  return s.angle ? name(*s.angle) : name(s.function);
+}
+
+std::string_view surface_function_symbol(const SectionSurface& s) {
+  if (s.angle) return *s.angle == physics::AndoyerAngle::l ? "l" : "g";
+  return symbol(s.function);
+}
+
 std::string_view name(CrossingDirection d) { return kDirections[std::size_t(d)].second; }
 
 std::optional<CrossingDirection> crossing_direction_from_name(std::string_view s) {
@@ -449,7 +510,7 @@ void SectionObserver::step(const DenseStep& step) {
   OrbitSection& section = search_->section;
   // As run_section's loop: the dense output only for a step that may hold a crossing.
   if (section.done() || !section.may_cross(step.x0, step.x1)) return;
-  WholeStateDense dense([&step](double t) { return step.at(t); }, search_->surface);
+  WholeStateDense dense([&step](double t) { return step.at(t); }, section.function());
   if (auto failure = section.scan(step.t0, step.x0, step.t1, step.x1, dense))
     throw numerics::IntegrationError(*failure);
 }

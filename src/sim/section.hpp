@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "numerics/failure.hpp"
+#include "physics/andoyer.hpp"
 #include "physics/body.hpp"
 #include "sim/dense_step.hpp"
 #include "sim/run_spec.hpp"
@@ -35,7 +36,21 @@ struct SectionSurface {
   StateComponent function = StateComponent::gamma3;
   double value = 0.0;
   CrossingDirection direction = CrossingDirection::upward;
+  // When set, the surface is this Andoyer–Deprit angle = value (mod 2π)
+  // instead of `function` = value: found as a zero of the smooth function
+  // r sin(angle − value) of the state (physics::andoyer_angle_sides) on the
+  // half where cos(angle − value) > 0, so the angle's jump at ±π is no
+  // crossing. Its crossings are on the surface to kSectionResidual in that
+  // function (r is of the size of G³ for g, G for l).
+  std::optional<physics::AndoyerAngle> angle = std::nullopt;
 };
+// The surface's function as files name it ("gamma3", "andoyer_g") and as
+// figures write it ("γ₃", "g").
+std::string_view surface_function_name(const SectionSurface& s);
+std::string_view surface_function_symbol(const SectionSurface& s);
+// The Andoyer angles' names in files: "andoyer_l", "andoyer_g".
+std::string_view name(physics::AndoyerAngle a);
+std::optional<physics::AndoyerAngle> andoyer_angle_from_name(std::string_view s);
 
 // How close to the surface a crossing lies: |function - value| at the
 // recorded state is at most this (or the two bracketing times are adjacent
