@@ -143,6 +143,7 @@ int run_diagram(const DiagramOptions& o) {
   std::vector<std::string> region_lines;
   if (sections.orbits > 0) {
     regions = diagram_regions(diagram);
+    files.push_back({out / "regions.csv", regions_csv(regions)});
     for (const auto& region : regions) {
       const auto starts = region_starts(request, region.point, sections.orbits);
       if (starts.empty()) {
@@ -153,9 +154,11 @@ int run_diagram(const DiagramOptions& o) {
         return 3;
       }
       const fs::path csv = out / ("section_" + region.label + ".csv");
+      const int threads = section::thread_count(0);
       const section::SectionJob job =
-          region_section_job(request, starts, sections.crossings, csv.string());
-      const auto results = section::run_section(job, starts, section::thread_count(0));
+          region_section_job(request, starts, sections.crossings, csv.string(),
+                             region_surface(request, starts, threads));
+      const auto results = section::run_section(job, starts, threads);
       if (const std::string lost = section::lost_orbits_line(job, results); !lost.empty()) {
         std::fprintf(stderr, "epviz: error: --sections: region %s: %s (nothing written)\n",
                      region.label.c_str(), lost.c_str());

@@ -195,6 +195,16 @@ std::string critical_curves_csv(const physics::BifurcationDiagram& diagram) {
   return text;
 }
 
+std::string regions_csv(const std::vector<DiagramRegion>& regions) {
+  std::string text = "region,energy,integral,clearance,samples\n";
+  for (const auto& r : regions) {
+    text += r.label + "," + diagram_number(r.point.energy, 17) + "," +
+            diagram_number(r.point.integral, 17) + "," + diagram_number(r.clearance, 6) + "," +
+            std::to_string(r.samples) + "\n";
+  }
+  return text;
+}
+
 std::string sampled_values_csv(const physics::BifurcationDiagram& diagram) {
   std::string text = "energy,integral\n";
   for (const auto& p : diagram.sampled) {

@@ -24,6 +24,11 @@ chart::Figure diagram_figure(const physics::DiagramRequest& request,
 // not rows).
 std::string critical_curves_csv(const physics::BifurcationDiagram& diagram);
 
+// "region,energy,integral,clearance,samples" and a row per region: its
+// label, point (exact: the level its section's orbits are on), clearance and
+// the sampled states in it.
+std::string regions_csv(const std::vector<DiagramRegion>& regions);
+
 // "energy,integral" and a row per sampled state.
 std::string sampled_values_csv(const physics::BifurcationDiagram& diagram);
 

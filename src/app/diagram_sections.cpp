@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 
@@ -109,7 +110,19 @@ std::vector<physics::InitialState> region_starts(const physics::DiagramRequest& 
 
 section::SectionJob region_section_job(const physics::DiagramRequest& request,
                                        std::vector<physics::InitialState> starts, int crossings,
-                                       const std::string& csv) {
+                                       const std::string& csv, int surface) {
+  using sim::StateComponent;
+  // γ₃ = 0 upward with axes (γ₁, Ω₃) and sheets by γ₂, as the shipped
+  // sections; the others its cyclic turns (1 -> 2 -> 3 -> 1 of the indices).
+  static constexpr std::array<std::array<StateComponent, 4>, 3> kSurfaces{{
+      {StateComponent::gamma3, StateComponent::gamma1, StateComponent::omega3,
+       StateComponent::gamma2},
+      {StateComponent::gamma1, StateComponent::gamma2, StateComponent::omega1,
+       StateComponent::gamma3},
+      {StateComponent::gamma2, StateComponent::gamma3, StateComponent::omega2,
+       StateComponent::gamma1},
+  }};
+  const auto& choice = kSurfaces[std::size_t(std::clamp(surface, 0, 2))];
   section::SectionJob job;
   job.file = "epviz diagram --sections";
   job.case_id = request.case_id;
@@ -117,14 +130,35 @@ section::SectionJob region_section_job(const physics::DiagramRequest& request,
   job.states = std::move(starts);
   job.crossings = crossings;
   job.t_end = 1e4;
-  job.surface.function = sim::StateComponent::gamma3;
+  job.surface.function = choice[0];
   job.surface.value = 0.0;
   job.surface.direction = sim::CrossingDirection::upward;
-  job.coords = section::default_coords(job.surface.function);
-  job.sheet =
-      section::SheetChoice{sim::StateComponent::gamma2, section::SheetChoice::Show::both_apart};
+  job.coords[0] = choice[1];
+  job.coords[1] = choice[2];
+  job.sheet = section::SheetChoice{choice[3], section::SheetChoice::Show::both_apart};
   job.csv = csv;
   return job;
+}
+
+int region_surface(const physics::DiagramRequest& request,
+                   const std::vector<physics::InitialState>& starts, int threads) {
+  int best = 0;
+  std::size_t most = 0;
+  for (int surface = 0; surface < 3; ++surface) {
+    section::SectionJob probe = region_section_job(request, starts, 3, "", surface);
+    probe.t_end = 200.0;
+    const auto results = section::run_section(probe, starts, threads);
+    std::size_t found = 0;
+    bool every = true;
+    for (const auto& r : results) {
+      if (r.failure) continue;  // the section proper reports it
+      found += r.crossings.size();
+      every = every && r.crossings.size() == 3;
+    }
+    if (every) return surface;
+    if (found > most) best = surface, most = found;
+  }
+  return best;
 }
 
 chart::Figure region_section_figure(const physics::DiagramRequest& request,

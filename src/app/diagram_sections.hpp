@@ -26,12 +26,21 @@ std::vector<physics::InitialState> region_starts(const physics::DiagramRequest& 
                                                  const physics::ValuePoint& point, int count);
 
 // The section the region's orbits are run on, as a section file would give
-// it: the surface γ₃ = 0 upward, the picture's axes (γ₁, Ω₃), the two sheets
-// (γ₂ > 0, γ₂ < 0) in panels of their own, dop853 at tol 1e-10, `crossings`
-// per orbit (at most, by t = 1e4); the CSV `csv`.
+// it: the surface `surface` (0: γ₃ = 0 upward, axes (γ₁, Ω₃), the sheets
+// γ₂ > 0 and γ₂ < 0 in panels of their own, as the shipped sections; 1 and
+// 2 its cyclic turns: γ₁ = 0 with (γ₂, Ω₁) by γ₃, γ₂ = 0 with (γ₃, Ω₂) by
+// γ₁), dop853 at tol 1e-10, `crossings` per orbit (at most, by t = 1e4); the
+// CSV `csv`.
 section::SectionJob region_section_job(const physics::DiagramRequest& request,
                                        std::vector<physics::InitialState> starts, int crossings,
-                                       const std::string& csv);
+                                       const std::string& csv, int surface);
+
+// The first of the three surfaces that every orbit of `starts` crosses three
+// times by t = 200 (a fast top whose axis 3 never dips below the horizontal
+// never crosses γ₃ = 0), else the one crossed most, found by running the
+// section engine on them.
+int region_surface(const physics::DiagramRequest& request,
+                   const std::vector<physics::InitialState>& starts, int threads);
 
 // The picture "section_<label>.png": the section's panels under a title that
 // names the region and its point.
