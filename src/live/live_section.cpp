@@ -64,7 +64,7 @@ LiveSection::Added LiveSection::add_orbit(double x, double y, int sheet) {
   const auto sheet_component = *sim::chart_sheet_component(settings_.surface, settings_.coords);
   char text[240];
   std::snprintf(text, sizeof text,
-                "orbit %d from %s = %.4g, %s = %.4g (%s = %.4g): Omega = (%.4g, %.4g, %.4g)",
+                "orbit %d from %s = %.4g, %s = %.4g (%s = %.4g): Ω = (%.4g, %.4g, %.4g)",
                 orbit_count(), std::string(sim::symbol(settings_.coords[0])).c_str(), x,
                 std::string(sim::symbol(settings_.coords[1])).c_str(), y,
                 std::string(sim::symbol(sheet_component)).c_str(),

@@ -20,7 +20,7 @@ struct ChartAxes {
 
 std::optional<ChartAxes> chart_axes(const SectionSurface& s,
                                     const std::array<StateComponent, 2>& coords) {
-  if (!is_gamma(s.function) || !(std::abs(s.value) < 1.0)) return std::nullopt;
+  if (s.angle || !is_gamma(s.function) || !(std::abs(s.value) < 1.0)) return std::nullopt;
   const int k = axis_of(s.function);
   const bool gamma_on_x = is_gamma(coords[0]);
   const StateComponent g = gamma_on_x ? coords[0] : coords[1];

@@ -4,7 +4,7 @@
 // the panel plots at a given point, crossing it in the surface's direction.
 // A click on the panel starts an orbit from one of them (the live mode).
 //
-// Inverted here: a surface gamma_k = c (|c| < 1) plotted at (gamma_i,
+// Inverted here: a surface gamma_k = c (|c| < 1; not an Andoyer angle) plotted at (gamma_i,
 // Omega_k), i != k, in either order, the default chart of a gamma surface
 // (gamma3 = 0 at (gamma1, Omega3)). Given those and the surface, gamma is
 // known up to the sign of its third component gamma_m (the chart's two

@@ -1,0 +1,102 @@
+// Browser test of the live mode's section panel: the panel's "Poincaré
+// section" part shows it, the run's crossings fill it as it plays, and a
+// click on it starts an orbit whose crossings are then drawn (the frame's
+// controls count each list's dots), with a screenshot saved for a person to
+// look at.
+//
+//   node tests/e2e/serve_section_e2e.mjs path/to/epviz [job arguments...]
+//
+// The screenshot goes to $EPVIZ_E2E_SECTION_SCREENSHOT, else
+// e2e_serve_section.png beside the epviz binary.
+//
+// Exit 0: passed; 1: failed; 77: skipped (no Chromium or no node_modules).
+import path from 'node:path';
+import {
+  run, log, fail, sleep, canvasHash, frameRectToCss, epvizState, waitFor,
+} from './harness.mjs';
+
+const [binary, ...serverArgs] = process.argv.slice(2);
+
+await run({
+  name: 'serve_section_e2e.mjs',
+  binary,
+  serverArgs,
+  timeoutMs: 150000,
+  async body({ page }) {
+    const controlsNow = async () => {
+      const s = await epvizState(page);
+      return (s && s.header && s.header.controls) || {};
+    };
+    const clickFrame = async (rect) => {
+      const r = await frameRectToCss(page, rect);
+      const shown = (await epvizState(page)).framesShown;
+      await page.mouse.click(r.x + r.w / 2, r.y + r.h / 2);
+      // Two frames later the panel has laid out what the click did.
+      await waitFor('frames after a click', 5000,
+                    async () => (await epvizState(page)).framesShown >= shown + 2);
+    };
+    const clickControl = async (name) => {
+      const c = await waitFor(`the control '${name}'`, 5000, async () => {
+        const controls = await controlsNow();
+        return Array.isArray(controls[name]) ? controls : null;
+      });
+      await clickFrame(c[name]);
+    };
+    await waitFor('a frame of the view\'s size, 1280x720', 10000, async () => {
+      const s = await epvizState(page);
+      return s.header.width === 1280 && s.header.height === 720;
+    });
+
+    // 1. Shown from the panel: the frame names the section's plot.
+    await clickControl('header:case');  // closed, to make room
+    await clickControl('header:section');
+    await clickControl('section');
+    const shown = await waitFor('the section panel in the frame', 5000, async () => {
+      const c = await controlsNow();
+      return c.section && Array.isArray(c.section.plot) ? c.section : null;
+    });
+    log(`ok: the section panel is shown at ${JSON.stringify(shown.plot)}`);
+
+    // 2. The run's crossings fill it as it plays.
+    await clickControl('play');
+    await waitFor('three crossings of the run', 60000, async () => {
+      const c = await controlsNow();
+      return c.section && c.section.dots[0] >= 3;
+    });
+    await clickControl('play');
+    const before = await controlsNow();
+    log(`ok: the run crossed the surface ${before.section.dots[0]} times, paused`);
+
+    // 3. A click on the plot starts an orbit there: points from the middle
+    // outwards until one lies on the run's level (a point with no state is
+    // refused with a notice, and leaves the panel as it was).
+    const plot = before.section.plot;
+    const plotHash = await canvasHash(page, plot);
+    let started = null;
+    for (const [fx, fy] of [[0.5, 0.5], [0.4, 0.55], [0.6, 0.45], [0.3, 0.5], [0.7, 0.5],
+      [0.5, 0.35], [0.5, 0.65], [0.2, 0.5], [0.8, 0.5]]) {
+      await clickFrame([plot[0] + fx * plot[2], plot[1] + fy * plot[3], 1, 1]);
+      const c = await controlsNow();
+      if (c.section && c.section.dots.length === 2) {
+        started = [fx, fy];
+        break;
+      }
+    }
+    if (!started) fail('no click on the section panel started an orbit');
+    log(`ok: a click at ${started} of the plot started an orbit`);
+
+    // 4. Paused, the orbit catches up to the scene's time: its crossings are drawn.
+    const filled = await waitFor('three crossings of the clicked orbit', 30000, async () => {
+      const c = await controlsNow();
+      return c.section && c.section.dots.length === 2 && c.section.dots[1] >= 3 ? c.section : null;
+    });
+    await sleep(500);
+    if ((await canvasHash(page, plot)) === plotHash) fail('the plot is as it was before the orbit');
+    log(`ok: the orbit's crossings are drawn (${filled.dots[1]} dots, the run's ${filled.dots[0]})`);
+
+    const shot = process.env.EPVIZ_E2E_SECTION_SCREENSHOT ||
+      path.join(path.dirname(path.resolve(binary)), 'e2e_serve_section.png');
+    await page.screenshot({ path: shot });
+    log(`PASS: screenshot ${shot}`);
+  },
+});
