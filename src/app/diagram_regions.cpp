@@ -10,6 +10,7 @@ namespace {
 // A straight piece of a drawn curve, between two of its points.
 struct CurvePiece {
   double e0, k0, e1, k1;
+  int run = -1;  // which attained part of which curve (-1: a bridge)
   double e_low() const { return std::min(e0, e1); }
   double e_high() const { return std::max(e0, e1); }
   // The line through the piece at energy e (extrapolated past its ends).
@@ -18,6 +19,7 @@ struct CurvePiece {
 
 std::vector<CurvePiece> curve_pieces(const physics::BifurcationDiagram& d) {
   std::vector<CurvePiece> pieces;
+  int run = 0;
   for (const auto& c : d.curves) {
     if (c.isolated) continue;
     for (std::size_t i = 0; i + 1 < c.points.size(); ++i) {
@@ -25,10 +27,57 @@ std::vector<CurvePiece> curve_pieces(const physics::BifurcationDiagram& d) {
       const auto& q = c.points[i + 1];
       if (std::isfinite(p.energy) && std::isfinite(q.energy) && std::isfinite(p.integral) &&
           std::isfinite(q.integral))
-        pieces.push_back({p.energy, p.integral, q.energy, q.integral});
+        pieces.push_back({p.energy, p.integral, q.energy, q.integral, run});
+      else
+        ++run;
     }
+    ++run;
   }
   return pieces;
+}
+
+// The point of the piece nearest (x, y), and its distance, in the chart's spans.
+std::pair<physics::ValuePoint, double> nearest_on_piece(const CurvePiece& p, double x, double y,
+                                                        double dx, double dy) {
+  const double ax = p.e0 / dx, ay = p.k0 / dy, vx = p.e1 / dx - ax, vy = p.k1 / dy - ay;
+  const double len2 = vx * vx + vy * vy;
+  const double t =
+      len2 > 0 ? std::clamp(((x / dx - ax) * vx + (y / dy - ay) * vy) / len2, 0.0, 1.0) : 0.0;
+  const physics::ValuePoint q{p.e0 + t * (p.e1 - p.e0), p.k0 + t * (p.k1 - p.k0)};
+  return {q, std::hypot((x - q.energy) / dx, (y - q.integral) / dy)};
+}
+
+// An attained part of a curve begins at the first of the energies the
+// search tried where it is attained, up to one step past where it meets
+// another curve (at C0 = 3 the s > 0 branch rises from class II at h = 3.25):
+// the gap left would join the parts on either side. So each end of a part
+// that lies within two of its last piece's lengths of another part is
+// joined to it by a straight bridge; ends at the chart's left or right edge
+// (within `margin` of it) are left open.
+void bridge_ends(std::vector<CurvePiece>& pieces, double e_min, double e_max, double margin,
+                 double dx, double dy) {
+  std::vector<CurvePiece> bridges;
+  const std::size_t n = pieces.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const CurvePiece& p = pieces[i];
+    const double len = std::hypot((p.e1 - p.e0) / dx, (p.k1 - p.k0) / dy);
+    std::vector<physics::ValuePoint> ends;
+    if (i == 0 || pieces[i - 1].run != p.run) ends.push_back({p.e0, p.k0});
+    if (i + 1 == n || pieces[i + 1].run != p.run) ends.push_back({p.e1, p.k1});
+    for (const auto& end : ends) {
+      if (end.energy - e_min < margin || e_max - end.energy < margin) continue;
+      physics::ValuePoint best{};
+      double distance = INFINITY;
+      for (std::size_t j = 0; j < n; ++j) {
+        if (pieces[j].run == p.run) continue;
+        const auto [q, d] = nearest_on_piece(pieces[j], end.energy, end.integral, dx, dy);
+        if (d < distance) best = q, distance = d;
+      }
+      if (distance <= 2 * len && distance > 0)
+        bridges.push_back({end.energy, end.integral, best.energy, best.integral, -1});
+    }
+  }
+  pieces.insert(pieces.end(), bridges.begin(), bridges.end());
 }
 
 // One interval of the integral's axis on one energy, between two curves
@@ -60,6 +109,21 @@ bool has_free_gap(double low, double high, std::vector<std::pair<double, double>
   return high - cursor > eps;
 }
 
+// Whether the segment from (x0, y0) to (x1, y1) meets the piece (touching
+// counts), in the chart's spans so that the orientation tests are scaled.
+bool segment_meets(const CurvePiece& p, double x0, double y0, double x1, double y1, double dx,
+                   double dy) {
+  const double ax = p.e0 / dx, ay = p.k0 / dy, bx = p.e1 / dx, by = p.k1 / dy;
+  x0 /= dx, x1 /= dx, y0 /= dy, y1 /= dy;
+  const auto side = [](double px, double py, double qx, double qy, double rx, double ry) {
+    const double c = (qx - px) * (ry - py) - (qy - py) * (rx - px);
+    return (c > 0) - (c < 0);
+  };
+  const int d1 = side(x0, y0, x1, y1, ax, ay), d2 = side(x0, y0, x1, y1, bx, by);
+  const int d3 = side(ax, ay, bx, by, x0, y0), d4 = side(ax, ay, bx, by, x1, y1);
+  return d1 * d2 <= 0 && d3 * d4 <= 0;
+}
+
 // The distance from (x, y) to the piece, both in the chart's spans.
 double piece_distance(const CurvePiece& p, double x, double y, double dx, double dy) {
   const double ax = p.e0 / dx, ay = p.k0 / dy, bx = p.e1 / dx, by = p.k1 / dy;
@@ -80,7 +144,7 @@ std::vector<DiagramRegion> diagram_regions(const physics::BifurcationDiagram& d,
   const double e0 = d.energy_min, e1 = d.energy_max;
   if (!(e1 > e0) || columns < 2 || d.sampled.empty()) return {};
   const double de = (e1 - e0) / columns;
-  const std::vector<CurvePiece> pieces = curve_pieces(d);
+  std::vector<CurvePiece> pieces = curve_pieces(d);
 
   double k_min = INFINITY, k_max = -INFINITY;
   std::vector<std::vector<physics::ValuePoint>> in_column(columns);
@@ -92,6 +156,7 @@ std::vector<DiagramRegion> diagram_regions(const physics::BifurcationDiagram& d,
   }
   const double dy = k_max > k_min ? k_max - k_min : 1.0, dx = e1 - e0;
   const double eps = 1e-9 * dy;
+  bridge_ends(pieces, e0, e1, 1.5 * de, dx, dy);
 
   // Every column's intervals, sampled or not (a thin part of a region may
   // hold no sample on some energies and still join its neighbours); first[j]
@@ -132,8 +197,11 @@ std::vector<DiagramRegion> diagram_regions(const physics::BifurcationDiagram& d,
     const double a = e0 + (j + 0.5) * de, b = a + de;
     // The integrals the curves take between the two energies.
     std::vector<std::pair<double, double>> blocked;
-    for (const auto& p : pieces) {
+    std::vector<std::size_t> in_strip;
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      const CurvePiece& p = pieces[i];
       if (p.e_high() < a || p.e_low() > b) continue;
+      in_strip.push_back(i);
       if (p.e_high() == p.e_low()) {
         blocked.push_back({std::min(p.k0, p.k1), std::max(p.k0, p.k1)});
         continue;
@@ -145,8 +213,17 @@ std::vector<DiagramRegion> diagram_regions(const physics::BifurcationDiagram& d,
       for (std::size_t v = first[j + 1]; v < first[j + 2]; ++v) {
         const double low = std::max(nodes[u].low, nodes[v].low);
         const double high = std::min(nodes[u].high, nodes[v].high);
-        if (high > low && has_free_gap(low, high, blocked, eps))
-          parent[find_root(parent, u)] = find_root(parent, v);
+        // Two paths that cross no curve: a level one through the common
+        // range, or, for a band between two curves that climbs by more than
+        // its width from one energy to the next, the one from middle to middle.
+        bool joined = high > low && has_free_gap(low, high, blocked, eps);
+        const double mu = 0.5 * (nodes[u].low + nodes[u].high);
+        const double mv = 0.5 * (nodes[v].low + nodes[v].high);
+        if (!joined && std::isfinite(mu) && std::isfinite(mv))
+          joined = std::none_of(in_strip.begin(), in_strip.end(), [&](std::size_t i) {
+            return segment_meets(pieces[i], a, mu, b, mv, dx, dy);
+          });
+        if (joined) parent[find_root(parent, u)] = find_root(parent, v);
       }
   }
 

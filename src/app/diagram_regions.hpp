@@ -27,8 +27,10 @@ inline constexpr std::size_t kMinRegionSamples = 10;
 
 // The regions, found by a sweep over `columns` energies from energy_min to
 // energy_max: on each energy the drawn curves cut the integral's axis into
-// intervals; neighbouring energies' intervals join when some horizontal
-// segment between them in their common range crosses no curve. Of the parts
+// intervals; neighbouring energies' intervals join when a path between them
+// crosses no curve: a level one through their common range, or the straight
+// one from middle to middle (a thin band between two steep curves shares no
+// range from one energy to the next). Of the parts
 // so joined, those that hold sampled values (each compared with the curves
 // at its own energy) are the level's image, the others lie outside it. A
 // region's point is the middle of its interval farthest from every curve and
