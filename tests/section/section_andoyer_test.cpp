@@ -243,6 +243,32 @@ TEST(AndoyerSection, AnLSurfaceAndTheScalarPathFindCrossingsOnIt) {
   std::printf("l = 1: %zu of %zu orbits reach it, %zu crossings\n", circulating, rk4.size(), n);
 }
 
+TEST(AndoyerSection, BothDirectionsAreTheTwoAndNeverTheOppositeAngle) {
+  // g = 0.5 both ways: the upward and the downward crossings together, and
+  // none at g = 0.5 + π, where r sin(g − 0.5) passes through zero too (as
+  // often as at g = 0.5 on an orbit whose g circulates).
+  auto job = shipped(60);
+  job.surface.value = 0.5;
+  std::size_t counts[3] = {};
+  std::vector<OrbitResult> both;
+  for (auto d : {sim::CrossingDirection::upward, sim::CrossingDirection::downward,
+                 sim::CrossingDirection::both}) {
+    job.surface.direction = d;
+    job.crossings = d == sim::CrossingDirection::both ? 120 : 60;
+    job.t_end = 200;
+    const auto results = run_section(job, section_starts(job), 2);
+    for (const auto& r : results) counts[std::size_t(d)] += r.crossings.size();
+    if (d == sim::CrossingDirection::both) both = results;
+  }
+  EXPECT_GT(counts[0], 16u);
+  EXPECT_EQ(counts[2], counts[0] + counts[1]);
+  for (const auto& r : both)
+    for (const auto& c : r.crossings) {
+      const auto [s, co] = sin_cos_g(job.body, c.omega, c.gamma);
+      EXPECT_NEAR(std::atan2(s, co), 0.5, 1e-12);
+    }
+}
+
 TEST(AndoyerSection, BadKeysAreRefusedNamingWhatIsAllowed) {
   const std::string head = R"({"case": "kovalevskaya", "level": {"energy": 2, "area": 0.5},
       "orbits": 2, "csv": "x.csv", )";
