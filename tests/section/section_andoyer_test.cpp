@@ -269,6 +269,18 @@ TEST(AndoyerSection, BothDirectionsAreTheTwoAndNeverTheOppositeAngle) {
     }
 }
 
+TEST(AndoyerSection, RunsByItsNameAndIsListed) {
+  test::TempDir d;
+  const std::string in_d = "cd " + d.path().string() + " &&";
+  const auto r = test::run_epviz("section kovalevskaya_andoyer -j 2", d, in_d);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find("folds"), std::string::npos) << r.err;
+  EXPECT_EQ(test::line_count(test::slurp(d / "kovalevskaya_andoyer.section.csv")), 1u + 16u * 400u);
+  EXPECT_EQ(test::slurp(d / "kovalevskaya_andoyer.section.png").substr(1, 3), "PNG");
+  const auto list = test::run_epviz("render --list-jobs", d);
+  EXPECT_NE(list.out.find("kovalevskaya_andoyer"), std::string::npos) << list.out;
+}
+
 TEST(AndoyerSection, BadKeysAreRefusedNamingWhatIsAllowed) {
   const std::string head = R"({"case": "kovalevskaya", "level": {"energy": 2, "area": 0.5},
       "orbits": 2, "csv": "x.csv", )";

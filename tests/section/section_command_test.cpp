@@ -47,7 +47,7 @@ TEST(SectionCommand, WritesOneRowPerCrossingWithTheStateAndItsIntegrals) {
 
 // The shipped section files run as they are, and draw their crossings.
 TEST(SectionCommand, ShippedSectionFilesRunAndDrawTheirCrossings) {
-  for (const std::string name : {"kovalevskaya", "generic"}) {
+  for (const std::string name : {"kovalevskaya", "generic", "kovalevskaya_andoyer"}) {
     SCOPED_TRACE(name);
     TempDir d;
     const fs::path shipped = fs::path(EPVIZ_SOURCE_DIR) / "render_jobs" / (name + ".section.json");
