@@ -226,6 +226,34 @@ TEST(DiagramSections, KovalevskayaRegionsAreTheClosedFormCurvesPartsAndEachSecti
   EXPECT_TRUE(std::filesystem::exists(out / "diagram.png"));
 }
 
+// The preset Lagrange top (I = (2, 2, 1), r = (0, 0, 1), P = 4): its
+// regions' sections keep C1, C0 and Ω3 of their points, computed here.
+TEST(DiagramSections, LagrangeSectionsKeepTheirLevel) {
+  TempDir dir;
+  const auto out = dir / "lag";
+  const auto r = run_epviz(
+      "diagram --case lagrange --area 5 --sections 2 --section-crossings 20 --out " + out.string(),
+      dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::string header;
+  const auto regions = csv_rows(out / "regions.csv", header);
+  ASSERT_GE(regions.size(), 1u);
+  for (const auto& row : regions) {
+    SCOPED_TRACE("region " + row[0]);
+    const double h = std::stod(row[1]), n = std::stod(row[2]);
+    const auto crossings = csv_rows(out / ("section_" + row[0] + ".csv"), header);
+    EXPECT_GE(crossings.size(), 2u);
+    for (const auto& c : crossings) {
+      const double w1 = std::stod(c[3]), w2 = std::stod(c[4]), w3 = std::stod(c[5]);
+      const double g1 = std::stod(c[6]), g2 = std::stod(c[7]), g3 = std::stod(c[8]);
+      const double energy = 0.5 * (2 * w1 * w1 + 2 * w2 * w2 + w3 * w3) + 4 * g3;
+      EXPECT_NEAR(energy, h, 1e-6 * std::max(1.0, std::abs(h)));
+      EXPECT_NEAR(2 * w1 * g1 + 2 * w2 * g2 + w3 * g3, 5.0, 1e-6 * 5.0);
+      EXPECT_NEAR(w3, n, 1e-6 * std::max(1.0, std::abs(n)));
+    }
+  }
+}
+
 // The classification the count rests on tells the regions apart, and joins
 // the two sides of the wedge round the cusp.
 TEST(DiagramSections, TheClosedFormPartsTellRegionsApart) {
