@@ -197,7 +197,8 @@ int run_diagram(const DiagramOptions& o) {
       diagram.energy_max, drawn, points, diagram.sampled.size());
   for (const auto& f : files) std::printf(" %s", f.path.c_str());
   std::printf("\n");
-  if (sections.orbits > 0) std::printf("%zu regions\n", regions.size());
+  if (sections.orbits > 0)
+    std::printf("%zu region%s\n", regions.size(), regions.size() == 1 ? "" : "s");
   for (const auto& l : region_lines) std::printf("%s\n", l.c_str());
   return 0;
 }

@@ -75,11 +75,12 @@ chart::ChartSeries trace_over_dots(const chart::ChartSeries& line, int colour, E
 }
 
 // A region's label as straight strokes in a box 2% of the chart's width
-// wide and 3% of its height high, up and to the right of its point, as a line
+// wide and 3% of its height high, up and to the right of its point (to the
+// left where that would pass the largest energy shown), as a line
 // series (NaN points lift the pen); the chart has no text of its own to
 // place there. Labels past N are named in no letter (the legend still
 // counts them).
-chart::ChartSeries region_letter(const DiagramRegion& region, Extent e) {
+chart::ChartSeries region_letter(const DiagramRegion& region, Extent e, double energy_max) {
   static const std::array<const char*, 14> strokes{
       "0,0 5,10 10,0|2.5,5 7.5,5",                          // A
       "0,0 0,10 7,10 10,8 7,5.5 0,5.5|7,5.5 10,3 7,0 0,0",  // B
@@ -100,7 +101,9 @@ chart::ChartSeries region_letter(const DiagramRegion& region, Extent e) {
   if (region.label.size() != 1 || region.label[0] < 'A' ||
       std::size_t(region.label[0] - 'A') >= strokes.size())
     return s;
-  const double x0 = region.point.energy + 0.012 * e.dx, y0 = region.point.integral + 0.012 * e.dy;
+  const bool left = region.point.energy + 0.035 * e.dx > energy_max;
+  const double x0 = region.point.energy + (left ? -0.032 : 0.012) * e.dx;
+  const double y0 = region.point.integral + 0.012 * e.dy;
   const double sx = 0.002 * e.dx, sy = 0.003 * e.dy;  // per tenth of the box
   const std::string text = strokes[std::size_t(region.label[0] - 'A')];
   std::size_t i = 0;
@@ -167,7 +170,7 @@ chart::Figure diagram_figure(const physics::DiagramRequest& request,
     m.marker_key = 0;
     m.points.push_back({region.point.energy, region.point.integral});
     c.series.push_back(std::move(m));
-    chart::ChartSeries letter = region_letter(region, extent);
+    chart::ChartSeries letter = region_letter(region, extent, diagram.energy_max);
     if (!letter.points.empty()) c.series.push_back(trace_over_dots(letter, kRegionColour, extent));
   }
   if (!regions.empty()) {
