@@ -14,6 +14,7 @@
 #include "physics/invariants.hpp"
 #include "scene/frame_source.hpp"
 #include "session_driver.hpp"
+#include "support/temp_dir.hpp"
 
 namespace epviz::live::testing {
 namespace {
@@ -219,6 +220,26 @@ TEST(LiveSection, SaveJobKeepsTheOrbitsAndARenderDrawsTheirCrossings) {
       EXPECT_LT((a[j] - b[j]).norm(), 1e-6) << "list " << i << " crossing " << j;
   }
   EXPECT_NE(last.section->colours[1], last.section->colours[0]);
+}
+
+// `epviz serve JOB`: a job's "section" shows the panel from the start, and
+// its orbits start again (the saved job of a session with clicked orbits).
+TEST(LiveSection, AJobsSectionShowsThePanelWithItsOrbits) {
+  test::TempDir dir;
+  const auto file = dir.write("job.json", R"({
+    "simulation": {"case": "kovalevskaya", "t_end": 20},
+    "section": {"orbits": [{"omega": [-0.4, 0.9, 0.3], "gamma": [0.6, 0.8, 0.0]}]},
+    "width": 320, "height": 180, "fps": 10, "duration": 2})");
+  LiveScene scene(setup_from_job_file(file));
+  ASSERT_TRUE(scene.section());
+  ASSERT_TRUE(scene.frame().section);
+  ASSERT_EQ(scene.section()->orbit_count(), 1);
+  EXPECT_EQ(scene.section()->orbit(0).crossings().front().omega, Eigen::Vector3d(-0.4, 0.9, 0.3));
+  // A job without one has no panel.
+  const auto plain = dir.write("plain.json", R"({
+    "simulation": {"case": "kovalevskaya", "t_end": 20},
+    "width": 320, "height": 180, "fps": 10, "duration": 2})");
+  EXPECT_FALSE(LiveScene(setup_from_job_file(plain)).section());
 }
 
 }  // namespace
