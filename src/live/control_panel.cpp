@@ -81,12 +81,14 @@ void ControlPanel::set_message(std::string text, bool error) {
 
 void ControlPanel::note_item(const char* name) {
   const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-  controls_[name] = {a.x, a.y, b.x - a.x, b.y - a.y};
+  const float s = view_scale_;  // layout units to frame pixels
+  controls_[name] = {a.x * s, a.y * s, (b.x - a.x) * s, (b.y - a.y) * s};
 }
 
 void ControlPanel::note_window(const char* name) {
   const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
-  controls_[name] = {pos.x, pos.y, size.x, size.y};
+  const float s = view_scale_;
+  controls_[name] = {pos.x * s, pos.y * s, size.x * s, size.y * s};
 }
 
 bool ControlPanel::contains(float x, float y) const {
@@ -135,9 +137,10 @@ PanelActions ControlPanel::draw(const LiveScene& scene, const render::Viewport& 
     ImGui::PopItemWidth();
   }
   const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
-  controls_["panel"] = {pos.x, pos.y, size.x, size.y};
+  controls_["panel"] = {pos.x * view_scale_, pos.y * view_scale_, size.x * view_scale_,
+                        size.y * view_scale_};  // frame pixels
   collapsed_ = !open;
-  occupied_width_ = int(std::ceil(pos.x + size.x + 8.0f));
+  occupied_width_ = int(std::ceil((pos.x + size.x + 8.0f) * view_scale_));  // frame pixels
   ImGui::End();
   ImGui::PopStyleColor();
   return out;

@@ -55,6 +55,9 @@ class ControlPanel {
   // The pixels the expanded panel takes from the left edge (0 when collapsed
   // or not drawn yet), so the scene can be laid out beside it.
   int occupied_width() const { return collapsed_ ? 0 : occupied_width_; }
+  // The overlay's framebuffer scale: the panel is laid out in units of
+  // frame pixels / scale, and controls() are given in frame pixels.
+  void set_view_scale(float scale) { view_scale_ = scale; }
   // The formulation the formulation box showed last (the one the scene integrates).
   sim::Formulation shown_formulation() const { return shown_formulation_; }
   // The file name stem for saved frames and jobs (editable in the panel).
@@ -80,6 +83,7 @@ class ControlPanel {
   bool message_is_error_ = false;
   bool collapsed_ = false;
   int occupied_width_ = 0;
+  float view_scale_ = 1.0f;
   std::string save_name_ = "epviz_live";
   sim::Formulation shown_formulation_ = sim::Formulation::direct;
   physics::Case left_case_ = physics::Case::custom;  // the last named case shown

@@ -47,6 +47,10 @@ LiveSession::~LiveSession() = default;
 
 void LiveSession::resize(int width, int height) {
   if (width == width_ && height == height_) return;
+  // Input not yet applied is in the old size's pixels (ImGui's own pointer is
+  // in layout units, which a resize with the view's scale leaves alone).
+  if (width_ > 0 && height_ > 0)
+    gui_input_.rescale(float(width) / float(width_), float(height) / float(height_));
   width_ = width;
   height_ = height;
   if (!painter_) {
@@ -54,9 +58,6 @@ void LiveSession::resize(int width, int height) {
     po.builtin_font = options_.builtin_font;
     painter_ = std::make_unique<paint::FramePainter>(gl_, width, height, po);
     render::GuiInput::configure(painter_->gui().context());
-    render::ImGuiContextScope scope(painter_->gui().context());
-    base_font_scale_ = ImGui::GetIO().FontGlobalScale;
-    base_style_ = std::make_unique<ImGuiStyle>(ImGui::GetStyle());
   } else {
     painter_->resize(width, height);
     // ImGui finds the window under the pointer from the last frame's layout:
@@ -138,19 +139,16 @@ const render::RgbaImage& LiveSession::render() {
   const double dt = wall_seconds_since_last_frame();
   render::ImGuiOverlay& gui = painter_->gui();
   gui.set_delta_time(float(dt));
-  if (view_scale_ != applied_view_scale_) {
-    // Text, paddings and spacing in proportion, so that a control lies
-    // where the page, which stretches the frame, expects it at any scale.
-    render::ImGuiContextScope scope(gui.context());
-    ImGui::GetIO().FontGlobalScale = base_font_scale_ * float(view_scale_);
-    ImGui::GetStyle() = *base_style_;
-    ImGui::GetStyle().ScaleAllSizes(float(view_scale_));
-    applied_view_scale_ = view_scale_;
-  }
+  // The interface laid out as at full size and drawn at the view's scale,
+  // so that a control lies where the page, which stretches the frame,
+  // expects it at any scale.
+  gui.set_framebuffer_scale(float(view_scale_));
+  panel_.set_view_scale(float(view_scale_));
   if (hold_input_frames_ > 0)
     --hold_input_frames_;
   else
-    gui_input_.apply(gui.context(), [this](const render::InputEvent& e) { observe(e); });
+    gui_input_.apply(
+        gui.context(), [this](const render::InputEvent& e) { observe(e); }, float(view_scale_));
   const auto simulate_start = Clock::now();
   scene_.update(dt);
   stages_.simulate_ms = ms_since(simulate_start);
@@ -169,7 +167,9 @@ const render::RgbaImage& LiveSession::render() {
   PanelActions actions;
   const auto draw_start = Clock::now();
   const render::RgbaImage& image = painter_->paint(frame, [&] {
-    actions = panel_.draw(scene_, render::Viewport{0, 0, width_, height_});
+    // The panel is laid out in layout units (frame pixels / scale).
+    actions = panel_.draw(scene_, render::Viewport{0, 0, int(std::lround(width_ / view_scale_)),
+                                                   int(std::lround(height_ / view_scale_))});
     const bool popup_open =
         ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
     // Hidden in this frame (laid out), shown in the next, hoverable after it.

@@ -95,13 +95,10 @@ class LiveSession : public serve::Session {
   std::vector<std::string> notices_;
   std::optional<std::chrono::steady_clock::time_point> last_frame_;
   serve::RenderStages stages_;  // of the last render()
-  // The server's scale of this view (set_view_scale) and the interface's
-  // own text scale at full size: the panels and labels are drawn at their
-  // product, so they keep their size on the page at any scale.
+  // The server's scale of this view (set_view_scale): the panels and labels
+  // are laid out as at full size and drawn at this scale, so they keep their
+  // size and place on the page, which stretches the frame.
   double view_scale_ = 1.0;
-  double applied_view_scale_ = 1.0;
-  float base_font_scale_ = 1.0f;
-  std::unique_ptr<ImGuiStyle> base_style_;  // the style at full size (paddings, spacing, ...)
 };
 
 }  // namespace epviz::live

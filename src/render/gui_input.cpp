@@ -69,6 +69,16 @@ void GuiInput::configure(ImGuiContext* context) {
 
 void GuiInput::push(InputEvent event) { queue_.push_back(std::move(event)); }
 
+void GuiInput::rescale(float sx, float sy) {
+  for (InputEvent& e : queue_) {
+    if (e.kind != InputEvent::Kind::mouse_move && e.kind != InputEvent::Kind::mouse_button &&
+        e.kind != InputEvent::Kind::wheel)
+      continue;
+    e.x *= sx;
+    e.y *= sy;
+  }
+}
+
 namespace {
 
 // What has changed during the frame being filled.
@@ -140,7 +150,8 @@ void apply_one(ImGuiIO& io, const InputEvent& e, FrameChanges& changed) {
 
 }  // namespace
 
-void GuiInput::apply(ImGuiContext* context, const std::function<void(const InputEvent&)>& observe) {
+void GuiInput::apply(ImGuiContext* context, const std::function<void(const InputEvent&)>& observe,
+                     float layout_scale) {
   ImGuiContextScope scope(context);
   ImGuiIO& io = ImGui::GetIO();
   // The wheel is an amount per frame, not a state.
@@ -150,7 +161,10 @@ void GuiInput::apply(ImGuiContext* context, const std::function<void(const Input
   while (!queue_.empty() && fits_this_frame(queue_.front(), changed, io)) {
     const InputEvent e = std::move(queue_.front());
     queue_.pop_front();
-    apply_one(io, e, changed);
+    InputEvent in_layout = e;
+    in_layout.x /= layout_scale;
+    in_layout.y /= layout_scale;
+    apply_one(io, in_layout, changed);
     if (observe) observe(e);
   }
 }

@@ -23,13 +23,21 @@ class GuiInput {
 
   void push(InputEvent event);
   bool pending() const { return !queue_.empty(); }
+  // The view was resized by (sx, sy): events still waiting were given in the
+  // old size's pixels, and a click that waits for the next frame must land
+  // on the same control after the resize (adaptive resolution resizes a
+  // view between frames).
+  void rescale(float sx, float sy);
   std::size_t queued() const { return queue_.size(); }
 
   // Applies the events that fit into the next frame to the context's io
   // (call before its NewFrame) and passes each one applied to `observe`, in
   // order, with the context current (the application's own shortcuts and
   // camera drags, which may read ImGui::GetIO()).
-  void apply(ImGuiContext* context, const std::function<void(const InputEvent&)>& observe = {});
+  // Positions are divided by `layout_scale` for ImGui (the overlay's
+  // framebuffer scale); `observe` gets them as given.
+  void apply(ImGuiContext* context, const std::function<void(const InputEvent&)>& observe = {},
+             float layout_scale = 1.0f);
 
  private:
   std::deque<InputEvent> queue_;

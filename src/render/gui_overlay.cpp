@@ -156,7 +156,7 @@ ImGuiOverlay::~ImGuiOverlay() {
 
 float ImGuiOverlay::label_font_px() const {
   ImGuiContextScope scope(context_);
-  return font_->FontSize * ImGui::GetIO().FontGlobalScale;
+  return font_->FontSize * ImGui::GetIO().FontGlobalScale * framebuffer_scale_;
 }
 
 glm::vec2 ImGuiOverlay::text_size(const std::string& text) const {
@@ -167,8 +167,9 @@ glm::vec2 ImGuiOverlay::text_size(const std::string& text) const {
 
 void ImGuiOverlay::begin(int width, int height) {
   ImGuiIO& io = ImGui::GetIO();
-  io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
-  io.DisplayFramebufferScale = ImVec2(1.0f, 1.0f);
+  const float scale = framebuffer_scale_;
+  io.DisplaySize = ImVec2(static_cast<float>(width) / scale, static_cast<float>(height) / scale);
+  io.DisplayFramebufferScale = ImVec2(scale, scale);
   io.DeltaTime = options_.delta_time_s;
   ImGui::NewFrame();
 }
@@ -186,14 +187,15 @@ void ImGuiOverlay::add_labels(std::span<const PlacedLabel> labels) {
   ImDrawList* draw = ImGui::GetBackgroundDrawList();
   ImFont* font = ImGui::GetFont();
   const float size = ImGui::GetFontSize();
+  const float scale = framebuffer_scale_;  // labels are placed in frame pixels
   for (const auto& placed : labels) {
     const TextLabel& label = *placed.label;
     const std::string text = drawable_text(*font, label.text);
     const ImVec2 extent = font->CalcTextSizeA(size, FLT_MAX, 0.0f, text.c_str());
-    const glm::vec2 top_left = anchored_top_left(placed.pixel + label.offset_px,
-                                                 glm::vec2(extent.x, extent.y), label.anchor);
+    const glm::vec2 top_left = anchored_top_left(
+        placed.pixel + label.offset_px, glm::vec2(extent.x, extent.y) * scale, label.anchor);
     // Whole pixels keep bitmap-like glyphs crisp.
-    const ImVec2 at(std::round(top_left.x), std::round(top_left.y));
+    const ImVec2 at(std::round(top_left.x) / scale, std::round(top_left.y) / scale);
     if (label.background.a > 0.0f) {
       const float pad = 3.0f;
       draw->AddRectFilled(ImVec2(at.x - pad, at.y - pad + 1.0f),

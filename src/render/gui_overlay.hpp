@@ -72,12 +72,22 @@ class ImGuiOverlay {
   // The time step ImGui is told for the next frames (interactive use passes
   // the wall-clock time between frames; renders keep the fixed one).
   void set_delta_time(float seconds) { options_.delta_time_s = seconds; }
+  // Frames of width x height pixels hold a layout of width/scale x
+  // height/scale (ImGui's framebuffer scale): the interface is laid out as at
+  // full size and drawn smaller, so every control lies at the same place
+  // relative to the frame at any scale (a live view drawn smaller while it
+  // moves, which the page stretches back). Positions ImGui is given and
+  // gives are then in layout units: frame pixels / scale. Labels and
+  // text_size() stay in frame pixels.
+  void set_framebuffer_scale(float scale) { framebuffer_scale_ = scale; }
+  float framebuffer_scale() const { return framebuffer_scale_; }
 
  private:
   void begin(int width, int height);
   void add_labels(std::span<const PlacedLabel> labels);
 
   ImGuiContext* context_ = nullptr;
+  float framebuffer_scale_ = 1.0f;
   ImFont* font_ = nullptr;
   std::string font_source_;
   std::unique_ptr<ImGuiGlRenderer> gl_renderer_;

@@ -54,6 +54,17 @@ class Fields {
     return static_cast<float>(v);
   }
 
+  // An optional number in [0, max]; `absent` when the field is not there.
+  double optional_nonnegative(const char* name, double max, double absent) const {
+    const json* value = find(name);
+    if (!value) return absent;
+    if (!value->is_number()) fail(name, "must be a number, got " + std::string(value->type_name()));
+    const double v = value->get<double>();
+    if (!std::isfinite(v) || v < 0 || v > max)
+      fail(name, "must be within 0.." + quote(max) + ", got " + quote(*value));
+    return v;
+  }
+
   bool boolean(const char* name) const { return boolean_value(name, require(name)); }
   bool optional_boolean(const char* name) const {
     const json* value = find(name);
@@ -121,7 +132,9 @@ ClientMessage parse_object(const json& message) {
     return Resize{static_cast<int>(f.integer("width", 1, max_view_pixels)),
                   static_cast<int>(f.integer("height", 1, max_view_pixels))};
   }
-  if (type == "ack") return Ack{f.integer("frame", 0, max_int)};
+  if (type == "ack")
+    return Ack{f.integer("frame", 0, max_int),
+               f.optional_nonnegative("decode_ms", max_decode_ms, -1.0)};
 
   render::InputEvent e;
   if (type == "move") {
@@ -170,6 +183,7 @@ std::string encode_client_message(const ClientMessage& message) {
     j = {{"type", "resize"}, {"width", r->width}, {"height", r->height}};
   } else if (const auto* a = std::get_if<Ack>(&message)) {
     j = {{"type", "ack"}, {"frame", a->frame}};
+    if (a->decode_ms >= 0) j["decode_ms"] = a->decode_ms;
   } else {
     const auto& e = std::get<render::InputEvent>(message);
     switch (e.kind) {
@@ -230,6 +244,13 @@ std::vector<std::uint8_t> encode_frame_message(const FrameInfo& info,
   if (info.written_frame > 0)
     header["written"] = {
         {"frame", info.written_frame}, {"queue_ms", info.queue_ms}, {"send_ms", info.send_ms}};
+  if (const FrameInfo::Adaptive& a = info.adaptive; a.budget_ms > 0) {
+    header["adaptive"] = {{"budget_ms", a.budget_ms},
+                          {"detail", a.detail},
+                          {"resting", a.resting},
+                          {"server_ms", a.server_ms}};
+    if (a.page_decode_ms >= 0) header["adaptive"]["page_decode_ms"] = a.page_decode_ms;
+  }
   // A session's own JSON: parsed so that a malformed one is dropped, not sent.
   if (!info.controls_json.empty()) {
     json controls = json::parse(info.controls_json, nullptr, /*allow_exceptions=*/false);

@@ -23,9 +23,13 @@ struct Resize {
   int height = 0;
 };
 
-// `ack`: the page has shown frame `frame`.
+// `ack`: the page has shown frame `frame`, which took it `decode_ms` to
+// decode (optional; negative when not sent). The server weighs the page's
+// decoding with its own drawing when it sizes frames (adaptive resolution):
+// on some machines decoding, not drawing, is what limits the frame rate.
 struct Ack {
   std::int64_t frame = 0;
+  double decode_ms = -1.0;
 };
 
 using ClientMessage = std::variant<render::InputEvent, Resize, Ack>;
@@ -51,6 +55,7 @@ inline constexpr double max_abs_position = 1.0e6;  // x, y (may be negative: dra
 inline constexpr double max_abs_wheel = 1.0e4;     // dx, dy in notches
 inline constexpr std::size_t max_text_bytes = 64;  // `text`
 inline constexpr std::size_t max_key_bytes = 32;   // `key` (longest DOM key names are ~20)
+inline constexpr double max_decode_ms = 60000.0;   // ack `decode_ms`: 0 .. this
 
 // Parses one page → server text message; throws ProtocolError.
 ClientMessage parse_client_message(std::string_view text);
@@ -78,6 +83,17 @@ struct FrameInfo {
   double queue_ms = 0.0;
   double send_ms = 0.0;
   std::string controls_json;  // the session's named control rectangles (a JSON object), or ""
+  // Adaptive resolution's choice, sent when it is on (budget_ms > 0): the
+  // share of each side drawn while the picture moves, and the measured costs
+  // it was chosen from (the server's render + encode, the page's decoding of
+  // a frame of that size; negative: not reported yet).
+  struct Adaptive {
+    double budget_ms = 0.0;
+    double detail = 1.0;
+    bool resting = false;  // this frame is the full-size one drawn at rest
+    double server_ms = 0.0;
+    double page_decode_ms = -1.0;
+  } adaptive;
 };
 std::vector<std::uint8_t> encode_frame_message(const FrameInfo& info,
                                                std::span<const std::uint8_t> image);

@@ -282,6 +282,9 @@ void RenderLoop::send_frame(Client& client) {
   info.queue_ms = written.queue_ms;
   info.send_ms = written.send_ms;
   info.controls_json = client.session->controls_json();
+  const double server_ms = render_ms + info.encode_ms;
+  const double page_ms = page_decode_at_current_size(client);
+  info.adaptive = {options_.frame_budget_ms, client.detail, client.resting, server_ms, page_ms};
   StageTimes& times = counters_.stages;
   times.record(Stage::simulate, stages.simulate_ms);
   times.record(Stage::draw, stages.draw_ms);
@@ -295,7 +298,17 @@ void RenderLoop::send_frame(Client& client) {
   ++counters_.frames_sent;
   if (client.width < client.asked_width) ++counters_.downscaled_frames;
   send(client, encode_frame_message(info, encoded.bytes), info.frame);
-  adapt_detail(client, render_ms + info.encode_ms);
+  // Frames are drawn here while the page decodes the one before, so the
+  // slower of the two sets the rate.
+  adapt_detail(client, std::max(server_ms, page_ms));
+}
+
+double RenderLoop::page_decode_at_current_size(const Client& client) const {
+  const ConnectionLink::PageTiming timing = client.link->last_decoded();
+  for (auto it = client.sent_sizes.rbegin(); it != client.sent_sizes.rend(); ++it)
+    if (it->frame == timing.frame)
+      return it->width == client.width && it->height == client.height ? timing.decode_ms : -1.0;
+  return -1.0;  // none reported, or of a frame older than those kept
 }
 
 void RenderLoop::send(const Client& client, std::vector<std::uint8_t> message, std::int64_t frame) {

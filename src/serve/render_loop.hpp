@@ -52,7 +52,7 @@ class RenderLoop {
     double detail = 1.0;
     bool resting = false;
     std::optional<std::chrono::steady_clock::time_point> idle_since;  // smaller, no frame wanted
-    double cost_ms = 0.0;             // average render + encode time at this detail
+    double cost_ms = 0.0;             // average frame cost at this detail (adapt_detail)
     int frames_at_detail = 0;         // frames averaged into cost_ms
     std::deque<SentSize> sent_sizes;  // the newest frames' sizes, oldest first
   };
@@ -68,6 +68,9 @@ class RenderLoop {
   void resize_session(Client& client, int width, int height);
   void fit_view(Client& client);  // the size from the page's, the budget's scale and the detail
   void adapt_detail(Client& client, double frame_cost_ms);
+  // What the page last reported for decoding a frame of the size now drawn
+  // (negative: nothing reported for this size yet).
+  double page_decode_at_current_size(const Client& client) const;
   // Sharpens a view that has rested long enough; true when it did.
   bool sharpen_if_rested(Client& client);
   // When the earliest view at rest is due to be sharpened, if any.

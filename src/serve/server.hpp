@@ -39,7 +39,9 @@ struct ServerOptions {
   // default is two 3840x2160 views; 0: no budget.
   long pixel_budget = 2L * 3840 * 2160;
   // Adaptive resolution: while a connection's frames take longer than this
-  // to render and encode (the average of the last few), its view is rendered
+  // (the average of the last few; a frame's cost is the longer of the
+  // server's render + encode and the page's decoding, which it reports with
+  // its ack), its view is rendered
   // smaller, down to min_detail of each side (the page stretches it), and
   // larger again when they get cheap; when the picture rests (the session
   // wants no frame) it is rendered once more at full size, as map viewers

@@ -15,7 +15,8 @@ struct ServerSettings {
   std::string port = "8080";   // 0: any free port
   std::string quality = "85";  // JPEG quality 1..100
   // Adaptive resolution's budget in ms per frame (ServerOptions::frame_budget_ms), 0..1000; 0: off.
-  std::string frame_budget = "0";
+  // 18 ms: about 55 frames/s where drawing or decoding allows, measured in docs/serve.md.
+  std::string frame_budget = "18";
   std::string max_view = "3840x2160";  // WIDTHxHEIGHT, each 16..max_view_pixels
   std::string image = "jpeg";          // or png
   std::vector<std::string> allow_origins;

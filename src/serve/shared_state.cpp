@@ -30,6 +30,16 @@ ConnectionLink::WriteTiming ConnectionLink::last_written() const {
   return last_written_;
 }
 
+void ConnectionLink::note_decoded(const PageTiming& timing) {
+  std::lock_guard lock(mutex_);
+  if (timing.frame > last_decoded_.frame) last_decoded_ = timing;
+}
+
+ConnectionLink::PageTiming ConnectionLink::last_decoded() const {
+  std::lock_guard lock(mutex_);
+  return last_decoded_;
+}
+
 nlohmann::json stats_json(const ServerCounters& c) {
   return {{"connections_accepted", c.connections_accepted.load()},
           {"connections_open", c.connections_open.load()},

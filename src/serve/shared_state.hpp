@@ -110,6 +110,14 @@ class ConnectionLink {
   };
   void note_written(const WriteTiming& timing);
   WriteTiming last_written() const;
+
+  // The newest frame whose decoding time the page reported with its ack.
+  struct PageTiming {
+    std::int64_t frame = 0;  // 0: none reported yet
+    double decode_ms = 0.0;
+  };
+  void note_decoded(const PageTiming& timing);  // network thread
+  PageTiming last_decoded() const;              // render thread
   // Frames the page cannot have shown yet. An ack counts only up to the last
   // frame whose write completed: a page cannot have shown a frame still in
   // the server's outbox, and counting a forged ack would let the outbox grow.
@@ -122,6 +130,7 @@ class ConnectionLink {
   std::vector<ClientMessage> inbox_;  // guarded by mutex_
   bool paused_ = false;               // guarded by mutex_
   WriteTiming last_written_;          // guarded by mutex_
+  PageTiming last_decoded_;           // guarded by mutex_
 };
 
 // Where the network thread hands new connections and wake-ups to the render

@@ -157,6 +157,7 @@ void WebSocketConnection::handle_text(std::string_view text) {
                      std::to_string(link_->frames_sent.load()) + " frames were sent");
       return;
     }
+    if (ack->decode_ms >= 0) link_->note_decoded({ack->frame, ack->decode_ms});
   } else if (!link_->push(std::move(message))) {
     // Worth a line: it means the session is slow or stuck in the render thread.
     read_paused_ = true;

@@ -122,14 +122,20 @@ class ServerProcess {
 
 // In the page: frame pixels -> CSS pixels, and a hash of the canvas (or of a
 // rectangle of it in frame pixels) to tell whether the picture changed.
+// A rectangle from a frame header's controls (epvizState tags each with its
+// frame's size) is scaled by that frame's size, not by the canvas's: with
+// adaptive resolution another frame of another size may be shown by now,
+// and the page stretches every frame to the same CSS box.
 export async function frameRectToCss(page, rect) {
-  return page.evaluate(([x, y, w, h]) => {
+  const frame = rect.frameSize || null;
+  return page.evaluate(([[x, y, w, h], size]) => {
     const c = document.getElementById('view');
     const r = c.getBoundingClientRect();
-    const sx = r.width / c.width;
-    const sy = r.height / c.height;
+    const [fw, fh] = size || [c.width, c.height];
+    const sx = r.width / fw;
+    const sy = r.height / fh;
     return { x: r.left + x * sx, y: r.top + y * sy, w: w * sx, h: h * sy };
-  }, rect);
+  }, [Array.from(rect).slice(0, 4), frame]);
 }
 
 export async function canvasHash(page, rect) {
@@ -153,11 +159,18 @@ export async function canvasHash(page, rect) {
   }, rect || null);
 }
 
-export function epvizState(page) {
-  return page.evaluate(() => {
+export async function epvizState(page) {
+  const state = await page.evaluate(() => {
     const e = window.epviz;
     return e ? { framesShown: e.framesShown, connected: e.connected, header: e.lastHeader } : null;
   });
+  const h = state && state.header;
+  if (h && h.controls && typeof h.controls === 'object') {
+    for (const rect of Object.values(h.controls)) {
+      if (Array.isArray(rect)) rect.frameSize = [h.width, h.height];
+    }
+  }
+  return state;
 }
 
 export async function waitFor(what, timeoutMs, check, intervalMs = 100) {

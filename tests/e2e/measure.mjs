@@ -41,6 +41,19 @@ function stageMedians(frames, a, b) {
   return out;
 }
 
+// The frame size drawn most often in [a, b] (adaptive resolution's choice while playing).
+function commonestSize(frames, a, b) {
+  const counts = new Map();
+  for (const f of frames) {
+    if (f.at < a || f.at > b) continue;
+    const k = `${f.width}x${f.height}`;
+    counts.set(k, (counts.get(k) || 0) + 1);
+  }
+  let best = null;
+  for (const [k, n] of counts) if (!best || n > counts.get(best)) best = k;
+  return best;
+}
+
 function round(v, digits = 1) {
   return v === null ? null : Math.round(v * 10 ** digits) / 10 ** digits;
 }
@@ -101,6 +114,24 @@ await run({
     log(`measure: paused; ${PAUSED_MOVES} pointer moves`);
     const paused = await moveSamples(page, point, PAUSED_MOVES);
 
+    // The last frame (the sharp one drawn at rest) decoded again with
+    // nothing else running: the decoder's own cost on this machine, against
+    // the decode stage above, which is measured while the server draws.
+    const alone = await page.evaluate(async () => {
+      const f = window.epviz.lastFrame;
+      const times = [];
+      let size = null;
+      for (let i = 0; i < 15; ++i) {
+        const start = performance.now();
+        const bmp = await createImageBitmap(new Blob([f.bytes], { type: f.mime }));
+        times.push(performance.now() - start);
+        size = `${bmp.width}x${bmp.height}`;
+        bmp.close();
+      }
+      times.sort((a, b) => a - b);
+      return { ms: times[times.length >> 1], size, bytes: f.bytes.byteLength };
+    });
+
     const frames = await page.evaluate(() => window.epviz.stages.slice());
     const stats = await page.evaluate(async (u) => (await fetch(u + 'stats')).json(), url);
 
@@ -122,6 +153,8 @@ await run({
       mime: h.mime,
       measure_s: round((t1 - t0) / 1000, 2),
       stages: stageMedians(frames, t0, t1),
+      playing_size: commonestSize(frames, t0, t1),
+      decode_alone: { ms: round(alone.ms, 2), size: alone.size, kB: Math.round(alone.bytes / 1000) },
       server_stats: stats,
     };
     if (sorted.length < MOVES / 2) fail(`only ${sorted.length} of ${MOVES} pointer moves got a latency: ${JSON.stringify(result)}`);

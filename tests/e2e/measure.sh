@@ -37,12 +37,13 @@ for (let i = 1; i <= Number(runs); ++i) {
 const s = (r, k) => (r.stages[k] === null ? '-' : r.stages[k]);
 console.log(`view ${rows[0].width}x${rows[0].height}, ${rows[0].mime}, ${new Date().toISOString()}, ${require('os').cpus().length} cores`);
 console.log(`CPU: ${cpu}; browser: ${chromium}`);
-console.log('| run | load | frames/s | latency median (p90) ms | paused median (p90) ms | simulate | draw | read back | encode | queue | send | decode | paint | kB |');
-console.log('|---|---|---|---|---|---|---|---|---|---|---|---|---|---|');
+console.log('| run | load | frames/s | latency median (p90) ms | paused median (p90) ms | size playing | simulate | draw | read back | encode | queue | send | decode | paint | kB | decode alone (size) |');
+console.log('|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|');
 rows.forEach((r, i) => {
   console.log(`| ${i + 1} | ${r.load} | ${r.fps} | ${r.latency_median_ms} (${r.latency_p90_ms}) | ` +
-    `${r.paused_latency_median_ms} (${r.paused_latency_p90_ms}) | ${s(r, 'simulate_ms')} | ${s(r, 'draw_ms')} | ` +
+    `${r.paused_latency_median_ms} (${r.paused_latency_p90_ms}) | ${r.playing_size} | ${s(r, 'simulate_ms')} | ${s(r, 'draw_ms')} | ` +
     `${s(r, 'read_back_ms')} | ${s(r, 'encode_ms')} | ${s(r, 'queue_ms')} | ${s(r, 'send_ms')} | ` +
-    `${s(r, 'decode_ms')} | ${s(r, 'paint_ms')} | ${r.stages.bytes === null ? '-' : Math.round(r.stages.bytes / 1000)} |`);
+    `${s(r, 'decode_ms')} | ${s(r, 'paint_ms')} | ${r.stages.bytes === null ? '-' : Math.round(r.stages.bytes / 1000)} | ` +
+    `${r.decode_alone.ms} (${r.decode_alone.size}) |`);
 });
 JS

@@ -1,9 +1,11 @@
 // Adaptive resolution (ServerOptions::frame_budget_ms): frames that cost
-// more than the budget make the view render smaller, never below
+// more than the budget (to draw and encode, or for the page to decode) make
+// the view render smaller, never below
 // min_detail; at rest it is rendered once more at full size; the page's
 // positions are scaled to the size the session renders.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <functional>
 #include <stdexcept>
 
@@ -80,6 +82,29 @@ TEST(ServeAdaptiveDetail, FramesOverTheBudgetAreRenderedSmallerButNotBelowTheMin
   EXPECT_GT(page.server.server->stats().downscaled_frames, 0);
   // The session was told its scale, to draw its interface to match.
   EXPECT_LT(page.server.probe->view_scale.load(), 1.0);
+}
+
+// A page whose frames the server draws at once but which reports taking
+// `decode_ms` to decode each: the frame rate is the page's to limit.
+int narrowest_width_with_page_decoding(double decode_ms, int frames) {
+  TestServer server(budget(10.0), true);
+  server.probe->render_ms_per_megapixel = 0;
+  TestClient client(server.port());
+  client.send(resize(kWidth, kHeight));
+  int narrowest = kWidth;
+  for (int i = 0; i < frames; ++i) {
+    const json h = next_frame(client).header;
+    narrowest = std::min(narrowest, h["width"].get<int>());
+    client.send({{"type", "ack"}, {"frame", h["frame"]}, {"decode_ms", decode_ms}});
+  }
+  return narrowest;
+}
+
+TEST(ServeAdaptiveDetail, APageThatDecodesSlowlyGetsSmallerFramesOneThatDecodesFastDoesNot) {
+  EXPECT_LT(narrowest_width_with_page_decoding(40.0, 16), kWidth)
+      << "frames cheap to draw but four budgets to decode stayed full size";
+  EXPECT_EQ(narrowest_width_with_page_decoding(1.0, 16), kWidth)
+      << "frames cheap to draw and to decode were made smaller";
 }
 
 TEST(ServeAdaptiveDetail, WithoutABudgetTheViewStaysFullSize) {

@@ -30,6 +30,17 @@ TEST(ServeProtocol, ParsesAck) {
   const ClientMessage m = parse_client_message(R"({"type":"ack","frame":42})");
   ASSERT_TRUE(std::holds_alternative<Ack>(m));
   EXPECT_EQ(std::get<Ack>(m).frame, 42);
+  EXPECT_LT(std::get<Ack>(m).decode_ms, 0) << "no decoding time sent";
+}
+
+TEST(ServeProtocol, AckMayCarryThePagesDecodingTime) {
+  const ClientMessage m = parse_client_message(R"({"type":"ack","frame":7,"decode_ms":12.25})");
+  ASSERT_TRUE(std::holds_alternative<Ack>(m));
+  EXPECT_EQ(std::get<Ack>(m).frame, 7);
+  EXPECT_DOUBLE_EQ(std::get<Ack>(m).decode_ms, 12.25);
+  EXPECT_DOUBLE_EQ(
+      std::get<Ack>(parse_client_message(R"({"type":"ack","frame":7,"decode_ms":0})")).decode_ms,
+      0.0);
 }
 
 TEST(ServeProtocol, ParsesMoveWithSeq) {
@@ -163,6 +174,9 @@ TEST(ServeProtocol, RefusesOutOfRangeValues) {
   expect_refused(R"({"type":"resize","width":100000,"height":480})", "width", "1..16384");
   expect_refused(R"({"type":"resize","width":18446744073709551615,"height":480})", "width");
   expect_refused(R"({"type":"ack","frame":-1})", "frame");
+  expect_refused(R"({"type":"ack","frame":1,"decode_ms":-0.5})", "decode_ms", "0..");
+  expect_refused(R"({"type":"ack","frame":1,"decode_ms":1e9})", "decode_ms", "0..");
+  expect_refused(R"({"type":"ack","frame":1,"decode_ms":"3"})", "decode_ms", "number");
   expect_refused(R"({"type":"move","x":1,"y":2,"seq":-5})", "seq");
   expect_refused(R"({"type":"move","x":1e7,"y":2})", "x");
   expect_refused(R"({"type":"button","x":1,"y":2,"button":3,"down":true})", "button", "0..2");
@@ -250,6 +264,27 @@ TEST(ServeProtocol, FrameMessageHasTheDocumentedLayout) {
   EXPECT_EQ(decoded.payload, image);
 }
 
+TEST(ServeProtocol, FrameHeaderSaysWhatAdaptiveResolutionChoseAndFromWhat) {
+  FrameInfo info;
+  info.frame = 9;
+  info.width = 800;
+  info.height = 450;
+  info.mime = "image/jpeg";
+  EXPECT_FALSE(decode_server_message(encode_frame_message(info, {})).header.contains("adaptive"))
+      << "adaptive resolution off: nothing to say";
+  info.adaptive = {18.0, 0.625, false, 11.5, -1.0};
+  auto header = decode_server_message(encode_frame_message(info, {})).header;
+  ASSERT_TRUE(header.contains("adaptive"));
+  EXPECT_DOUBLE_EQ(header["adaptive"]["budget_ms"].get<double>(), 18.0);
+  EXPECT_DOUBLE_EQ(header["adaptive"]["detail"].get<double>(), 0.625);
+  EXPECT_EQ(header["adaptive"]["resting"], false);
+  EXPECT_DOUBLE_EQ(header["adaptive"]["server_ms"].get<double>(), 11.5);
+  EXPECT_FALSE(header["adaptive"].contains("page_decode_ms")) << "the page has reported none";
+  info.adaptive.page_decode_ms = 6.25;
+  header = decode_server_message(encode_frame_message(info, {})).header;
+  EXPECT_DOUBLE_EQ(header["adaptive"]["page_decode_ms"].get<double>(), 6.25);
+}
+
 TEST(ServeProtocol, FrameMessageBeforeAnyWriteHasNoWrittenTimes) {
   FrameInfo info;
   info.frame = 1;
@@ -264,6 +299,7 @@ TEST(ServeProtocol, ClientMessagesSurviveEncodeAndParse) {
   const std::vector<std::string> pages = {
       R"({"type":"resize","width":640,"height":480})",
       R"({"type":"ack","frame":12})",
+      R"({"type":"ack","frame":13,"decode_ms":4.5})",
       R"({"type":"move","x":1.5,"y":-2,"seq":3})",
       R"({"type":"button","x":4,"y":5,"button":2,"down":true})",
       R"({"type":"wheel","x":1,"y":2,"dx":0.25,"dy":-1})",

@@ -33,6 +33,12 @@ TEST(ServerSettings, TextToOptions) {
   EXPECT_EQ(d.port, ServerOptions{}.port);
   EXPECT_EQ(d.max_width, ServerOptions{}.max_width);
   EXPECT_EQ(d.pixel_budget, ServerOptions{}.pixel_budget);
+  // Except adaptive resolution, off for a server built in code but on for
+  // the command, which users run: smaller frames while moving, sharp at rest.
+  EXPECT_EQ(d.frame_budget_ms, 18.0);
+  ServerSettings off;
+  off.frame_budget = "0";
+  EXPECT_EQ(server_options(off).frame_budget_ms, 0.0);
 }
 
 TEST(ServerSettings, MistakesNameTheirOption) {
