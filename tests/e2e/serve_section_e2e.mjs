@@ -42,19 +42,30 @@ await run({
       });
       await clickFrame(c[name]);
     };
+    // Clicks `name` until `done(controls)` holds, a few times at most: a
+    // click the server takes while it changes the frame's size (adaptive
+    // resolution) may land beside the control.
+    const clickUntil = async (name, what, done) => {
+      for (let attempt = 0; attempt < 4; ++attempt) {
+        await clickControl(name);
+        const end = Date.now() + 3000;
+        while (Date.now() < end) {
+          if (done(await controlsNow())) return;
+          await sleep(100);
+        }
+        log(`(clicked '${name}' again: ${what} not yet)`);
+      }
+      fail(`clicking '${name}' did not give ${what}`);
+    };
     await waitFor('a frame of the view\'s size, 1280x720', 10000, async () => {
       const s = await epvizState(page);
       return s.header.width === 1280 && s.header.height === 720;
     });
 
     // 1. Shown from the panel: the frame names the section's plot.
-    await clickControl('header:case');  // closed, to make room
-    await clickControl('header:section');
-    await clickControl('section');
-    const shown = await waitFor('the section panel in the frame', 5000, async () => {
-      const c = await controlsNow();
-      return c.section && Array.isArray(c.section.plot) ? c.section : null;
-    });
+    await clickUntil('header:section', 'the section part open', (c) => Array.isArray(c.section));
+    await clickUntil('section', 'the section panel', (c) => c.section && Array.isArray(c.section.plot));
+    const shown = (await controlsNow()).section;
     log(`ok: the section panel is shown at ${JSON.stringify(shown.plot)}`);
 
     // 2. The run's crossings fill it as it plays.
@@ -74,8 +85,14 @@ await run({
     const plotHash = await canvasHash(page, plot);
     let started = null;
     for (const [fx, fy] of [[0.5, 0.5], [0.4, 0.55], [0.6, 0.45], [0.3, 0.5], [0.7, 0.5],
-      [0.5, 0.35], [0.5, 0.65], [0.2, 0.5], [0.8, 0.5]]) {
-      await clickFrame([plot[0] + fx * plot[2], plot[1] + fy * plot[3], 1, 1]);
+      [0.5, 0.35], [0.5, 0.65], [0.2, 0.5], [0.8, 0.5], [0.5, 0.5], [0.45, 0.5], [0.55, 0.5]]) {
+      // The plot's place in the latest frame, whatever its size (adaptive
+      // resolution), and that size, by which the page's picture is stretched.
+      const latest = (await epvizState(page)).header;
+      const p = latest.controls.section.plot;
+      const at = [p[0] + fx * p[2], p[1] + fy * p[3], 1, 1];
+      at.frameSize = [latest.width, latest.height];
+      await clickFrame(at);
       const c = await controlsNow();
       if (c.section && c.section.dots.length === 2) {
         started = [fx, fy];
