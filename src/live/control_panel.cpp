@@ -376,9 +376,12 @@ void ControlPanel::draw_section(const LiveScene& scene, PanelActions& out) {
   bool shown = s.scene.section.has_value();
   if (ImGui::Checkbox("show the section panel", &shown)) {
     LiveSetup e = s;
-    if (shown)
+    if (shown) {
+      // Its surface and axes again; not its orbits, which may lie on the
+      // level of a run edited since.
       e.scene.section = last_section_.value_or(scene::SectionPanelSettings{});
-    else
+      e.scene.section->orbits.clear();
+    } else
       e.scene.section.reset();
     out.view = e;
   }
