@@ -269,6 +269,20 @@ void FramePainter::draw_plane_captions(render::DrawList& flat, const render::Vie
 
 render::ImGuiOverlay& FramePainter::gui() { return *renderer_->overlay(); }
 
+float FramePainter::layout_scale() { return gui().framebuffer_scale(); }
+
+namespace {
+// The style's sizes the overlay window is measured with, in frame pixels
+// (ImGui's are in its layout units, frame pixels / the overlay's
+// framebuffer scale, which a live view drawn smaller sets).
+struct StyleInPixels {
+  StyleInPixels(const ImGuiStyle& style, float scale)
+      : ItemSpacing(style.ItemSpacing.x * scale, style.ItemSpacing.y * scale),
+        WindowPadding(style.WindowPadding.x * scale, style.WindowPadding.y * scale) {}
+  ImVec2 ItemSpacing, WindowPadding;
+};
+}  // namespace
+
 namespace {
 // The drift readouts' traffic light explained: the range each colour stands
 // for (scene::drift_level's thresholds), in one wording at every width. Only
@@ -347,12 +361,12 @@ std::vector<FramePainter::DriftPiece> FramePainter::drift_line(const scene::Fram
 
 float FramePainter::drift_table_column_width() {
   render::ImGuiContextScope scope(gui().context());
-  return gui().text_size(kWidestDrift).x + ImGui::GetStyle().ItemSpacing.x;
+  return gui().text_size(kWidestDrift).x + ImGui::GetStyle().ItemSpacing.x * layout_scale();
 }
 
 float FramePainter::drift_table_values_x(const scene::Frame& f) {
   render::ImGuiContextScope scope(gui().context());
-  return drift_names_width(gui(), f) + ImGui::GetStyle().ItemSpacing.x;
+  return drift_names_width(gui(), f) + ImGui::GetStyle().ItemSpacing.x * layout_scale();
 }
 
 void FramePainter::draw_flat(const render::DrawList& list) {
@@ -383,7 +397,7 @@ Box FramePainter::info_window_box(const scene::Frame& f, const scene::FrameLayou
   // would use the previous frame's, which belongs to another job in a gallery.
   const int shown = overlay_lines_shown(f.overlay, height());
   render::ImGuiContextScope scope(gui().context());
-  const ImGuiStyle& st = ImGui::GetStyle();
+  const StyleInPixels st(ImGui::GetStyle(), layout_scale());
   float text_w = gui().text_size(f.overlay.title).x;
   for (int i = 0; i < shown; ++i)
     text_w = std::max(text_w, gui().text_size(f.overlay.lines[std::size_t(i)]).x);
@@ -474,8 +488,10 @@ void FramePainter::draw_info_window(const scene::Frame& f, const scene::FrameLay
   {
     const Box box = info_window_box(f, layout, px);
     const int shown = overlay_lines_shown(f.overlay, height());
-    ImGui::SetNextWindowSize(ImVec2(box.width(), box.height()), ImGuiCond_Always);
-    ImGui::SetNextWindowPos(ImVec2(box.min.x, box.min.y), ImGuiCond_Always);
+    // ImGui lays out in frame pixels / layout_scale().
+    const float s = layout_scale();
+    ImGui::SetNextWindowSize(ImVec2(box.width() / s, box.height() / s), ImGuiCond_Always);
+    ImGui::SetNextWindowPos(ImVec2(box.min.x / s, box.min.y / s), ImGuiCond_Always);
     // More see-through where it floats over the 3D view (small pictures).
     ImGui::SetNextWindowBgAlpha(layout.overlay_in_column || !layout.view_3d
                                     ? ink.overlay_alpha_in_column
@@ -516,13 +532,14 @@ void FramePainter::draw_info_window(const scene::Frame& f, const scene::FrameLay
       }
     } else if (!f.overlay.drifts.empty()) {
       ImGui::Separator();
-      const float values_x = ImGui::GetStyle().WindowPadding.x + drift_table_values_x(f);
+      // In frame pixels, given to ImGui in its layout units.
+      const float values_x = ImGui::GetStyle().WindowPadding.x * s + drift_table_values_x(f);
       const float column_w = drift_table_column_width();
       // The heading, and over each value column what it measures.
       ImGui::TextDisabled("%s", drift_heading(f));
       const auto columns = drift_table_columns(f);
       for (std::size_t c = 0; c < columns.size(); ++c) {
-        ImGui::SameLine(values_x + float(c) * column_w);
+        ImGui::SameLine((values_x + float(c) * column_w) / s);
         ImGui::TextDisabled("%s", columns[c].c_str());
       }
       for (std::size_t row = 0; row < f.overlay.drifts.size(); ++row) {
@@ -531,7 +548,7 @@ void FramePainter::draw_info_window(const scene::Frame& f, const scene::FrameLay
         for (std::size_t c = 0; c < values.size(); ++c) {
           // Traffic light (scene::drift_level) of the column's own value.
           const double v = c == 0 ? f.overlay.drifts[row].second : f.overlay.step_drifts[row];
-          ImGui::SameLine(values_x + float(c) * column_w);
+          ImGui::SameLine((values_x + float(c) * column_w) / s);
           ImGui::TextColored(to_imgui(ink.drift_colour(v)), "%s",
                              render::drawable_text(values[c]).c_str());
         }

@@ -101,6 +101,8 @@ class FramePainter {
                                  const std::function<void()>& extra_ui = {});
   // The ImGui overlay, for feeding it input and its clock.
   render::ImGuiOverlay& gui();
+  // The overlay's framebuffer scale: ImGui's units are frame pixels / this.
+  float layout_scale();
   const PaintedAnnotations& annotations() const { return annotations_; }
   // For vector stills (vector/frame_still.hpp): while set, paint() draws only
   // the 3D view with GL and hands every 2D list over it and beside it (marks,
