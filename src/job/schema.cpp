@@ -484,6 +484,28 @@ const std::vector<Job>& job_entries() {
                [](const scene::SectionPanelSettings& p, Json& j) {
                  j["coords"] = {sim::name(p.coords[0]), sim::name(p.coords[1])};
                }),
+           // After the surface's and the axes' keys: the sheet is told apart
+           // by a component neither cut nor plotted.
+           section_key(
+               "sheet", ValueType::text,
+               "gamma2 > 0 for a gamma3 surface at gamma1, omega3 (the positive sheet of a "
+               "chart with two); none (every crossing) for a chart with one",
+               "\"C > 0\" or \"C < 0\", C a state component neither the function nor plotted",
+               "the sheet of the surface drawn: its coords cover a surface such as gamma3 = 0 "
+               "twice (gamma2 > 0, gamma2 < 0), so the panel draws one and counts the other's "
+               "crossings",
+               [](io::ObjectReader& r, scene::SectionPanelSettings& p) {
+                 if (auto s = section::read_sheet(r, p.surface, p.coords, false))
+                   p.sheet = scene::SectionSheet{
+                       s->component, s->show == section::SheetChoice::Show::negative ? -1 : 1};
+                 else
+                   p.sheet = scene::default_sheet(p.surface, p.coords);
+               },
+               [](const scene::SectionPanelSettings& p, Json& j) {
+                 if (p.sheet)
+                   j["sheet"] = std::string(sim::name(p.sheet->component)) +
+                                (p.sheet->sign > 0 ? " > 0" : " < 0");
+               }),
            // After the surface's keys: each start must lie on the surface.
            section_key("orbits", ValueType::text, "none",
                        "an array of up to " + std::to_string(scene::kMaxSectionOrbits) +

@@ -393,18 +393,27 @@ void ControlPanel::draw_section(const LiveScene& scene, PanelActions& out) {
     return;
   }
   ImGui::TextWrapped("%s", render::drawable_text("A click on the panel starts an orbit there, on "
-                                                 "this run's level of C₁ and C₀.")
+                                                 "this run's level of C₁ and C₀ and on the sheet "
+                                                 "drawn.")
                                .c_str());
-  const auto sheet =
-      sim::chart_sheet_component(section->settings().surface, section->settings().coords);
+  // One sheet: the one drawn is the one a click starts on.
+  const scene::SectionPanelSettings& drawn = section->settings();
+  const auto sheet = sim::chart_sheet_component(drawn.surface, drawn.coords);
+  if (drawn.sheet && drawn.sheet->component == *sheet) click_sheet_ = drawn.sheet->sign;
   const std::string name(sim::symbol(*sheet));
-  ImGui::TextUnformatted("on");
+  const int was = click_sheet_;
+  ImGui::TextUnformatted("sheet");
   ImGui::SameLine();
   ImGui::RadioButton(render::drawable_text(name + " > 0").c_str(), &click_sheet_, 1);
   note_item("sheet:+");
   ImGui::SameLine();
   ImGui::RadioButton(render::drawable_text(name + " < 0").c_str(), &click_sheet_, -1);
   note_item("sheet:-");
+  if (click_sheet_ != was) {
+    LiveSetup e = s;
+    e.scene.section->sheet = scene::SectionSheet{*sheet, click_sheet_};
+    out.view = e;
+  }
   ImGui::Text("orbits: %d of %d", section->orbit_count(), scene::kMaxSectionOrbits);
   ImGui::SameLine();
   if (ImGui::Button("Clear orbits")) out.clear_orbits = true;

@@ -131,6 +131,11 @@ void LiveScene::set_view(const scene::SceneSettings& s, double speed) {
     setup_.scene.section = s.section;
     follow_section();
     fill_section();
+  } else if (s.section && s.section->sheet != setup_.scene.section->sheet) {
+    // Another sheet drawn: the crossings found so far stay.
+    setup_.scene.section->sheet = s.section->sheet;
+    section_->set_sheet(s.section->sheet);
+    fill_section();
   }
 }
 

@@ -50,18 +50,20 @@ LiveSection::Added LiveSection::add_orbit(double x, double y, int sheet) {
   const auto& run = source_.plan().run;
   auto pre =
       sim::section_states_at(run.body, level_, settings_.surface, settings_.coords, x, y, sheet);
+  const auto sheet_component = *sim::chart_sheet_component(settings_.surface, settings_.coords);
   if (pre.states.empty()) {
-    // The other sheet, where the asked one has no state there.
-    auto other =
+    // An orbit of the other sheet would not show on the panel (it draws the
+    // asked sheet only): say where one can be started instead.
+    const auto other =
         sim::section_states_at(run.body, level_, settings_.surface, settings_.coords, x, y, -sheet);
     if (other.states.empty()) return {false, "no orbit started at this point: " + pre.why_none};
-    pre = std::move(other);
+    return {false, "no state on this sheet at that point; try " +
+                       scene::sheet_name({sheet_component, -sheet})};
   }
   const physics::InitialState& start = pre.states.front();
   orbits_.push_back(std::make_unique<scene::SectionOrbit>(orbit_run_, start, settings_.surface));
   failure_told_.push_back(false);
   settings_.orbits.push_back(start);
-  const auto sheet_component = *sim::chart_sheet_component(settings_.surface, settings_.coords);
   char text[240];
   std::snprintf(text, sizeof text,
                 "orbit %d from %s = %.4g, %s = %.4g (%s = %.4g): Ω = (%.4g, %.4g, %.4g)",
@@ -71,6 +73,10 @@ LiveSection::Added LiveSection::add_orbit(double x, double y, int sheet) {
                 sim::value_of(sheet_component, start.omega, start.gamma), start.omega.x(),
                 start.omega.y(), start.omega.z());
   return {true, text};
+}
+
+void LiveSection::set_sheet(const std::optional<scene::SectionSheet>& sheet) {
+  settings_.sheet = sheet;
 }
 
 void LiveSection::clear_orbits() {

@@ -35,14 +35,17 @@ class LiveSection {
 
   // An orbit through the panel's point (x, y) on the first run's level, on
   // the sheet `sheet` (+1 or -1: the sign of the component the chart leaves
-  // out; the other sheet where that has none). Returns the notice to show:
-  // the orbit's start, or why none was started (no state there, orbits at
-  // their limit, a chart it cannot invert).
+  // out; the control panel passes the sheet drawn). Returns the notice to
+  // show: the orbit's start, or why none was started (no state there, none
+  // on this sheet but on the other, orbits at their limit, a chart it
+  // cannot invert).
   struct Added {
     bool added = false;
     std::string notice;
   };
   Added add_orbit(double x, double y, int sheet);
+  // The sheet drawn (settings().sheet): its crossings shown, the other's counted.
+  void set_sheet(const std::optional<scene::SectionSheet>& sheet);
   void clear_orbits();
   int orbit_count() const { return int(orbits_.size()); }
   const scene::SectionOrbit& orbit(int i) const { return *orbits_[std::size_t(i)]; }

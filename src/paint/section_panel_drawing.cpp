@@ -80,6 +80,15 @@ void draw_section_panel(render::DrawList& flat, const scene::SectionPanel& panel
                  render::TextAnchor::top_left,
                  {0, 0},
                  style.background});
+  // The crossings on the sheet not shown, counted at the top right, so that
+  // the plot does not pass for every crossing there is.
+  if (!panel.note.empty())
+    flat.add_text({glm::vec3(float(area.x + area.width) - 3.0f * px, float(area.y) + 2.0f * px, 0),
+                   panel.note,
+                   style.text,
+                   render::TextAnchor::top_right,
+                   {0, 0},
+                   style.background});
 }
 
 std::optional<glm::dvec2> section_point_at(const scene::SectionPanel& panel,

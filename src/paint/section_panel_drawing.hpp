@@ -1,7 +1,8 @@
 #pragma once
 // Draws a frame's section panel (scene::SectionPanel): a square plot of the
 // crossings so far, a dot each in its run's colour, the newest of each run
-// marked, the surface in the title and the coordinates' symbols on the axes.
+// marked, the surface and sheet in the title, the coordinates' symbols on
+// the axes and the count of crossings on the sheet not shown.
 // Plain values in, a 2D draw list out: no physics here.
 #include <functional>
 #include <optional>

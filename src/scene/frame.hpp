@@ -149,6 +149,10 @@ struct SectionPanel {
   std::array<double, 4> range{-1.0, 1.0, -1.0, 1.0};
   std::vector<std::vector<Eigen::Vector2d>> runs;  // per run, first run first, oldest first
   std::vector<Rgba> colours;                       // one per run
+  // Crossings up to the frame's time on the sheet not shown (a job's
+  // section.sheet), and the panel's note saying so ("" when none).
+  std::size_t hidden = 0;
+  std::string note;
 };
 
 struct Frame {

@@ -7,6 +7,7 @@
 
 #include "physics/format.hpp"
 #include "physics/level_set.hpp"
+#include "sim/section_chart_inverse.hpp"
 
 namespace epviz::scene {
 namespace {
@@ -31,12 +32,29 @@ void pad(double& lo, double& hi) {
 
 }  // namespace
 
-std::string section_title(const sim::SectionSurface& surface) {
+std::optional<SectionSheet> default_sheet(const sim::SectionSurface& surface,
+                                          const std::array<sim::StateComponent, 2>& coords) {
+  if (auto c = sim::chart_sheet_component(surface, coords)) return SectionSheet{*c, 1};
+  return std::nullopt;
+}
+
+std::string sheet_name(const SectionSheet& sheet) {
+  return std::string(sim::symbol(sheet.component)) + (sheet.sign > 0 ? " > 0" : " < 0");
+}
+
+bool on_sheet(const std::optional<SectionSheet>& sheet, const physics::Vector3d& omega,
+              const physics::Vector3d& gamma) {
+  return !sheet || sheet->sign * sim::value_of(sheet->component, omega, gamma) >= 0.0;
+}
+
+std::string section_title(const sim::SectionSurface& surface,
+                          const std::optional<SectionSheet>& sheet) {
   std::string s(sim::symbol(surface.function));
   s += " = ";
   s += physics::detail::num(surface.value);
   s += ", ";
   s += sim::name(surface.direction);
+  if (sheet) s += ", " + sheet_name(*sheet);
   return s;
 }
 
@@ -45,8 +63,10 @@ SectionCrossings::SectionCrossings(const SectionPanelSettings& settings,
     : settings_(settings), crossings_(std::move(crossings)) {
   double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   double hi[2] = {-lo[0], -lo[1]};
+  // The axes fit the crossings drawn: those of the sheet shown.
   for (const auto& run : crossings_) {
     for (const auto& c : run) {
+      if (!on_sheet(settings.sheet, c.omega, c.gamma)) continue;
       const Eigen::Vector2d p = plotted(c, settings.coords);
       for (int k = 0; k < 2; ++k) {
         lo[k] = std::min(lo[k], p[k]);
@@ -161,7 +181,7 @@ SectionPanel section_panel(const SectionPanelSettings& settings, const std::arra
                            const std::vector<const std::vector<sim::Crossing>*>& crossings,
                            const std::vector<double>& t, const std::vector<Rgba>& colours) {
   SectionPanel p;
-  p.title = section_title(settings.surface);
+  p.title = section_title(settings.surface, settings.sheet);
   p.axes = {std::string(sim::symbol(settings.coords[0])),
             std::string(sim::symbol(settings.coords[1]))};
   p.range = range;
@@ -170,8 +190,17 @@ SectionPanel section_panel(const SectionPanelSettings& settings, const std::arra
     auto& dots = p.runs.emplace_back();
     for (const auto& c : *crossings[i]) {
       if (c.t > t[i]) break;  // in time order
-      dots.push_back(plotted(c, settings.coords));
+      if (on_sheet(settings.sheet, c.omega, c.gamma))
+        dots.push_back(plotted(c, settings.coords));
+      else
+        ++p.hidden;
     }
+  }
+  if (p.hidden > 0) {
+    // The crossings left out, so that the picture says no more than it shows.
+    const SectionSheet other{settings.sheet->component, -settings.sheet->sign};
+    p.note = std::to_string(p.hidden) + (p.hidden == 1 ? " crossing" : " crossings") + " on " +
+             sheet_name(other) + " not drawn";
   }
   return p;
 }

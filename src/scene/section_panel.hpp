@@ -6,6 +6,7 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "numerics/failure.hpp"
@@ -19,12 +20,41 @@ struct Level;  // physics/level_set.hpp
 
 namespace epviz::scene {
 
-// What a job's "section" asks for: the surface and the two coordinates
-// plotted (the keys, defaults and checks of a section file, section/section_job.hpp).
+// One sheet of a section surface's chart: the states whose `component` has
+// the sign `sign` (+1 or -1). The plotted coordinates cover a surface such as
+// gamma3 = 0 twice (gamma2 > 0 and gamma2 < 0); a panel drawing both on one
+// plane would set orbits of one sheet among those of the other.
+struct SectionSheet {
+  sim::StateComponent component = sim::StateComponent::gamma2;
+  int sign = 1;
+  bool operator==(const SectionSheet&) const = default;
+};
+
+// The sheet a panel shows where none is asked: the positive one of the
+// component that tells the chart's sheets apart (sim::chart_sheet_component),
+// or none (every crossing) for a chart that has no such component.
+std::optional<SectionSheet> default_sheet(const sim::SectionSurface& surface,
+                                          const std::array<sim::StateComponent, 2>& coords);
+
+// "γ₂ > 0".
+std::string sheet_name(const SectionSheet& sheet);
+
+// Whether `sheet` (none: every crossing) shows the state (omega, gamma): its
+// component of the sheet's sign, or 0 (the fold, where both sheets meet and
+// the chart gives both one point).
+bool on_sheet(const std::optional<SectionSheet>& sheet, const physics::Vector3d& omega,
+              const physics::Vector3d& gamma);
+
+// What a job's "section" asks for: the surface, the two coordinates plotted
+// and the sheet shown (the keys, defaults and checks of a section file,
+// section/section_job.hpp).
 struct SectionPanelSettings {
   sim::SectionSurface surface;
   std::array<sim::StateComponent, 2> coords{sim::StateComponent::gamma1,
                                             sim::StateComponent::omega3};
+  // Only this sheet's crossings are drawn (the panel counts the others);
+  // none: every crossing. default_sheet of the surface and coords above.
+  std::optional<SectionSheet> sheet = SectionSheet{};
   // Further orbits, each from its state (on the first run's level, started
   // at a point of the live panel: sim/section_chart_inverse.hpp), run as the
   // first run is (its method, tolerance, formulation, drift limit) over its
@@ -84,13 +114,15 @@ std::array<double, 4> level_range(const physics::Body& body, const physics::Leve
                                   const std::array<sim::StateComponent, 2>& coords);
 
 // The panel of `settings` on `range` with `crossings` (per run or orbit,
-// in time order) up to time `t` of each, the i-th in `colours[i]`.
+// in time order) up to time `t` of each, the i-th in `colours[i]`: those on
+// settings.sheet drawn, those on the other sheet counted (SectionPanel::hidden).
 SectionPanel section_panel(const SectionPanelSettings& settings, const std::array<double, 4>& range,
                            const std::vector<const std::vector<sim::Crossing>*>& crossings,
                            const std::vector<double>& t, const std::vector<Rgba>& colours);
 
-// "γ₃ = 0, upward": the panel's title.
-std::string section_title(const sim::SectionSurface& surface);
+// "γ₃ = 0, upward": the panel's title; with a sheet "γ₃ = 0, upward, γ₂ > 0".
+std::string section_title(const sim::SectionSurface& surface,
+                          const std::optional<SectionSheet>& sheet = std::nullopt);
 
 class SectionCrossings {
  public:

@@ -225,21 +225,19 @@ PlotCoords read_section_coords(io::ObjectReader& r, const sim::SectionSurface& s
   return coords;
 }
 
-namespace {
-
 // "sheet": "COMPONENT > 0" or "COMPONENT < 0", or "sheets": "COMPONENT": a
 // state component that is neither the surface's nor plotted.
-std::optional<SheetChoice> read_sheet(io::ObjectReader& r, const SectionJob& job) {
+std::optional<SheetChoice> read_sheet(io::ObjectReader& r, const sim::SectionSurface& surface,
+                                      const PlotCoords& coords, bool both_allowed) {
   const auto one = r.string("sheet");
-  const auto both = r.string("sheets");
+  const auto both = both_allowed ? r.string("sheets") : std::nullopt;
   if (one && both)
     r.fail("sheet", "give \"sheet\" (one sheet) or \"sheets\" (both apart), not both");
   if (!one && !both) return std::nullopt;
   const char* key = one ? "sheet" : "sheets";
   std::string free;  // the components a sheet may be told apart by
   for (auto c : sim::all_state_components())
-    if ((job.surface.angle || c != job.surface.function) && c != job.coords[0] &&
-        c != job.coords[1])
+    if ((surface.angle || c != surface.function) && c != coords[0] && c != coords[1])
       free += (free.empty() ? "" : ", ") + std::string(sim::name(c));
   const std::string allowed = one ? "\"C > 0\" or \"C < 0\", C one of " + free : "one of " + free;
   std::string text = one ? *one : *both;
@@ -253,12 +251,13 @@ std::optional<SheetChoice> read_sheet(io::ObjectReader& r, const SectionJob& job
     text = text.substr(0, space);
   }
   const auto c = sim::state_component_from_name(text);
-  if (!c || (!job.surface.angle && *c == job.surface.function) || *c == job.coords[0] ||
-      *c == job.coords[1])
+  if (!c || (!surface.angle && *c == surface.function) || *c == coords[0] || *c == coords[1])
     r.fail(key, "must be " + allowed + ", got " + io::quoted(one ? *one : *both));
   sheet.component = *c;
   return sheet;
 }
+
+namespace {
 
 // "figure_width": "85mm", "font_size": 8, "dpi": 300, checked as the
 // command line's options are (io/print_size.hpp) but named by their keys.
@@ -345,7 +344,7 @@ SectionJob read_section_object(const nlohmann::json& doc, const std::string& nam
   }
   if (auto d = r.number_in("max_drift", 1e-14, 1.0, "1e-14 to 1")) job.max_drift = *d;
   job.coords = read_section_coords(r, job.surface);
-  job.sheet = read_sheet(r, job);
+  job.sheet = read_sheet(r, job.surface, job.coords);
   for (auto [key, path] : {std::pair{"png", &job.png}, {"svg", &job.svg}, {"pdf", &job.pdf}})
     if (auto given = r.string(key)) *path = *given;
   read_print_size(r, job);

@@ -48,6 +48,13 @@ struct SheetChoice {
   Show show = Show::both_apart;
 };
 
+// "sheet" of `r`'s object ("C > 0" or "C < 0", C a state component neither
+// the surface's function nor one of `coords`), and with `both_allowed` also
+// "sheets" ("C": both sheets apart); nullopt when neither is given. Read
+// wherever a sheet is chosen (a section file; a render job's "section").
+std::optional<SheetChoice> read_sheet(io::ObjectReader& r, const sim::SectionSurface& surface,
+                                      const PlotCoords& coords, bool both_allowed = true);
+
 struct SectionJob {
   std::string file;  // for messages
   physics::Case case_id = physics::Case::kovalevskaya;

@@ -32,7 +32,7 @@ job::RenderJob render_job(const nlohmann::json& j) {
 nlohmann::json kovalevskaya_job(const nlohmann::json& section) {
   return {{"simulation",
            {{"case", "kovalevskaya"},
-            {"t_end", 120},
+            {"t_end", 240},  // some 10 crossings on each sheet
             {"method", "dop853"},
             {"tol", 1e-10},
             {"omega", {1.0, 0.8, 0.6}},
@@ -78,6 +78,12 @@ TEST(SectionPanelKey, BadValuesExitTwoNamingTheKey) {
       {R"({"coords": ["gamma1"]})", "key 'section.coords'"},
       {R"({"coords": ["gamma1", "theta"]})", "key 'section.coords'"},
       {R"({"surface": "gamma3"})", "section.surface"},
+      {R"({"sheet": "gamma2 = 0"})", "key 'section.sheet'"},
+      {R"({"sheet": "gamma2"})", "key 'section.sheet'"},
+      {R"({"sheet": "gamma3 > 0"})", "key 'section.sheet'"},
+      {R"({"sheet": "omega3 < 0"})", "key 'section.sheet'"},
+      {R"({"sheet": 1})", "key 'section.sheet'"},
+      {R"({"sheets": "gamma2"})", "section.sheets"},
       {R"(3)", "key 'section'"},
   };
   for (const auto& [section, named] : cases) {
@@ -112,6 +118,16 @@ std::vector<sim::Crossing> section_code_crossings(const sim::RunSpec& run,
   return results.front().crossings;
 }
 
+// The oracle of the panel's sheet: the crossings whose gamma2, read off
+// each crossing's own state, has the sign `sign` (or is 0, the fold, which
+// both sheets share).
+std::vector<sim::Crossing> with_gamma2_sign(const std::vector<sim::Crossing>& all, int sign) {
+  std::vector<sim::Crossing> kept;
+  for (const auto& c : all)
+    if (sign * c.gamma.y() >= 0.0) kept.push_back(c);
+  return kept;
+}
+
 TEST(SectionPanel, LastFrameShowsTheCrossingsOfEpvizSectionAndFillsFrameByFrame) {
   const auto job = render_job(kovalevskaya_job({{"coords", {"gamma1", "omega3"}}}));
   const auto plan = job::plan_job(job);
@@ -129,8 +145,16 @@ TEST(SectionPanel, LastFrameShowsTheCrossingsOfEpvizSectionAndFillsFrameByFrame)
   }
   // Filling as the orbit runs: new dots in many frames, not all at once.
   EXPECT_GT(grew, 5u);
-  const auto expected = section_code_crossings(plan.run, job.scene.section->surface);
+  const auto all = section_code_crossings(plan.run, job.scene.section->surface);
+  // The default sheet of gamma3 = 0 at (gamma1, Omega3): gamma2 > 0; the
+  // others are counted, not drawn.
+  const auto expected = with_gamma2_sign(all, 1);
   ASSERT_GT(expected.size(), 10u);
+  ASSERT_GT(all.size() - expected.size(), 3u) << "the run crosses both sheets";
+  EXPECT_EQ(last.section->hidden, all.size() - expected.size());
+  EXPECT_EQ(last.section->title, "γ₃ = 0, upward, γ₂ > 0");
+  EXPECT_EQ(last.section->note,
+            std::to_string(all.size() - expected.size()) + " crossings on γ₂ < 0 not drawn");
   const auto& dots = last.section->runs.front();
   ASSERT_EQ(dots.size(), expected.size());
   for (std::size_t k = 0; k < dots.size(); ++k) {
@@ -161,7 +185,8 @@ TEST(SectionPanel, ComparisonScenesShowEachRunsCrossingsInItsColour) {
   ASSERT_TRUE(f.section && f.comparison);
   ASSERT_EQ(f.section->runs.size(), 2u);
   EXPECT_EQ(f.section->colours, f.comparison->colours);
-  const auto rk4 = section_code_crossings(plan.others.front().run, job.scene.section->surface);
+  const auto rk4 = with_gamma2_sign(
+      section_code_crossings(plan.others.front().run, job.scene.section->surface), 1);
   ASSERT_EQ(f.section->runs[1].size(), rk4.size());
   for (std::size_t k = 0; k < rk4.size(); ++k)
     EXPECT_EQ(f.section->runs[1][k].x(), rk4[k].gamma.x());
@@ -196,6 +221,7 @@ TEST(SectionPanel, EachRunIsIntegratedOncePlusItsShadow) {
     ASSERT_TRUE(last.section);
     long crossings = 0;
     for (const auto& dots : last.section->runs) crossings += long(dots.size());
+    crossings += long(last.section->hidden);  // found on the other sheet, as dear
     ASSERT_GT(crossings, 10);
     // A step that holds a crossing may need the dense output that no sample
     // in it asked for: DOP853's three more stages, or the two derivatives of
@@ -223,7 +249,8 @@ TEST(SectionPanel, CrossingsOfASpinorRunAreThoseOfAMuchTighterDirectSection) {
   sim::RunSpec tight = plan.run;
   tight.formulation = sim::Formulation::direct;
   tight.tol = plan.run.tol * 1e-2;
-  const auto expected = section_code_crossings(tight, job.scene.section->surface);
+  const auto expected =
+      with_gamma2_sign(section_code_crossings(tight, job.scene.section->surface), 1);
   const auto& dots = last.section->runs.front();
   ASSERT_GT(expected.size(), 10u);
   ASSERT_EQ(dots.size(), expected.size());
@@ -236,6 +263,49 @@ TEST(SectionPanel, CrossingsOfASpinorRunAreThoseOfAMuchTighterDirectSection) {
     EXPECT_NEAR(dots[k].y(), expected[k].omega.z(), 1e-7);
   }
   std::printf("worst %g n %zu\n", worst, dots.size());
+}
+
+TEST(SectionPanelKey, SheetDefaultsToThePositiveOneAndIsWrittenBack) {
+  using scene::SectionSheet;
+  // A chart with two sheets: the positive one unless asked.
+  const auto d = job::read_job(kovalevskaya_job(nlohmann::json::object()), "job.json");
+  EXPECT_EQ(d.scene.section->sheet, (SectionSheet{StateComponent::gamma2, 1}));
+  EXPECT_EQ(job::write_job(d)["section"]["sheet"], "gamma2 > 0");
+  // Asked: kept through a save and a read.
+  const auto given = job::read_job(kovalevskaya_job({{"sheet", "gamma2 < 0"}}), "job.json");
+  EXPECT_EQ(given.scene.section->sheet, (SectionSheet{StateComponent::gamma2, -1}));
+  const auto saved = job::write_job(given);
+  EXPECT_EQ(saved["section"]["sheet"], "gamma2 < 0");
+  const auto back = job::read_job(nlohmann::json::parse(saved.dump()), "job.json");
+  EXPECT_EQ(back.scene.section->sheet, given.scene.section->sheet);
+  // Any component neither cut nor plotted, as in a section file.
+  const auto omega = job::read_job(kovalevskaya_job({{"sheet", "omega1 > 0"}}), "job.json");
+  EXPECT_EQ(omega.scene.section->sheet, (SectionSheet{StateComponent::omega1, 1}));
+  // A chart with one sheet (a surface of omega3, plotted at two gammas): every crossing.
+  const auto one = job::read_job(
+      kovalevskaya_job({{"function", "omega3"}, {"coords", {"gamma1", "gamma2"}}}), "job.json");
+  EXPECT_FALSE(one.scene.section->sheet);
+  EXPECT_FALSE(job::write_job(one)["section"].contains("sheet"));
+}
+
+TEST(SectionPanel, TheNegativeSheetDrawsTheOthersAndCountsThese) {
+  const auto job = render_job(kovalevskaya_job({{"sheet", "gamma2 < 0"}}));
+  const auto plan = job::plan_job(job);
+  scene::FrameSource source(plan, job.scene);
+  const auto last = source.frame(source.frame_count() - 1);
+  ASSERT_TRUE(last.section);
+  const auto all = section_code_crossings(plan.run, job.scene.section->surface);
+  const auto shown = with_gamma2_sign(all, -1);
+  ASSERT_GT(shown.size(), 3u);
+  const auto& dots = last.section->runs.front();
+  ASSERT_EQ(dots.size(), shown.size());
+  for (std::size_t k = 0; k < dots.size(); ++k) {
+    EXPECT_LT(shown[k].gamma.y(), 0.0);
+    EXPECT_EQ(dots[k].x(), shown[k].gamma.x());
+    EXPECT_EQ(dots[k].y(), shown[k].omega.z());
+  }
+  EXPECT_EQ(last.section->hidden, all.size() - shown.size());
+  EXPECT_EQ(last.section->title, "γ₃ = 0, upward, γ₂ < 0");
 }
 
 TEST(SectionPanel, ASectionRunThatLosesTheMotionIsANumericalFailure) {

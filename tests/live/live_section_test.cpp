@@ -14,6 +14,7 @@
 #include "physics/invariants.hpp"
 #include "scene/frame_source.hpp"
 #include "session_driver.hpp"
+#include "sim/section_chart_inverse.hpp"
 #include "support/temp_dir.hpp"
 
 namespace epviz::live::testing {
@@ -51,6 +52,16 @@ void expect_crossings_of_level(const physics::Body& body, const physics::Level& 
   }
 }
 
+// The oracle of the sheet drawn: how many of `crossings`, by the gamma2 of
+// each one's own state, lie on the sheet of sign `sign` (the fold, gamma2 =
+// 0, on both) and how many on the other.
+std::pair<std::size_t, std::size_t> on_and_off_sheet(const std::vector<sim::Crossing>& crossings,
+                                                     int sign) {
+  std::size_t on = 0, off = 0;
+  for (const auto& c : crossings) (sign * c.gamma.y() >= 0.0 ? on : off) += 1;
+  return {on, off};
+}
+
 TEST(LiveSection, ShownFromThePanelAndFilledAsTheRunPlays) {
   SessionDriver d(starting_with(physics::Case::kovalevskaya));
   EXPECT_FALSE(d.session->scene().frame().section);
@@ -67,11 +78,14 @@ TEST(LiveSection, ShownFromThePanelAndFilledAsTheRunPlays) {
   const auto& crossings = section.run_crossings(0);
   ASSERT_GE(crossings.size(), 2u) << "t = " << d.session->scene().time();
   expect_crossings_of_level(d.session->scene().setup().run.body, section.level(), crossings);
-  // The frame shows them all: the scene's time is past every one found.
-  EXPECT_EQ(d.session->scene().frame().section->runs.at(0).size(), crossings.size());
+  // The frame shows those of the sheet drawn (gamma2 > 0 by default) and
+  // counts the others: the scene's time is past every one found.
+  const auto [on, off] = on_and_off_sheet(crossings, 1);
+  EXPECT_EQ(d.session->scene().frame().section->runs.at(0).size(), on);
+  EXPECT_EQ(d.session->scene().frame().section->hidden, off);
   const auto c = nlohmann::json::parse(d.session->controls_json());
   EXPECT_EQ(c["section"]["plot"].size(), 4u);
-  EXPECT_EQ(c["section"]["dots"][0], crossings.size());
+  EXPECT_EQ(c["section"]["dots"][0], on);
   // Switched off, the panel goes.
   d.click("section");
   EXPECT_FALSE(d.session->scene().frame().section);
@@ -110,16 +124,99 @@ TEST(LiveSection, AClickOnThePanelStartsAnOrbitWhoseCrossingsFillIn) {
   EXPECT_NEAR(start.omega.z(), at.omega.z(), 0.05);
   expect_crossings_of_level(d.session->scene().setup().run.body, section.level(),
                             orbit.crossings());
-  // Drawn: the panel's second list is the orbit's, every crossing up to its time.
+  // Drawn: the panel's second list is the orbit's, every crossing up to its
+  // time on the sheet drawn, which is the sheet it started on.
   const auto& panel = *d.session->scene().frame().section;
   ASSERT_EQ(panel.runs.size(), 2u);
-  EXPECT_EQ(panel.runs[1].size(), orbit.crossings().size());
+  const int sign = d.session->panel().click_sheet();
+  EXPECT_EQ(d.session->scene().setup().scene.section->sheet->sign, sign);
+  EXPECT_GE(sign * start.gamma.y(), 0.0);
+  EXPECT_EQ(panel.runs[1].size(), on_and_off_sheet(orbit.crossings(), sign).first);
   EXPECT_NE(panel.colours[1], panel.colours[0]);
   // Kept in the setup (a restart runs it again), and cleared by the button.
   EXPECT_EQ(d.session->scene().setup().scene.section->orbits.size(), 1u);
   d.click("clear_orbits");
   EXPECT_EQ(section.orbit_count(), 0);
   EXPECT_TRUE(d.session->scene().setup().scene.section->orbits.empty());
+}
+
+TEST(LiveSection, TheSheetButtonsChooseTheSheetDrawn) {
+  SessionDriver d(with_section());
+  d.click("header:case");
+  d.click("play");
+  d.frames(300);
+  d.click("play");
+  const LiveSection& section = *d.session->scene().section();
+  const auto& run = section.run_crossings(0);
+  for (int sign : {-1, 1}) {
+    SCOPED_TRACE(sign);
+    d.click(sign > 0 ? "sheet:+" : "sheet:-");
+    d.frames(2);
+    EXPECT_EQ(section.settings().sheet, (scene::SectionSheet{sim::StateComponent::gamma2, sign}));
+    EXPECT_EQ(d.session->scene().setup().scene.section->sheet, section.settings().sheet);
+    const auto& panel = *d.session->scene().frame().section;
+    const auto [on, off] = on_and_off_sheet(run, sign);
+    // (The preset's run may cross on one sheet only: then one button shows
+    // every crossing and the other none, each counted.)
+    ASSERT_GT(on + off, 0u);
+    // Each dot drawn is a crossing of the asked sign, and every one of them is drawn.
+    ASSERT_EQ(panel.runs.at(0).size(), on);
+    std::size_t k = 0;
+    for (const auto& c : run) {
+      if (sign * c.gamma.y() < 0.0) continue;
+      EXPECT_EQ(panel.runs[0][k], Eigen::Vector2d(c.gamma.x(), c.omega.z()));
+      ++k;
+    }
+    EXPECT_EQ(panel.hidden, off);
+    EXPECT_NE(panel.title.find(sign > 0 ? "γ₂ > 0" : "γ₂ < 0"), std::string::npos) << panel.title;
+    if (off > 0)
+      EXPECT_NE(panel.note.find(std::to_string(off) + " crossing"), std::string::npos)
+          << panel.note;
+    else
+      EXPECT_EQ(panel.note, "");
+  }
+}
+
+TEST(LiveSection, AClickWithAStateOnTheOtherSheetOnlyIsRefused) {
+  // A body with I1 != I2: with I1 = I2 (Kovalevskaya) the level's two states
+  // on a sheet at a point cross in opposite directions, and the other
+  // sheet's are their mirror images, so every point has one on each sheet.
+  SessionOptions o = starting_with(physics::Case::generic);
+  o.initial.scene.section = scene::SectionPanelSettings{};
+  LiveSetup setup = o.initial;
+  LiveScene scene(setup);
+  const LiveSection& section = *scene.section();
+  const auto& run = scene.setup().run;
+  const auto& r = scene.frame().section->range;
+  // A point of the plot where the level has a state crossing upward on one
+  // sheet but none on the other (the direction of crossing tells them apart).
+  std::optional<std::pair<double, double>> point;
+  int empty_sheet = 0;
+  const auto& s = section.settings();
+  for (int i = 1; i < 120 && !point; ++i)
+    for (int j = 1; j < 120 && !point; ++j) {
+      const double x = r[0] + (r[1] - r[0]) * i / 120.0, y = r[2] + (r[3] - r[2]) * j / 120.0;
+      for (int sign : {1, -1}) {
+        if (sim::section_states_at(run.body, section.level(), s.surface, s.coords, x, y, sign)
+                .states.empty() &&
+            !sim::section_states_at(run.body, section.level(), s.surface, s.coords, x, y, -sign)
+                 .states.empty()) {
+          point = {x, y};
+          empty_sheet = sign;
+          break;
+        }
+      }
+    }
+  ASSERT_TRUE(point);
+  const auto refused = scene.add_section_orbit(point->first, point->second, empty_sheet);
+  EXPECT_FALSE(refused.added);
+  EXPECT_EQ(refused.notice, std::string("no state on this sheet at that point; try ") +
+                                (empty_sheet > 0 ? "γ₂ < 0" : "γ₂ > 0"));
+  EXPECT_EQ(scene.section()->orbit_count(), 0);
+  // On the sheet that has one, it starts there.
+  const auto added = scene.add_section_orbit(point->first, point->second, -empty_sheet);
+  ASSERT_TRUE(added.added) << added.notice;
+  EXPECT_LT(empty_sheet * scene.section()->orbit(0).crossings().front().gamma.y(), 0.0);
 }
 
 // Started exactly at the run's k-th crossing, an orbit is the run itself
@@ -215,11 +312,22 @@ TEST(LiveSection, SaveJobKeepsTheOrbitsAndARenderDrawsTheirCrossings) {
     const auto& b = last.section->runs[i];
     // The same crossings; the last may fall either side of the end by rounding.
     EXPECT_LE(std::abs(long(a.size()) - long(b.size())), 1) << "list " << i;
-    EXPECT_GE(b.size(), 2u) << "list " << i;
+    // The run's may all lie on the sheet not drawn; the clicked orbit starts on the drawn one.
+    if (i == 1) {
+      EXPECT_GE(b.size(), 2u) << "list " << i;
+    }
     for (std::size_t j = 0; j < std::min(a.size(), b.size()); ++j)
       EXPECT_LT((a[j] - b[j]).norm(), 1e-6) << "list " << i << " crossing " << j;
   }
   EXPECT_NE(last.section->colours[1], last.section->colours[0]);
+  // The sheet drawn is saved, and the render counts what it leaves out as the live panel does.
+  EXPECT_EQ(json["section"]["sheet"],
+            d.session->panel().click_sheet() > 0 ? "gamma2 > 0" : "gamma2 < 0");
+  EXPECT_EQ(job.scene.section->sheet, d.session->scene().section()->settings().sheet);
+  EXPECT_LE(std::abs(long(last.section->hidden) - long(live.hidden)), 2);
+  EXPECT_EQ(last.section->hidden + last.section->runs[0].size() + last.section->runs[1].size(),
+            section.run_crossings(0).size() + section.orbit(0).crossings().size())
+      << "every crossing drawn or counted";
 }
 
 // `epviz serve JOB`: a job's "section" shows the panel from the start, and
