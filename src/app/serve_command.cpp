@@ -92,8 +92,9 @@ std::function<int()> add_serve_command(cli::Command app) {
   cmd.add_option("--image", o->server.image, "frame encoding: jpeg or png").show_default();
   cmd.add_option("--quality", o->server.quality, "JPEG quality 1..100").show_default();
   cmd.add_option("--frame-budget", o->server.frame_budget,
-                 "ms a frame may take to render; views are drawn smaller while frames take "
-                 "longer, and sharp again at rest (0: always full size)")
+                 "ms a frame may take (to draw and encode, or for the browser to decode); "
+                 "views are drawn smaller while frames take longer, and sharp again at rest "
+                 "(0: always full size)")
       .show_default();
   cmd.add_option("--save-dir", o->save_dir,
                  "also write saved frames and jobs here (default: browser downloads only)");
