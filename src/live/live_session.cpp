@@ -338,11 +338,14 @@ std::string LiveSession::controls_json() const {
   for (const auto& [name, r] : panel_.controls()) j[name] = {r[0], r[1], r[2], r[3]};
   j["view3d"] = {view_3d_.x, view_3d_.y, view_3d_.width, view_3d_.height};
   // The section panel's plot (clicks there start orbits) and how many
-  // crossings each of its runs and orbits shows: an object, not a rectangle.
+  // crossings each of its runs and orbits shows, and how many lie on the
+  // sheet not drawn (counted, not shown): an object, not a rectangle.
   if (const auto& a = layout_.section_area; a && scene_.frame().section) {
     nlohmann::json dots = nlohmann::json::array();
     for (const auto& run : scene_.frame().section->runs) dots.push_back(run.size());
-    j["section"] = {{"plot", {a->x, a->y, a->width, a->height}}, {"dots", std::move(dots)}};
+    j["section"] = {{"plot", {a->x, a->y, a->width, a->height}},
+                    {"dots", std::move(dots)},
+                    {"hidden", scene_.frame().section->hidden}};
   }
   return io::json_text(j);
 }

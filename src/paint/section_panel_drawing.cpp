@@ -80,15 +80,22 @@ void draw_section_panel(render::DrawList& flat, const scene::SectionPanel& panel
                  render::TextAnchor::top_left,
                  {0, 0},
                  style.background});
-  // The crossings on the sheet not shown, counted at the top right, so that
-  // the plot does not pass for every crossing there is.
-  if (!panel.note.empty())
-    flat.add_text({glm::vec3(float(area.x + area.width) - 3.0f * px, float(area.y) + 2.0f * px, 0),
+  // The crossings on the sheet not shown, counted under the tick labels
+  // (outside the plot, where it hides no dot), so that the plot does not
+  // pass for every crossing there is.
+  // A note wider than the plot ends at its right edge (the frame's, in a
+  // column) and reaches left under the gap between the plots.
+  if (!panel.note.empty()) {
+    const glm::vec2 size = measure(panel.note);
+    const bool fits = size.x <= float(area.width);
+    const float y = float(area.y + area.height) + 10.0f * px + size.y;
+    const float x = fits ? float(area.x) + 0.5f * float(area.width) : float(area.x + area.width);
+    flat.add_text({glm::vec3(x, y, 0),
                    panel.note,
                    style.text,
-                   render::TextAnchor::top_right,
-                   {0, 0},
-                   style.background});
+                   fits ? render::TextAnchor::top : render::TextAnchor::top_right,
+                   {0, 0}});
+  }
 }
 
 std::optional<glm::dvec2> section_point_at(const scene::SectionPanel& panel,

@@ -70,13 +70,22 @@ await run({
 
     // 2. The run's crossings fill it as it plays.
     await clickControl('play');
+    // (Drawn or counted: the panel draws one sheet, γ₂ > 0 unless chosen.)
     await waitFor('three crossings of the run', 60000, async () => {
       const c = await controlsNow();
-      return c.section && c.section.dots[0] >= 3;
+      return c.section && c.section.dots[0] + c.section.hidden >= 3;
     });
     await clickControl('play');
+    // A run that crosses on the other sheet only (the Kovalevskaya preset
+    // does): that sheet's button draws them.
+    if ((await controlsNow()).section.dots[0] === 0) {
+      await clickUntil('sheet:-', 'the run\'s crossings on γ₂ < 0 drawn',
+        (c) => c.section && c.section.dots[0] > 0);
+      log('ok: the run crosses on γ₂ < 0 only; that sheet drawn');
+    }
     const before = await controlsNow();
-    log(`ok: the run crossed the surface ${before.section.dots[0]} times, paused`);
+    log(`ok: the run crossed the surface ${before.section.dots[0]} times on the sheet drawn ` +
+      `(${before.section.hidden} on the other), paused`);
 
     // 3. A click on the plot starts an orbit there: points from the middle
     // outwards until one lies on the run's level (a point with no state is

@@ -121,5 +121,31 @@ TEST(SectionPanelPaint, VectorStillsGetTheDotsAndTitlesInTheFlatLists) {
   }));
 }
 
+// The count of crossings on the sheet not drawn is written under the plot,
+// clear of every dot, and only when there is one.
+TEST(SectionPanelPaint, TheNoteOfTheOtherSheetIsWrittenUnderThePlot) {
+  for (const bool with_note : {true, false}) {
+    SCOPED_TRACE(with_note);
+    auto f = frame_with_dots(9);
+    if (with_note) {
+      f.section->hidden = 4;
+      f.section->note = "4 crossings on γ₂ < 0 not drawn";
+    }
+    std::vector<render::TextLabel> labels;
+    painter().set_flat_sink([&](const render::DrawList& list) {
+      for (const auto& l : list.labels()) labels.push_back(l);
+    });
+    painter().paint(f);
+    painter().set_flat_sink({});
+    const auto note = std::find_if(labels.begin(), labels.end(), [](const auto& l) {
+      return l.text.find("not drawn") != std::string::npos;
+    });
+    ASSERT_EQ(note != labels.end(), with_note);
+    if (!with_note) continue;
+    const auto area = *paint::layout_for(f, W, H).section_area;
+    EXPECT_GT(note->position.y, float(area.y + area.height)) << "below the plot";
+  }
+}
+
 }  // namespace
 }  // namespace epviz
