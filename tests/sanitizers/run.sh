@@ -62,6 +62,13 @@ if [ "$which" != tsan ]; then
     '^BenchCommand\.QuickRunWritesCompleteRows$'
     '^BenchCommand\.JobBodyGetsWorkPrecisionRows$'
     '^Render\.BenchFiguresJobRunsTheStudyAndDrawsItsCharts$'
+    # The same quick bench three times over at a printed size (31 s each
+    # here, 200 s on a loaded machine): what they check is the charts' page
+    # and type sizes; the print-size code itself runs under ASan in the
+    # other PrintSizeFigures and PrintSizeFrames tests.
+    '^PrintSizeFigures\.EveryBenchChartPdfIsAColumnWideWithPrintableText$'
+    '^PrintSizeFigures\.BenchChartsWithLargerTypeStillFitTheirPage$'
+    '^PrintSizeFigures\.BenchPngIsThatManyInchesAtTheDpi$'
     # Peak memory under ASan measures its quarantine of freed blocks (256 MB
     # by default), not ours: 100 frames peaked 250 MB above 5 there.
     '^Check\.MemoryDoesNotGrowWithTheFramesChecked$'
