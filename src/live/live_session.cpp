@@ -17,6 +17,7 @@
 #include "paint/section_panel_drawing.hpp"
 #include "render/framebuffer.hpp"
 #include "render/imgui_context_scope.hpp"
+#include "sim/section_chart_inverse.hpp"
 
 namespace epviz::live {
 namespace {
@@ -190,7 +191,13 @@ bool LiveSession::click_section(float x, float y) {
   if (!panel || !layout_.section_area) return false;
   const auto at = paint::section_point_at(*panel, paint::to_viewport(*layout_.section_area), x, y);
   if (!at) return false;
-  const LiveSection::Added added = scene_.add_section_orbit(at->x, at->y, panel_.click_sheet());
+  // The sheet drawn, which the panel's buttons set (and a served job's
+  // section.sheet, the buttons unseen while their part is closed).
+  const auto& drawn = scene_.section()->settings();
+  const auto chart = sim::chart_sheet_component(drawn.surface, drawn.coords);
+  const int sheet = drawn.sheet && chart && drawn.sheet->component == *chart ? drawn.sheet->sign
+                                                                             : panel_.click_sheet();
+  const LiveSection::Added added = scene_.add_section_orbit(at->x, at->y, sheet);
   notify(added.notice, !added.added);
   return true;
 }

@@ -219,6 +219,39 @@ TEST(LiveSection, AClickWithAStateOnTheOtherSheetOnlyIsRefused) {
   EXPECT_LT(empty_sheet * scene.section()->orbit(0).crossings().front().gamma.y(), 0.0);
 }
 
+// A served job's section.sheet is the sheet drawn and the sheet a click
+// starts on, without a press of the sheet buttons.
+TEST(LiveSection, AJobsSheetIsDrawnAndClickedOn) {
+  test::TempDir dir;
+  const auto file = dir.write("job.json", R"({
+    "simulation": {"case": "kovalevskaya", "t_end": 200},
+    "section": {"sheet": "gamma2 < 0"},
+    "width": 320, "height": 180, "fps": 10, "duration": 2})");
+  SessionOptions o = starting_with(physics::Case::kovalevskaya);
+  o.initial = setup_from_job_file(file);
+  SessionDriver d(o);
+  ASSERT_TRUE(d.session->scene().section());
+  EXPECT_EQ(d.session->scene().section()->settings().sheet,
+            (scene::SectionSheet{sim::StateComponent::gamma2, -1}));
+  d.click("play");
+  d.frames(150);
+  d.click("play");
+  const LiveSection& section = *d.session->scene().section();
+  const auto& run = section.run_crossings(0);
+  const auto [on, off] = on_and_off_sheet(run, -1);
+  ASSERT_GT(on, 0u);
+  EXPECT_EQ(d.session->scene().frame().section->runs.at(0).size(), on);
+  EXPECT_EQ(d.session->scene().frame().section->hidden, off);
+  // A click at a crossing of the run on that sheet starts an orbit there.
+  sim::Crossing at;
+  for (const auto& c : run)
+    if (c.gamma.y() < 0.0) at = c;
+  const auto [px, py] = pixel_of(*d.session, at.gamma.x(), at.omega.z());
+  d.click_at(px, py);
+  ASSERT_EQ(section.orbit_count(), 1) << d.session->panel().message();
+  EXPECT_LT(section.orbit(0).crossings().front().gamma.y(), 0.0);
+}
+
 // Started exactly at the run's k-th crossing, an orbit is the run itself
 // shifted in time: its crossings are the run's next ones.
 TEST(LiveSection, AnOrbitFromTheRunsOwnCrossingRetracesTheRun) {
