@@ -16,9 +16,9 @@ Eigen::Vector2d plotted(const sim::Crossing& c, const std::array<sim::StateCompo
   return {sim::value_of(coords[0], c.omega, c.gamma), sim::value_of(coords[1], c.omega, c.gamma)};
 }
 
-// [lo, hi] widened by 8 % of its span on each side, so that no dot sits on
-// the frame; a span of (nearly) nothing gets a unit's width about its centre.
-void pad(double& lo, double& hi) {
+// [lo, hi] widened by `margin` of its span on each side, so that no dot
+// sits on the frame; a span of (nearly) nothing gets a unit's width about its centre.
+void pad(double& lo, double& hi, double margin = 0.08) {
   const double span = hi - lo;
   if (!(span > 1e-9 * std::max(1.0, std::abs(lo) + std::abs(hi)))) {
     const double mid = 0.5 * (lo + hi);
@@ -26,9 +26,15 @@ void pad(double& lo, double& hi) {
     hi = mid + 0.5;
     return;
   }
-  lo -= 0.08 * span;
-  hi += 0.08 * span;
+  lo -= margin * span;
+  hi += margin * span;
 }
+
+// The margin of a range fitted to the crossings: the axis titles sit in the
+// plot's top-left and bottom-right corners on the panel's background, and
+// few dots (one sheet of a run may hold two) put one in a corner, which 8 %
+// (21 px of a 1280x720 frame's plot) left under the title.
+constexpr double kFittedMargin = 0.15;
 
 }  // namespace
 
@@ -76,7 +82,7 @@ SectionCrossings::SectionCrossings(const SectionPanelSettings& settings,
   }
   for (int k = 0; k < 2; ++k) {
     if (!(lo[k] <= hi[k])) lo[k] = hi[k] = 0.0;  // no crossing at all
-    pad(lo[k], hi[k]);
+    pad(lo[k], hi[k], kFittedMargin);
     range_[std::size_t(2 * k)] = lo[k];
     range_[std::size_t(2 * k + 1)] = hi[k];
   }
