@@ -11,6 +11,7 @@
 
 #include "numerics/failure.hpp"
 #include "scene/frame.hpp"
+#include "scene/section_sheet.hpp"
 #include "sim/section.hpp"
 #include "sim/trajectory.hpp"
 
@@ -19,31 +20,6 @@ struct Level;  // physics/level_set.hpp
 }  // namespace epviz::physics
 
 namespace epviz::scene {
-
-// One sheet of a section surface's chart: the states whose `component` has
-// the sign `sign` (+1 or -1). The plotted coordinates cover a surface such as
-// gamma3 = 0 twice (gamma2 > 0 and gamma2 < 0); a panel drawing both on one
-// plane would set orbits of one sheet among those of the other.
-struct SectionSheet {
-  sim::StateComponent component = sim::StateComponent::gamma2;
-  int sign = 1;
-  bool operator==(const SectionSheet&) const = default;
-};
-
-// The sheet a panel shows where none is asked: the positive one of the
-// component that tells the chart's sheets apart (sim::chart_sheet_component),
-// or none (every crossing) for a chart that has no such component.
-std::optional<SectionSheet> default_sheet(const sim::SectionSurface& surface,
-                                          const std::array<sim::StateComponent, 2>& coords);
-
-// "γ₂ > 0".
-std::string sheet_name(const SectionSheet& sheet);
-
-// Whether `sheet` (none: every crossing) shows the state (omega, gamma): its
-// component of the sheet's sign, or 0 (the fold, where both sheets meet and
-// the chart gives both one point).
-bool on_sheet(const std::optional<SectionSheet>& sheet, const physics::Vector3d& omega,
-              const physics::Vector3d& gamma);
 
 // What a job's "section" asks for: the surface, the two coordinates plotted
 // and the sheet shown (the keys, defaults and checks of a section file,
