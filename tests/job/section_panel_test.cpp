@@ -13,6 +13,7 @@
 #include "scene/plan.hpp"
 #include "section/section_job.hpp"
 #include "section/section_run.hpp"
+#include "section_refusal.hpp"
 #include "sim/rhs_tally.hpp"
 #include "sim/section.hpp"
 #include "sim/trajectory.hpp"
@@ -86,16 +87,7 @@ TEST(SectionPanelKey, BadValuesExitTwoNamingTheKey) {
       {R"({"sheets": "gamma2"})", "section.sheets"},
       {R"(3)", "key 'section'"},
   };
-  for (const auto& [section, named] : cases) {
-    SCOPED_TRACE(section);
-    TempDir dir;
-    std::string job = R"({"simulation": {"case": "kovalevskaya", "t_end": 2}, "section": )";
-    job += section;
-    job += R"(, "width": 64, "height": 48, "fps": 2, "duration": 1, "output": {"dir": ")";
-    job += (dir / "out").string();
-    job += R"(", "format": "png"}})";
-    test::expect_render_refused(dir, job, "--quiet", dir / "out", named);
-  }
+  for (const auto& [section, named] : cases) test::expect_section_refused(section, named);
 }
 
 // The same run through `epviz section`'s code: one orbit from the job's

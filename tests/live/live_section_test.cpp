@@ -27,6 +27,15 @@ SessionOptions with_section() {
   return o;
 }
 
+// Plays `frames` frames and pauses, the case's part of the panel closed so
+// that the section's controls come into its view.
+void play_then_pause(SessionDriver& d, int frames) {
+  d.click("header:case");
+  d.click("play");
+  d.frames(frames);
+  d.click("play");
+}
+
 // The picture's pixel of the panel's point (x, y): the forward map of the plot.
 std::pair<float, float> pixel_of(const LiveSession& s, double x, double y) {
   const auto& a = *s.layout().section_area;
@@ -93,10 +102,7 @@ TEST(LiveSection, ShownFromThePanelAndFilledAsTheRunPlays) {
 
 TEST(LiveSection, AClickOnThePanelStartsAnOrbitWhoseCrossingsFillIn) {
   SessionDriver d(with_section());
-  d.click("header:case");  // closed: the section's controls come into the panel's view
-  d.click("play");
-  d.frames(150);
-  d.click("play");
+  play_then_pause(d, 150);
   const LiveSection& section = *d.session->scene().section();
   ASSERT_GE(section.run_crossings(0).size(), 1u);
   // A point of the level: the run's first crossing, on the sheet it lies on.
@@ -142,10 +148,7 @@ TEST(LiveSection, AClickOnThePanelStartsAnOrbitWhoseCrossingsFillIn) {
 
 TEST(LiveSection, TheSheetButtonsChooseTheSheetDrawn) {
   SessionDriver d(with_section());
-  d.click("header:case");
-  d.click("play");
-  d.frames(300);
-  d.click("play");
+  play_then_pause(d, 300);
   const LiveSection& section = *d.session->scene().section();
   const auto& run = section.run_crossings(0);
   for (int sign : {-1, 1}) {
@@ -306,10 +309,7 @@ TEST(LiveSection, AClickWhereTheLevelHasNoStateSaysSo) {
 
 TEST(LiveSection, SaveJobKeepsTheOrbitsAndARenderDrawsTheirCrossings) {
   SessionDriver d(with_section());
-  d.click("header:case");
-  d.click("play");
-  d.frames(150);
-  d.click("play");
+  play_then_pause(d, 150);
   const LiveSection& section = *d.session->scene().section();
   ASSERT_GE(section.run_crossings(0).size(), 1u);
   const sim::Crossing& at = section.run_crossings(0).front();
