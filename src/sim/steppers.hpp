@@ -2,7 +2,9 @@
 // The one place where a run's Method becomes a stepper for a system: every
 // path that integrates a single run (sim::Trajectory for simulate, render and
 // serve; the Poincaré sections) builds its stepper here, with the options of
-// sim/run_options.hpp. Adding an integrator adds one case to this switch.
+// sim/run_options.hpp. Adding an integrator adds one case to this switch, and
+// a line to the list of out-of-line steppers below when its step is out of
+// line.
 #include <stdexcept>
 #include <type_traits>
 #include <utility>
@@ -14,6 +16,8 @@
 #include "numerics/splitting.hpp"
 #include "physics/direct.hpp"
 #include "physics/free_rigid_body_flow.hpp"
+#include "physics/riccati.hpp"
+#include "physics/spinor.hpp"
 #include "sim/run_options.hpp"
 
 namespace epviz::sim {
@@ -62,3 +66,32 @@ decltype(auto) with_stepper(Sys sys, const RunSpec& spec, Visit&& visit) {
 }
 
 }  // namespace epviz::sim
+
+// The steppers whose step lives out of line (the adaptive Runge–Kutta pairs
+// and the implicit Gauss–Legendre methods), for each system a run can
+// integrate, are compiled once: each formulation's trajectory file
+// (trajectory_<formulation>.cpp) instantiates them for its system with
+// EPVIZ_SIM_INSTANTIATE_STEPPERS, and every other file that includes this
+// header (the sections, the tests) links those copies instead of compiling
+// its own. The steppers whose step is written in the class (RK4, the
+// splittings, the compositions) are inlined where they are used and need no
+// entry. X(stepper type) for each of system Sys; a macro, not a type list,
+// because an explicit instantiation has to spell its class out.
+#define EPVIZ_SIM_OUT_OF_LINE_STEPPERS(X, Sys)                            \
+  X(::epviz::numerics::EmbeddedRk<Sys, ::epviz::numerics::Dopri5Tableau>) \
+  X(::epviz::numerics::EmbeddedRk<Sys, ::epviz::numerics::Dop853Tableau>) \
+  X(::epviz::numerics::GaussLegendre<Sys, 1>)                             \
+  X(::epviz::numerics::GaussLegendre<Sys, 2>)                             \
+  X(::epviz::numerics::GaussLegendre<Sys, 3>)
+
+#define EPVIZ_SIM_EXTERN_STEPPER(...) extern template class __VA_ARGS__;
+#define EPVIZ_SIM_DEFINE_STEPPER(...) template class __VA_ARGS__;
+
+EPVIZ_SIM_OUT_OF_LINE_STEPPERS(EPVIZ_SIM_EXTERN_STEPPER, ::epviz::physics::DirectSystem)
+EPVIZ_SIM_OUT_OF_LINE_STEPPERS(EPVIZ_SIM_EXTERN_STEPPER, ::epviz::physics::RiccatiSystem)
+EPVIZ_SIM_OUT_OF_LINE_STEPPERS(EPVIZ_SIM_EXTERN_STEPPER, ::epviz::physics::SpinorSystem)
+
+// In trajectory_<formulation>.cpp only, at file scope: the one definition of
+// each out-of-line stepper of the formulation's system.
+#define EPVIZ_SIM_INSTANTIATE_STEPPERS(Sys) \
+  EPVIZ_SIM_OUT_OF_LINE_STEPPERS(EPVIZ_SIM_DEFINE_STEPPER, Sys)

@@ -14,6 +14,7 @@
 #include "physics/invariants.hpp"
 #include "scene/cloud_run.hpp"
 #include "scene/plan.hpp"
+#include "sim/steppers.hpp"
 
 namespace epviz {
 namespace {

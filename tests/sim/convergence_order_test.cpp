@@ -14,6 +14,7 @@
 #include "physics/riccati.hpp"
 #include "physics/spinor.hpp"
 #include "sim/simulate.hpp"
+#include "sim/steppers.hpp"
 
 namespace epviz {
 namespace {

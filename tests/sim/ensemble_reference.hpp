@@ -12,6 +12,7 @@
 #include "numerics/rk4.hpp"
 #include "physics/direct.hpp"
 #include "sim/ensemble.hpp"
+#include "sim/steppers.hpp"
 
 namespace epviz::sim::test {
 using physics::Body;
