@@ -6,8 +6,10 @@
 //                run in this process as the command makes it (samples to a
 //                sink, steps to the drift monitor) and bare (sim::simulate,
 //                samples kept), Boost.Odeint's
-//                dopri5 and rkf78 (controlled, best of REPEATS), over a sweep
-//                of tolerances; the error |dOmega| + |dgamma| at T against the
+//                dopri5 and rkf78 (controlled, best of REPEATS), each run in
+//                a process of its own as the command is (this program run
+//                again with --peer-run) and, warm, in this process, over a
+//                sweep of tolerances; the error |dOmega| + |dgamma| at T against the
 //                Richardson-extrapolated Gauss6 reference of `epviz bench`
 //                (study/reference.hpp); the CPU time at errors 1e-8 and 1e-10
 //                by log-log interpolation, and the ratios;
@@ -32,6 +34,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "physics/cases.hpp"
@@ -133,6 +136,65 @@ double cpu_at(std::vector<Point> curve, double error) {
   return std::numeric_limits<double>::quiet_NaN();
 }
 
+// The run every process of the comparison makes: the preset at tol, DOP853
+// for the command (the peers take only body, state, tol and t_end from it).
+sim::RunSpec preset_spec(double tol) {
+  sim::RunSpec spec = sim::preset_run(physics::Case::kovalevskaya, sim::Method::dop853,
+                                      sim::Formulation::direct, kTEnd, 1);
+  spec.tol = tol;
+  return spec;
+}
+
+// This program started again as `--peer-run ID TOL`: one peer's run, alone in
+// a fresh process as `epviz simulate`'s is (its first run pays for the cold
+// caches and the page faults the command pays for), its result on stdout.
+int peer_run_child(int id, double tol) {
+  const auto r = study::peers::run_peer(static_cast<study::peers::PeerId>(id), preset_spec(tol), 1);
+  std::printf("%d %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", r.ok() ? 1 : 0, r.cpu_seconds,
+              r.t, r.omega[0], r.omega[1], r.omega[2], r.gamma[0], r.gamma[1], r.gamma[2]);
+  return 0;
+}
+
+// A peer's run in a process of its own (this program with --peer-run).
+study::peers::PeerResult peer_in_own_process(study::peers::PeerId id, double tol) {
+  int fds[2];
+  if (pipe(fds) != 0) {
+    std::perror("epviz_simulate_bench: pipe");
+    std::exit(1);
+  }
+  const std::string self = fs::read_symlink("/proc/self/exe").string();
+  std::string id_text = std::to_string(static_cast<int>(id)), tol_arg = tol_text(tol);
+  std::string flag = "--peer-run", self_arg = self;
+  char* argv[] = {self_arg.data(), flag.data(), id_text.data(), tol_arg.data(), nullptr};
+  std::fflush(stdout);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    dup2(fds[1], STDOUT_FILENO);
+    close(fds[0]);
+    close(fds[1]);
+    execv(argv[0], argv);
+    _exit(127);
+  }
+  close(fds[1]);
+  std::string text;
+  char buf[512];
+  for (ssize_t n; (n = read(fds[0], buf, sizeof buf)) > 0;) text.append(buf, std::size_t(n));
+  close(fds[0]);
+  int status = 0;
+  study::peers::PeerResult r;
+  std::istringstream in(text);
+  int ok = 0;
+  if (waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0 ||
+      !(in >> ok >> r.cpu_seconds >> r.t >> r.omega[0] >> r.omega[1] >> r.omega[2] >> r.gamma[0] >>
+        r.gamma[1] >> r.gamma[2])) {
+    std::fprintf(stderr, "epviz_simulate_bench: the peer's own process failed (status %d)\n",
+                 status);
+    std::exit(1);
+  }
+  if (!ok) r.status = study::peers::PeerStatus::failed;
+  return r;
+}
+
 sim::Sample sample_of(const study::peers::PeerResult& r) {
   sim::Sample s;
   s.t = r.t;
@@ -190,6 +252,8 @@ double plain_rk4_seconds_per_step(const physics::Body& body, const physics::Init
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc == 4 && std::string(argv[1]) == "--peer-run")
+    return peer_run_child(std::atoi(argv[2]), std::atof(argv[3]));
   const int repeats = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
   const fs::path dir =
       fs::temp_directory_path() / ("epviz_simulate_bench." + std::to_string(getpid()));
@@ -206,10 +270,12 @@ int main(int argc, char** argv) {
       reference.step, reference.self_check);
 
   const std::vector<double> tolerances{1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13, 1e-14};
-  std::vector<Point> process, in_process, dopri5, rkf78;
-  std::printf("%-8s %-11s %-13s %-13s %-13s %-7s %-11s %-11s %-11s %-11s\n", "tol", "error",
-              "epviz cpu s", "observed s", "stepper s", "steps", "dopri5 err", "dopri5 s",
-              "rkf78 err", "rkf78 s");
+  // The peers' times: each run in a process of its own, as the command's
+  // (the comparison the targets are set on), and warm in this process.
+  std::vector<Point> process, in_process, dopri5, rkf78, dopri5_warm, rkf78_warm;
+  std::printf("%-8s %-10s %-11s %-11s %-11s %-6s %-10s %-10s %-10s %-10s %-10s %-10s\n", "tol",
+              "error", "epviz cpu s", "observed s", "stepper s", "steps", "dopri5 err", "dopri5 s",
+              "(warm)", "rkf78 err", "rkf78 s", "(warm)");
   for (double tol : tolerances) {
     ProcessRun best;
     best.cpu = std::numeric_limits<double>::infinity();
@@ -227,9 +293,7 @@ int main(int argc, char** argv) {
     const double error = study::state_error(best.last, ref);
     process.push_back({error, best_reported});
 
-    sim::RunSpec spec = sim::preset_run(physics::Case::kovalevskaya, sim::Method::dop853,
-                                        sim::Formulation::direct, kTEnd, 1);
-    spec.tol = tol;
+    const sim::RunSpec spec = preset_spec(tol);
     double alone = std::numeric_limits<double>::infinity();
     for (int r = 0; r < repeats; ++r) alone = std::min(alone, sim::simulate(spec).cpu_seconds);
     in_process.push_back({error, alone});
@@ -245,33 +309,47 @@ int main(int argc, char** argv) {
       observed = std::min(observed, result.cpu_seconds);
     }
 
-    auto peer = [&](study::peers::PeerId id, std::vector<Point>& curve) {
-      double cpu = std::numeric_limits<double>::infinity();
+    // Best of `repeats` runs, each in its own process (own) or here (warm).
+    auto peer = [&](study::peers::PeerId id, std::vector<Point>& curve, std::vector<Point>& warm) {
+      double cpu = std::numeric_limits<double>::infinity(), cpu_warm = cpu;
       study::peers::PeerResult last;
       for (int r = 0; r < repeats; ++r) {
-        last = study::peers::run_peer(id, spec, 1);
+        last = peer_in_own_process(id, tol);
         cpu = std::min(cpu, last.cpu_seconds);
+        cpu_warm = std::min(cpu_warm, study::peers::run_peer(id, spec, 1).cpu_seconds);
       }
       const double e = last.ok() ? study::state_error(sample_of(last), ref) : NAN;
-      if (last.ok()) curve.push_back({e, cpu});
-      return std::pair{e, cpu};
+      if (last.ok()) {
+        curve.push_back({e, cpu});
+        warm.push_back({e, cpu_warm});
+      }
+      return std::tuple{e, cpu, cpu_warm};
     };
-    const auto [e5, c5] = peer(study::peers::PeerId::odeint_dopri5_controlled, dopri5);
-    const auto [e78, c78] = peer(study::peers::PeerId::odeint_rkf78_controlled, rkf78);
-    std::printf("%-8g %-11.3g %-13.3g %-13.3g %-13.3g %-7ld %-11.3g %-11.3g %-11.3g %-11.3g\n", tol,
-                error, best_reported, observed, alone, best.report.at("steps").get<long>(), e5, c5,
-                e78, c78);
+    const auto [e5, c5, w5] =
+        peer(study::peers::PeerId::odeint_dopri5_controlled, dopri5, dopri5_warm);
+    const auto [e78, c78, w78] =
+        peer(study::peers::PeerId::odeint_rkf78_controlled, rkf78, rkf78_warm);
+    std::printf(
+        "%-8g %-10.3g %-11.3g %-11.3g %-11.3g %-6ld %-10.3g %-10.3g %-10.3g %-10.3g %-10.3g "
+        "%-10.3g\n",
+        tol, error, best_reported, observed, alone, best.report.at("steps").get<long>(), e5, c5, w5,
+        e78, c78, w78);
   }
 
-  std::printf("\nat equal error (log-log interpolation; ratio = faster Boost / epviz simulate):\n");
+  std::printf(
+      "\nat equal error (log-log interpolation; ratio = faster Boost / epviz simulate, every run "
+      "in a process of its own; warm: the stepper and Boost in this process):\n");
   for (double e : {1e-8, 1e-10}) {
     const double ep = cpu_at(process, e), ei = cpu_at(in_process, e);
     const double d5 = cpu_at(dopri5, e), d78 = cpu_at(rkf78, e);
-    const double boost = std::fmin(d5, d78);
+    const double w5 = cpu_at(dopri5_warm, e), w78 = cpu_at(rkf78_warm, e);
+    const double boost = std::fmin(d5, d78), boost_warm = std::fmin(w5, w78);
     std::printf(
-        "  error %g: epviz simulate %.3g s, in-process %.3g s (command / stepper %.2f), "
-        "odeint dopri5 %.3g s, rkf78 %.3g s: epviz %.2fx faster than the faster Boost\n",
-        e, ep, ei, ep / ei, d5, d78, boost / ep);
+        "  error %g: epviz simulate %.3g s, odeint dopri5 %.3g s, rkf78 %.3g s: epviz %.2fx faster "
+        "than the faster Boost\n"
+        "    warm: stepper %.3g s (command / stepper %.2f), dopri5 %.3g s, rkf78 %.3g s: "
+        "stepper %.2fx faster than the faster Boost\n",
+        e, ep, d5, d78, boost / ep, ei, ep / ei, w5, w78, boost_warm / ei);
   }
 
   // RK4 per step: the command against a plain loop.
