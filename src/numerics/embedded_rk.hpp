@@ -353,11 +353,12 @@ class EmbeddedRk {
   }
   // The same ordered for latency: leaves the last stage in `fresh` and x_new
   // in `xnew` as well, both locals.
-  // (Constrained, as the other latency-ordered members, so that an explicit
-  // instantiation of a plain-order stepper does not instantiate them.)
-  [[gnu::always_inline]] inline void stages_and_solution_fresh(
-      double t, const State& x, double h, State& xnew,
-      State& fresh) requires(Tableau::latency_ordered) {
+  // (A template, as error_norm_squared, so that an explicit instantiation of
+  // a plain-order stepper, which instantiates every other member, leaves the
+  // latency-ordered ones, which it cannot compile, out.)
+  template <class = Tableau>
+  [[gnu::always_inline]] inline void stages_and_solution_fresh(double t, const State& x, double h,
+                                                               State& xnew, State& fresh) {
     fresh = k_[0];
     stages_fresh(t, x, h, k_, fresh, detail::index_range<1, S>{});
     advance_fresh<RowIs<Tableau::b>, S>(xnew, x, h, k_, fresh);
@@ -408,9 +409,9 @@ class EmbeddedRk {
   // waits for (the control takes log(err) as log(err^2) / 2), the squares
   // are summed as a tree, and the reciprocal scales, which wait only for
   // x_new, are divided two at a time.
+  template <class = Tableau>
   [[gnu::always_inline]] inline double error_norm_squared(double h, const State& xnew,
-                                                          const State& fsal) const
-      requires(Tableau::latency_ordered) {
+                                                          const State& fsal) const {
     using W = RowIs<Tableau::e>;
     using T = Terms<W, error_terms>;
     static_assert(T::idx[T::count - 1] == S, "the estimate must weigh f(t + h, x_new)");
