@@ -20,9 +20,21 @@
 namespace epviz::live::testing {
 namespace {
 
-// A Kovalevskaya top with the section panel (gamma3 = 0 upward at (gamma1, Omega3)).
-SessionOptions with_section() {
+// Four times the live default speed: a frame covers 4/30 s of simulation
+// time, so that the tests reach the crossings they need in a quarter of the
+// frames (each frame is drawn, at 960 x 540).
+constexpr double kSpeed = 16.0;
+
+// A Kovalevskaya top at kSpeed.
+SessionOptions kovalevskaya() {
   SessionOptions o = starting_with(physics::Case::kovalevskaya);
+  o.initial.speed = kSpeed;
+  return o;
+}
+
+// The same with the section panel (gamma3 = 0 upward at (gamma1, Omega3)).
+SessionOptions with_section() {
+  SessionOptions o = kovalevskaya();
   o.initial.scene.section = scene::SectionPanelSettings{};
   return o;
 }
@@ -72,7 +84,7 @@ std::pair<std::size_t, std::size_t> on_and_off_sheet(const std::vector<sim::Cros
 }
 
 TEST(LiveSection, ShownFromThePanelAndFilledAsTheRunPlays) {
-  SessionDriver d(starting_with(physics::Case::kovalevskaya));
+  SessionDriver d(kovalevskaya());
   EXPECT_FALSE(d.session->scene().frame().section);
   EXPECT_FALSE(d.session->layout().section_area);
   d.click("header:section");
@@ -81,7 +93,7 @@ TEST(LiveSection, ShownFromThePanelAndFilledAsTheRunPlays) {
   ASSERT_TRUE(d.session->scene().frame().section);
   ASSERT_TRUE(d.session->layout().section_area) << "the frame is laid out with the panel";
   d.click("play");
-  d.frames(150);
+  d.frames(38);
   d.click("play");
   const LiveSection& section = *d.session->scene().section();
   const auto& crossings = section.run_crossings(0);
@@ -102,7 +114,7 @@ TEST(LiveSection, ShownFromThePanelAndFilledAsTheRunPlays) {
 
 TEST(LiveSection, AClickOnThePanelStartsAnOrbitWhoseCrossingsFillIn) {
   SessionDriver d(with_section());
-  play_then_pause(d, 150);
+  play_then_pause(d, 38);
   const LiveSection& section = *d.session->scene().section();
   ASSERT_GE(section.run_crossings(0).size(), 1u);
   // A point of the level: the run's first crossing, on the sheet it lies on.
@@ -148,7 +160,7 @@ TEST(LiveSection, AClickOnThePanelStartsAnOrbitWhoseCrossingsFillIn) {
 
 TEST(LiveSection, TheSheetButtonsChooseTheSheetDrawn) {
   SessionDriver d(with_section());
-  play_then_pause(d, 300);
+  play_then_pause(d, 75);
   const LiveSection& section = *d.session->scene().section();
   const auto& run = section.run_crossings(0);
   for (int sign : {-1, 1}) {
@@ -237,7 +249,7 @@ TEST(LiveSection, AJobsSheetIsDrawnAndClickedOn) {
   EXPECT_EQ(d.session->scene().section()->settings().sheet,
             (scene::SectionSheet{sim::StateComponent::gamma2, -1}));
   d.click("play");
-  d.frames(150);
+  d.frames(38);  // at the job's speed, 100: to t = 127 or so
   d.click("play");
   const LiveSection& section = *d.session->scene().section();
   const auto& run = section.run_crossings(0);
@@ -309,7 +321,7 @@ TEST(LiveSection, AClickWhereTheLevelHasNoStateSaysSo) {
 
 TEST(LiveSection, SaveJobKeepsTheOrbitsAndARenderDrawsTheirCrossings) {
   SessionDriver d(with_section());
-  play_then_pause(d, 150);
+  play_then_pause(d, 38);
   const LiveSection& section = *d.session->scene().section();
   ASSERT_GE(section.run_crossings(0).size(), 1u);
   const sim::Crossing& at = section.run_crossings(0).front();
