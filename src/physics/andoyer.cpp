@@ -1,5 +1,6 @@
 #include "physics/andoyer.hpp"
 
+#include <Eigen/Geometry>  // cross()
 #include <cmath>
 #include <numbers>
 #include <stdexcept>

@@ -1,5 +1,6 @@
 #include "scene/cloud_run.hpp"
 
+#include <Eigen/Geometry>  // cross()
 #include <algorithm>
 #include <cmath>
 #include <limits>

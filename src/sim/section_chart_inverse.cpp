@@ -1,5 +1,6 @@
 #include "sim/section_chart_inverse.hpp"
 
+#include <Eigen/Geometry>  // cross()
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
