@@ -16,8 +16,6 @@
 #include "numerics/splitting.hpp"
 #include "physics/direct.hpp"
 #include "physics/free_rigid_body_flow.hpp"
-#include "physics/riccati.hpp"
-#include "physics/spinor.hpp"
 #include "sim/run_options.hpp"
 
 namespace epviz::sim {
@@ -68,15 +66,17 @@ decltype(auto) with_stepper(Sys sys, const RunSpec& spec, Visit&& visit) {
 }  // namespace epviz::sim
 
 // The steppers whose step lives out of line (the adaptive Runge–Kutta pairs
-// and the implicit Gauss–Legendre methods), for each system a run can
-// integrate, are compiled once: each formulation's trajectory file
-// (trajectory_<formulation>.cpp) instantiates them for its system with
-// EPVIZ_SIM_INSTANTIATE_STEPPERS, and every other file that includes this
-// header (the sections, the tests) links those copies instead of compiling
-// its own. The steppers whose step is written in the class (RK4, the
-// splittings, the compositions) are inlined where they are used and need no
-// entry. X(stepper type) for each of system Sys; a macro, not a type list,
-// because an explicit instantiation has to spell its class out.
+// and the implicit Gauss–Legendre methods) for the direct formulation's
+// system are compiled once, in steppers_direct.cpp (EPVIZ_SIM_INSTANTIATE_STEPPERS),
+// and declared extern here: the trajectories, the sections and the tests,
+// which all run them, link that copy instead of compiling their own. (The
+// other formulations' steppers run only in their trajectory file, which
+// instantiates them as it uses them; declaring them here would make every
+// includer parse their systems' headers, which cost more than it saved.) The
+// steppers whose step is written in the class (RK4, the splittings, the
+// compositions) are inlined where they are used and need no entry.
+// X(stepper type) for each of system Sys; a macro, not a type list, because
+// an explicit instantiation has to spell its class out.
 #define EPVIZ_SIM_OUT_OF_LINE_STEPPERS(X, Sys)                            \
   X(::epviz::numerics::EmbeddedRk<Sys, ::epviz::numerics::Dopri5Tableau>) \
   X(::epviz::numerics::EmbeddedRk<Sys, ::epviz::numerics::Dop853Tableau>) \
@@ -88,10 +88,7 @@ decltype(auto) with_stepper(Sys sys, const RunSpec& spec, Visit&& visit) {
 #define EPVIZ_SIM_DEFINE_STEPPER(...) template class __VA_ARGS__;
 
 EPVIZ_SIM_OUT_OF_LINE_STEPPERS(EPVIZ_SIM_EXTERN_STEPPER, ::epviz::physics::DirectSystem)
-EPVIZ_SIM_OUT_OF_LINE_STEPPERS(EPVIZ_SIM_EXTERN_STEPPER, ::epviz::physics::RiccatiSystem)
-EPVIZ_SIM_OUT_OF_LINE_STEPPERS(EPVIZ_SIM_EXTERN_STEPPER, ::epviz::physics::SpinorSystem)
 
-// In trajectory_<formulation>.cpp only, at file scope: the one definition of
-// each out-of-line stepper of the formulation's system.
+// In steppers_direct.cpp only, at file scope: the one definition of each.
 #define EPVIZ_SIM_INSTANTIATE_STEPPERS(Sys) \
   EPVIZ_SIM_OUT_OF_LINE_STEPPERS(EPVIZ_SIM_DEFINE_STEPPER, Sys)

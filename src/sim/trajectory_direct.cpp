@@ -3,9 +3,6 @@
 #include "physics/direct.hpp"
 #include "sim/trajectory_steppers.hpp"
 
-// The one copy of its out-of-line steppers (sim/steppers.hpp).
-EPVIZ_SIM_INSTANTIATE_STEPPERS(::epviz::physics::DirectSystem)
-
 namespace epviz::sim::detail {
 
 std::unique_ptr<Trajectory> start_direct(const RunSpec& spec) {

@@ -2,9 +2,6 @@
 #include "physics/spinor.hpp"
 #include "sim/trajectory_steppers.hpp"
 
-// The one copy of its out-of-line steppers (sim/steppers.hpp).
-EPVIZ_SIM_INSTANTIATE_STEPPERS(::epviz::physics::SpinorSystem)
-
 namespace epviz::sim::detail {
 
 std::unique_ptr<Trajectory> start_spinor(const RunSpec& spec) {
