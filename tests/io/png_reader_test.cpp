@@ -64,6 +64,25 @@ TEST(PngReader, AChunkLongerThanTheFileIsNotDecoded) {
   EXPECT_FALSE(read_png_rgba(file));
 }
 
+TEST(PngReader, ImageDataThatDoesNotEndIsNotDecoded) {
+  // The file libFuzzer found (fuzz/corpus/fuzz_golden_reader/cut_image_data.png):
+  // a 4 x 3 image whose zlib stream is cut short, then a second IHDR and
+  // IDAT. stb_image's inflater read zeros past the stream's end and kept
+  // decoding them, doubling its buffer up to 2 GB.
+  test::TempDir dir;
+  const auto file = dir / "cut.png";
+  const std::string bytes(
+      "\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR\0\0\0\x04\0\0\0\x03\x08\x06\0\0\0\xb4\xf4\xae\xc6"
+      "\0\0\0\x2aIDAT\x78\xda\x15\xc8\x31\x01\0\x20\x10\xc4\x0d\x0a\x1a\x0a\0\0\0\x0dIHDR"
+      "\0\0\0\x04\0\0\0\x03\x08\x06\0\0\0\xb4\xf4\xae\xc6\0\0\0\x2aIDAT\0\0\x2aIDAT\x78\xda\0",
+      98);
+  std::ofstream(file, std::ios::binary) << bytes;
+  // Not decoded either way (stb fails once it has grown); that nothing is
+  // allocated for it is held by the fuzz target, which replays its corpus
+  // under a malloc limit of 2 GB and failed on this file before.
+  EXPECT_FALSE(read_png_rgba(file));
+}
+
 TEST(PngReader, ImagesOverTheCapAreNotDecoded) {
   test::TempDir dir;
   const auto file = dir / "a.png";
